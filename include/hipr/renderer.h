@@ -1,0 +1,64 @@
+#pragma once
+// Progressive path tracing of a scene into a per-pixel accumulation, tile by tile.
+// Samples are deterministic per (pixel, sample index, seed): any order of add_samples calls
+// that gives every pixel the same count yields bit-identical images.
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "hipr/scene.h"
+#include "image/image_io.h"
+
+namespace hipr {
+namespace vk {
+class Context;
+}
+
+struct RenderSettings {
+  uint32_t width = 256;
+  uint32_t height = 256;
+  uint32_t seed = 0;
+  uint32_t max_depth = 32;  // scattering events; 0 = emitters seen directly only
+  uint32_t tile_size = 16;
+};
+
+struct RenderCounters {
+  uint64_t rays = 0;
+  uint64_t samples = 0;
+  uint32_t non_finite_samples = 0;
+};
+
+struct GpuSceneInfo;
+
+class Renderer {
+ public:
+  Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  const RenderSettings& settings() const;
+  uint32_t tiles_x() const;
+  uint32_t tiles_y() const;
+  uint32_t tile_count() const;
+  const GpuSceneInfo& scene_info() const;
+
+  // Adds `samples_per_pixel` samples to every pixel of the listed tiles (ids = y * tiles_x + x)
+  // and waits for the GPU.
+  void add_samples(std::span<const uint32_t> tiles, uint32_t samples_per_pixel);
+  void add_samples_full_frame(uint32_t samples_per_pixel);
+
+  ImageRGB image() const;                     // per-pixel mean radiance
+  std::vector<uint32_t> sample_counts() const;  // per pixel
+  RenderCounters counters() const;
+  void reset();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m;
+};
+
+// A stride coprime to `count`, near count * 0.618, for the workgroup scatter mapping.
+uint32_t scatter_stride(uint32_t count);
+
+}  // namespace hipr

@@ -1,0 +1,114 @@
+#pragma once
+// The scene model: what a glTF file (plus command-line additions such as an environment map)
+// describes, in the form the renderer uploads. Units: meters, radiance in nits (cd/m^2).
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shaders/shared/abi.h"
+
+namespace hipr {
+
+struct MeshPrimitive {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;   // unit length, one per position
+  std::vector<glm::vec4> tangents;  // xyz unit, w = bitangent sign; one per position
+  std::vector<glm::vec2> uvs;       // TEXCOORD_0, one per position (zeros when absent)
+  std::vector<uint32_t> indices;    // triangle list
+  uint32_t material = 0;
+};
+
+struct Mesh {
+  std::string name;
+  std::vector<MeshPrimitive> primitives;
+};
+
+struct Node {
+  std::string name;
+  int parent = -1;
+  glm::mat4 local{1.0f};
+  int mesh = -1;
+  int camera = -1;
+  int light = -1;
+  bool visible = true;
+};
+
+// One drawn copy of a mesh: a node with a mesh, with its flattened world transform.
+struct Instance {
+  uint32_t node = 0;
+  uint32_t mesh = 0;
+  glm::mat4 world{1.0f};
+};
+
+struct Texture {
+  std::string name;
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> rgba8;  // row-major, top row first
+  uint32_t flags = 0;          // abi::kTexture*
+};
+
+struct Material {
+  std::string name;
+  abi::MaterialBlock params;
+};
+
+enum class LightType { Point, Spot, Directional };
+
+struct PunctualLight {
+  std::string name;
+  LightType type = LightType::Point;
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;  // candela (point/spot) or lux (directional), as in KHR_lights_punctual
+  float range = 0.0f;      // 0 = infinite
+  float inner_cone = 0.0f;
+  float outer_cone = 0.7853982f;
+};
+
+struct Camera {
+  std::string name;
+  glm::mat4 camera_to_world{1.0f};  // camera looks down its local -Z, +Y up
+  float yfov = 0.8f;                // vertical field of view, radians
+  float znear = 0.01f;
+};
+
+struct Environment {
+  std::filesystem::path path;
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<glm::vec3> texels;  // linear RGB, equirectangular, top row = +Y
+  float intensity = 1.0f;
+  float rotation = 0.0f;  // radians about +Y
+};
+
+// Default OpenPBR parameters (the spec's defaults), used for glTF's default material too.
+abi::MaterialBlock default_material_params();
+
+struct Scene {
+  std::filesystem::path source;
+  std::string content_hash;  // of every byte read to build the scene
+  std::vector<Node> nodes;
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<PunctualLight> lights;
+  std::vector<Camera> cameras;  // camera nodes reference these
+  std::optional<Environment> environment;
+  std::vector<std::string> extensions_used;
+
+  // Flattened node hierarchy (nodes with a mesh, visible, reachable from the default scene).
+  std::vector<Instance> instances() const;
+  glm::mat4 world_transform(uint32_t node) const;
+  // Camera node to render from: the first node with a camera, or -1.
+  int camera_node() const;
+  // World-space bounds of all instances (min, max); a unit box when empty.
+  std::pair<glm::vec3, glm::vec3> bounds() const;
+  std::vector<uint32_t> root_nodes;  // of the default scene
+  std::vector<std::vector<uint32_t>> children;  // per node
+};
+
+}  // namespace hipr

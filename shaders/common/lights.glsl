@@ -1,0 +1,104 @@
+// Light selection (CDF over all lights, proportional to estimated power) and next-event
+// sampling of emissive triangles, punctual lights and the environment.
+#ifndef HIPR_LIGHTS_GLSL
+#define HIPR_LIGHTS_GLSL
+
+struct LightSample {
+  vec3 direction;   // from the shading point toward the light, unit
+  float distance;   // to the sampled point; kFloatMax for lights at infinity
+  vec3 radiance;    // arriving radiance (or intensity / d^2 for delta lights)
+  float pdf;        // solid-angle pdf including the selection probability; 0 = no sample
+  bool isDelta;     // point/spot/directional: no MIS
+  vec3 lightNormal; // triangle: the sampled point's normal facing the shading point
+};
+
+float light_selection_pdf(uint index) { return b_light_cdf[index + 1u] - b_light_cdf[index]; }
+
+uint select_light(float u) {
+  uint lo = 0u, hi = u_frame.lightCount - 1u;
+  while (lo < hi) {
+    const uint mid = (lo + hi) >> 1u;
+    if (b_light_cdf[mid + 1u] > u) hi = mid;
+    else lo = mid + 1u;
+  }
+  return lo;
+}
+
+// glTF's recommended range falloff: smooth window to zero at `range`.
+float range_window(float distance, float range) {
+  if (range <= 0.0) return 1.0;
+  const float r = distance / range;
+  const float w = clamp(1.0 - r * r * r * r, 0.0, 1.0);
+  return w * w;
+}
+
+// Solid-angle pdf of reaching a point on triangle light `light` from `origin`.
+float triangle_light_pdf(Light light, float distance, float cosAtLight) {
+  if (cosAtLight <= 0.0 || light.area <= 0.0) return 0.0;
+  return distance * distance / (light.area * cosAtLight);
+}
+
+LightSample sample_light(vec3 position, vec4 u) {
+  LightSample s;
+  s.pdf = 0.0;
+  s.isDelta = false;
+  s.distance = kFloatMax;
+  s.radiance = vec3(0.0);
+  s.lightNormal = vec3(0.0);
+  if (u_frame.lightCount == 0u) return s;
+  const uint index = select_light(u.x);
+  const float selection = light_selection_pdf(index);
+  if (selection <= 0.0) return s;
+  const Light light = b_lights[index];
+
+  if (light.type == kLightTriangle) {
+    const vec2 b = sample_triangle(u.yz);
+    const vec3 p = light.position + b.x * light.edge1 + b.y * light.edge2;
+    vec3 n = cross(light.edge1, light.edge2);
+    if (dot(n, n) <= 0.0) return s;
+    n = normalize(n);
+    const vec3 toLight = p - position;
+    const float d2 = dot(toLight, toLight);
+    if (d2 <= 0.0) return s;
+    s.distance = sqrt(d2);
+    s.direction = toLight / s.distance;
+    float cosAtLight = -dot(n, s.direction);
+    const GeometryRecord g = b_geometries[light.geometryRecord];
+    const MaterialBlock m = b_materials[g.materialIndex];
+    const bool doubleSided = (m.flags & kMaterialDoubleSided) != 0u;
+    if (cosAtLight <= 0.0 && !doubleSided) return s;
+    s.lightNormal = cosAtLight < 0.0 ? -n : n;
+    cosAtLight = abs(cosAtLight);
+    const uvec3 v = triangle_vertices(g, light.primitive);
+    s.radiance = material_emission(m, interpolate_uv(v, b));
+    s.pdf = selection * triangle_light_pdf(light, s.distance, cosAtLight);
+  } else if (light.type == kLightEnvironment) {
+    float pdf;
+    s.direction = env_sample(u.yz, pdf);
+    s.radiance = env_radiance(s.direction);
+    s.pdf = selection * pdf;
+  } else if (light.type == kLightDirectional) {
+    s.direction = -light.direction;
+    s.radiance = light.intensity;
+    s.pdf = selection;
+    s.isDelta = true;
+  } else {  // point or spot
+    const vec3 toLight = light.position - position;
+    const float d2 = dot(toLight, toLight);
+    if (d2 <= 0.0) return s;
+    s.distance = sqrt(d2);
+    s.direction = toLight / s.distance;
+    float falloff = range_window(s.distance, light.range) / d2;
+    if (light.type == kLightSpot) {
+      const float cd = dot(light.direction, -s.direction);
+      const float t = clamp((cd - light.spotCosOuter) / max(light.spotCosInner - light.spotCosOuter, 1e-4), 0.0, 1.0);
+      falloff *= t * t;
+    }
+    s.radiance = light.intensity * falloff;
+    s.pdf = selection;
+    s.isDelta = true;
+  }
+  return s;
+}
+
+#endif

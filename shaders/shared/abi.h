@@ -1,0 +1,185 @@
+// Host/device ABI of the path tracer: struct layouts, binding slots and constants.
+// Compiles as C++ (through glm) and as GLSL; GLSL side uses `layout(scalar)` buffers, whose
+// packing equals C++'s natural packing of these float/uint members, so the two never drift.
+#ifndef HIPR_SHARED_ABI_H
+#define HIPR_SHARED_ABI_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace hipr::abi {
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using uint = uint32_t;
+using uint64_t = std::uint64_t;
+#define HIPR_CONST constexpr
+#else
+#define HIPR_CONST const
+#endif
+
+// ---- descriptor bindings (set 0) of the path-tracing kernels ----
+HIPR_CONST uint kBindingTlas = 0u;
+HIPR_CONST uint kBindingPositions = 1u;      // vec3 per vertex, object space
+HIPR_CONST uint kBindingNormals = 2u;        // vec3 per vertex
+HIPR_CONST uint kBindingTangents = 3u;       // vec4 per vertex (w = handedness)
+HIPR_CONST uint kBindingUvs = 4u;            // vec2 per vertex (TEXCOORD_0)
+HIPR_CONST uint kBindingIndices = 5u;        // uint, 3 per triangle, relative to the vertex offset
+HIPR_CONST uint kBindingGeometries = 6u;     // GeometryRecord per (instance, primitive)
+HIPR_CONST uint kBindingMaterials = 7u;      // MaterialBlock
+HIPR_CONST uint kBindingTextures = 8u;       // TextureInfo
+HIPR_CONST uint kBindingTexels = 9u;         // packed RGBA8 texels of all textures
+HIPR_CONST uint kBindingLights = 10u;        // Light
+HIPR_CONST uint kBindingLightCdf = 11u;      // float, lightCount + 1 entries
+HIPR_CONST uint kBindingEnvironment = 12u;   // vec4 texels + marginal/conditional CDFs (floats)
+HIPR_CONST uint kBindingTileList = 13u;      // uint tile ids, in the order to render them
+HIPR_CONST uint kBindingAccumulation = 14u;  // PixelAccum per pixel
+HIPR_CONST uint kBindingStats = 15u;         // RenderStats
+HIPR_CONST uint kBindingFrame = 16u;         // FrameParams (one)
+
+// ---- constants ----
+HIPR_CONST uint kWorkgroupSize = 64u;
+HIPR_CONST uint kInvalidIndex = 0xffffffffu;
+
+HIPR_CONST uint kLightTriangle = 0u;
+HIPR_CONST uint kLightPoint = 1u;
+HIPR_CONST uint kLightSpot = 2u;
+HIPR_CONST uint kLightDirectional = 3u;
+HIPR_CONST uint kLightEnvironment = 4u;
+
+HIPR_CONST uint kMaterialDoubleSided = 1u;
+HIPR_CONST uint kMaterialThinWalled = 2u;
+
+HIPR_CONST uint kTextureSrgb = 1u;        // texels are sRGB-encoded colour (decode to linear)
+HIPR_CONST uint kTextureNearest = 2u;     // nearest-texel lookup instead of bilinear
+HIPR_CONST uint kTextureClampU = 4u;
+HIPR_CONST uint kTextureClampV = 8u;
+HIPR_CONST uint kTextureMirrorU = 16u;
+HIPR_CONST uint kTextureMirrorV = 32u;
+
+// ---- structs ----
+
+// One entry per (instance, mesh primitive): TLAS instance custom index + geometry index.
+struct GeometryRecord {
+  uint materialIndex;
+  uint firstIndex;    // into the index buffer
+  uint vertexOffset;  // added to every index
+  uint lightOffset;   // first Light of this primitive's emissive triangles, or kInvalidIndex
+};
+
+// OpenPBR 1.1 surface parameters (names follow the spec). The foundation BSDF reads the base
+// diffuse and emission; the remaining parameters are carried for the full OpenPBR BSDF.
+struct MaterialBlock {
+  vec3 base_color;
+  float base_weight;
+  float base_metalness;
+  float base_diffuse_roughness;
+  float specular_weight;
+  float specular_roughness;
+  vec3 specular_color;
+  float specular_ior;
+  float specular_anisotropy;
+  float specular_rotation;
+  float transmission_weight;
+  float transmission_depth;
+  vec3 transmission_color;
+  float subsurface_weight;
+  vec3 subsurface_color;
+  float subsurface_radius;
+  float coat_weight;
+  float coat_roughness;
+  float coat_ior;
+  float coat_darkening;
+  vec3 coat_color;
+  float fuzz_weight;
+  vec3 fuzz_color;
+  float fuzz_roughness;
+  float thin_film_weight;
+  float thin_film_thickness;
+  float thin_film_ior;
+  float emission_luminance;
+  vec3 emission_color;
+  float geometry_opacity;
+  uint flags;  // kMaterial*
+  float normal_scale;
+  // Texture indices into the TextureInfo table, or kInvalidIndex.
+  uint base_color_texture;         // RGB: base_color, A: opacity
+  uint metallic_roughness_texture; // glTF packing: G roughness, B metalness
+  uint normal_texture;             // tangent-space normal map
+  uint emission_texture;           // RGB: emission_color multiplier
+};
+
+struct TextureInfo {
+  uint texelOffset;
+  uint width;
+  uint height;
+  uint flags;  // kTexture*
+};
+
+// Emissive triangles reference their geometry (so emission textures evaluate exactly as on a
+// hit); punctual lights use position/direction/intensity; the environment uses none of these.
+struct Light {
+  uint type;
+  uint geometryRecord;  // triangle: the GeometryRecord it belongs to
+  uint primitive;       // triangle: primitive index within that record
+  float area;           // triangle: world-space area
+  vec3 position;        // triangle: vertex 0; point/spot: position
+  float spotCosOuter;
+  vec3 edge1;           // triangle: v1 - v0
+  float spotCosInner;
+  vec3 edge2;           // triangle: v2 - v0
+  float range;          // point/spot: 0 = infinite
+  vec3 direction;       // spot/directional: direction the light travels
+  float padding;
+  vec3 intensity;       // point/spot: candela * colour; directional: lux * colour
+  float padding2;
+};
+
+struct PixelAccum {
+  vec3 sum;
+  uint count;
+};
+
+// Counters the kernels add to. 64-bit so long renders never wrap.
+struct RenderStats {
+  uint64_t rays;
+  uint64_t samples;
+  uint nonFiniteSamples;
+  uint padding;
+};
+
+struct FrameParams {
+  vec3 cameraPosition;
+  float tanHalfFovY;
+  vec3 cameraRight;  // unit vectors of the camera frame in world space
+  float aspect;      // width / height
+  vec3 cameraUp;
+  float sceneScale;  // bounding radius, for offsets and directional-light sampling
+  vec3 cameraForward;
+  uint seed;
+  uint width;
+  uint height;
+  uint tileSize;
+  uint tilesX;
+  uint maxDepth;
+  uint lightCount;         // entries in the Light table
+  uint environmentLight;   // index of the environment in the Light table, or kInvalidIndex
+  uint environmentWidth;
+  uint environmentHeight;
+  float environmentIntensity;
+  float environmentRotation;  // radians about +Y
+  uint padding;
+};
+
+// Per-dispatch parameters of trace_tiles.comp.
+struct TracePush {
+  uint tileCount;        // entries of the tile list to render
+  uint tileStride;       // coprime to the workgroup count: spreads tiles over CPU threads
+  uint samplesPerPixel;  // samples each pixel receives in this dispatch
+  uint groupsPerTile;    // workgroups needed to cover one tile
+};
+
+#ifdef __cplusplus
+}  // namespace hipr::abi
+#endif
+#endif

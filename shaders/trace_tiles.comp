@@ -1,0 +1,188 @@
+#version 460
+// Path-tracing megakernel over a list of tiles.
+// Reads:  scene buffers (geometry, materials, textures, lights, environment), the TLAS,
+//         the tile list (tile ids in render order) and FrameParams.
+// Writes: per-pixel accumulation (radiance sum + sample count) and the ray/sample counters.
+// One invocation owns one pixel for the whole dispatch and adds `samplesPerPixel` samples
+// whose indices continue the pixel's count, so results never depend on tile order.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_ray_query : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+
+layout(local_size_x = 64) in;  // == kWorkgroupSize
+
+#include "common/bindings.glsl"
+#include "common/rng.glsl"
+#include "common/sampling.glsl"
+#include "common/ray_offset.glsl"
+#include "common/textures.glsl"
+#include "common/surface.glsl"
+#include "common/environment.glsl"
+#include "common/lights.glsl"
+#include "bsdf/bsdf.glsl"
+
+layout(push_constant, scalar) uniform Push { TracePush u_push; };
+
+struct RayHit {
+  float t;
+  uint geometry;
+  uint primitive;
+  vec2 barycentrics;
+  mat4x3 objectToWorld;
+  mat4x3 worldToObject;
+};
+
+bool trace_closest(vec3 origin, vec3 direction, out RayHit hit) {
+  rayQueryEXT query;
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsOpaqueEXT, 0xff, origin, 0.0, direction, kFloatMax);
+  while (rayQueryProceedEXT(query)) {
+  }
+  if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return false;
+  hit.t = rayQueryGetIntersectionTEXT(query, true);
+  hit.geometry = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
+                 uint(rayQueryGetIntersectionGeometryIndexEXT(query, true));
+  hit.primitive = uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true));
+  hit.barycentrics = rayQueryGetIntersectionBarycentricsEXT(query, true);
+  hit.objectToWorld = rayQueryGetIntersectionObjectToWorldEXT(query, true);
+  hit.worldToObject = rayQueryGetIntersectionWorldToObjectEXT(query, true);
+  return true;
+}
+
+bool occluded(vec3 origin, vec3 direction, float tMax) {
+  rayQueryEXT query;
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT, 0xff, origin,
+                        0.0, direction, tMax);
+  while (rayQueryProceedEXT(query)) {
+  }
+  return rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
+}
+
+vec3 camera_ray_direction(uvec2 pixel, vec2 jitter) {
+  const vec2 ndc = (vec2(pixel) + jitter) / vec2(u_frame.width, u_frame.height) * 2.0 - 1.0;
+  const float x = ndc.x * u_frame.tanHalfFovY * u_frame.aspect;
+  const float y = -ndc.y * u_frame.tanHalfFovY;  // image rows go down, camera +Y goes up
+  return normalize(u_frame.cameraForward + x * u_frame.cameraRight + y * u_frame.cameraUp);
+}
+
+// MIS weight for radiance found by BSDF sampling on an emissive triangle.
+float emitter_hit_weight(SurfaceHit surface, float distance, vec3 direction, float bsdfPdf) {
+  const uint lightOffset = b_geometries[surface.geometry].lightOffset;
+  if (lightOffset == kInvalidIndex) return 1.0;  // not in the light table: BSDF sampling only
+  const uint index = lightOffset + surface.primitive;
+  const float cosAtLight = abs(dot(surface.geometricNormal, direction));
+  const float lightPdf = light_selection_pdf(index) * triangle_light_pdf(b_lights[index], distance, cosAtLight);
+  return power_heuristic(bsdfPdf, lightPdf);
+}
+
+vec3 direct_light(SurfaceHit surface, BsdfParams params, BsdfFrame frame, vec3 wo, vec4 u, inout uint rays) {
+  const LightSample ls = sample_light(surface.position, u);
+  if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
+  const vec3 f = bsdf_eval(params, frame, wo, ls.direction);
+  if (max3(f) <= 0.0) return vec3(0.0);
+  const vec3 origin = offset_ray_origin(surface.position, frame.geometricNormal);
+  vec3 direction = ls.direction;
+  float tMax = kFloatMax;
+  if (ls.distance < kFloatMax) {
+    // Aim at the light point lifted off its own surface, so the light never shadows itself.
+    vec3 target = surface.position + ls.direction * ls.distance;
+    if (!ls.isDelta) target = offset_ray_origin(target, ls.lightNormal);
+    const vec3 toTarget = target - origin;
+    tMax = length(toTarget);
+    if (tMax <= 0.0) return vec3(0.0);
+    direction = toTarget / tMax;
+    tMax *= 0.99999;
+  }
+  rays += 1u;
+  if (occluded(origin, direction, tMax)) return vec3(0.0);
+  const float weight = ls.isDelta ? 1.0 : power_heuristic(ls.pdf, bsdf_pdf(params, frame, wo, ls.direction));
+  return f * ls.radiance * (weight / ls.pdf);
+}
+
+vec3 trace_path(uvec2 pixel, uint sampleIndex, inout uint rays) {
+  const PathRng rng = PathRng(pixel.y * u_frame.width + pixel.x, sampleIndex, u_frame.seed);
+  vec3 origin = u_frame.cameraPosition;
+  vec3 direction = camera_ray_direction(pixel, rng_uniform4(rng, 0u, 2u).xy);
+  vec3 radiance = vec3(0.0);
+  vec3 throughput = vec3(1.0);
+  float previousPdf = 0.0;
+  bool previousDelta = true;  // the camera ray counts as a delta "bounce": no MIS
+
+  for (uint depth = 0u;; ++depth) {
+    RayHit hit;
+    rays += 1u;
+    if (!trace_closest(origin, direction, hit)) {
+      if (u_frame.environmentLight != kInvalidIndex) {
+        float weight = 1.0;
+        if (!previousDelta)
+          weight = power_heuristic(previousPdf, light_selection_pdf(u_frame.environmentLight) * env_pdf(direction));
+        radiance += throughput * env_radiance(direction) * weight;
+      }
+      break;
+    }
+    const SurfaceHit surface = make_surface_hit(hit.geometry, hit.primitive, hit.barycentrics, hit.objectToWorld,
+                                                hit.worldToObject, direction);
+    const ShadingParams shading = shading_params(surface);
+    if (max3(shading.emission) > 0.0) {
+      const float weight = previousDelta ? 1.0 : emitter_hit_weight(surface, hit.t, direction, previousPdf);
+      radiance += throughput * shading.emission * weight;
+    }
+    if (depth >= u_frame.maxDepth) break;
+
+    const BsdfParams params = BsdfParams(shading.baseColor, shading.baseWeight);
+    const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal);
+    const vec3 wo = -direction;
+    if (u_frame.lightCount > 0u)
+      radiance += throughput * direct_light(surface, params, frame, wo, rng_uniform4(rng, depth, 1u), rays);
+
+    const vec4 u = rng_uniform4(rng, depth, 0u);
+    const BsdfSample bs = bsdf_sample(params, frame, wo, u.xyz);
+    if (bs.pdf <= 0.0) break;
+    throughput *= bs.weight;
+    previousPdf = bs.pdf;
+    previousDelta = bs.lobe == kLobeSpecular;
+
+    // Russian roulette after a few bounces; unbiased because survivors are reweighted.
+    if (depth >= 3u) {
+      const float survive = min(max3(throughput), 0.95);
+      if (u.w >= survive) break;
+      throughput /= survive;
+    }
+    if (max3(throughput) <= 0.0) break;
+    origin = offset_ray_origin(surface.position, surface.geometricNormal);
+    direction = bs.direction;
+  }
+  return radiance;
+}
+
+void main() {
+  const uint totalGroups = u_push.tileCount * u_push.groupsPerTile;
+  // llvmpipe hands each thread a contiguous range of workgroups: scatter them over the tiles
+  // so every thread gets a share of the expensive ones.
+  const uint group = uint((uint64_t(gl_WorkGroupID.x) * uint64_t(u_push.tileStride)) % uint64_t(totalGroups));
+  const uint listIndex = group / u_push.groupsPerTile;
+  const uint local = (group % u_push.groupsPerTile) * 64u + gl_LocalInvocationIndex;
+  const uint tileSize = u_frame.tileSize;
+  if (local >= tileSize * tileSize) return;
+  const uint tile = b_tiles[listIndex];
+  const uvec2 pixel = uvec2((tile % u_frame.tilesX) * tileSize + local % tileSize,
+                            (tile / u_frame.tilesX) * tileSize + local / tileSize);
+  if (pixel.x >= u_frame.width || pixel.y >= u_frame.height) return;
+
+  const uint pixelIndex = pixel.y * u_frame.width + pixel.x;
+  PixelAccum accum = b_accum[pixelIndex];
+  uint rays = 0u;
+  uint nonFinite = 0u;
+  for (uint s = 0u; s < u_push.samplesPerPixel; ++s) {
+    const vec3 value = trace_path(pixel, accum.count + s, rays);
+    if (any(isnan(value)) || any(isinf(value))) nonFinite += 1u;  // dropped, and counted
+    else accum.sum += value;
+  }
+  accum.count += u_push.samplesPerPixel;
+  b_accum[pixelIndex] = accum;
+
+  atomicAdd(b_stats.rays, uint64_t(rays));
+  atomicAdd(b_stats.samples, uint64_t(u_push.samplesPerPixel));
+  if (nonFinite > 0u) atomicAdd(b_stats.nonFiniteSamples, nonFinite);
+}

@@ -1,0 +1,54 @@
+#include "app/cli_common.h"
+
+#include <cstdlib>
+
+#include "core/error.h"
+
+namespace hipr::app {
+
+void add_common_options(CLI::App& app, CommonOptions& o) {
+  app.add_option("--width", o.render.width, "Image width in pixels")->capture_default_str();
+  app.add_option("--height", o.render.height, "Image height in pixels")->capture_default_str();
+  app.add_option("--spp", o.spp, "Samples per pixel to converge to")->capture_default_str();
+  app.add_option("--seed", o.render.seed, "Random seed")->capture_default_str();
+  app.add_option("--max-depth", o.render.max_depth, "Maximum number of bounces (0 = emitters only)")
+      ->capture_default_str();
+  app.add_option("--tile", o.render.tile_size, "Tile size n (tiles are n x n pixels)")->capture_default_str();
+  app.add_option("--env", o.load.environment, "Equirectangular environment map (.hdr or .exr)");
+  app.add_option("--env-intensity", o.load.environment_intensity, "Environment radiance multiplier")
+      ->capture_default_str();
+  app.add_option("--env-rotation", o.load.environment_rotation_degrees, "Environment rotation about +Y, degrees")
+      ->capture_default_str();
+  app.add_flag("--validate", o.validate, "Enable Vulkan validation layers; any validation error fails the run");
+  app.add_option("--device", o.device, "Use the Vulkan device whose name contains this text");
+  app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors and warnings");
+}
+
+void validate_common_options(const CommonOptions& o) {
+  const auto require = [](bool ok, const std::string& message) {
+    if (!ok) throw InputError(message);
+  };
+  require(o.render.width >= 1 && o.render.width <= 16384, "--width must be between 1 and 16384");
+  require(o.render.height >= 1 && o.render.height <= 16384, "--height must be between 1 and 16384");
+  require(o.spp >= 1 && o.spp <= (1u << 24), "--spp must be between 1 and 16777216");
+  require(o.render.max_depth <= 1024, "--max-depth must be at most 1024");
+  require(o.render.tile_size >= 1 && o.render.tile_size <= 256, "--tile must be between 1 and 256");
+  require(std::isfinite(o.load.environment_intensity) && o.load.environment_intensity >= 0.0f,
+          "--env-intensity must be a finite non-negative number");
+  require(std::isfinite(o.load.environment_rotation_degrees), "--env-rotation must be finite");
+}
+
+vk::ContextOptions context_options(const CommonOptions& o) {
+  vk::ContextOptions ctx;
+  const char* env = std::getenv("HIPR_VALIDATION");
+  ctx.validation = o.validate || (env && std::string(env) == "1");
+  ctx.preferred_device = o.device;
+  return ctx;
+}
+
+void check_validation(const vk::Context& ctx) {
+  if (ctx.validation_errors() > 0)
+    throw InternalError("Vulkan validation reported " + std::to_string(ctx.validation_errors()) + " error(s)");
+}
+
+}  // namespace hipr::app

@@ -1,0 +1,96 @@
+// `hipr info SCENE`: what the scene contains and which renderer features it uses.
+#include <cstdio>
+#include <set>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "core/error.h"
+#include "core/log.h"
+
+namespace hipr::app {
+namespace {
+
+struct InfoOptions {
+  std::filesystem::path scene;
+  SceneLoadOptions load;
+};
+
+const char* light_type_name(LightType type) {
+  switch (type) {
+    case LightType::Point: return "point";
+    case LightType::Spot: return "spot";
+    case LightType::Directional: return "directional";
+  }
+  return "?";
+}
+
+int run_info(const InfoOptions& o) {
+  const Scene scene = load_scene(o.scene, o.load);
+  const std::vector<Instance> instances = scene.instances();
+
+  size_t unique_triangles = 0, scene_triangles = 0, emissive_triangles = 0;
+  for (const Mesh& mesh : scene.meshes)
+    for (const MeshPrimitive& p : mesh.primitives) unique_triangles += p.indices.size() / 3;
+  std::set<uint32_t> used_materials;
+  for (const Instance& instance : instances) {
+    for (const MeshPrimitive& p : scene.meshes[instance.mesh].primitives) {
+      scene_triangles += p.indices.size() / 3;
+      used_materials.insert(p.material);
+      const abi::MaterialBlock& m = scene.materials[p.material].params;
+      if (m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f))))
+        emissive_triangles += p.indices.size() / 3;
+    }
+  }
+  size_t punctual = 0;
+  for (const Node& node : scene.nodes) punctual += node.light >= 0 ? 1 : 0;
+
+  std::printf("scene      %s\n", o.scene.string().c_str());
+  std::printf("hash       %s\n", scene.content_hash.c_str());
+  std::printf("nodes      %zu (%zu mesh instances)\n", scene.nodes.size(), instances.size());
+  std::printf("meshes     %zu\n", scene.meshes.size());
+  std::printf("triangles  %zu in the scene, %zu unique\n", scene_triangles, unique_triangles);
+  std::printf("materials  %zu (%zu used)\n", scene.materials.size() - 1, used_materials.size());
+  for (uint32_t index : used_materials) {
+    const Material& m = scene.materials[index];
+    std::printf("  %-24s base_color %.3g %.3g %.3g  metalness %.3g  roughness %.3g%s%s\n", m.name.c_str(),
+                m.params.base_color.x, m.params.base_color.y, m.params.base_color.z, m.params.base_metalness,
+                m.params.specular_roughness, m.params.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.params.emission_color, glm::vec3(0))) ? "  emissive" : "",
+                (m.params.flags & abi::kMaterialDoubleSided) ? "  double-sided" : "");
+  }
+  std::printf("textures   %zu\n", scene.textures.size());
+  std::printf("lights     %zu punctual, %zu emissive triangles%s\n", punctual, emissive_triangles,
+              scene.environment ? ", environment map" : "");
+  for (const Node& node : scene.nodes)
+    if (node.light >= 0) {
+      const PunctualLight& l = scene.lights[size_t(node.light)];
+      std::printf("  %-24s %s, intensity %g\n", node.name.c_str(), light_type_name(l.type), l.intensity);
+    }
+  const int camera = scene.camera_node();
+  std::printf("camera     %s\n", camera >= 0 ? scene.nodes[size_t(camera)].name.c_str() : "none (a default camera frames the scene)");
+  std::string extensions;
+  for (const std::string& e : scene.extensions_used) extensions += (extensions.empty() ? "" : ", ") + e;
+  std::printf("extensions %s\n", extensions.empty() ? "none" : extensions.c_str());
+
+  // What the path tracer has nothing to do for in this scene.
+  std::string skipped;
+  const auto skip = [&](bool condition, const char* what) {
+    if (condition) skipped += std::string(skipped.empty() ? "" : ", ") + what;
+  };
+  skip(emissive_triangles == 0 && punctual == 0 && !scene.environment, "next-event estimation (no lights)");
+  skip(scene.textures.empty(), "texture sampling");
+  skip(!scene.environment, "environment lookups");
+  std::printf("skipped    %s\n", skipped.empty() ? "nothing" : skipped.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_info_command(CLI::App& app) {
+  auto options = std::make_shared<InfoOptions>();
+  CLI::App* cmd = app.add_subcommand("info", "Print what a scene contains and what the renderer will use");
+  cmd->add_option("scene", options->scene, "Scene file (.gltf or .glb)")->required();
+  cmd->add_option("--env", options->load.environment, "Equirectangular environment map (.hdr or .exr)");
+  return {cmd, [options] { return run_info(*options); }};
+}
+
+}  // namespace hipr::app

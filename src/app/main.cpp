@@ -1,0 +1,40 @@
+// hipr: entry point. Every error ends here as one line on stderr and an exit code:
+// 0 ok, 2 bad input (file, flag, scene), 1 internal.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+#include "app/commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"hipr: a Vulkan path tracer that re-renders first what a scene edit changes"};
+  app.require_subcommand(1);
+  const hipr::app::Command commands[] = {
+      hipr::app::add_render_command(app),
+      hipr::app::add_info_command(app),
+  };
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "hipr: error: %s (see hipr --help)\n", e.what());
+    return hipr::kExitBadInput;
+  }
+
+  try {
+    for (const hipr::app::Command& command : commands)
+      if (command.subcommand->parsed()) return command.run();
+    return hipr::kExitBadInput;
+  } catch (const hipr::InputError& e) {
+    std::fprintf(stderr, "hipr: error: %s\n", e.what());
+    return hipr::kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hipr: internal error: %s\n", e.what());
+    return hipr::kExitInternal;
+  }
+}

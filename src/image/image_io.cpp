@@ -1,0 +1,73 @@
+#include "image/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "core/file_util.h"
+#include "image/tonemap.h"
+
+namespace hipr {
+namespace fs = std::filesystem;
+namespace {
+
+std::string lower_extension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+bool is_supported_output(const fs::path& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".exr" || ext == ".png";
+}
+
+void write_image(const fs::path& path, const ImageRGB& image, const ImageMetadata& metadata, float exposure_ev) {
+  const std::string ext = lower_extension(path);
+  if (!is_supported_output(path)) throw InputError("unsupported output format '" + ext + "' (use .exr or .png)");
+  const bool exr = ext == ".exr";
+  write_atomically(path, [&](const fs::path& temp) {
+    auto out = OIIO::ImageOutput::create(exr ? "openexr" : "png");
+    if (!out) throw InternalError("OpenImageIO has no " + ext + " writer");
+    OIIO::ImageSpec spec(int(image.width), int(image.height), 3, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    for (const auto& [key, value] : metadata) spec.attribute(key, value);
+    if (exr) spec.attribute("compression", "zip");
+    if (!out->open(temp.string(), spec)) throw InputError("cannot write " + path.string() + ": " + out->geterror());
+    bool ok;
+    if (exr) {
+      ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
+    } else {
+      const std::vector<uint8_t> srgb = tonemap_srgb8(image.rgb, exposure_ev);
+      ok = out->write_image(OIIO::TypeDesc::UINT8, srgb.data());
+    }
+    if (!out->close() || !ok) throw InputError("cannot write " + path.string() + ": " + out->geterror());
+  });
+}
+
+ImageRGB read_image(const fs::path& path) {
+  auto input = OIIO::ImageInput::open(path.string());
+  if (!input) throw InputError("cannot read image " + path.string() + ": " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = input->spec();
+  ImageRGB image;
+  image.width = uint32_t(spec.width);
+  image.height = uint32_t(spec.height);
+  std::vector<float> pixels(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
+  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+    throw InputError("cannot decode image " + path.string());
+  image.rgb.resize(size_t(spec.width) * size_t(spec.height) * 3);
+  for (size_t i = 0; i < size_t(spec.width) * size_t(spec.height); ++i)
+    for (size_t c = 0; c < 3; ++c)
+      image.rgb[i * 3 + c] = pixels[i * size_t(spec.nchannels) + std::min<size_t>(c, size_t(spec.nchannels) - 1)];
+  return image;
+}
+
+std::string read_image_attribute(const fs::path& path, const std::string& name) {
+  auto input = OIIO::ImageInput::open(path.string());
+  if (!input) return "";
+  return input->spec().get_string_attribute(name);
+}
+
+}  // namespace hipr

@@ -1,0 +1,28 @@
+#pragma once
+// Image files through OpenImageIO. EXR keeps linear float radiance; PNG gets the tone-mapped
+// sRGB image. Writes are atomic: a file appears whole or not at all.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hipr {
+
+struct ImageRGB {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<float> rgb;  // linear, row-major, top row first
+};
+
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+
+// Throws InputError for an unsupported extension (only .exr and .png) or a failed write.
+void write_image(const std::filesystem::path& path, const ImageRGB& image, const ImageMetadata& metadata = {},
+                 float exposure_ev = 0.0f);
+ImageRGB read_image(const std::filesystem::path& path);
+// Reads one metadata attribute as text ("" when absent).
+std::string read_image_attribute(const std::filesystem::path& path, const std::string& name);
+
+bool is_supported_output(const std::filesystem::path& path);
+
+}  // namespace hipr

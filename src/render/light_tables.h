@@ -1,0 +1,27 @@
+#pragma once
+// The light table the kernels sample from: every emissive triangle (world space), punctual
+// light and the environment, with a CDF proportional to each light's estimated power.
+#include <vector>
+
+#include "hipr/scene.h"
+
+namespace hipr {
+
+struct LightTables {
+  std::vector<abi::Light> lights;
+  std::vector<float> cdf;                 // lights.size() + 1 entries, cdf[0] = 0, last = 1
+  std::vector<uint32_t> record_light_offset;  // per GeometryRecord: first Light, or kInvalidIndex
+  uint32_t environment_index = abi::kInvalidIndex;
+  double emissive_triangle_count = 0;
+};
+
+// `record_base[i]` is the first GeometryRecord of instances[i]; records follow the mesh's
+// primitive order. `scene_radius` sizes the power estimate of lights at infinity.
+LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& instances,
+                               const std::vector<uint32_t>& record_base, uint32_t record_count,
+                               float scene_radius);
+
+// Mean luminance of the environment's texels weighted by solid angle.
+float environment_mean_luminance(const Environment& env);
+
+}  // namespace hipr

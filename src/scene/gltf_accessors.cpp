@@ -1,0 +1,158 @@
+#include "scene/gltf_accessors.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "core/error.h"
+
+namespace hipr::gltf {
+namespace {
+
+int component_size(int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+int component_count(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+    case TINYGLTF_TYPE_MAT2: return 4;
+    case TINYGLTF_TYPE_MAT3: return 9;
+    case TINYGLTF_TYPE_MAT4: return 16;
+    default: return 0;
+  }
+}
+
+// Where the accessor's elements live, after checking every element fits in its buffer.
+struct ElementLayout {
+  const unsigned char* base = nullptr;  // null: no bufferView, all zeros
+  size_t stride = 0;
+  size_t count = 0;
+  int components = 0;
+  int component_type = 0;
+  bool normalized = false;
+};
+
+ElementLayout layout_of(const tinygltf::Model& model, int index, const std::string& what) {
+  const auto fail = [&](const std::string& why) { throw InputError(what + ": " + why); };
+  if (index < 0 || size_t(index) >= model.accessors.size())
+    fail("accessor " + std::to_string(index) + " does not exist");
+  const tinygltf::Accessor& accessor = model.accessors[size_t(index)];
+  if (accessor.sparse.isSparse) fail("sparse accessor " + std::to_string(index) + " is not supported");
+  ElementLayout layout;
+  layout.count = accessor.count;
+  layout.components = component_count(accessor.type);
+  layout.component_type = accessor.componentType;
+  layout.normalized = accessor.normalized;
+  const int size = component_size(accessor.componentType);
+  if (!layout.components || !size) fail("accessor " + std::to_string(index) + " has an invalid type");
+  const size_t element_size = size_t(size) * size_t(layout.components);
+  if (accessor.bufferView < 0) return layout;  // all zeros, per the glTF spec
+
+  if (size_t(accessor.bufferView) >= model.bufferViews.size())
+    fail("accessor " + std::to_string(index) + " references missing bufferView " + std::to_string(accessor.bufferView));
+  const tinygltf::BufferView& view = model.bufferViews[size_t(accessor.bufferView)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
+    fail("bufferView " + std::to_string(accessor.bufferView) + " references a missing buffer");
+  const tinygltf::Buffer& buffer = model.buffers[size_t(view.buffer)];
+  if (view.byteOffset > buffer.data.size() || view.byteLength > buffer.data.size() - view.byteOffset)
+    fail("bufferView " + std::to_string(accessor.bufferView) + " runs past the end of its buffer");
+  layout.stride = view.byteStride ? view.byteStride : element_size;
+  if (layout.stride < element_size) fail("bufferView stride is smaller than an element");
+  if (layout.count > 0) {
+    const size_t needed = accessor.byteOffset + layout.stride * (layout.count - 1) + element_size;
+    if (layout.count > (size_t(1) << 32) || needed > view.byteLength)
+      fail("accessor " + std::to_string(index) + " runs past the end of its bufferView");
+  }
+  layout.base = buffer.data.data() + view.byteOffset + accessor.byteOffset;
+  return layout;
+}
+
+float read_component(const unsigned char* p, int type, bool normalized) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0f : float(*p);
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+      const float v = float(int8_t(*p));
+      return normalized ? std::max(v / 127.0f, -1.0f) : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return normalized ? v / 65535.0f : float(v); }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      int16_t v; std::memcpy(&v, p, 2);
+      return normalized ? std::max(v / 32767.0f, -1.0f) : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return float(v); }
+    default: return 0.0f;
+  }
+}
+
+}  // namespace
+
+std::vector<float> read_floats(const tinygltf::Model& model, int accessor, int components, const std::string& what) {
+  const ElementLayout layout = layout_of(model, accessor, what);
+  if (layout.components != components)
+    throw InputError(what + ": accessor " + std::to_string(accessor) + " has " +
+                     std::to_string(layout.components) + " components, expected " + std::to_string(components));
+  std::vector<float> values(layout.count * size_t(components), 0.0f);
+  if (!layout.base) return values;
+  const size_t component_bytes = size_t(component_size(layout.component_type));
+  for (size_t i = 0; i < layout.count; ++i) {
+    const unsigned char* element = layout.base + i * layout.stride;
+    for (int c = 0; c < components; ++c) {
+      const float v = read_component(element + size_t(c) * component_bytes, layout.component_type, layout.normalized);
+      if (!std::isfinite(v)) throw InputError(what + ": accessor " + std::to_string(accessor) + " holds a non-finite value");
+      values[i * size_t(components) + size_t(c)] = v;
+    }
+  }
+  return values;
+}
+
+std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor, const std::string& what) {
+  const ElementLayout layout = layout_of(model, accessor, what);
+  if (layout.components != 1) throw InputError(what + ": index accessor is not SCALAR");
+  const int type = layout.component_type;
+  if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    throw InputError(what + ": index accessor has a non-integer type");
+  std::vector<uint32_t> indices(layout.count, 0);
+  if (!layout.base) return indices;
+  for (size_t i = 0; i < layout.count; ++i) {
+    const unsigned char* p = layout.base + i * layout.stride;
+    uint32_t v = 0;
+    if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) v = *p;
+    else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) { uint16_t s; std::memcpy(&s, p, 2); v = s; }
+    else std::memcpy(&v, p, 4);
+    indices[i] = v;
+  }
+  return indices;
+}
+
+std::vector<glm::vec2> to_vec2(const std::vector<float>& v) {
+  std::vector<glm::vec2> out(v.size() / 2);
+  for (size_t i = 0; i < out.size(); ++i) out[i] = {v[2 * i], v[2 * i + 1]};
+  return out;
+}
+
+std::vector<glm::vec3> to_vec3(const std::vector<float>& v) {
+  std::vector<glm::vec3> out(v.size() / 3);
+  for (size_t i = 0; i < out.size(); ++i) out[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+  return out;
+}
+
+std::vector<glm::vec4> to_vec4(const std::vector<float>& v) {
+  std::vector<glm::vec4> out(v.size() / 4);
+  for (size_t i = 0; i < out.size(); ++i) out[i] = {v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]};
+  return out;
+}
+
+}  // namespace hipr::gltf

@@ -1,0 +1,23 @@
+#pragma once
+// Bounds-checked reads of glTF accessors. Every offset, stride and count is validated against
+// the buffer before a byte is read, so a hostile file cannot cause an out-of-bounds access.
+#include <tiny_gltf.h>
+
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace hipr::gltf {
+
+// Reads a float vector accessor (VEC2/VEC3/VEC4 or SCALAR), converting normalized integers.
+// `components` is what the caller wants; the accessor must have exactly that many.
+std::vector<float> read_floats(const tinygltf::Model& model, int accessor, int components,
+                               const std::string& what);
+
+std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor, const std::string& what);
+
+std::vector<glm::vec2> to_vec2(const std::vector<float>& values);
+std::vector<glm::vec3> to_vec3(const std::vector<float>& values);
+std::vector<glm::vec4> to_vec4(const std::vector<float>& values);
+
+}  // namespace hipr::gltf

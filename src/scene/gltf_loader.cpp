@@ -1,0 +1,358 @@
+// glTF 2.0 -> Scene. Order of defence: container and JSON checks first (our code), then
+// tinygltf parses with sandboxed file access, then every index and accessor is validated as it
+// is converted. Anything wrong with the input is an InputError naming the object at fault.
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/error.h"
+#include "core/file_util.h"
+#include "core/log.h"
+#include "hipr/scene_loader.h"
+#include "image/environment_loader.h"
+#include "scene/default_camera.h"
+#include "scene/glb_container.h"
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_materials.h"
+#include "scene/gltf_sandbox.h"
+#include "scene/mesh_processing.h"
+
+namespace hipr {
+namespace fs = std::filesystem;
+
+const std::vector<std::string>& supported_gltf_extensions() {
+  static const std::vector<std::string> list = {
+      "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_specular",
+      "KHR_materials_ior",
+  };
+  return list;
+}
+
+namespace {
+
+// The JSON chunk of a .glb, or the whole .gltf file.
+std::string json_text(const std::vector<unsigned char>& bytes, bool glb) {
+  if (!glb) return std::string(bytes.begin(), bytes.end());
+  uint32_t length;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return std::string(bytes.begin() + 20, bytes.begin() + 20 + std::ptrdiff_t(length));
+}
+
+// Checks made on the raw JSON before tinygltf sees it.
+void precheck_json(const std::string& text, const std::string& name) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    std::string why = e.what();
+    if (const size_t at = why.find("] "); at != std::string::npos) why = why.substr(at + 2);
+    throw InputError(name + ": invalid JSON: " + why);
+  }
+  if (!doc.is_object()) throw InputError(name + ": invalid glTF: top level is not a JSON object");
+  if (!doc.contains("asset") || !doc["asset"].is_object() || !doc["asset"].contains("version") ||
+      !doc["asset"]["version"].is_string())
+    throw InputError(name + ": invalid glTF: required 'asset.version' is missing");
+  const std::string version = doc["asset"]["version"];
+  if (version.rfind("2.", 0) != 0)
+    throw InputError(name + ": unsupported glTF version " + version + " (only 2.x is supported)");
+  if (doc.contains("extensionsRequired") && doc["extensionsRequired"].is_array()) {
+    for (const auto& ext : doc["extensionsRequired"]) {
+      if (!ext.is_string()) continue;
+      const auto& supported = supported_gltf_extensions();
+      if (std::find(supported.begin(), supported.end(), ext.get<std::string>()) == supported.end())
+        throw InputError(name + ": requires unsupported glTF extension " + ext.get<std::string>());
+    }
+  }
+  for (const char* kind : {"buffers", "images"}) {
+    if (!doc.contains(kind) || !doc[kind].is_array()) continue;
+    for (size_t i = 0; i < doc[kind].size(); ++i) {
+      const auto& item = doc[kind][i];
+      if (item.is_object() && item.contains("uri") && item["uri"].is_string())
+        gltf::check_uri(item["uri"], name + ": " + std::string(kind).substr(0, std::strlen(kind) - 1) + " " + std::to_string(i));
+    }
+  }
+}
+
+// Decodes images with stb, but a broken image becomes a warning and a fallback texture, not a
+// failed load.
+bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
+                          int width, int height, const unsigned char* bytes, int size, void* user) {
+  std::string local_err;
+  if (tinygltf::LoadImageData(image, index, &local_err, warn, width, height, bytes, size, user)) return true;
+  if (warn) *warn += "image " + std::to_string(index) + " could not be decoded: " + local_err;
+  image->image.clear();
+  (void)err;
+  return true;
+}
+
+glm::mat4 node_transform(const tinygltf::Node& node, const std::string& what) {
+  glm::mat4 m(1.0f);
+  if (node.matrix.size() == 16) {
+    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(node.matrix[size_t(i)]);
+  } else {
+    glm::vec3 t(0.0f), s(1.0f);
+    glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
+    if (node.translation.size() == 3) t = {node.translation[0], node.translation[1], node.translation[2]};
+    if (node.scale.size() == 3) s = {node.scale[0], node.scale[1], node.scale[2]};
+    if (node.rotation.size() == 4)
+      r = glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2]));
+    const float len = glm::length(r);
+    if (std::isfinite(len) && len > 0.0f) r /= len;
+    m = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+  }
+  for (int i = 0; i < 16; ++i)
+    if (!std::isfinite(glm::value_ptr(m)[i])) throw InputError(what + " has a non-finite transform");
+  return m;
+}
+
+class Converter {
+ public:
+  Converter(const tinygltf::Model& model, Scene& scene, const std::string& name)
+      : m_model(model), m_scene(scene), m_name(name), m_textures(model, scene) {}
+
+  void run() {
+    convert_materials();
+    convert_meshes();
+    convert_cameras();
+    convert_lights();
+    convert_nodes();
+    for (const std::string& ext : m_model.extensionsUsed) m_scene.extensions_used.push_back(ext);
+  }
+
+ private:
+  std::string object(const char* kind, size_t index, const std::string& label) const {
+    return m_name + ": " + kind + " " + std::to_string(index) + (label.empty() ? "" : " ('" + label + "')");
+  }
+
+  void convert_materials() {
+    for (size_t i = 0; i < m_model.materials.size(); ++i)
+      m_scene.materials.push_back(gltf::convert_material(m_model.materials[i], i, m_textures));
+    // glTF's default material, for primitives without one: white-ish, fully rough dielectric.
+    Material fallback;
+    fallback.name = "default";
+    fallback.params = default_material_params();
+    fallback.params.base_color = glm::vec3(1.0f);
+    fallback.params.specular_roughness = 1.0f;
+    m_default_material = uint32_t(m_scene.materials.size());
+    m_scene.materials.push_back(fallback);
+  }
+
+  void convert_meshes() {
+    for (size_t mi = 0; mi < m_model.meshes.size(); ++mi) {
+      const tinygltf::Mesh& source = m_model.meshes[mi];
+      Mesh mesh;
+      mesh.name = source.name.empty() ? "mesh " + std::to_string(mi) : source.name;
+      for (size_t pi = 0; pi < source.primitives.size(); ++pi) {
+        const std::string what = object("mesh", mi, source.name) + " primitive " + std::to_string(pi);
+        if (auto primitive = convert_primitive(source.primitives[pi], what)) mesh.primitives.push_back(std::move(*primitive));
+      }
+      m_scene.meshes.push_back(std::move(mesh));
+    }
+  }
+
+  std::optional<MeshPrimitive> convert_primitive(const tinygltf::Primitive& source, const std::string& what) {
+    const int mode = source.mode < 0 ? TINYGLTF_MODE_TRIANGLES : source.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      log::warn(what + " draws points or lines; skipped");
+      return std::nullopt;
+    }
+    const auto attribute = [&](const char* name) {
+      const auto it = source.attributes.find(name);
+      return it == source.attributes.end() ? -1 : it->second;
+    };
+    if (attribute("POSITION") < 0) {
+      log::warn(what + " has no POSITION attribute; skipped");
+      return std::nullopt;
+    }
+    if (source.material >= int(m_model.materials.size()))
+      throw InputError(what + " references missing material " + std::to_string(source.material));
+
+    MeshPrimitive p;
+    p.material = source.material < 0 ? m_default_material : uint32_t(source.material);
+    p.positions = gltf::to_vec3(gltf::read_floats(m_model, attribute("POSITION"), 3, what + " POSITION"));
+    if (attribute("NORMAL") >= 0) p.normals = gltf::to_vec3(gltf::read_floats(m_model, attribute("NORMAL"), 3, what + " NORMAL"));
+    if (attribute("TANGENT") >= 0) p.tangents = gltf::to_vec4(gltf::read_floats(m_model, attribute("TANGENT"), 4, what + " TANGENT"));
+    if (attribute("TEXCOORD_0") >= 0) p.uvs = gltf::to_vec2(gltf::read_floats(m_model, attribute("TEXCOORD_0"), 2, what + " TEXCOORD_0"));
+    if (source.indices >= 0) {
+      p.indices = gltf::read_indices(m_model, source.indices, what + " indices");
+    } else {
+      p.indices.resize(p.positions.size());
+      for (size_t i = 0; i < p.indices.size(); ++i) p.indices[i] = uint32_t(i);
+    }
+    if (mode != TINYGLTF_MODE_TRIANGLES) p.indices = triangulate(p.indices, mode);
+    complete_primitive(p, what);
+    return p;
+  }
+
+  void convert_cameras() {
+    for (size_t i = 0; i < m_model.cameras.size(); ++i) {
+      const tinygltf::Camera& source = m_model.cameras[i];
+      Camera camera;
+      camera.name = source.name;
+      if (source.type == "perspective") {
+        const double yfov = source.perspective.yfov;
+        if (!std::isfinite(yfov) || yfov <= 0.0 || yfov >= 3.14159)
+          throw InputError(object("camera", i, source.name) + " has an invalid yfov");
+        camera.yfov = float(yfov);
+        camera.znear = float(std::max(source.perspective.znear, 0.0));
+      } else {
+        log::warn(object("camera", i, source.name) + " is orthographic; rendered as a 45-degree perspective camera");
+        camera.yfov = 0.785398f;
+      }
+      m_scene.cameras.push_back(camera);
+    }
+  }
+
+  void convert_lights() {
+    for (size_t i = 0; i < m_model.lights.size(); ++i) {
+      const tinygltf::Light& source = m_model.lights[i];
+      PunctualLight light;
+      light.name = source.name.empty() ? "light " + std::to_string(i) : source.name;
+      if (source.color.size() >= 3) light.color = glm::max(glm::vec3(source.color[0], source.color[1], source.color[2]), glm::vec3(0));
+      light.intensity = float(source.intensity);
+      light.range = float(source.range);
+      if (source.type == "point") light.type = LightType::Point;
+      else if (source.type == "spot") light.type = LightType::Spot;
+      else if (source.type == "directional") light.type = LightType::Directional;
+      else throw InputError(object("light", i, source.name) + " has unknown type '" + source.type + "'");
+      light.inner_cone = float(source.spot.innerConeAngle);
+      light.outer_cone = float(source.spot.outerConeAngle);
+      if (!std::isfinite(light.intensity) || light.intensity < 0 || !std::isfinite(light.color.x + light.color.y + light.color.z))
+        throw InputError(object("light", i, source.name) + " has an invalid intensity or colour");
+      m_scene.lights.push_back(light);
+    }
+  }
+
+  void convert_nodes() {
+    const size_t count = m_model.nodes.size();
+    m_scene.nodes.resize(count);
+    m_scene.children.assign(count, {});
+    for (size_t i = 0; i < count; ++i) {
+      const tinygltf::Node& source = m_model.nodes[i];
+      Node& node = m_scene.nodes[i];
+      const std::string what = object("node", i, source.name);
+      node.name = source.name.empty() ? "#" + std::to_string(i) : source.name;
+      node.local = node_transform(source, what);
+      node.mesh = checked(source.mesh, m_model.meshes.size(), what, "mesh");
+      node.camera = checked(source.camera, m_model.cameras.size(), what, "camera");
+      if (const auto it = source.extensions.find("KHR_lights_punctual"); it != source.extensions.end() && it->second.Has("light"))
+        node.light = checked(it->second.Get("light").GetNumberAsInt(), m_model.lights.size(), what, "light");
+      for (int child : source.children) {
+        const int c = checked(child, count, what, "child node");
+        if (c < 0) continue;
+        if (m_scene.nodes[size_t(c)].parent >= 0 || size_t(c) == i)
+          throw InputError(what + ": node " + std::to_string(c) + " has more than one parent (node hierarchy must be a tree)");
+        m_scene.nodes[size_t(c)].parent = int(i);
+        m_scene.children[i].push_back(uint32_t(c));
+      }
+    }
+    // With one parent per node, a cycle is a parent chain longer than the node count.
+    for (size_t i = 0; i < count; ++i) {
+      size_t steps = 0;
+      for (int p = m_scene.nodes[i].parent; p >= 0; p = m_scene.nodes[size_t(p)].parent)
+        if (++steps > count) throw InputError(object("node", i, m_model.nodes[i].name) + " is part of a cycle in the node hierarchy");
+    }
+    const int scene = m_model.defaultScene >= 0 ? m_model.defaultScene : 0;
+    if (!m_model.scenes.empty()) {
+      if (size_t(scene) >= m_model.scenes.size()) throw InputError(m_name + ": default scene " + std::to_string(scene) + " does not exist");
+      for (int root : m_model.scenes[size_t(scene)].nodes) {
+        const int r = checked(root, count, m_name + ": scene " + std::to_string(scene), "node");
+        if (r < 0) continue;
+        if (m_scene.nodes[size_t(r)].parent >= 0)
+          throw InputError(m_name + ": scene root node " + std::to_string(r) + " is also a child of another node");
+        m_scene.root_nodes.push_back(uint32_t(r));
+      }
+    } else {
+      // No scenes: render every parentless node (the spec leaves this to the client).
+      for (size_t i = 0; i < count; ++i)
+        if (m_scene.nodes[i].parent < 0) m_scene.root_nodes.push_back(uint32_t(i));
+    }
+  }
+
+  int checked(int index, size_t count, const std::string& what, const char* kind) const {
+    if (index < -1 || (index >= 0 && size_t(index) >= count))
+      throw InputError(what + " references missing " + kind + " " + std::to_string(index));
+    return index;
+  }
+
+  const tinygltf::Model& m_model;
+  Scene& m_scene;
+  std::string m_name;
+  gltf::TextureTable m_textures;
+  uint32_t m_default_material = 0;
+};
+
+}  // namespace
+
+Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
+  const std::string name = path.filename().string();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError("scene file not found: " + path.string());
+  if (!fs::is_regular_file(path, ec)) throw InputError("scene path is not a file: " + path.string());
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (extension != ".gltf" && extension != ".glb")
+    throw InputError(path.string() + ": unsupported scene format (expected .gltf or .glb)");
+
+  const std::vector<unsigned char> bytes = read_file_bytes(path);
+  if (bytes.empty()) throw InputError(name + ": invalid glTF: file is empty");
+  const bool glb = extension == ".glb" || gltf::looks_like_glb(bytes);
+  if (glb) gltf::check_glb_container(bytes, name);
+  precheck_json(json_text(bytes, glb), name);
+
+  const fs::path folder = fs::absolute(path).parent_path();
+  gltf::Sandbox sandbox(folder);
+  sandbox.hasher().add(bytes.data(), bytes.size());
+  tinygltf::FsCallbacks callbacks;
+  callbacks.user_data = &sandbox;
+  callbacks.FileExists = [](const std::string& file, void* user) { return static_cast<gltf::Sandbox*>(user)->exists(file); };
+  callbacks.ExpandFilePath = [](const std::string& file, void*) { return file; };  // never shell-expand
+  callbacks.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& file, void* user) {
+    return static_cast<gltf::Sandbox*>(user)->read(out, err, file);
+  };
+  callbacks.WriteWholeFile = [](std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err = "writing is disabled while loading";
+    return false;
+  };
+
+  tinygltf::TinyGLTF parser;
+  parser.SetFsCallbacks(callbacks);
+  parser.SetImageLoader(&lenient_image_loader, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  const std::string base = folder.string();
+  const bool ok = glb ? parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base)
+                      : parser.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                                   unsigned(bytes.size()), base);
+  const auto first_line = [](std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+    const size_t newline = text.find('\n');
+    return newline == std::string::npos ? text : text.substr(0, newline);
+  };
+  if (!ok) throw InputError(name + ": " + (err.empty() ? "invalid glTF" : first_line(err)));
+  for (size_t start = 0; start < warn.size();) {
+    const size_t end = warn.find('\n', start);
+    const std::string line = warn.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (!line.empty()) log::warn(name + ": " + line);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+
+  Scene scene;
+  scene.source = path;
+  Converter(model, scene, name).run();
+  if (!options.environment.empty()) {
+    scene.environment = load_environment(options.environment);
+    scene.environment->intensity = options.environment_intensity;
+    scene.environment->rotation = glm::radians(options.environment_rotation_degrees);
+    sandbox.hasher().add(scene.environment->texels.data(), scene.environment->texels.size() * sizeof(glm::vec3));
+  }
+  scene.content_hash = sandbox.hasher().hex();
+  return scene;
+}
+
+}  // namespace hipr

@@ -1,0 +1,57 @@
+#pragma once
+// Bottom-level (one per mesh, one geometry per primitive) and top-level acceleration structures.
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <vector>
+
+#include "vk/buffer.h"
+#include "vk/context.h"
+
+namespace hipr::vk {
+
+class AccelerationStructure {
+ public:
+  AccelerationStructure() = default;
+  ~AccelerationStructure();
+  AccelerationStructure(AccelerationStructure&& other) noexcept;
+  AccelerationStructure& operator=(AccelerationStructure&& other) noexcept;
+  AccelerationStructure(const AccelerationStructure&) = delete;
+  AccelerationStructure& operator=(const AccelerationStructure&) = delete;
+
+  VkAccelerationStructureKHR handle() const { return m_handle; }
+  VkDeviceAddress address() const { return m_address; }
+
+ private:
+  friend AccelerationStructure build_acceleration_structure(
+      const Context&, VkAccelerationStructureTypeKHR,
+      const std::vector<VkAccelerationStructureGeometryKHR>&, const std::vector<uint32_t>&);
+  void release();
+
+  const Context* m_ctx = nullptr;
+  Buffer m_storage;
+  VkAccelerationStructureKHR m_handle = VK_NULL_HANDLE;
+  VkDeviceAddress m_address = 0;
+};
+
+// A triangle geometry inside one BLAS: float3 positions and uint32 indices living in the
+// shared vertex/index buffers at the given element offsets.
+struct TriangleGeometry {
+  VkDeviceAddress positions;  // address of the first vertex (vec3, tightly packed)
+  uint32_t vertex_count;
+  VkDeviceAddress indices;    // address of the first index (uint32)
+  uint32_t triangle_count;
+};
+
+AccelerationStructure build_blas(const Context& ctx, const std::vector<TriangleGeometry>& geometries);
+
+struct TlasInstance {
+  std::array<float, 12> object_to_world;  // row-major 3x4
+  uint32_t custom_index;                  // 24 bits: first GeometryRecord of this instance
+  VkDeviceAddress blas;
+  bool front_face_ccw = true;
+};
+
+AccelerationStructure build_tlas(const Context& ctx, const std::vector<TlasInstance>& instances);
+
+}  // namespace hipr::vk

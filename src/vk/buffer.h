@@ -1,0 +1,73 @@
+#pragma once
+// A VkBuffer with its own memory. Device-local buffers are filled through a staging copy when
+// the memory is not host-visible (real GPUs); on lavapipe every buffer is mapped directly.
+#include <vulkan/vulkan.h>
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "vk/context.h"
+
+namespace hipr::vk {
+
+enum class MemoryUse {
+  Device,    // GPU reads/writes; host access through upload()/download()
+  Readback,  // GPU writes, host reads often (mapped)
+};
+
+class Buffer {
+ public:
+  Buffer() = default;
+  // Size 0 is rounded up to 4 bytes: bindings must never be left without a buffer.
+  Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+         MemoryUse use = MemoryUse::Device);
+  ~Buffer();
+  Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  VkBuffer handle() const { return m_buffer; }
+  VkDeviceSize size() const { return m_size; }
+  VkDeviceAddress address() const { return m_address; }
+  explicit operator bool() const { return m_buffer != VK_NULL_HANDLE; }
+
+  void upload(const void* data, VkDeviceSize size, VkDeviceSize offset = 0);
+  void download(void* data, VkDeviceSize size, VkDeviceSize offset = 0) const;
+  template <typename T>
+  void upload(std::span<const T> values) {
+    upload(values.data(), values.size_bytes());
+  }
+  template <typename T>
+  std::vector<T> download_all() const {
+    std::vector<T> values(m_size / sizeof(T));
+    download(values.data(), values.size() * sizeof(T));
+    return values;
+  }
+  // Fills with zero bytes (device-side).
+  void clear();
+
+ private:
+  void release();
+
+  const Context* m_ctx = nullptr;
+  VkBuffer m_buffer = VK_NULL_HANDLE;
+  VkDeviceMemory m_memory = VK_NULL_HANDLE;
+  VkDeviceSize m_size = 0;
+  VkDeviceAddress m_address = 0;
+  void* m_mapped = nullptr;
+};
+
+// Creates a storage buffer holding `values` (at least one element's worth of bytes).
+template <typename T>
+Buffer make_storage_buffer(const Context& ctx, const std::vector<T>& values,
+                           VkBufferUsageFlags extra_usage = 0) {
+  Buffer buffer(ctx, values.size() * sizeof(T),
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT | extra_usage);
+  if (!values.empty()) buffer.upload(values.data(), values.size() * sizeof(T));
+  return buffer;
+}
+
+}  // namespace hipr::vk

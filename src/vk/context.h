@@ -1,0 +1,76 @@
+#pragma once
+// The Vulkan instance + device the renderer runs on. Picks any device with acceleration
+// structures and ray queries (lavapipe in CI, a real GPU elsewhere) and owns one queue.
+#include <vulkan/vulkan.h>
+
+#include <atomic>
+#include <functional>
+#include <string>
+
+namespace hipr::vk {
+
+struct ContextOptions {
+  bool validation = false;  // enable VK_LAYER_KHRONOS_validation and count its errors
+  std::string preferred_device;  // substring of the device name; empty = best available
+};
+
+struct DeviceFunctions {
+  PFN_vkCreateAccelerationStructureKHR createAccelerationStructure = nullptr;
+  PFN_vkDestroyAccelerationStructureKHR destroyAccelerationStructure = nullptr;
+  PFN_vkGetAccelerationStructureBuildSizesKHR getAccelerationStructureBuildSizes = nullptr;
+  PFN_vkCmdBuildAccelerationStructuresKHR cmdBuildAccelerationStructures = nullptr;
+  PFN_vkGetAccelerationStructureDeviceAddressKHR getAccelerationStructureDeviceAddress = nullptr;
+};
+
+class Context {
+ public:
+  explicit Context(const ContextOptions& options = {});
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  VkInstance instance() const { return m_instance; }
+  VkPhysicalDevice physical_device() const { return m_physical; }
+  VkDevice device() const { return m_device; }
+  VkQueue queue() const { return m_queue; }
+  uint32_t queue_family() const { return m_queue_family; }
+  const DeviceFunctions& fn() const { return m_fn; }
+  const std::string& device_name() const { return m_device_name; }
+  bool is_cpu_device() const { return m_is_cpu; }
+  uint32_t min_storage_alignment() const { return m_min_storage_alignment; }
+  uint32_t min_scratch_alignment() const { return m_min_scratch_alignment; }
+
+  // Records commands into a one-time command buffer, submits it and waits for completion.
+  void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
+
+  // Messages of severity ERROR reported by the validation layer since start.
+  uint32_t validation_errors() const { return m_validation_errors.load(); }
+  bool validation_enabled() const { return m_messenger != VK_NULL_HANDLE; }
+
+ private:
+  void create_instance(const ContextOptions& options);
+  void pick_physical_device(const ContextOptions& options);
+  void create_device();
+  void release();
+
+  static VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(
+      VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
+      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+
+  VkInstance m_instance = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;
+  VkPhysicalDevice m_physical = VK_NULL_HANDLE;
+  VkDevice m_device = VK_NULL_HANDLE;
+  VkQueue m_queue = VK_NULL_HANDLE;
+  uint32_t m_queue_family = 0;
+  VkCommandPool m_command_pool = VK_NULL_HANDLE;
+  VkFence m_fence = VK_NULL_HANDLE;
+  DeviceFunctions m_fn;
+  std::string m_device_name;
+  bool m_is_cpu = false;
+  uint32_t m_min_storage_alignment = 16;
+  uint32_t m_min_scratch_alignment = 128;
+  std::atomic<uint32_t> m_validation_errors{0};
+};
+
+}  // namespace hipr::vk

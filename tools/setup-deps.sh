@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Installs everything hipr needs to build, test and run on Debian 12 (bookworm).
+# Idempotent: re-running it changes nothing once the packages are present.
+# Lavapipe with VK_KHR_ray_query needs Mesa >= 23, which bookworm only has in bookworm-backports.
+set -euo pipefail
+
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null; then exec sudo -E bash "$0" "$@"; fi
+  echo "setup-deps.sh: must run as root (apt-get)" >&2
+  exit 2
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+backports=/etc/apt/sources.list.d/hipr-bookworm-backports.list
+
+packages=(
+  build-essential cmake ninja-build pkg-config python3
+  libvulkan-dev vulkan-validationlayers vulkan-tools
+  glslang-dev glslang-tools spirv-tools
+  libglfw3-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+  libopenimageio-dev openimageio-tools libimath-dev libopenexr-dev
+  libimgui-dev libcli11-dev libgtest-dev
+  xvfb xauth python3-matplotlib
+)
+
+have_all() {
+  local status
+  status=$(dpkg-query -W -f='${Status}\n' "${packages[@]}" mesa-vulkan-drivers 2>/dev/null) || return 1
+  [ "$(grep -c 'install ok installed' <<<"$status")" -eq $((${#packages[@]} + 1)) ] || return 1
+  # The Mesa from bookworm (22.x) has no ray queries: insist on the backported one.
+  local mesa
+  mesa=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers)
+  dpkg --compare-versions "$mesa" ge 23
+}
+
+if have_all; then
+  echo "setup-deps: all packages present"
+  exit 0
+fi
+
+if ! grep -rqs 'bookworm-backports' /etc/apt/sources.list /etc/apt/sources.list.d/; then
+  echo "deb http://deb.debian.org/debian bookworm-backports main" >"$backports"
+fi
+
+apt-get update -q
+apt-get install -y -q --no-install-recommends "${packages[@]}"
+apt-get install -y -q --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
+have_all || { echo "setup-deps: mesa-vulkan-drivers from bookworm-backports did not install" >&2; exit 1; }
+echo "setup-deps: done"
