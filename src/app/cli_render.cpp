@@ -18,7 +18,7 @@ namespace {
 
 struct RenderOptions {
   CommonOptions common;
-  std::filesystem::path output;
+  std::vector<std::filesystem::path> outputs;
   std::filesystem::path stats_json;
   float exposure = 0.0f;
 };
@@ -34,8 +34,9 @@ void write_stats(const std::filesystem::path& path, const nlohmann::json& stats)
 int run_render(const RenderOptions& o) {
   validate_common_options(o.common);
   log::set_quiet(o.common.quiet);
-  if (!is_supported_output(o.output))
-    throw InputError("output " + o.output.string() + ": unsupported format (use .exr or .png)");
+  for (const auto& output : o.outputs)
+    if (!is_supported_output(output))
+      throw InputError("output " + output.string() + ": unsupported format (use .exr or .png)");
   const Scene scene = load_scene(o.common.scene, o.common.load);
 
   const vk::Context ctx(context_options(o.common));
@@ -74,7 +75,7 @@ int run_render(const RenderOptions& o) {
       {"hipr:max_depth", std::to_string(o.common.render.max_depth)},
       {"Software", "hipr"},
   };
-  write_image(o.output, image, metadata, o.exposure);
+  for (const auto& output : o.outputs) write_image(output, image, metadata, o.exposure);
 
   const double pixels = double(o.common.render.width) * o.common.render.height;
   const double samples = pixels * o.common.spp;
@@ -97,7 +98,7 @@ int run_render(const RenderOptions& o) {
     };
     write_stats(o.stats_json, stats);
   }
-  log::info("wrote " + o.output.string() + ": " + std::to_string(o.common.spp) + " spp in " +
+  log::info("wrote " + o.outputs.front().string() + (o.outputs.size() > 1 ? " (and more)" : "") + ": " + std::to_string(o.common.spp) + " spp in " +
             std::to_string(render_seconds) + " s (" + std::to_string(samples / render_seconds / 1e6) +
             " M samples/s, " + std::to_string(double(counters.rays) / render_seconds / 1e6) + " M rays/s)");
   return kExitOk;
@@ -109,7 +110,11 @@ Command add_render_command(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a glTF scene to an EXR (linear) or PNG (sRGB) image");
   cmd->add_option("scene", options->common.scene, "Scene file (.gltf or .glb)")->required();
-  cmd->add_option("-o,--output", options->output, "Output image (.exr or .png)")->required();
+  cmd->add_option("-o,--output", options->outputs, "Output image (.exr linear or .png sRGB); repeat for several")
+      ->required()
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--stats-json", options->stats_json, "Write render statistics as JSON");
   cmd->add_option("--exposure", options->exposure, "Exposure in stops for PNG output")->capture_default_str();
   add_common_options(*cmd, options->common);

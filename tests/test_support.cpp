@@ -1,0 +1,178 @@
+#include "test_support.h"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace hipr::test {
+namespace fs = std::filesystem;
+
+fs::path asset(const std::string& name) { return fs::path(HIPR_ASSETS_DIR) / name; }
+fs::path shared_scene(const std::string& name) { return fs::path(HIPR_SHARED_SCENES_DIR) / name; }
+bool shared_scenes_available() { return fs::is_directory(HIPR_SHARED_SCENES_DIR); }
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("hipr-test-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+namespace {
+
+std::unique_ptr<vk::Context>& context_slot() {
+  static std::unique_ptr<vk::Context> ctx;
+  return ctx;
+}
+
+class ValidationEnvironment : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    if (auto& ctx = context_slot()) {
+      EXPECT_EQ(ctx->validation_errors(), 0u) << "the Vulkan validation layer reported errors";
+      ctx.reset();
+    }
+  }
+};
+
+[[maybe_unused]] ::testing::Environment* const g_validation =
+    ::testing::AddGlobalTestEnvironment(new ValidationEnvironment);
+
+}  // namespace
+
+const vk::Context& context() {
+  auto& ctx = context_slot();
+  if (!ctx) {
+    vk::ContextOptions options;
+    options.validation = true;
+    ctx = std::make_unique<vk::Context>(options);
+  }
+  return *ctx;
+}
+
+CommandResult run_hipr(const std::string& arguments) {
+  const std::string command = std::string("'") + HIPR_BINARY + "' " + arguments + " 2>&1";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+double mean(const ImageRGB& image, int channel) {
+  double sum = 0.0;
+  size_t count = 0;
+  for (size_t i = 0; i < image.rgb.size(); ++i) {
+    if (channel >= 0 && int(i % 3) != channel) continue;
+    sum += image.rgb[i];
+    ++count;
+  }
+  return count ? sum / double(count) : 0.0;
+}
+
+bool all_finite(const ImageRGB& image) {
+  for (float v : image.rgb)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace hipr::test
+
+namespace hipr::test {
+
+Scene make_furnace_scene(float radius, glm::vec3 center, float albedo, float env) {
+  Scene scene;
+  MeshPrimitive sphere;
+  constexpr int kRings = 48, kSegments = 96;
+  for (int r = 0; r <= kRings; ++r) {
+    const float theta = float(M_PI) * float(r) / kRings;
+    for (int s = 0; s <= kSegments; ++s) {
+      const float phi = 2.0f * float(M_PI) * float(s) / kSegments;
+      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+      sphere.positions.push_back(n);
+      sphere.normals.push_back(n);
+      sphere.tangents.push_back(glm::vec4(-std::sin(phi), 0.0f, std::cos(phi), 1.0f));
+      sphere.uvs.push_back(glm::vec2(float(s) / kSegments, float(r) / kRings));
+    }
+  }
+  for (int r = 0; r < kRings; ++r)
+    for (int s = 0; s < kSegments; ++s) {
+      const uint32_t a = uint32_t(r * (kSegments + 1) + s), b = a + kSegments + 1;
+      sphere.indices.insert(sphere.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
+    }
+  Material white;
+  white.name = "white";
+  white.params = default_material_params();
+  white.params.base_color = glm::vec3(albedo);
+  white.params.specular_weight = 0.0f;
+  scene.materials.push_back(white);
+  scene.meshes.push_back({"sphere", {sphere}});
+
+  Node node;
+  node.name = "sphere";
+  node.mesh = 0;
+  node.local = glm::translate(glm::mat4(1.0f), center) * glm::scale(glm::mat4(1.0f), glm::vec3(radius));
+  Node camera_node;
+  camera_node.name = "camera";
+  camera_node.camera = 0;
+  camera_node.local = glm::translate(glm::mat4(1.0f), center + glm::vec3(0.0f, 0.0f, 4.0f * radius));
+  scene.nodes = {node, camera_node};
+  scene.children = {{}, {}};
+  scene.root_nodes = {0, 1};
+  Camera camera;
+  camera.yfov = 0.6f;
+  scene.cameras.push_back(camera);
+
+  Environment environment;
+  environment.width = 8;
+  environment.height = 4;
+  environment.texels.assign(32, glm::vec3(env));
+  scene.environment = environment;
+  return scene;
+}
+
+}  // namespace hipr::test
+
+namespace hipr::test {
+
+std::vector<double> block_means(const ImageRGB& image, uint32_t b) {
+  std::vector<double> out;
+  for (uint32_t by = 0; by + b <= image.height; by += b)
+    for (uint32_t bx = 0; bx + b <= image.width; bx += b) {
+      double sum = 0.0;
+      for (uint32_t y = by; y < by + b; ++y)
+        for (uint32_t x = bx; x < bx + b; ++x)
+          for (size_t c = 0; c < 3; ++c) sum += image.rgb[(size_t(y) * image.width + x) * 3 + c];
+      out.push_back(sum / double(3 * b * b));
+    }
+  return out;
+}
+
+ImageRGB average(const ImageRGB& a, const ImageRGB& b) {
+  ImageRGB out = a;
+  for (size_t i = 0; i < out.rgb.size(); ++i) out.rgb[i] = 0.5f * (a.rgb[i] + b.rgb[i]);
+  return out;
+}
+
+double error_to_noise_ratio(const ImageRGB& a, const ImageRGB& b, const ImageRGB& reference) {
+  const auto ba = block_means(a, 4), bb = block_means(b, 4), br = block_means(reference, 4);
+  double noise2 = 0.0, error2 = 0.0;
+  for (size_t i = 0; i < br.size(); ++i) {
+    const double avg = 0.5 * (ba[i] + bb[i]);
+    noise2 += 0.25 * (ba[i] - bb[i]) * (ba[i] - bb[i]);
+    error2 += (avg - br[i]) * (avg - br[i]);
+  }
+  return noise2 > 0.0 ? std::sqrt(error2 / noise2) : (error2 > 0.0 ? 1e9 : 0.0);
+}
+
+}  // namespace hipr::test

@@ -1,0 +1,59 @@
+#pragma once
+// Shared helpers for the test suites: paths to test data, a validated Vulkan context, running
+// the hipr binary, and image statistics.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "hipr/scene.h"
+#include "image/image_io.h"
+#include "vk/context.h"
+
+namespace hipr::test {
+
+std::filesystem::path asset(const std::string& name);         // assets/scenes/NAME
+std::filesystem::path shared_scene(const std::string& name);  // ../shared/scenes/NAME
+bool shared_scenes_available();
+std::filesystem::path temp_dir(const std::string& name);      // fresh, empty
+
+// One Vulkan context per test binary, with validation layers on. A test environment fails
+// the run at exit if the layer reported any error.
+const vk::Context& context();
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout + stderr
+};
+// Runs build/hipr with the given arguments (already shell-quoted where needed).
+CommandResult run_hipr(const std::string& arguments);
+
+double mean(const ImageRGB& image, int channel = -1);  // channel -1: mean over RGB
+bool all_finite(const ImageRGB& image);
+
+}  // namespace hipr::test
+
+namespace hipr::test {
+
+// A scene built in code: one UV sphere (white Lambert, base_color `albedo`) of `radius` at
+// `center`, a camera on +Z framing it, and a uniform environment of radiance `env`.
+Scene make_furnace_scene(float radius, glm::vec3 center, float albedo, float env);
+
+}  // namespace hipr::test
+
+namespace hipr::test {
+
+// Means over b x b pixel blocks (RGB averaged): comparisons then test the picture, not the
+// particular noise of a render.
+std::vector<double> block_means(const ImageRGB& image, uint32_t b);
+
+// Compares the average of two independent renders `a`, `b` (different seeds) with `reference`
+// over 4x4 blocks. Returns RMS(difference to reference) / RMS(our noise), where our noise is
+// estimated from the half-difference of a and b (the standard error of their average).
+// About 1 when the only difference is noise; clearly above 1 for a real change.
+double error_to_noise_ratio(const ImageRGB& a, const ImageRGB& b, const ImageRGB& reference);
+
+ImageRGB average(const ImageRGB& a, const ImageRGB& b);
+
+}  // namespace hipr::test
