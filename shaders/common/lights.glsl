@@ -64,13 +64,12 @@ LightSample sample_light(vec3 position, vec4 u) {
     s.direction = toLight / s.distance;
     float cosAtLight = -dot(n, s.direction);
     const GeometryRecord g = b_geometries[light.geometryRecord];
-    const MaterialBlock m = b_materials[g.materialIndex];
-    const bool doubleSided = (m.flags & kMaterialDoubleSided) != 0u;
+    const bool doubleSided = (b_materials[g.materialIndex].flags & kMaterialDoubleSided) != 0u;
     if (cosAtLight <= 0.0 && !doubleSided) return s;
     s.lightNormal = cosAtLight < 0.0 ? -n : n;
     cosAtLight = abs(cosAtLight);
     const uvec3 v = triangle_vertices(g, light.primitive);
-    s.radiance = material_emission(m, interpolate_uv(v, b));
+    s.radiance = material_emission(g.materialIndex, interpolate_uv(v, b));
     s.pdf = selection * triangle_light_pdf(light, s.distance, cosAtLight);
   } else if (light.type == kLightEnvironment) {
     float pdf;

@@ -52,16 +52,17 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   ns = dot(ns, ns) > 0.0 ? normalize(ns) : ng;
   hit.uv = interpolate_uv(v, bary);
 
-  const MaterialBlock m = b_materials[hit.material];
-  if (m.normal_texture != kInvalidIndex) {
+  // Materials are read field by field: copying the whole block costs loads on CPU devices.
+  const uint normalTexture = b_materials[hit.material].normal_texture;
+  if (normalTexture != kInvalidIndex) {
     const vec4 t = b_tangents[v.x] * b0 + b_tangents[v.y] * bary.x + b_tangents[v.z] * bary.y;
     vec3 tangent = mat3(objectToWorld) * t.xyz;
     tangent = tangent - ns * dot(ns, tangent);
     if (dot(tangent, tangent) > 1e-12) {
       tangent = normalize(tangent);
       const vec3 bitangent = cross(ns, tangent) * (t.w < 0.0 ? -1.0 : 1.0);
-      vec3 local = sample_texture(m.normal_texture, hit.uv).xyz * 2.0 - 1.0;
-      local.xy *= m.normal_scale;
+      vec3 local = sample_texture(normalTexture, hit.uv).xyz * 2.0 - 1.0;
+      local.xy *= b_materials[hit.material].normal_scale;
       const vec3 mapped = tangent * local.x + bitangent * local.y + ns * local.z;
       if (dot(mapped, mapped) > 1e-12) ns = normalize(mapped);
     }
@@ -79,20 +80,22 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   return hit;
 }
 
-vec3 material_emission(MaterialBlock m, vec2 uv) {
-  vec3 e = m.emission_color * m.emission_luminance;
-  if (m.emission_texture != kInvalidIndex && max3(e) > 0.0) e *= sample_texture(m.emission_texture, uv).rgb;
+vec3 material_emission(uint material, vec2 uv) {
+  vec3 e = b_materials[material].emission_color * b_materials[material].emission_luminance;
+  const uint texture = b_materials[material].emission_texture;
+  if (texture != kInvalidIndex && max3(e) > 0.0) e *= sample_texture(texture, uv).rgb;
   return e;
 }
 
 ShadingParams shading_params(SurfaceHit hit) {
-  const MaterialBlock m = b_materials[hit.material];
+  const uint material = hit.material;
   ShadingParams s;
-  s.baseColor = m.base_color;
-  if (m.base_color_texture != kInvalidIndex) s.baseColor *= sample_texture(m.base_color_texture, hit.uv).rgb;
-  s.baseWeight = m.base_weight;
-  s.doubleSided = (m.flags & kMaterialDoubleSided) != 0u;
-  s.emission = (hit.frontFacing || s.doubleSided) ? material_emission(m, hit.uv) : vec3(0.0);
+  s.baseColor = b_materials[material].base_color;
+  const uint baseTexture = b_materials[material].base_color_texture;
+  if (baseTexture != kInvalidIndex) s.baseColor *= sample_texture(baseTexture, hit.uv).rgb;
+  s.baseWeight = b_materials[material].base_weight;
+  s.doubleSided = (b_materials[material].flags & kMaterialDoubleSided) != 0u;
+  s.emission = (hit.frontFacing || s.doubleSided) ? material_emission(material, hit.uv) : vec3(0.0);
   return s;
 }
 

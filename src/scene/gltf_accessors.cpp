@@ -43,12 +43,27 @@ struct ElementLayout {
   bool normalized = false;
 };
 
-ElementLayout layout_of(const tinygltf::Model& model, int index, const std::string& what) {
+void check_buffer_view(const tinygltf::Model& model, int index, const std::string& what) {
+  if (index < 0 || size_t(index) >= model.bufferViews.size())
+    throw InputError(what + ": references missing bufferView " + std::to_string(index));
+  const tinygltf::BufferView& view = model.bufferViews[size_t(index)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
+    throw InputError(what + ": bufferView " + std::to_string(index) + " references a missing buffer");
+  const size_t size = model.buffers[size_t(view.buffer)].data.size();
+  if (view.byteOffset > size || view.byteLength > size - view.byteOffset)
+    throw InputError(what + ": bufferView " + std::to_string(index) + " runs past the end of its buffer");
+}
+
+ElementLayout layout_of(const tinygltf::Model& model, int index, const std::string& what, bool allow_sparse = false) {
   const auto fail = [&](const std::string& why) { throw InputError(what + ": " + why); };
   if (index < 0 || size_t(index) >= model.accessors.size())
     fail("accessor " + std::to_string(index) + " does not exist");
   const tinygltf::Accessor& accessor = model.accessors[size_t(index)];
-  if (accessor.sparse.isSparse) fail("sparse accessor " + std::to_string(index) + " is not supported");
+  if (accessor.sparse.isSparse) {
+    if (!allow_sparse) fail("sparse accessor " + std::to_string(index) + " is not supported");
+    check_buffer_view(model, accessor.sparse.indices.bufferView, what + " sparse indices");
+    check_buffer_view(model, accessor.sparse.values.bufferView, what + " sparse values");
+  }
   ElementLayout layout;
   layout.count = accessor.count;
   layout.components = component_count(accessor.type);
@@ -59,14 +74,9 @@ ElementLayout layout_of(const tinygltf::Model& model, int index, const std::stri
   const size_t element_size = size_t(size) * size_t(layout.components);
   if (accessor.bufferView < 0) return layout;  // all zeros, per the glTF spec
 
-  if (size_t(accessor.bufferView) >= model.bufferViews.size())
-    fail("accessor " + std::to_string(index) + " references missing bufferView " + std::to_string(accessor.bufferView));
+  check_buffer_view(model, accessor.bufferView, what + ": accessor " + std::to_string(index));
   const tinygltf::BufferView& view = model.bufferViews[size_t(accessor.bufferView)];
-  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
-    fail("bufferView " + std::to_string(accessor.bufferView) + " references a missing buffer");
   const tinygltf::Buffer& buffer = model.buffers[size_t(view.buffer)];
-  if (view.byteOffset > buffer.data.size() || view.byteLength > buffer.data.size() - view.byteOffset)
-    fail("bufferView " + std::to_string(accessor.bufferView) + " runs past the end of its buffer");
   layout.stride = view.byteStride ? view.byteStride : element_size;
   if (layout.stride < element_size) fail("bufferView stride is smaller than an element");
   if (layout.count > 0) {
@@ -97,6 +107,11 @@ float read_component(const unsigned char* p, int type, bool normalized) {
 }
 
 }  // namespace
+
+void validate_all_accessors(const tinygltf::Model& model, const std::string& name) {
+  for (size_t i = 0; i < model.bufferViews.size(); ++i) check_buffer_view(model, int(i), name);
+  for (size_t i = 0; i < model.accessors.size(); ++i) layout_of(model, int(i), name, true);
+}
 
 std::vector<float> read_floats(const tinygltf::Model& model, int accessor, int components, const std::string& what) {
   const ElementLayout layout = layout_of(model, accessor, what);

@@ -16,6 +16,10 @@ std::vector<float> read_floats(const tinygltf::Model& model, int accessor, int c
 
 std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor, const std::string& what);
 
+// Checks every bufferView and accessor in the file, used or not (a file with broken data is
+// refused as a whole, as the glTF validator does). Throws InputError naming the first problem.
+void validate_all_accessors(const tinygltf::Model& model, const std::string& name);
+
 std::vector<glm::vec2> to_vec2(const std::vector<float>& values);
 std::vector<glm::vec3> to_vec3(const std::vector<float>& values);
 std::vector<glm::vec4> to_vec4(const std::vector<float>& values);

@@ -244,7 +244,8 @@ class Converter {
       for (int child : source.children) {
         const int c = checked(child, count, what, "child node");
         if (c < 0) continue;
-        if (m_scene.nodes[size_t(c)].parent >= 0 || size_t(c) == i)
+        if (size_t(c) == i) throw InputError(what + " is its own child (cycle in the node hierarchy)");
+        if (m_scene.nodes[size_t(c)].parent >= 0)
           throw InputError(what + ": node " + std::to_string(c) + " has more than one parent (node hierarchy must be a tree)");
         m_scene.nodes[size_t(c)].parent = int(i);
         m_scene.children[i].push_back(uint32_t(c));
@@ -342,6 +343,7 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
     start = end + 1;
   }
 
+  gltf::validate_all_accessors(model, name);
   Scene scene;
   scene.source = path;
   Converter(model, scene, name).run();
