@@ -25,6 +25,19 @@ layout(local_size_x = 64) in;  // == kWorkgroupSize
 
 layout(push_constant, scalar) uniform Push { TracePush u_push; };
 
+// Which estimators take part (a compile-time switch, so tests can check that each one alone
+// converges to the same image): kLightSamplingMis, kLightSamplingBsdfOnly, kLightSamplingLightOnly.
+#ifndef HIPR_LIGHT_SAMPLING
+#define HIPR_LIGHT_SAMPLING kLightSamplingMis
+#endif
+
+// Weight of radiance found by BSDF sampling, given the light-sampling pdf of the same direction.
+float bsdf_hit_weight(float bsdfPdf, float lightPdf) {
+  if (HIPR_LIGHT_SAMPLING == kLightSamplingBsdfOnly) return 1.0;
+  if (HIPR_LIGHT_SAMPLING == kLightSamplingLightOnly) return lightPdf > 0.0 ? 0.0 : 1.0;
+  return power_heuristic(bsdfPdf, lightPdf);
+}
+
 struct RayHit {
   float t;
   uint geometry;
@@ -73,7 +86,7 @@ float emitter_hit_weight(SurfaceHit surface, float distance, vec3 direction, flo
   const uint index = lightOffset + surface.primitive;
   const float cosAtLight = abs(dot(surface.geometricNormal, direction));
   const float lightPdf = light_selection_pdf(index) * triangle_light_pdf(b_lights[index], distance, cosAtLight);
-  return power_heuristic(bsdfPdf, lightPdf);
+  return bsdf_hit_weight(bsdfPdf, lightPdf);
 }
 
 vec3 direct_light(SurfaceHit surface, BsdfParams params, BsdfFrame frame, vec3 wo, vec4 u, inout uint rays) {
@@ -96,64 +109,84 @@ vec3 direct_light(SurfaceHit surface, BsdfParams params, BsdfFrame frame, vec3 w
   }
   rays += 1u;
   if (occluded(origin, direction, tMax)) return vec3(0.0);
-  const float weight = ls.isDelta ? 1.0 : power_heuristic(ls.pdf, bsdf_pdf(params, frame, wo, ls.direction));
+  const float weight = (ls.isDelta || HIPR_LIGHT_SAMPLING == kLightSamplingLightOnly)
+                           ? 1.0
+                           : power_heuristic(ls.pdf, bsdf_pdf(params, frame, wo, ls.direction));
   return f * ls.radiance * (weight / ls.pdf);
 }
 
-vec3 trace_path(uvec2 pixel, uint sampleIndex, inout uint rays) {
-  const PathRng rng = PathRng(pixel.y * u_frame.width + pixel.x, sampleIndex, u_frame.seed);
-  vec3 origin = u_frame.cameraPosition;
-  vec3 direction = camera_ray_direction(pixel, rng_uniform4(rng, 0u, 2u).xy);
-  vec3 radiance = vec3(0.0);
-  vec3 throughput = vec3(1.0);
-  float previousPdf = 0.0;
-  bool previousDelta = true;  // the camera ray counts as a delta "bounce": no MIS
+// One path in flight. A path advances one bounce per path_step call, so an invocation whose
+// path ended can start its next sample while its SIMD neighbours are still bouncing.
+struct PathState {
+  PathRng rng;
+  vec3 origin;
+  vec3 direction;
+  vec3 radiance;
+  vec3 throughput;
+  float previousPdf;
+  bool previousDelta;  // the camera ray counts as a delta "bounce": no MIS
+  uint depth;
+};
 
-  for (uint depth = 0u;; ++depth) {
-    RayHit hit;
-    rays += 1u;
-    if (!trace_closest(origin, direction, hit)) {
-      if (u_frame.environmentLight != kInvalidIndex) {
-        float weight = 1.0;
-        if (!previousDelta)
-          weight = power_heuristic(previousPdf, light_selection_pdf(u_frame.environmentLight) * env_pdf(direction));
-        radiance += throughput * env_radiance(direction) * weight;
-      }
-      break;
+PathState start_path(uvec2 pixel, uint sampleIndex) {
+  PathState p;
+  p.rng = PathRng(pixel.y * u_frame.width + pixel.x, sampleIndex, u_frame.seed);
+  p.origin = u_frame.cameraPosition;
+  p.direction = camera_ray_direction(pixel, rng_uniform4(p.rng, 0u, 2u).xy);
+  p.radiance = vec3(0.0);
+  p.throughput = vec3(1.0);
+  p.previousPdf = 0.0;
+  p.previousDelta = true;
+  p.depth = 0u;
+  return p;
+}
+
+// Traces one segment and scatters; returns true when the path has ended.
+bool path_step(inout PathState p, inout uint rays) {
+  RayHit hit;
+  rays += 1u;
+  if (!trace_closest(p.origin, p.direction, hit)) {
+    if (u_frame.environmentLight != kInvalidIndex) {
+      float weight = 1.0;
+      if (!p.previousDelta)
+        weight = bsdf_hit_weight(p.previousPdf, light_selection_pdf(u_frame.environmentLight) * env_pdf(p.direction));
+      p.radiance += p.throughput * env_radiance(p.direction) * weight;
     }
-    const SurfaceHit surface = make_surface_hit(hit.geometry, hit.primitive, hit.barycentrics, hit.objectToWorld,
-                                                hit.worldToObject, direction);
-    const ShadingParams shading = shading_params(surface);
-    if (max3(shading.emission) > 0.0) {
-      const float weight = previousDelta ? 1.0 : emitter_hit_weight(surface, hit.t, direction, previousPdf);
-      radiance += throughput * shading.emission * weight;
-    }
-    if (depth >= u_frame.maxDepth) break;
-
-    const BsdfParams params = BsdfParams(shading.baseColor, shading.baseWeight);
-    const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal);
-    const vec3 wo = -direction;
-    if (u_frame.lightCount > 0u)
-      radiance += throughput * direct_light(surface, params, frame, wo, rng_uniform4(rng, depth, 1u), rays);
-
-    const vec4 u = rng_uniform4(rng, depth, 0u);
-    const BsdfSample bs = bsdf_sample(params, frame, wo, u.xyz);
-    if (bs.pdf <= 0.0) break;
-    throughput *= bs.weight;
-    previousPdf = bs.pdf;
-    previousDelta = bs.lobe == kLobeSpecular;
-
-    // Russian roulette after a few bounces; unbiased because survivors are reweighted.
-    if (depth >= 3u) {
-      const float survive = min(max3(throughput), 0.95);
-      if (u.w >= survive) break;
-      throughput /= survive;
-    }
-    if (max3(throughput) <= 0.0) break;
-    origin = offset_ray_origin(surface.position, surface.geometricNormal);
-    direction = bs.direction;
+    return true;
   }
-  return radiance;
+  const SurfaceHit surface = make_surface_hit(hit.geometry, hit.primitive, hit.barycentrics, hit.objectToWorld,
+                                              hit.worldToObject, p.direction);
+  const ShadingParams shading = shading_params(surface);
+  if (max3(shading.emission) > 0.0) {
+    const float weight = p.previousDelta ? 1.0 : emitter_hit_weight(surface, hit.t, p.direction, p.previousPdf);
+    p.radiance += p.throughput * shading.emission * weight;
+  }
+  if (p.depth >= u_frame.maxDepth) return true;
+
+  const BsdfParams params = BsdfParams(shading.baseColor, shading.baseWeight);
+  const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal);
+  const vec3 wo = -p.direction;
+  if (u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly)
+    p.radiance += p.throughput * direct_light(surface, params, frame, wo, rng_uniform4(p.rng, p.depth, 1u), rays);
+
+  const vec4 u = rng_uniform4(p.rng, p.depth, 0u);
+  const BsdfSample bs = bsdf_sample(params, frame, wo, u.xyz);
+  if (bs.pdf <= 0.0) return true;
+  p.throughput *= bs.weight;
+  p.previousPdf = bs.pdf;
+  p.previousDelta = bs.lobe == kLobeSpecular;
+
+  // Russian roulette after a few bounces; unbiased because survivors are reweighted.
+  if (p.depth >= 3u) {
+    const float survive = min(max3(p.throughput), 0.95);
+    if (u.w >= survive) return true;
+    p.throughput /= survive;
+  }
+  if (max3(p.throughput) <= 0.0) return true;
+  p.origin = offset_ray_origin(surface.position, surface.geometricNormal);
+  p.direction = bs.direction;
+  p.depth += 1u;
+  return false;
 }
 
 void main() {
@@ -174,10 +207,16 @@ void main() {
   PixelAccum accum = b_accum[pixelIndex];
   uint rays = 0u;
   uint nonFinite = 0u;
-  for (uint s = 0u; s < u_push.samplesPerPixel; ++s) {
-    const vec3 value = trace_path(pixel, accum.count + s, rays);
+  // Samples finish in index order, so the sum is the same whatever the dispatch size.
+  uint finished = 0u;
+  PathState path = start_path(pixel, accum.count);
+  while (finished < u_push.samplesPerPixel) {
+    if (!path_step(path, rays)) continue;
+    const vec3 value = path.radiance;
     if (any(isnan(value)) || any(isinf(value))) nonFinite += 1u;  // dropped, and counted
     else accum.sum += value;
+    finished += 1u;
+    if (finished < u_push.samplesPerPixel) path = start_path(pixel, accum.count + finished);
   }
   accum.count += u_push.samplesPerPixel;
   b_accum[pixelIndex] = accum;

@@ -14,12 +14,17 @@ namespace vk {
 class Context;
 }
 
+// Which estimators of direct light take part. Only Mis is for production; the others exist so
+// tests can show that each estimator alone converges to the same image.
+enum class LightSampling { Mis = 0, BsdfOnly = 1, LightOnly = 2 };
+
 struct RenderSettings {
   uint32_t width = 256;
   uint32_t height = 256;
   uint32_t seed = 0;
   uint32_t max_depth = 32;  // scattering events; 0 = emitters seen directly only
   uint32_t tile_size = 16;
+  LightSampling light_sampling = LightSampling::Mis;
 };
 
 struct RenderCounters {

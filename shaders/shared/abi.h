@@ -47,6 +47,11 @@ HIPR_CONST uint kLightSpot = 2u;
 HIPR_CONST uint kLightDirectional = 3u;
 HIPR_CONST uint kLightEnvironment = 4u;
 
+// HIPR_LIGHT_SAMPLING values (a define of trace_tiles.comp).
+#define kLightSamplingMis 0
+#define kLightSamplingBsdfOnly 1
+#define kLightSamplingLightOnly 2
+
 HIPR_CONST uint kMaterialDoubleSided = 1u;
 HIPR_CONST uint kMaterialThinWalled = 2u;
 

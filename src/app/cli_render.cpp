@@ -37,10 +37,14 @@ int run_render(const RenderOptions& o) {
   for (const auto& output : o.outputs)
     if (!is_supported_output(output))
       throw InputError("output " + output.string() + ": unsupported format (use .exr or .png)");
+  const Timer load_timer;
   const Scene scene = load_scene(o.common.scene, o.common.load);
+  const double load_seconds = load_timer.seconds();
 
+  const Timer setup_timer;
   const vk::Context ctx(context_options(o.common));
   Renderer renderer(ctx, scene, o.common.render);
+  const double setup_seconds = setup_timer.seconds();
   log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" +
             std::to_string(renderer.scene_info().triangle_count) + " triangles, " +
             std::to_string(renderer.scene_info().light_count) + " lights)");
@@ -82,6 +86,8 @@ int run_render(const RenderOptions& o) {
   if (!o.stats_json.empty()) {
     nlohmann::json stats = {
         {"render_seconds", render_seconds},
+        {"load_seconds", load_seconds},
+        {"setup_seconds", setup_seconds},
         {"samples_per_second", samples / render_seconds},
         {"rays_per_second", double(counters.rays) / render_seconds},
         {"nonfinite_samples", counters.non_finite_samples},

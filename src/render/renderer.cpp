@@ -59,7 +59,8 @@ struct Renderer::Impl {
       : ctx(c),
         settings(s),
         gpu(c, scene),
-        pipeline(c, "trace_tiles.comp", {}, trace_bindings(), sizeof(abi::TracePush)),
+        pipeline(c, "trace_tiles.comp", {{"HIPR_LIGHT_SAMPLING", std::to_string(int(s.light_sampling))}},
+                 trace_bindings(), sizeof(abi::TracePush)),
         accumulation(c, size_t(s.width) * s.height * sizeof(abi::PixelAccum), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
         stats(c, sizeof(abi::RenderStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
         frame(c, sizeof(abi::FrameParams), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
