@@ -17,10 +17,20 @@ fs::path asset(const std::string& name) { return fs::path(HIPR_ASSETS_DIR) / nam
 fs::path shared_scene(const std::string& name) { return fs::path(HIPR_SHARED_SCENES_DIR) / name; }
 bool shared_scenes_available() { return fs::is_directory(HIPR_SHARED_SCENES_DIR); }
 
+namespace {
+
+std::vector<fs::path>& created_temp_dirs() {
+  static std::vector<fs::path> dirs;
+  return dirs;
+}
+
+}  // namespace
+
 fs::path temp_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("hipr-test-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  created_temp_dirs().push_back(dir);
   return dir;
 }
 
@@ -31,9 +41,12 @@ std::unique_ptr<vk::Context>& context_slot() {
   return ctx;
 }
 
+// Checks validation errors and removes temporary folders once all tests of the binary ran.
 class ValidationEnvironment : public ::testing::Environment {
  public:
   void TearDown() override {
+    std::error_code ignored;
+    for (const fs::path& dir : created_temp_dirs()) fs::remove_all(dir, ignored);
     if (auto& ctx = context_slot()) {
       EXPECT_EQ(ctx->validation_errors(), 0u) << "the Vulkan validation layer reported errors";
       ctx.reset();

@@ -34,9 +34,18 @@ void write_stats(const std::filesystem::path& path, const nlohmann::json& stats)
 int run_render(const RenderOptions& o) {
   validate_common_options(o.common);
   log::set_quiet(o.common.quiet);
-  for (const auto& output : o.outputs)
+  // Every output is checked before the render starts: a bad path must not cost a render, and
+  // an error exit must not leave some of the outputs written.
+  const auto check_folder = [](const std::filesystem::path& file) {
+    const auto folder = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(folder)) throw InputError("output folder does not exist: " + folder.string());
+  };
+  for (const auto& output : o.outputs) {
     if (!is_supported_output(output))
       throw InputError("output " + output.string() + ": unsupported format (use .exr or .png)");
+    check_folder(output);
+  }
+  if (!o.stats_json.empty()) check_folder(o.stats_json);
   const Timer load_timer;
   const Scene scene = load_scene(o.common.scene, o.common.load);
   const double load_seconds = load_timer.seconds();

@@ -29,6 +29,8 @@ void write_atomically(const fs::path& path, const std::function<void(const fs::p
 }
 
 std::vector<unsigned char> read_file_bytes(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError("not a readable file: " + path.string());
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open " + path.string());
   in.seekg(0, std::ios::end);

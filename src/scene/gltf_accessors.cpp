@@ -79,11 +79,10 @@ ElementLayout layout_of(const tinygltf::Model& model, int index, const std::stri
   const tinygltf::Buffer& buffer = model.buffers[size_t(view.buffer)];
   layout.stride = view.byteStride ? view.byteStride : element_size;
   if (layout.stride < element_size) fail("bufferView stride is smaller than an element");
-  if (layout.count > 0) {
-    const size_t needed = accessor.byteOffset + layout.stride * (layout.count - 1) + element_size;
-    if (layout.count > (size_t(1) << 32) || needed > view.byteLength)
-      fail("accessor " + std::to_string(index) + " runs past the end of its bufferView");
-  }
+  // Checked step by step so no sum can wrap around (a hostile byteOffset near 2^64 would).
+  const bool fits = accessor.byteOffset <= view.byteLength && element_size <= view.byteLength - accessor.byteOffset &&
+                    (layout.count == 0 || layout.count - 1 <= (view.byteLength - accessor.byteOffset - element_size) / layout.stride);
+  if (!fits) fail("accessor " + std::to_string(index) + " runs past the end of its bufferView");
   layout.base = buffer.data.data() + view.byteOffset + accessor.byteOffset;
   return layout;
 }

@@ -61,7 +61,7 @@ void precheck_json(const std::string& text, const std::string& name) {
     throw InputError(name + ": unsupported glTF version " + version + " (only 2.x is supported)");
   if (doc.contains("extensionsRequired") && doc["extensionsRequired"].is_array()) {
     for (const auto& ext : doc["extensionsRequired"]) {
-      if (!ext.is_string()) continue;
+      if (!ext.is_string()) throw InputError(name + ": invalid glTF: extensionsRequired holds a non-string");
       const auto& supported = supported_gltf_extensions();
       if (std::find(supported.begin(), supported.end(), ext.get<std::string>()) == supported.end())
         throw InputError(name + ": requires unsupported glTF extension " + ext.get<std::string>());
@@ -91,6 +91,8 @@ bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* 
 
 glm::mat4 node_transform(const tinygltf::Node& node, const std::string& what) {
   glm::mat4 m(1.0f);
+  if (!node.matrix.empty() && node.matrix.size() != 16)
+    throw InputError(what + " has a matrix of " + std::to_string(node.matrix.size()) + " numbers (expected 16)");
   if (node.matrix.size() == 16) {
     for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(node.matrix[size_t(i)]);
   } else {
@@ -130,7 +132,7 @@ class Converter {
 
   void convert_materials() {
     for (size_t i = 0; i < m_model.materials.size(); ++i)
-      m_scene.materials.push_back(gltf::convert_material(m_model.materials[i], i, m_textures));
+      m_scene.materials.push_back(gltf::convert_material(m_model.materials[i], i, m_textures, m_name));
     // glTF's default material, for primitives without one: white-ish, fully rough dielectric.
     Material fallback;
     fallback.name = "default";
@@ -215,6 +217,8 @@ class Converter {
       if (source.color.size() >= 3) light.color = glm::max(glm::vec3(source.color[0], source.color[1], source.color[2]), glm::vec3(0));
       light.intensity = float(source.intensity);
       light.range = float(source.range);
+      if (!std::isfinite(light.range) || light.range < 0.0f)
+        throw InputError(object("light", i, source.name) + " has a negative or non-finite range");
       if (source.type == "point") light.type = LightType::Point;
       else if (source.type == "spot") light.type = LightType::Spot;
       else if (source.type == "directional") light.type = LightType::Directional;
@@ -239,11 +243,13 @@ class Converter {
       node.local = node_transform(source, what);
       node.mesh = checked(source.mesh, m_model.meshes.size(), what, "mesh");
       node.camera = checked(source.camera, m_model.cameras.size(), what, "camera");
-      if (const auto it = source.extensions.find("KHR_lights_punctual"); it != source.extensions.end() && it->second.Has("light"))
-        node.light = checked(it->second.Get("light").GetNumberAsInt(), m_model.lights.size(), what, "light");
+      if (const auto it = source.extensions.find("KHR_lights_punctual"); it != source.extensions.end() && it->second.Has("light")) {
+        const tinygltf::Value& light = it->second.Get("light");
+        if (!light.IsInt()) throw InputError(what + ": KHR_lights_punctual.light is not an index");
+        node.light = checked(light.GetNumberAsInt(), m_model.lights.size(), what, "light");
+      }
       for (int child : source.children) {
-        const int c = checked(child, count, what, "child node");
-        if (c < 0) continue;
+        const int c = required(child, count, what, "child node");
         if (size_t(c) == i) throw InputError(what + " is its own child (cycle in the node hierarchy)");
         if (m_scene.nodes[size_t(c)].parent >= 0)
           throw InputError(what + ": node " + std::to_string(c) + " has more than one parent (node hierarchy must be a tree)");
@@ -260,11 +266,13 @@ class Converter {
     const int scene = m_model.defaultScene >= 0 ? m_model.defaultScene : 0;
     if (!m_model.scenes.empty()) {
       if (size_t(scene) >= m_model.scenes.size()) throw InputError(m_name + ": default scene " + std::to_string(scene) + " does not exist");
+      const std::string what = m_name + ": scene " + std::to_string(scene);
       for (int root : m_model.scenes[size_t(scene)].nodes) {
-        const int r = checked(root, count, m_name + ": scene " + std::to_string(scene), "node");
-        if (r < 0) continue;
+        const int r = required(root, count, what, "node");
         if (m_scene.nodes[size_t(r)].parent >= 0)
-          throw InputError(m_name + ": scene root node " + std::to_string(r) + " is also a child of another node");
+          throw InputError(what + ": root node " + std::to_string(r) + " is also a child of another node");
+        if (std::find(m_scene.root_nodes.begin(), m_scene.root_nodes.end(), uint32_t(r)) != m_scene.root_nodes.end())
+          throw InputError(what + " lists node " + std::to_string(r) + " twice");
         m_scene.root_nodes.push_back(uint32_t(r));
       }
     } else {
@@ -274,8 +282,13 @@ class Converter {
     }
   }
 
+  // An optional reference: -1 means none.
   int checked(int index, size_t count, const std::string& what, const char* kind) const {
-    if (index < -1 || (index >= 0 && size_t(index) >= count))
+    return index == -1 ? -1 : required(index, count, what, kind);
+  }
+
+  int required(int index, size_t count, const std::string& what, const char* kind) const {
+    if (index < 0 || size_t(index) >= count)
       throw InputError(what + " references missing " + kind + " " + std::to_string(index));
     return index;
   }

@@ -87,7 +87,7 @@ uint32_t TextureTable::get(int texture, bool srgb, const std::string& what) {
   t.flags = srgb ? abi::kTextureSrgb : 0u;
   if (source.sampler >= 0) {
     if (size_t(source.sampler) >= m_model.samplers.size())
-      throw InputError("texture " + std::to_string(texture) + " references missing sampler");
+      throw InputError(what + ": texture " + std::to_string(texture) + " references missing sampler");
     const tinygltf::Sampler& s = m_model.samplers[size_t(source.sampler)];
     t.flags |= wrap_flags(s.wrapS, abi::kTextureClampU, abi::kTextureMirrorU);
     t.flags |= wrap_flags(s.wrapT, abi::kTextureClampV, abi::kTextureMirrorV);
@@ -100,13 +100,13 @@ uint32_t TextureTable::get(int texture, bool srgb, const std::string& what) {
     t.width = uint32_t(std::max(image.width, 0));
     t.height = uint32_t(std::max(image.height, 0));
     if (!ok) {
-      const std::string where = image.uri.empty() ? "image " + std::to_string(source.source) : "'" + image.uri + "'";
-      log::warn("texture image " + where + " could not be read; rendering a magenta checkerboard instead");
+      const std::string where = image.uri.empty() ? std::to_string(source.source) : "'" + image.uri + "'";
+      log::warn(what + ": texture image " + where + " could not be read; rendering a magenta checkerboard instead");
     }
   } else if (source.source >= 0) {
-    throw InputError("texture " + std::to_string(texture) + " references missing image " + std::to_string(source.source));
+    throw InputError(what + ": texture " + std::to_string(texture) + " references missing image " + std::to_string(source.source));
   } else {
-    log::warn("texture " + std::to_string(texture) + " has no image; rendering a magenta checkerboard instead");
+    log::warn(what + ": texture " + std::to_string(texture) + " has no image; rendering a magenta checkerboard instead");
   }
   if (!ok) t = fallback_texture(t.name, srgb);
 
@@ -117,12 +117,13 @@ uint32_t TextureTable::get(int texture, bool srgb, const std::string& what) {
   return index;
 }
 
-Material convert_material(const tinygltf::Material& m, size_t index, TextureTable& textures) {
+Material convert_material(const tinygltf::Material& m, size_t index, TextureTable& textures,
+                          const std::string& file) {
   Material out;
   out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
   abi::MaterialBlock& p = out.params;
   p = default_material_params();
-  const std::string what = "material '" + out.name + "'";
+  const std::string what = file + ": material " + std::to_string(index) + " ('" + out.name + "')";
 
   const auto& pbr = m.pbrMetallicRoughness;
   p.base_color = color(pbr.baseColorFactor, glm::vec3(1.0f));

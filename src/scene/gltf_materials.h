@@ -20,6 +20,8 @@ class TextureTable {
   std::vector<uint32_t> m_values;
 };
 
-Material convert_material(const tinygltf::Material& material, size_t index, TextureTable& textures);
+// `file` names the scene in error messages.
+Material convert_material(const tinygltf::Material& material, size_t index, TextureTable& textures,
+                          const std::string& file);
 
 }  // namespace hipr::gltf

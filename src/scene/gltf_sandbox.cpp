@@ -57,9 +57,11 @@ bool Sandbox::inside(const fs::path& path) const {
   return root_end == m_root.end();
 }
 
+// Existence is answered truthfully even outside the folder, so that read() is reached and
+// refuses with a message that says why, instead of a misleading "file not found".
 bool Sandbox::exists(const std::string& path) const {
   std::error_code ec;
-  return inside(path) && fs::is_regular_file(path, ec);
+  return fs::is_regular_file(path, ec);
 }
 
 bool Sandbox::read(std::vector<unsigned char>* out, std::string* err, const std::string& path) {

@@ -1,0 +1,229 @@
+// The hipr binary as scripts use it (DESIGN.md, "CLI contract"): exit codes, one-line errors,
+// outputs that appear whole or not at all, image metadata and --stats-json.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+#include "hipr/scene_loader.h"
+#include "image/tonemap.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::stringstream stream(text);
+  for (std::string line; std::getline(stream, line);) lines.push_back(line);
+  return lines;
+}
+
+// The names in `dir`, sorted.
+std::vector<std::string> files_in(const fs::path& dir) {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(dir)) files.push_back(entry.path().filename().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// A refused command: exit code 2, exactly one line that starts with "hipr: error: ".
+void expect_one_error_line(const test::CommandResult& result) {
+  EXPECT_EQ(result.exit_code, kExitBadInput) << result.output;
+  const std::vector<std::string> lines = lines_of(result.output);
+  ASSERT_EQ(lines.size(), 1u) << result.output;
+  EXPECT_EQ(lines[0].rfind("hipr: error: ", 0), 0u) << lines[0];
+}
+
+TEST(Cli, HelpExitsZero) {
+  const test::CommandResult result = test::run_hipr("--help");
+  EXPECT_EQ(result.exit_code, kExitOk) << result.output;
+  EXPECT_NE(result.output.find("render"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("info"), std::string::npos) << result.output;
+}
+
+TEST(Cli, RenderHelpListsTheContractFlags) {
+  const test::CommandResult result = test::run_hipr("render --help");
+  EXPECT_EQ(result.exit_code, kExitOk) << result.output;
+  for (const char* flag : {"--width", "--height", "--spp", "--seed", "--max-depth", "--tile", "--env", "--stats-json"})
+    EXPECT_NE(result.output.find(flag), std::string::npos) << flag;
+}
+
+// A command line that must be refused before anything is written. "@" stands for the test's
+// output folder, which holds nothing but an invalid scene; "$cornell" for the shipped Cornell box.
+struct BadCommand {
+  const char* name;
+  const char* arguments;
+};
+
+std::ostream& operator<<(std::ostream& out, const BadCommand& command) { return out << command.arguments; }
+
+std::string expand(std::string arguments, const fs::path& out_dir) {
+  const std::pair<std::string, std::string> substitutions[] = {
+      {"@", out_dir.string()}, {"$cornell", quoted(test::asset("cornell_box.gltf"))}};
+  for (const auto& [from, to] : substitutions)
+    for (size_t at; (at = arguments.find(from)) != std::string::npos;) arguments.replace(at, from.size(), to);
+  return arguments;
+}
+
+class BadCommandLine : public testing::TestWithParam<BadCommand> {};
+
+TEST_P(BadCommandLine, ExitsTwoWithOneLineAndWritesNothing) {
+  const fs::path out_dir = test::temp_dir("cli-bad");
+  std::ofstream(out_dir / "invalid.gltf") << R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 3}]})";
+  expect_one_error_line(test::run_hipr(expand(GetParam().arguments, out_dir)));
+  EXPECT_EQ(files_in(out_dir), std::vector<std::string>{"invalid.gltf"}) << "no output and no temporary file";
+}
+
+std::string bad_command_name(const testing::TestParamInfo<BadCommand>& param_info) { return param_info.param.name; }
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadCommandLine,
+    testing::Values(BadCommand{"no_subcommand", ""},
+                    BadCommand{"unknown_subcommand", "paint $cornell"},
+                    BadCommand{"unknown_flag", "render $cornell -o @/out.exr --bogus"},
+                    BadCommand{"missing_output", "render $cornell"},
+                    BadCommand{"spp_zero", "render $cornell -o @/out.exr --spp 0"},
+                    BadCommand{"negative_width", "render $cornell -o @/out.exr --width -5"},
+                    BadCommand{"bmp_output", "render $cornell -o @/out.bmp --width 8 --height 8 --spp 1"},
+                    BadCommand{"one_bad_output_of_two", "render $cornell -o @/out.exr -o @/out.bmp --spp 1"},
+                    BadCommand{"missing_scene", "render @/missing.gltf -o @/out.exr --spp 1"},
+                    BadCommand{"scene_not_gltf", "render @/ -o @/out.exr --spp 1"},
+                    BadCommand{"invalid_scene", "render @/invalid.gltf -o @/out.png --width 8 --height 8 --spp 1"},
+                    BadCommand{"invalid_scene_info", "info @/invalid.gltf"}),
+    bad_command_name);
+
+TEST(Cli, MissingOutputFolderIsABadInput) {
+  const fs::path out_dir = test::temp_dir("cli-no-folder");
+  expect_one_error_line(test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) + " -o " +
+                                       quoted(out_dir / "missing" / "out.exr") +
+                                       " --width 8 --height 8 --spp 1 --quiet"));
+}
+
+TEST(Cli, BadStatsPathWritesNoImage) {
+  // Every output is checked before rendering: an error exit never leaves some outputs behind.
+  const fs::path out_dir = test::temp_dir("cli-bad-stats");
+  const test::CommandResult result =
+      test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) + " -o " + quoted(out_dir / "out.exr") +
+                     " --stats-json " + quoted(out_dir / "missing" / "stats.json") + " --width 8 --height 8 --spp 1");
+  EXPECT_EQ(result.exit_code, kExitBadInput) << result.output;
+  EXPECT_FALSE(fs::exists(out_dir / "out.exr")) << "an image was written although the command failed";
+}
+
+// One render of the Cornell box to EXR + PNG + stats, shared by the tests that inspect it.
+class CornellRender : public testing::Test {
+ protected:
+  static constexpr uint32_t kSize = 32;
+  static constexpr uint32_t kSpp = 2;
+  static constexpr uint32_t kSeed = 7;
+
+  static void SetUpTestSuite() {
+    s_dir = test::temp_dir("cli-render");
+    s_result = test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) + " -o " + quoted(exr()) + " -o " +
+                              quoted(png()) + " --width 32 --height 32 --spp 2 --seed 7 --stats-json " +
+                              quoted(stats()) + " --validate");
+  }
+  void SetUp() override { ASSERT_EQ(s_result.exit_code, kExitOk) << s_result.output; }
+
+  static fs::path exr() { return s_dir / "cornell.exr"; }
+  static fs::path png() { return s_dir / "cornell.png"; }
+  static fs::path stats() { return s_dir / "stats.json"; }
+
+  static inline fs::path s_dir;
+  static inline test::CommandResult s_result;
+};
+
+TEST_F(CornellRender, ExrIsTheRenderedImage) {
+  const ImageRGB image = read_image(exr());
+  EXPECT_EQ(image.width, kSize);
+  EXPECT_EQ(image.height, kSize);
+  EXPECT_TRUE(test::all_finite(image));
+  EXPECT_GT(test::mean(image), 0.01) << "the lit Cornell box rendered black";
+}
+
+TEST_F(CornellRender, ExrCarriesProvenance) {
+  EXPECT_EQ(read_image_attribute(exr(), "hipr:spp"), std::to_string(kSpp));
+  EXPECT_EQ(read_image_attribute(exr(), "hipr:seed"), std::to_string(kSeed));
+  const std::string hash = read_image_attribute(exr(), "hipr:scene_hash");
+  EXPECT_EQ(hash.size(), 16u) << hash;
+  EXPECT_EQ(hash.find_first_not_of("0123456789abcdef"), std::string::npos) << hash;
+  EXPECT_EQ(hash, load_scene(test::asset("cornell_box.gltf")).content_hash);
+}
+
+TEST_F(CornellRender, PngIsTheSrgbEncodedExr) {
+  const ImageRGB linear = read_image(exr());
+  const ImageRGB encoded = read_image(png());
+  ASSERT_EQ(encoded.width, kSize);
+  ASSERT_EQ(encoded.height, kSize);
+  EXPECT_EQ(read_image_attribute(png(), "oiio:ColorSpace"), "sRGB");
+  for (size_t i = 0; i < encoded.rgb.size(); ++i) {
+    const float v = encoded.rgb[i];
+    ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << "value " << i << " = " << v;
+    ASSERT_NEAR(v * 255.0f, std::round(v * 255.0f), 1e-3f) << "value " << i << " is not 8-bit";
+    ASSERT_NEAR(v, srgb_encode(linear.rgb[i]), 0.51f / 255.0f) << "value " << i;
+  }
+}
+
+TEST_F(CornellRender, StatsJsonHasTheContractKeys) {
+  std::ifstream in(stats());
+  ASSERT_TRUE(in) << "no " << stats();
+  const nlohmann::json json = nlohmann::json::parse(in);
+  for (const char* key : {"render_seconds", "samples_per_second", "rays_per_second", "nonfinite_samples", "spp", "width",
+                          "height"})
+    ASSERT_TRUE(json.contains(key) && json[key].is_number()) << key << " in " << json.dump();
+  EXPECT_EQ(json["spp"], kSpp);
+  EXPECT_EQ(json["width"], kSize);
+  EXPECT_EQ(json["height"], kSize);
+  EXPECT_EQ(json["nonfinite_samples"], 0);
+  const double seconds = json["render_seconds"];
+  EXPECT_GT(seconds, 0.0);
+  EXPECT_LT(seconds, 60.0);
+  const double samples = double(kSize) * kSize * kSpp;
+  EXPECT_NEAR(json["samples_per_second"].get<double>() * seconds, samples, samples * 1e-6);
+  // Every sample traces at least its camera ray.
+  EXPECT_GE(json["rays_per_second"].get<double>(), json["samples_per_second"].get<double>());
+}
+
+TEST_F(CornellRender, NothingElseIsLeftInTheOutputFolder) {
+  EXPECT_EQ(files_in(s_dir), (std::vector<std::string>{"cornell.exr", "cornell.png", "stats.json"}));
+}
+
+// `hipr info` on every scene we ship prints its triangle count.
+class InfoOnShippedScene : public testing::TestWithParam<std::string> {};
+
+size_t triangles_in_scene(const Scene& scene) {
+  size_t triangles = 0;
+  for (const Instance& instance : scene.instances())
+    for (const MeshPrimitive& p : scene.meshes[instance.mesh].primitives) triangles += p.indices.size() / 3;
+  return triangles;
+}
+
+TEST_P(InfoOnShippedScene, PrintsTheTriangleCount) {
+  const fs::path scene = test::asset(GetParam());
+  const test::CommandResult result = test::run_hipr("info " + quoted(scene));
+  EXPECT_EQ(result.exit_code, kExitOk) << result.output;
+  const std::string expected = "triangles  " + std::to_string(triangles_in_scene(load_scene(scene))) + " in the scene";
+  EXPECT_NE(result.output.find(expected), std::string::npos) << "no '" << expected << "' in\n" << result.output;
+}
+
+std::string scene_test_name(const testing::TestParamInfo<std::string>& param_info) {
+  std::string name = param_info.param;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, InfoOnShippedScene,
+                         testing::Values("cornell_box.gltf", "cornell_box_moved.gltf", "cornell_sphere.glb",
+                                         "furnace_sphere.gltf"),
+                         scene_test_name);
+
+}  // namespace
+}  // namespace hipr
