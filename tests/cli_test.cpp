@@ -15,16 +15,9 @@
 
 namespace hipr {
 namespace {
+using test::lines_of;
+using test::quoted;
 namespace fs = std::filesystem;
-
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::stringstream stream(text);
-  for (std::string line; std::getline(stream, line);) lines.push_back(line);
-  return lines;
-}
 
 // The names in `dir`, sorted.
 std::vector<std::string> files_in(const fs::path& dir) {

@@ -11,6 +11,8 @@
 
 namespace hipr {
 namespace {
+using test::lines_of;
+using test::quoted;
 namespace fs = std::filesystem;
 
 struct InvalidInput {
@@ -56,15 +58,6 @@ std::vector<InvalidInput> invalid_inputs(bool fallback) {
     if (loads_with_fallback(input.file) == fallback) inputs.push_back(input);
   if (inputs.empty()) inputs.push_back({});
   return inputs;
-}
-
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::stringstream stream(text);
-  for (std::string line; std::getline(stream, line);) lines.push_back(line);
-  return lines;
 }
 
 // Runs `hipr render FILE -o DIR/out.png` at 16x16, 1 spp, into a fresh folder.

@@ -29,6 +29,9 @@ struct CommandResult {
 // Runs build/hipr with the given arguments (already shell-quoted where needed).
 CommandResult run_hipr(const std::string& arguments);
 
+std::string quoted(const std::filesystem::path& path);  // for run_hipr arguments
+std::vector<std::string> lines_of(const std::string& text);
+
 double mean(const ImageRGB& image, int channel = -1);  // channel -1: mean over RGB
 bool all_finite(const ImageRGB& image);
 
