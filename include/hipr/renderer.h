@@ -53,6 +53,11 @@ class Renderer {
   void add_samples(std::span<const uint32_t> tiles, uint32_t samples_per_pixel);
   void add_samples_full_frame(uint32_t samples_per_pixel);
 
+  // Brings the GPU scene up to date with `scene` after edits, touching only what `changes`
+  // names (material table, TLAS + light tables, light tables, camera). Accumulated samples are
+  // kept; callers decide which tiles restart.
+  void update_scene(const Scene& scene, const struct ChangeSet& changes);
+
   ImageRGB image() const;                     // per-pixel mean radiance
   std::vector<uint32_t> sample_counts() const;  // per pixel
   RenderCounters counters() const;

@@ -37,11 +37,13 @@ struct Node {
   bool visible = true;
 };
 
-// One drawn copy of a mesh: a node with a mesh, with its flattened world transform.
+// One copy of a mesh: a node with a mesh, with its flattened world transform. Hidden ones
+// (the node or an ancestor invisible) are listed too, so instance numbering survives edits.
 struct Instance {
   uint32_t node = 0;
   uint32_t mesh = 0;
   glm::mat4 world{1.0f};
+  bool visible = true;
 };
 
 struct Texture {
@@ -100,7 +102,8 @@ struct Scene {
   std::optional<Environment> environment;
   std::vector<std::string> extensions_used;
 
-  // Flattened node hierarchy (nodes with a mesh, visible, reachable from the default scene).
+  // Flattened node hierarchy: nodes with a mesh reachable from the default scene, in a fixed
+  // depth-first order.
   std::vector<Instance> instances() const;
   glm::mat4 world_transform(uint32_t node) const;
   // Camera node to render from: the first node with a camera, or -1.

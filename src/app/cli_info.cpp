@@ -33,6 +33,7 @@ int run_info(const InfoOptions& o) {
     for (const MeshPrimitive& p : mesh.primitives) unique_triangles += p.indices.size() / 3;
   std::set<uint32_t> used_materials;
   for (const Instance& instance : instances) {
+    if (!instance.visible) continue;
     for (const MeshPrimitive& p : scene.meshes[instance.mesh].primitives) {
       scene_triangles += p.indices.size() / 3;
       used_materials.insert(p.material);

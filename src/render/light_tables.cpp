@@ -41,6 +41,7 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
 
   for (size_t i = 0; i < instances.size(); ++i) {
     const Instance& instance = instances[i];
+    if (!instance.visible) continue;
     const Mesh& mesh = scene.meshes[instance.mesh];
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const MeshPrimitive& prim = mesh.primitives[p];

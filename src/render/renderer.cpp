@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "core/error.h"
+#include "hipr/scene_diff.h"
 #include "render/gpu_scene.h"
 #include "scene/default_camera.h"
 #include "vk/compute_pipeline.h"
@@ -66,14 +67,18 @@ struct Renderer::Impl {
         frame(c, sizeof(abi::FrameParams), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
     tiles_x = (s.width + s.tile_size - 1) / s.tile_size;
     tiles_y = (s.height + s.tile_size - 1) / s.tile_size;
-    const abi::FrameParams params = make_frame_params(scene, gpu, s);
-    frame.upload(&params, sizeof params);
     all_tiles.resize(size_t(tiles_x) * tiles_y);
     std::iota(all_tiles.begin(), all_tiles.end(), 0u);
     tile_list = vk::Buffer(c, all_tiles.size() * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     accumulation.clear();
     stats.clear();
+    bind_scene(scene);
+  }
 
+  // (Re)binds everything the scene owns: after an update some buffers are new objects.
+  void bind_scene(const Scene& scene) {
+    const abi::FrameParams params = make_frame_params(scene, gpu, settings);
+    frame.upload(&params, sizeof params);
     pipeline.bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
     const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
         {abi::kBindingPositions, &gpu.positions}, {abi::kBindingNormals, &gpu.normals},
@@ -126,6 +131,13 @@ void Renderer::add_samples(std::span<const uint32_t> tiles, uint32_t samples_per
   push.tileStride = scatter_stride(uint32_t(groups));
   push.samplesPerPixel = samples_per_pixel;
   m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->pipeline.dispatch(cmd, &push, uint32_t(groups)); });
+}
+
+void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
+  if (changes.materials) m->gpu.update_materials(scene);
+  if (changes.transforms) m->gpu.update_instances(scene);  // includes the light tables
+  else if (changes.light_tables) m->gpu.update_lights(scene);
+  m->bind_scene(scene);
 }
 
 void Renderer::add_samples_full_frame(uint32_t samples_per_pixel) { add_samples(m->all_tiles, samples_per_pixel); }

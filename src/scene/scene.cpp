@@ -47,17 +47,22 @@ glm::mat4 Scene::world_transform(uint32_t node) const {
 
 std::vector<Instance> Scene::instances() const {
   std::vector<Instance> result;
-  std::vector<std::pair<uint32_t, glm::mat4>> stack;
-  for (auto it = root_nodes.rbegin(); it != root_nodes.rend(); ++it) stack.emplace_back(*it, glm::mat4(1.0f));
+  struct Entry {
+    uint32_t node;
+    glm::mat4 parent_world;
+    bool parent_visible;
+  };
+  std::vector<Entry> stack;
+  for (auto it = root_nodes.rbegin(); it != root_nodes.rend(); ++it) stack.push_back({*it, glm::mat4(1.0f), true});
   while (!stack.empty()) {
-    const auto [index, parent_world] = stack.back();
+    const Entry entry = stack.back();
     stack.pop_back();
-    const Node& node = nodes[index];
-    if (!node.visible) continue;  // hides the whole subtree, as hiding a group does
-    const glm::mat4 world = parent_world * node.local;
-    if (node.mesh >= 0) result.push_back({index, uint32_t(node.mesh), world});
-    const auto& kids = children[index];
-    for (auto it = kids.rbegin(); it != kids.rend(); ++it) stack.emplace_back(*it, world);
+    const Node& node = nodes[entry.node];
+    const glm::mat4 world = entry.parent_world * node.local;
+    const bool visible = entry.parent_visible && node.visible;  // hiding a group hides its subtree
+    if (node.mesh >= 0) result.push_back({entry.node, uint32_t(node.mesh), world, visible});
+    const auto& kids = children[entry.node];
+    for (auto it = kids.rbegin(); it != kids.rend(); ++it) stack.push_back({*it, world, visible});
   }
   return result;
 }
@@ -79,6 +84,7 @@ std::pair<glm::vec3, glm::vec3> Scene::bounds() const {
   glm::vec3 lo(std::numeric_limits<float>::max());
   glm::vec3 hi(-std::numeric_limits<float>::max());
   for (const Instance& instance : instances()) {
+    if (!instance.visible) continue;
     for (const MeshPrimitive& primitive : meshes[instance.mesh].primitives) {
       for (const glm::vec3& p : primitive.positions) {
         const glm::vec3 w = glm::vec3(instance.world * glm::vec4(p, 1.0f));

@@ -107,7 +107,7 @@ AccelerationStructure build_tlas(const Context& ctx, const std::vector<TlasInsta
     std::memcpy(out.transform.matrix, in.object_to_world.data(), sizeof(out.transform.matrix));
     if (in.custom_index >= (1u << 24)) throw InputError("scene has too many primitives for one TLAS");
     out.instanceCustomIndex = in.custom_index;
-    out.mask = 0xff;
+    out.mask = in.visible ? 0xff : 0x00;
     out.instanceShaderBindingTableRecordOffset = 0;
     // Vulkan's default front face is clockwise in its ray space; glTF fronts are counter-clockwise.
     out.flags = in.front_face_ccw ? VK_GEOMETRY_INSTANCE_TRIANGLE_FRONT_COUNTERCLOCKWISE_BIT_KHR : 0;

@@ -50,6 +50,7 @@ struct TlasInstance {
   uint32_t custom_index;                  // 24 bits: first GeometryRecord of this instance
   VkDeviceAddress blas;
   bool front_face_ccw = true;
+  bool visible = true;  // hidden instances stay in the TLAS with mask 0: no ray ever hits them
 };
 
 AccelerationStructure build_tlas(const Context& ctx, const std::vector<TlasInstance>& instances);

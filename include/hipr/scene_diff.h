@@ -1,0 +1,26 @@
+#pragma once
+// SceneDiff: what changed between two states of the same scene, as the changed set E of the
+// HiPR paper (instances whose transform, visibility, material or emission changed; lights that
+// changed) plus the kinds of change, which decide the cheapest GPU update.
+#include <cstdint>
+#include <vector>
+
+#include "hipr/scene.h"
+
+namespace hipr {
+
+struct ChangeSet {
+  std::vector<uint32_t> instances;  // indices into Scene::instances() (the changed set E)
+  std::vector<uint32_t> lights;     // node indices of punctual lights that changed
+  bool materials = false;           // material parameters changed: patch the material table
+  bool transforms = false;          // an instance moved, appeared or disappeared: rebuild the TLAS
+  bool light_tables = false;        // emitters or punctual lights changed: rebuild light tables
+  bool camera = false;              // the view changed: everything restarts
+
+  bool empty() const { return instances.empty() && lights.empty() && !materials && !transforms && !light_tables && !camera; }
+};
+
+// Both states must come from the same loaded scene (same meshes and instances), as edits keep.
+ChangeSet diff_scenes(const Scene& before, const Scene& after);
+
+}  // namespace hipr

@@ -1,0 +1,167 @@
+// Edit scripts (JSON) -> Edit values. Every problem names the file and the edit's position.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+#include "hipr/edits.h"
+#include "scene/material_parameters.h"
+
+namespace hipr {
+namespace {
+
+using nlohmann::json;
+
+class EditReader {
+ public:
+  EditReader(const json& edit, std::string where) : m_edit(edit), m_where(std::move(where)) {}
+
+  [[noreturn]] void fail(const std::string& why) const { throw InputError(m_where + ": " + why); }
+
+  std::string string(const char* key) const {
+    if (!m_edit.contains(key) || !m_edit[key].is_string()) fail(std::string("needs a string \"") + key + "\"");
+    return m_edit[key];
+  }
+
+  std::vector<float> numbers(const json& value, const std::string& key) const {
+    std::vector<float> out;
+    if (value.is_number()) out.push_back(value.get<float>());
+    else if (value.is_array())
+      for (const json& v : value) {
+        if (!v.is_number()) fail("\"" + key + "\" must hold numbers");
+        out.push_back(v.get<float>());
+      }
+    else fail("\"" + key + "\" must be a number or an array of numbers");
+    for (float v : out)
+      if (!std::isfinite(v)) fail("\"" + key + "\" holds a non-finite number");
+    return out;
+  }
+
+  std::optional<glm::vec3> vec3(const char* key) const {
+    if (!m_edit.contains(key)) return std::nullopt;
+    const auto v = numbers(m_edit[key], key);
+    if (v.size() != 3) fail(std::string("\"") + key + "\" needs 3 numbers");
+    return glm::vec3(v[0], v[1], v[2]);
+  }
+
+  std::optional<glm::mat4> matrix() const {
+    if (!m_edit.contains("matrix")) return std::nullopt;
+    const auto v = numbers(m_edit["matrix"], "matrix");
+    if (v.size() != 16) fail("\"matrix\" needs 16 numbers (column-major)");
+    glm::mat4 m;
+    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = v[size_t(i)];
+    return m;
+  }
+
+  const json& set_object() const {
+    if (!m_edit.contains("set") || !m_edit["set"].is_object() || m_edit["set"].empty())
+      fail("needs a non-empty object \"set\"");
+    return m_edit["set"];
+  }
+
+  void only_keys(std::initializer_list<const char*> allowed) const {
+    for (const auto& [key, value] : m_edit.items()) {
+      bool ok = false;
+      for (const char* a : allowed) ok = ok || key == a;
+      if (!ok) fail("unknown key \"" + key + "\"");
+    }
+  }
+
+  const json& edit() const { return m_edit; }
+
+ private:
+  const json& m_edit;
+  std::string m_where;
+};
+
+MaterialEdit read_material(const EditReader& r, bool emission_only) {
+  MaterialEdit edit;
+  edit.material = r.string("material");
+  for (const auto& [key, value] : r.set_object().items()) {
+    const MaterialParameter* parameter = find_material_parameter(key);
+    if (!parameter) r.fail("unknown material parameter \"" + key + "\"");
+    if (emission_only && key != "emission_luminance" && key != "emission_color")
+      r.fail("an emission edit sets only emission_luminance and emission_color, not \"" + key + "\"");
+    const auto values = r.numbers(value, key);
+    if (int(values.size()) != parameter->components)
+      r.fail("\"" + key + "\" needs " + std::to_string(parameter->components) + " number(s)");
+    for (float v : values)
+      if (v < parameter->min || v > parameter->max)
+        r.fail("\"" + key + "\" = " + std::to_string(v) + " is outside [" + std::to_string(parameter->min) + ", " +
+               std::to_string(parameter->max) + "]");
+    edit.set.push_back({key, values});
+  }
+  return edit;
+}
+
+Edit read_edit(const EditReader& r) {
+  if (!r.edit().is_object()) r.fail("an edit must be a JSON object");
+  const std::string op = r.string("op");
+  if (op == "transform") {
+    r.only_keys({"op", "node", "translate", "matrix"});
+    TransformEdit e{r.string("node"), r.vec3("translate"), r.matrix()};
+    if (e.translate.has_value() == e.matrix.has_value()) r.fail("a transform needs exactly one of \"translate\", \"matrix\"");
+    return e;
+  }
+  if (op == "material" || op == "emission") {
+    r.only_keys({"op", "material", "set"});
+    return read_material(r, op == "emission");
+  }
+  if (op == "light") {
+    r.only_keys({"op", "node", "set"});
+    LightEdit e;
+    e.node = r.string("node");
+    for (const auto& [key, value] : r.set_object().items()) {
+      const auto v = r.numbers(value, key);
+      if (key == "intensity" && v.size() == 1 && v[0] >= 0) e.intensity = v[0];
+      else if (key == "color" && v.size() == 3 && v[0] >= 0 && v[1] >= 0 && v[2] >= 0) e.color = glm::vec3(v[0], v[1], v[2]);
+      else if (key == "range" && v.size() == 1 && v[0] >= 0) e.range = v[0];
+      else if (key != "intensity" && key != "color" && key != "range") r.fail("unknown light parameter \"" + key + "\"");
+      else r.fail("invalid value for light parameter \"" + key + "\"");
+    }
+    return e;
+  }
+  if (op == "visibility") {
+    r.only_keys({"op", "node", "visible"});
+    if (!r.edit().contains("visible") || !r.edit()["visible"].is_boolean()) r.fail("needs a boolean \"visible\"");
+    return VisibilityEdit{r.string("node"), r.edit()["visible"].get<bool>()};
+  }
+  if (op == "camera") {
+    r.only_keys({"op", "translate", "matrix"});
+    CameraEdit e{r.vec3("translate"), r.matrix()};
+    if (e.translate.has_value() == e.matrix.has_value()) r.fail("a camera edit needs exactly one of \"translate\", \"matrix\"");
+    return e;
+  }
+  r.fail("unknown op \"" + op + "\" (transform, material, light, emission, visibility, camera)");
+}
+
+}  // namespace
+
+std::vector<Edit> parse_edit_script(const std::string& text, const std::string& name) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::exception& e) {
+    std::string why = e.what();
+    if (const size_t at = why.find("] "); at != std::string::npos) why = why.substr(at + 2);
+    throw InputError(name + ": invalid JSON: " + why);
+  }
+  if (!doc.is_object() || !doc.contains("edits") || !doc["edits"].is_array())
+    throw InputError(name + ": an edit script is an object with an array \"edits\"");
+  std::vector<Edit> edits;
+  for (size_t i = 0; i < doc["edits"].size(); ++i)
+    edits.push_back(read_edit(EditReader(doc["edits"][i], name + ": edit " + std::to_string(i))));
+  return edits;
+}
+
+std::vector<Edit> load_edit_script(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read edit script " + path.string());
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_edit_script(text.str(), path.filename().string());
+}
+
+}  // namespace hipr

@@ -1,0 +1,109 @@
+// Applying edits to the scene model.
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/error.h"
+#include "hipr/edits.h"
+#include "scene/default_camera.h"
+#include "scene/material_parameters.h"
+
+namespace hipr {
+namespace {
+
+// "#index" or a name; with several of the same name, the first wins (as in glTF tools).
+template <typename Items, typename NameOf>
+size_t find_by_name(const Items& items, const std::string& name, NameOf name_of, const char* kind) {
+  if (name.size() > 1 && name[0] == '#') {
+    try {
+      size_t used = 0;
+      const unsigned long index = std::stoul(name.substr(1), &used);
+      if (used == name.size() - 1 && index < items.size()) return index;
+    } catch (const std::exception&) {
+    }
+  }
+  for (size_t i = 0; i < items.size(); ++i)
+    if (name_of(items[i]) == name) return i;
+  throw InputError(std::string("no ") + kind + " named '" + name + "' in the scene");
+}
+
+size_t find_node(const Scene& scene, const std::string& name) {
+  return find_by_name(scene.nodes, name, [](const Node& n) { return n.name; }, "node");
+}
+
+size_t find_material(const Scene& scene, const std::string& name) {
+  return find_by_name(scene.materials, name, [](const Material& m) { return m.name; }, "material");
+}
+
+void move_node(glm::mat4& local, const std::optional<glm::vec3>& translate, const std::optional<glm::mat4>& matrix) {
+  if (matrix) local = *matrix;
+  else local[3] += glm::vec4(*translate, 0.0f);
+}
+
+struct Applier {
+  Scene& scene;
+
+  void operator()(const TransformEdit& e) const { move_node(scene.nodes[find_node(scene, e.node)].local, e.translate, e.matrix); }
+
+  void operator()(const MaterialEdit& e) const {
+    abi::MaterialBlock& block = scene.materials[find_material(scene, e.material)].params;
+    for (const ParameterValue& p : e.set) {
+      const MaterialParameter* parameter = find_material_parameter(p.key);
+      if (!parameter || int(p.values.size()) != parameter->components)
+        throw InputError("invalid material parameter '" + p.key + "'");
+      std::memcpy(reinterpret_cast<char*>(&block) + parameter->offset, p.values.data(), p.values.size() * sizeof(float));
+    }
+  }
+
+  void operator()(const LightEdit& e) const {
+    const Node& node = scene.nodes[find_node(scene, e.node)];
+    if (node.light < 0) throw InputError("node '" + e.node + "' has no light");
+    PunctualLight& light = scene.lights[size_t(node.light)];
+    if (e.intensity) light.intensity = *e.intensity;
+    if (e.color) light.color = *e.color;
+    if (e.range) light.range = *e.range;
+  }
+
+  void operator()(const VisibilityEdit& e) const { scene.nodes[find_node(scene, e.node)].visible = e.visible; }
+
+  void operator()(const CameraEdit& e) const {
+    int node = scene.camera_node();
+    if (node < 0) {
+      // No camera in the file: materialize the default one so the edit has something to move.
+      const Camera camera = resolve_camera(scene);
+      scene.cameras.push_back(camera);
+      Node camera_node;
+      camera_node.name = "camera";
+      camera_node.camera = int(scene.cameras.size() - 1);
+      camera_node.local = camera.camera_to_world;
+      scene.nodes.push_back(camera_node);
+      scene.children.emplace_back();
+      node = int(scene.nodes.size() - 1);
+      scene.root_nodes.push_back(uint32_t(node));
+    }
+    move_node(scene.nodes[size_t(node)].local, e.translate, e.matrix);
+  }
+};
+
+}  // namespace
+
+void apply_edit(Scene& scene, const Edit& edit) { std::visit(Applier{scene}, edit); }
+
+std::string describe(const Edit& edit) {
+  struct Describer {
+    std::string operator()(const TransformEdit& e) const { return "transform " + e.node; }
+    std::string operator()(const MaterialEdit& e) const { return "material " + e.material; }
+    std::string operator()(const LightEdit& e) const { return "light " + e.node; }
+    std::string operator()(const VisibilityEdit& e) const { return std::string(e.visible ? "show " : "hide ") + e.node; }
+    std::string operator()(const CameraEdit&) const { return "camera"; }
+  };
+  return std::visit(Describer{}, edit);
+}
+
+std::vector<std::string> material_parameter_names() {
+  std::vector<std::string> names;
+  for (const MaterialParameter& p : material_parameters()) names.push_back(p.name);
+  return names;
+}
+
+}  // namespace hipr

@@ -1,0 +1,21 @@
+#pragma once
+// The table of editable OpenPBR parameters: name -> field of abi::MaterialBlock.
+#include <string>
+#include <vector>
+
+#include "shaders/shared/abi.h"
+
+namespace hipr {
+
+struct MaterialParameter {
+  const char* name;
+  size_t offset;   // into abi::MaterialBlock
+  int components;  // 1 (scalar) or 3 (colour)
+  float min;       // valid range of every component
+  float max;
+};
+
+const std::vector<MaterialParameter>& material_parameters();
+const MaterialParameter* find_material_parameter(const std::string& name);
+
+}  // namespace hipr

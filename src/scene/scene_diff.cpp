@@ -1,0 +1,70 @@
+#include "hipr/scene_diff.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/error.h"
+#include "scene/default_camera.h"
+
+namespace hipr {
+namespace {
+
+bool same_bytes(const abi::MaterialBlock& a, const abi::MaterialBlock& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+bool is_emissive(const abi::MaterialBlock& m) {
+  return m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f)));
+}
+
+bool same_light(const PunctualLight& a, const PunctualLight& b) {
+  return a.type == b.type && a.color == b.color && a.intensity == b.intensity && a.range == b.range &&
+         a.inner_cone == b.inner_cone && a.outer_cone == b.outer_cone;
+}
+
+}  // namespace
+
+ChangeSet diff_scenes(const Scene& before, const Scene& after) {
+  ChangeSet changes;
+  const std::vector<Instance> old_instances = before.instances();
+  const std::vector<Instance> new_instances = after.instances();
+  if (old_instances.size() != new_instances.size() || before.materials.size() != after.materials.size() ||
+      before.lights.size() != after.lights.size())
+    throw InternalError("scene diff between different scenes");
+
+  std::vector<bool> material_changed(after.materials.size(), false);
+  for (size_t m = 0; m < after.materials.size(); ++m) {
+    if (same_bytes(before.materials[m].params, after.materials[m].params)) continue;
+    material_changed[m] = true;
+    changes.materials = true;
+    if (is_emissive(before.materials[m].params) || is_emissive(after.materials[m].params)) changes.light_tables = true;
+  }
+
+  for (size_t i = 0; i < new_instances.size(); ++i) {
+    const Instance& a = old_instances[i];
+    const Instance& b = new_instances[i];
+    bool changed = a.world != b.world || a.visible != b.visible;
+    if (changed) {
+      changes.transforms = true;
+      for (const MeshPrimitive& p : after.meshes[b.mesh].primitives)
+        if (is_emissive(after.materials[p.material].params)) changes.light_tables = true;
+    }
+    for (const MeshPrimitive& p : after.meshes[b.mesh].primitives) changed = changed || material_changed[p.material];
+    if (changed) changes.instances.push_back(uint32_t(i));
+  }
+
+  for (uint32_t n = 0; n < after.nodes.size(); ++n) {
+    const int light = after.nodes[n].light;
+    if (light < 0) continue;
+    const bool moved = n >= before.nodes.size() || before.world_transform(n) != after.world_transform(n);
+    if (moved || !same_light(before.lights[size_t(light)], after.lights[size_t(light)])) {
+      changes.lights.push_back(n);
+      changes.light_tables = true;
+    }
+  }
+
+  const Camera old_camera = resolve_camera(before);
+  const Camera new_camera = resolve_camera(after);
+  changes.camera = old_camera.camera_to_world != new_camera.camera_to_world || old_camera.yfov != new_camera.yfov;
+  return changes;
+}
+
+}  // namespace hipr
