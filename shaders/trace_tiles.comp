@@ -21,12 +21,22 @@ layout(local_size_x = 64) in;  // == kWorkgroupSize
 #include "common/surface.glsl"
 #include "common/environment.glsl"
 #include "common/lights.glsl"
+#include "common/tile_pixels.glsl"
 #include "bsdf/bsdf.glsl"
 
 layout(push_constant, scalar) uniform Push { TracePush u_push; };
 
 // Which estimators take part (a compile-time switch, so tests can check that each one alone
 // converges to the same image): kLightSamplingMis, kLightSamplingBsdfOnly, kLightSamplingLightOnly.
+// Stage 2 of HiPR: with HIPR_DISCOVERY 1 every secondary vertex that is visible in the frame
+// adds weight to the tile it projects to (see shaders/common/discovery.glsl).
+#ifndef HIPR_DISCOVERY
+#define HIPR_DISCOVERY 0
+#endif
+#if HIPR_DISCOVERY
+#include "common/discovery.glsl"
+#endif
+
 #ifndef HIPR_LIGHT_SAMPLING
 #define HIPR_LIGHT_SAMPLING kLightSamplingMis
 #endif
@@ -89,7 +99,8 @@ float emitter_hit_weight(SurfaceHit surface, float distance, vec3 direction, flo
   return bsdf_hit_weight(bsdfPdf, lightPdf);
 }
 
-vec3 direct_light(SurfaceHit surface, BsdfParams params, BsdfFrame frame, vec3 wo, vec4 u, inout uint rays) {
+vec3 direct_light(SurfaceHit surface, BsdfParams params, BsdfFrame frame, vec3 wo, vec4 u, float occlusionWeight,
+                  inout uint rays) {
   const LightSample ls = sample_light(surface.position, u);
   if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
   const vec3 f = bsdf_eval(params, frame, wo, ls.direction);
@@ -108,7 +119,16 @@ vec3 direct_light(SurfaceHit surface, BsdfParams params, BsdfFrame frame, vec3 w
     tMax *= 0.99999;
   }
   rays += 1u;
+#if HIPR_DISCOVERY
+  // Stage 2: a shadow cast by a changed element makes the shadowed point's tile a priority.
+  const uint blocker = closest_blocker(origin, direction, tMax);
+  if (blocker != kInvalidIndex) {
+    if (b_changed_records[blocker] != 0u) discover_vertex(surface.position, occlusionWeight * u_frame.wOcclusion);
+    return vec3(0.0);
+  }
+#else
   if (occluded(origin, direction, tMax)) return vec3(0.0);
+#endif
   const float weight = (ls.isDelta || HIPR_LIGHT_SAMPLING == kLightSamplingLightOnly)
                            ? 1.0
                            : power_heuristic(ls.pdf, bsdf_pdf(params, frame, wo, ls.direction));
@@ -126,6 +146,8 @@ struct PathState {
   float previousPdf;
   bool previousDelta;  // the camera ray counts as a delta "bounce": no MIS
   uint depth;
+  uint firstLobe;             // lobe sampled at x_0 (discovery path classes)
+  bool specularSinceFirst;    // every lobe after x_0 so far was specular or transmission
 };
 
 PathState start_path(uvec2 pixel, uint sampleIndex) {
@@ -138,6 +160,8 @@ PathState start_path(uvec2 pixel, uint sampleIndex) {
   p.previousPdf = 0.0;
   p.previousDelta = true;
   p.depth = 0u;
+  p.firstLobe = kLobeDiffuse;
+  p.specularSinceFirst = true;
   return p;
 }
 
@@ -167,10 +191,22 @@ bool path_step(inout PathState p, inout uint rays) {
   const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal);
   const vec3 wo = -p.direction;
   if (u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly)
-    p.radiance += p.throughput * direct_light(surface, params, frame, wo, rng_uniform4(p.rng, p.depth, 1u), rays);
+    p.radiance += p.throughput * direct_light(surface, params, frame, wo, rng_uniform4(p.rng, p.depth, 1u),
+                                              luminance(p.throughput), rays);
 
   const vec4 u = rng_uniform4(p.rng, p.depth, 0u);
   const BsdfSample bs = bsdf_sample(params, frame, wo, u.xyz);
+#if HIPR_DISCOVERY
+  if (p.depth >= 1u) {
+    const uint pathClass = p.depth == 1u ? kPathDirect
+                           : (p.firstLobe == kLobeDiffuse && p.specularSinceFirst) ? kPathCaustic : kPathIndirect;
+    discover_vertex(surface.position, luminance(p.throughput) * discovery_lobe_weight(bs.lobe) * u_frame.wPath[pathClass] /
+                                          float(1u + p.depth));
+    p.specularSinceFirst = p.specularSinceFirst && (bs.lobe == kLobeSpecular || bs.lobe == kLobeTransmission);
+  } else {
+    p.firstLobe = bs.lobe;
+  }
+#endif
   if (bs.pdf <= 0.0) return true;
   p.throughput *= bs.weight;
   p.previousPdf = bs.pdf;
@@ -192,21 +228,13 @@ bool path_step(inout PathState p, inout uint rays) {
 }
 
 void main() {
-  const uint totalGroups = u_push.tileCount * u_push.groupsPerTile;
-  // llvmpipe hands each thread a contiguous range of workgroups: scatter them over the tiles
-  // so every thread gets a share of the expensive ones.
-  const uint group = uint((uint64_t(gl_WorkGroupID.x) * uint64_t(u_push.tileStride)) % uint64_t(totalGroups));
-  const uint listIndex = group / u_push.groupsPerTile;
-  const uint local = (group % u_push.groupsPerTile) * 64u + gl_LocalInvocationIndex;
-  const uint tileSize = u_frame.tileSize;
-  if (local >= tileSize * tileSize) return;
-  const uint tile = b_tiles[listIndex];
-  const uvec2 pixel = uvec2((tile % u_frame.tilesX) * tileSize + local % tileSize,
-                            (tile / u_frame.tilesX) * tileSize + local / tileSize);
-  if (pixel.x >= u_frame.width || pixel.y >= u_frame.height) return;
-
+  uvec2 pixel;
+  if (!tile_pixel(u_push.listOffset, u_push.tileCount, u_push.tileStride, u_push.groupsPerTile, u_push.requireFlags,
+                  u_push.skipFlags, pixel))
+    return;
   const uint pixelIndex = pixel.y * u_frame.width + pixel.x;
   PixelAccum accum = b_accum[pixelIndex];
+  if ((accum.count & kPixelOwed) != 0u) accum = PixelAccum(vec3(0.0), 0u);  // first visit since an edit
   uint rays = 0u;
   uint nonFinite = 0u;
   // Samples finish in index order, so the sum is the same whatever the dispatch size.

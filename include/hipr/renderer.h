@@ -18,6 +18,16 @@ class Context;
 // tests can show that each estimator alone converges to the same image.
 enum class LightSampling { Mis = 0, BsdfOnly = 1, LightOnly = 2 };
 
+// HiPR discovery parameters (the paper's w_lobe, w_path, occlusion priority and epsilon).
+// Defaults follow the paper's order: specular and direct ahead of diffuse, indirect and
+// caustic trailing.
+struct HiprParameters {
+  float w_lobe[4] = {0.2f, 0.25f, 0.4f, 0.15f};  // diffuse, glossy, specular, transmission
+  float w_path[3] = {0.6f, 0.25f, 0.15f};        // direct, indirect, caustic
+  float w_occlusion = 0.5f;
+  float depth_epsilon = 0.01f;  // relative to the G-buffer depth
+};
+
 struct RenderSettings {
   uint32_t width = 256;
   uint32_t height = 256;
@@ -25,6 +35,7 @@ struct RenderSettings {
   uint32_t max_depth = 32;  // scattering events; 0 = emitters seen directly only
   uint32_t tile_size = 16;
   LightSampling light_sampling = LightSampling::Mis;
+  HiprParameters hipr;
 };
 
 struct RenderCounters {
@@ -57,6 +68,29 @@ class Renderer {
   // names (material table, TLAS + light tables, light tables, camera). Accumulated samples are
   // kept; callers decide which tiles restart.
   void update_scene(const Scene& scene, const struct ChangeSet& changes);
+
+  // ---- HiPR stages (DESIGN.md). Each records GPU work and waits; none reads results back.
+  // Stage 1: G-buffer of the edited scene (the previous one is kept), active tiles where an
+  // element of `changes` is visible now or was before, and every pixel owes a restart.
+  // A camera change or a light edit makes every tile active.
+  void stage1_visibility(const ChangeSet& changes);
+  // Stage 2: path-traces the active tiles (restarting them) with discovery on.
+  void stage2_discover(uint32_t samples_per_pixel);
+  // Stage 3 order on the GPU: active, then discovered by weight, then by distance to A.
+  void build_schedule();
+  // A CPU-made order (scanline, spiral, random policies) replaces the schedule.
+  void set_schedule(std::span<const uint32_t> order);
+  // Every pixel owes a restart (its next visit drops the old samples).
+  void mark_all_owed();
+  // Renders entries [offset, offset + count) of the schedule; skip_active leaves out tiles
+  // stage 2 already rendered.
+  void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active);
+
+  // Read-backs for inspection (debug images, tests); not used on the render path.
+  std::vector<uint32_t> gbuffer_instances() const;  // per pixel: instance index or UINT32_MAX
+  std::vector<uint32_t> tile_flags() const;
+  std::vector<double> tile_weights() const;
+  std::vector<uint32_t> schedule() const;
 
   ImageRGB image() const;                     // per-pixel mean radiance
   std::vector<uint32_t> sample_counts() const;  // per pixel

@@ -23,5 +23,6 @@ layout(scalar, binding = kBindingTileList) readonly buffer TileList { uint b_til
 layout(scalar, binding = kBindingAccumulation) buffer Accumulation { PixelAccum b_accum[]; };
 layout(scalar, binding = kBindingStats) buffer Stats { RenderStats b_stats; };
 layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
+layout(scalar, binding = kBindingTileFlags) buffer TileFlags { uint b_tile_flags[]; };
 
 #endif

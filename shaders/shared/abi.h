@@ -36,8 +36,32 @@ HIPR_CONST uint kBindingTileList = 13u;      // uint tile ids, in the order to r
 HIPR_CONST uint kBindingAccumulation = 14u;  // PixelAccum per pixel
 HIPR_CONST uint kBindingStats = 15u;         // RenderStats
 HIPR_CONST uint kBindingFrame = 16u;         // FrameParams (one)
+// HiPR scheduling (stages 1-3)
+HIPR_CONST uint kBindingGBuffer = 17u;          // GBufferTexel per pixel, this scene state
+HIPR_CONST uint kBindingPreviousGBuffer = 18u;  // GBufferTexel per pixel, before the edit
+HIPR_CONST uint kBindingChangedRecords = 19u;   // uint per GeometryRecord: 1 = in the changed set E
+HIPR_CONST uint kBindingTileFlags = 20u;        // uint per tile: kTileActive | kTileDiscovered
+HIPR_CONST uint kBindingTileWeights = 21u;      // uint64 per tile: discovery weight W(T) x kWeightScale
+HIPR_CONST uint kBindingTileRowDistance = 22u;  // uint per tile: columns to the nearest active tile in its row
+HIPR_CONST uint kBindingSortKeys = 23u;         // uint keys, ping
+HIPR_CONST uint kBindingSortValues = 24u;       // uint values (tile ids), ping
+HIPR_CONST uint kBindingSortKeysAlt = 25u;      // pong
+HIPR_CONST uint kBindingSortValuesAlt = 26u;    // pong
+HIPR_CONST uint kBindingSortHistogram = 27u;    // uint [digit][workgroup] counts, then offsets
 
 // ---- constants ----
+HIPR_CONST uint kPixelOwed = 0x80000000u;
+HIPR_CONST uint kPixelCountMask = 0x7fffffffu;
+HIPR_CONST uint kTileActive = 1u;      // an element of E is visible in the tile (stage 1)
+HIPR_CONST uint kTileDiscovered = 2u;  // reached by a secondary vertex or occlusion (stage 2)
+HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
+HIPR_CONST uint kSortBlock = 256u;     // keys per workgroup in the radix sort
+HIPR_CONST uint kSortRadix = 256u;     // 8-bit digits
+
+// Lobe and path-prefix classes of discovery weights (w_lobe, w_path indices).
+HIPR_CONST uint kPathDirect = 0u;    // x_k is the first vertex after the camera hit (k = 1)
+HIPR_CONST uint kPathIndirect = 1u;  // an earlier diffuse/glossy bounce after x_0 (E D D+ ...)
+HIPR_CONST uint kPathCaustic = 2u;   // x_0 diffuse, then only specular/transmission (E D S+ ...)
 HIPR_CONST uint kWorkgroupSize = 64u;
 HIPR_CONST uint kInvalidIndex = 0xffffffffu;
 
@@ -140,6 +164,8 @@ struct Light {
   float padding2;
 };
 
+// count's top bit (kPixelOwed) marks a pixel that still holds radiance from before the last
+// edit: its next visit restarts it. Until then it keeps showing the previous radiance.
 struct PixelAccum {
   vec3 sum;
   uint count;
@@ -173,15 +199,39 @@ struct FrameParams {
   uint environmentHeight;
   float environmentIntensity;
   float environmentRotation;  // radians about +Y
-  uint padding;
+  // HiPR discovery (stage 2): tile weight dW = lum(beta_k) * wLobe[l] * wPath[c] / (1 + k)
+  vec4 wLobe;         // diffuse, glossy, specular, transmission (sum 1)
+  vec3 wPath;         // direct, indirect, caustic (sum 1)
+  float wOcclusion;   // added (times lum(beta)) when a shadow ray is blocked by E
+  float depthEpsilon; // relative depth tolerance of the projection test
+  uint tileCount;
+  uint tilesY;
+  uint recordCount;
+};
+
+// Stage 1 output per pixel: what the pixel-centre ray hit.
+struct GBufferTexel {
+  uint record;  // GeometryRecord index, kInvalidIndex for background
+  float depth;  // camera-space depth (along the view axis); 3e38 for background
 };
 
 // Per-dispatch parameters of trace_tiles.comp.
 struct TracePush {
+  uint listOffset;       // first entry of the tile list to render
   uint tileCount;        // entries of the tile list to render
   uint tileStride;       // coprime to the workgroup count: spreads tiles over CPU threads
   uint samplesPerPixel;  // samples each pixel receives in this dispatch
   uint groupsPerTile;    // workgroups needed to cover one tile
+  uint requireFlags;     // render only tiles whose flags have all of these bits
+  uint skipFlags;        // skip tiles whose flags have any of these bits
+};
+
+// Radix sort pass: keys/values move from one buffer pair to the other by one 8-bit digit.
+struct SortPush {
+  uint count;
+  uint shift;    // 0, 8, 16, 24
+  uint pingToPong;  // 1: read ping write pong; 0: the reverse
+  uint groups;   // workgroups over `count` keys
 };
 
 #ifdef __cplusplus

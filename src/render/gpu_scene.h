@@ -36,6 +36,7 @@ class GpuScene {
   VkAccelerationStructureKHR tlas() const { return m_tlas.handle(); }
   // Instance index of each GeometryRecord (records are grouped per instance).
   const std::vector<uint32_t>& record_instance() const { return m_record_instance; }
+  uint32_t record_count() const { return uint32_t(m_records.size()); }
 
   vk::Buffer positions, normals, tangents, uvs, indices;
   vk::Buffer geometries, materials, textures, texels;

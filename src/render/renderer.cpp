@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "hipr/scene_diff.h"
 #include "render/gpu_scene.h"
+#include "render/radix_sorter.h"
 #include "scene/default_camera.h"
 #include "vk/compute_pipeline.h"
 
@@ -35,6 +36,8 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, cons
   f.height = s.height;
   f.tileSize = s.tile_size;
   f.tilesX = (s.width + s.tile_size - 1) / s.tile_size;
+  f.tilesY = (s.height + s.tile_size - 1) / s.tile_size;
+  f.tileCount = f.tilesX * f.tilesY;
   f.maxDepth = s.max_depth;
   f.lightCount = uint32_t(gpu.light_tables().lights.size());
   f.environmentLight = gpu.light_tables().environment_index;
@@ -44,14 +47,31 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, cons
     f.environmentIntensity = scene.environment->intensity;
     f.environmentRotation = scene.environment->rotation;
   }
+  const HiprParameters& h = s.hipr;
+  f.wLobe = glm::vec4(h.w_lobe[0], h.w_lobe[1], h.w_lobe[2], h.w_lobe[3]);
+  f.wPath = glm::vec3(h.w_path[0], h.w_path[1], h.w_path[2]);
+  f.wOcclusion = h.w_occlusion;
+  f.depthEpsilon = h.depth_epsilon;
+  f.recordCount = gpu.record_count();
   return f;
 }
 
-std::vector<vk::BindingSlot> trace_bindings() {
+std::vector<vk::BindingSlot> trace_bindings(bool discovery) {
   std::vector<vk::BindingSlot> slots = {{abi::kBindingTlas, vk::BindingKind::AccelerationStructure}};
   for (uint32_t b = abi::kBindingPositions; b <= abi::kBindingFrame; ++b) slots.push_back({b});
+  slots.push_back({abi::kBindingTileFlags});
+  if (discovery)
+    for (uint32_t b : {abi::kBindingGBuffer, abi::kBindingChangedRecords, abi::kBindingTileWeights}) slots.push_back({b});
   return slots;
 }
+
+vk::ShaderDefines trace_defines(const RenderSettings& s, bool discovery) {
+  return {{"HIPR_LIGHT_SAMPLING", std::to_string(int(s.light_sampling))}, {"HIPR_DISCOVERY", discovery ? "1" : "0"}};
+}
+
+vk::Buffer storage(const vk::Context& ctx, size_t bytes) { return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT); }
+
+uint32_t groups_for(uint32_t items) { return (items + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize; }
 
 }  // namespace
 
@@ -60,46 +80,134 @@ struct Renderer::Impl {
       : ctx(c),
         settings(s),
         gpu(c, scene),
-        pipeline(c, "trace_tiles.comp", {{"HIPR_LIGHT_SAMPLING", std::to_string(int(s.light_sampling))}},
-                 trace_bindings(), sizeof(abi::TracePush)),
-        accumulation(c, size_t(s.width) * s.height * sizeof(abi::PixelAccum), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-        stats(c, sizeof(abi::RenderStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-        frame(c, sizeof(abi::FrameParams), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
-    tiles_x = (s.width + s.tile_size - 1) / s.tile_size;
-    tiles_y = (s.height + s.tile_size - 1) / s.tile_size;
+        tiles_x((s.width + s.tile_size - 1) / s.tile_size),
+        tiles_y((s.height + s.tile_size - 1) / s.tile_size),
+        pixels(s.width * s.height),
+        trace(c, "trace_tiles.comp", trace_defines(s, false), trace_bindings(false), sizeof(abi::TracePush)),
+        accumulation(storage(c, size_t(pixels) * sizeof(abi::PixelAccum))),
+        stats(storage(c, sizeof(abi::RenderStats))),
+        frame(storage(c, sizeof(abi::FrameParams))),
+        tile_list(storage(c, size_t(tiles_x) * tiles_y * sizeof(uint32_t))),
+        tile_flags(storage(c, size_t(tiles_x) * tiles_y * sizeof(uint32_t))),
+        mark_owed(c, "mark_owed.comp", {}, {{abi::kBindingFrame}, {abi::kBindingAccumulation}}, 0) {
     all_tiles.resize(size_t(tiles_x) * tiles_y);
     std::iota(all_tiles.begin(), all_tiles.end(), 0u);
-    tile_list = vk::Buffer(c, all_tiles.size() * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     accumulation.clear();
     stats.clear();
+    tile_flags.clear();
+    mark_owed.bind_buffer(abi::kBindingFrame, frame);
+    mark_owed.bind_buffer(abi::kBindingAccumulation, accumulation);
     bind_scene(scene);
+  }
+
+  // HiPR resources are made on first use: plain renders never pay for them.
+  void ensure_hipr() {
+    if (discover) return;
+    const size_t tiles = all_tiles.size();
+    gbuffer = storage(ctx, size_t(pixels) * sizeof(abi::GBufferTexel));
+    previous_gbuffer = storage(ctx, size_t(pixels) * sizeof(abi::GBufferTexel));
+    changed_records = storage(ctx, std::max<size_t>(gpu.record_count(), 1) * 4);
+    tile_weights = storage(ctx, tiles * 8);
+    row_distance = storage(ctx, tiles * 4);
+    sorter = std::make_unique<RadixSorter>(ctx, uint32_t(tiles));
+    discover = std::make_unique<vk::ComputePipeline>(ctx, "trace_tiles.comp", trace_defines(settings, true),
+                                                     trace_bindings(true), sizeof(abi::TracePush));
+    visibility = std::make_unique<vk::ComputePipeline>(
+        ctx, "visibility.comp", vk::ShaderDefines{},
+        std::vector<vk::BindingSlot>{{abi::kBindingTlas, vk::BindingKind::AccelerationStructure}, {abi::kBindingFrame},
+                                     {abi::kBindingGBuffer}},
+        0);
+    mark_active = std::make_unique<vk::ComputePipeline>(
+        ctx, "mark_active.comp", vk::ShaderDefines{},
+        std::vector<vk::BindingSlot>{{abi::kBindingFrame}, {abi::kBindingGBuffer}, {abi::kBindingPreviousGBuffer},
+                                     {abi::kBindingChangedRecords}, {abi::kBindingTileFlags}},
+        0);
+    keys = std::make_unique<vk::ComputePipeline>(
+        ctx, "schedule_keys.comp", vk::ShaderDefines{},
+        std::vector<vk::BindingSlot>{{abi::kBindingFrame}, {abi::kBindingTileFlags}, {abi::kBindingTileWeights},
+                                     {abi::kBindingTileRowDistance}, {abi::kBindingSortKeys}, {abi::kBindingSortValues}},
+        sizeof(uint32_t));
+    gbuffer.clear();
+    bind_hipr();
+    // The first G-buffer describes the scene as loaded, so the first edit has a "before".
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) { visibility->dispatch(cmd, nullptr, groups_for(pixels)); });
   }
 
   // (Re)binds everything the scene owns: after an update some buffers are new objects.
   void bind_scene(const Scene& scene) {
     const abi::FrameParams params = make_frame_params(scene, gpu, settings);
     frame.upload(&params, sizeof params);
-    pipeline.bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
-    const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
-        {abi::kBindingPositions, &gpu.positions}, {abi::kBindingNormals, &gpu.normals},
-        {abi::kBindingTangents, &gpu.tangents},   {abi::kBindingUvs, &gpu.uvs},
-        {abi::kBindingIndices, &gpu.indices},     {abi::kBindingGeometries, &gpu.geometries},
-        {abi::kBindingMaterials, &gpu.materials}, {abi::kBindingTextures, &gpu.textures},
-        {abi::kBindingTexels, &gpu.texels},       {abi::kBindingLights, &gpu.lights},
-        {abi::kBindingLightCdf, &gpu.light_cdf},  {abi::kBindingEnvironment, &gpu.environment},
-        {abi::kBindingTileList, &tile_list},      {abi::kBindingAccumulation, &accumulation},
-        {abi::kBindingStats, &stats},             {abi::kBindingFrame, &frame},
-    };
-    for (const auto& [binding, buffer] : buffers) pipeline.bind_buffer(binding, *buffer);
+    for (vk::ComputePipeline* pipeline : {&trace, discover.get()}) {
+      if (!pipeline) continue;
+      pipeline->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
+      const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
+          {abi::kBindingPositions, &gpu.positions}, {abi::kBindingNormals, &gpu.normals},
+          {abi::kBindingTangents, &gpu.tangents},   {abi::kBindingUvs, &gpu.uvs},
+          {abi::kBindingIndices, &gpu.indices},     {abi::kBindingGeometries, &gpu.geometries},
+          {abi::kBindingMaterials, &gpu.materials}, {abi::kBindingTextures, &gpu.textures},
+          {abi::kBindingTexels, &gpu.texels},       {abi::kBindingLights, &gpu.lights},
+          {abi::kBindingLightCdf, &gpu.light_cdf},  {abi::kBindingEnvironment, &gpu.environment},
+          {abi::kBindingTileList, &tile_list},      {abi::kBindingAccumulation, &accumulation},
+          {abi::kBindingStats, &stats},             {abi::kBindingFrame, &frame},
+          {abi::kBindingTileFlags, &tile_flags},
+      };
+      for (const auto& [binding, buffer] : buffers) pipeline->bind_buffer(binding, *buffer);
+    }
+    if (visibility) visibility->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
+  }
+
+  void bind_hipr() {
+    bind_scene_buffers_for_discovery();
+    visibility->bind_buffer(abi::kBindingFrame, frame);
+    visibility->bind_buffer(abi::kBindingGBuffer, gbuffer);
+    visibility->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
+    mark_active->bind_buffer(abi::kBindingFrame, frame);
+    mark_active->bind_buffer(abi::kBindingGBuffer, gbuffer);
+    mark_active->bind_buffer(abi::kBindingPreviousGBuffer, previous_gbuffer);
+    mark_active->bind_buffer(abi::kBindingChangedRecords, changed_records);
+    mark_active->bind_buffer(abi::kBindingTileFlags, tile_flags);
+    keys->bind_buffer(abi::kBindingFrame, frame);
+    keys->bind_buffer(abi::kBindingTileFlags, tile_flags);
+    keys->bind_buffer(abi::kBindingTileWeights, tile_weights);
+    keys->bind_buffer(abi::kBindingTileRowDistance, row_distance);
+    keys->bind_buffer(abi::kBindingSortKeys, sorter->keys);
+    keys->bind_buffer(abi::kBindingSortValues, sorter->values);
+  }
+
+  void bind_scene_buffers_for_discovery() {
+    discover->bind_buffer(abi::kBindingGBuffer, gbuffer);
+    discover->bind_buffer(abi::kBindingChangedRecords, changed_records);
+    discover->bind_buffer(abi::kBindingTileWeights, tile_weights);
+  }
+
+  abi::TracePush trace_push(uint32_t offset, uint32_t count, uint32_t spp) const {
+    abi::TracePush push{};
+    push.listOffset = offset;
+    push.tileCount = count;
+    push.groupsPerTile = (settings.tile_size * settings.tile_size + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize;
+    const uint64_t groups = uint64_t(count) * push.groupsPerTile;
+    if (groups > UINT32_MAX) throw InputError("too many tiles in one dispatch");
+    push.tileStride = scatter_stride(uint32_t(groups));
+    push.samplesPerPixel = spp;
+    return push;
+  }
+
+  void dispatch_trace(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, const abi::TracePush& push) const {
+    pipeline.dispatch(cmd, &push, push.tileCount * push.groupsPerTile);
   }
 
   const vk::Context& ctx;
   RenderSettings settings;
   GpuScene gpu;
-  vk::ComputePipeline pipeline;
-  vk::Buffer accumulation, stats, frame, tile_list;
+  uint32_t tiles_x, tiles_y, pixels;
+  vk::ComputePipeline trace;
+  vk::Buffer accumulation, stats, frame, tile_list, tile_flags;
+  vk::ComputePipeline mark_owed;
   std::vector<uint32_t> all_tiles;
-  uint32_t tiles_x = 0, tiles_y = 0;
+  // HiPR (made by ensure_hipr)
+  vk::Buffer gbuffer, previous_gbuffer, changed_records, tile_weights, row_distance;
+  std::unique_ptr<RadixSorter> sorter;
+  std::unique_ptr<vk::ComputePipeline> discover, visibility, mark_active, keys;
 };
 
 Renderer::Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
@@ -122,16 +230,11 @@ void Renderer::add_samples(std::span<const uint32_t> tiles, uint32_t samples_per
   for (uint32_t t : tiles)
     if (t >= tile_count()) throw InternalError("tile id out of range");
   m->tile_list.upload(tiles.data(), tiles.size_bytes());
-  const uint32_t tile_pixels = m->settings.tile_size * m->settings.tile_size;
-  abi::TracePush push{};
-  push.tileCount = uint32_t(tiles.size());
-  push.groupsPerTile = (tile_pixels + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize;
-  const uint64_t groups = uint64_t(push.tileCount) * push.groupsPerTile;
-  if (groups > UINT32_MAX) throw InputError("too many tiles in one dispatch");
-  push.tileStride = scatter_stride(uint32_t(groups));
-  push.samplesPerPixel = samples_per_pixel;
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->pipeline.dispatch(cmd, &push, uint32_t(groups)); });
+  const abi::TracePush push = m->trace_push(0, uint32_t(tiles.size()), samples_per_pixel);
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, m->trace, push); });
 }
+
+void Renderer::add_samples_full_frame(uint32_t samples_per_pixel) { add_samples(m->all_tiles, samples_per_pixel); }
 
 void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
   if (changes.materials) m->gpu.update_materials(scene);
@@ -140,7 +243,99 @@ void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
   m->bind_scene(scene);
 }
 
-void Renderer::add_samples_full_frame(uint32_t samples_per_pixel) { add_samples(m->all_tiles, samples_per_pixel); }
+void Renderer::stage1_visibility(const ChangeSet& changes) {
+  m->ensure_hipr();
+  std::vector<uint32_t> changed(std::max<uint32_t>(m->gpu.record_count(), 1), 0);
+  for (uint32_t instance : changes.instances)
+    for (uint32_t r = 0; r < m->gpu.record_count(); ++r)
+      if (m->gpu.record_instance()[r] == instance) changed[r] = 1;
+  m->changed_records.upload(changed.data(), changed.size() * 4);
+  // What no G-buffer shows (a moved camera, a punctual light's reach) makes every tile active.
+  const bool everything = changes.camera || !changes.lights.empty();
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    const VkBufferCopy copy{0, 0, m->gbuffer.size()};
+    vkCmdCopyBuffer(cmd, m->gbuffer.handle(), m->previous_gbuffer.handle(), 1, &copy);
+    vkCmdFillBuffer(cmd, m->tile_flags.handle(), 0, VK_WHOLE_SIZE, everything ? abi::kTileActive : 0u);
+    vkCmdFillBuffer(cmd, m->tile_weights.handle(), 0, VK_WHOLE_SIZE, 0);
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0,
+                         nullptr, 0, nullptr);
+    m->visibility->dispatch(cmd, nullptr, groups_for(m->pixels));
+    vk::compute_to_compute_barrier(cmd);
+    m->mark_active->dispatch(cmd, nullptr, groups_for(m->pixels));
+  });
+  mark_all_owed();
+}
+
+void Renderer::mark_all_owed() {
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->mark_owed.dispatch(cmd, nullptr, groups_for(m->pixels)); });
+}
+
+void Renderer::stage2_discover(uint32_t samples_per_pixel) {
+  m->ensure_hipr();
+  build_schedule();  // active tiles first; stage 2 visits only those
+  abi::TracePush push = m->trace_push(0, tile_count(), samples_per_pixel);
+  push.requireFlags = abi::kTileActive;
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, *m->discover, push); });
+}
+
+void Renderer::build_schedule() {
+  m->ensure_hipr();
+  const uint32_t tiles = tile_count();
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    for (uint32_t pass = 0; pass < 2; ++pass) {
+      m->keys->dispatch(cmd, &pass, groups_for(tiles));
+      vk::compute_to_compute_barrier(cmd);
+    }
+    m->sorter->record(cmd, tiles);
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0,
+                         nullptr, 0, nullptr);
+    const VkBufferCopy copy{0, 0, VkDeviceSize(tiles) * 4};
+    vkCmdCopyBuffer(cmd, m->sorter->values.handle(), m->tile_list.handle(), 1, &copy);
+  });
+}
+
+void Renderer::set_schedule(std::span<const uint32_t> order) {
+  if (order.size() != tile_count()) throw InternalError("a schedule lists every tile once");
+  m->tile_list.upload(order.data(), order.size_bytes());
+}
+
+void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active) {
+  if (offset >= tile_count() || count == 0) return;
+  count = std::min(count, tile_count() - offset);
+  abi::TracePush push = m->trace_push(offset, count, samples_per_pixel);
+  push.skipFlags = skip_active ? abi::kTileActive : 0u;
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, m->trace, push); });
+}
+
+std::vector<uint32_t> Renderer::gbuffer_instances() const {
+  m->ensure_hipr();
+  const auto texels = m->gbuffer.download_all<abi::GBufferTexel>();
+  std::vector<uint32_t> out(texels.size(), UINT32_MAX);
+  for (size_t i = 0; i < texels.size(); ++i)
+    if (texels[i].record != abi::kInvalidIndex) out[i] = m->gpu.record_instance()[texels[i].record];
+  return out;
+}
+
+std::vector<uint32_t> Renderer::tile_flags() const {
+  m->ensure_hipr();
+  return m->tile_flags.download_all<uint32_t>();
+}
+
+std::vector<double> Renderer::tile_weights() const {
+  m->ensure_hipr();
+  const auto fixed = m->tile_weights.download_all<uint64_t>();
+  std::vector<double> out(fixed.size());
+  for (size_t i = 0; i < fixed.size(); ++i) out[i] = double(fixed[i]) / abi::kWeightScale;
+  return out;
+}
+
+std::vector<uint32_t> Renderer::schedule() const { return m->tile_list.download_all<uint32_t>(); }
 
 ImageRGB Renderer::image() const {
   const auto accum = m->accumulation.download_all<abi::PixelAccum>();
@@ -149,7 +344,8 @@ ImageRGB Renderer::image() const {
   image.height = m->settings.height;
   image.rgb.resize(accum.size() * 3);
   for (size_t i = 0; i < accum.size(); ++i) {
-    const float scale = accum[i].count ? 1.0f / float(accum[i].count) : 0.0f;
+    const uint32_t count = accum[i].count & abi::kPixelCountMask;
+    const float scale = count ? 1.0f / float(count) : 0.0f;
     for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = accum[i].sum[c] * scale;
   }
   return image;
@@ -158,7 +354,7 @@ ImageRGB Renderer::image() const {
 std::vector<uint32_t> Renderer::sample_counts() const {
   const auto accum = m->accumulation.download_all<abi::PixelAccum>();
   std::vector<uint32_t> counts(accum.size());
-  for (size_t i = 0; i < accum.size(); ++i) counts[i] = accum[i].count;
+  for (size_t i = 0; i < accum.size(); ++i) counts[i] = accum[i].count & abi::kPixelCountMask;
   return counts;
 }
 

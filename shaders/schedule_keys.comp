@@ -1,0 +1,58 @@
+#version 460
+// HiPR stage 3 sort keys: one 32-bit key per tile, so one ascending radix sort yields the
+// whole schedule: active tiles (class 0), then discovered tiles by descending weight W(T)
+// (class 1), then undiscovered tiles by distance from the active set (class 2). Ties keep
+// tile-id order because the sort is stable and values start in id order.
+// Pass 0 (u_pass == 0): per tile, columns to the nearest active tile in its row.
+// Pass 1: keys from flags, weights and the 2D distance (min over rows).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+
+layout(local_size_x = 64) in;
+
+#include "shared/abi.h"
+
+layout(push_constant) uniform Push { uint u_pass; };
+layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
+layout(scalar, binding = kBindingTileFlags) readonly buffer TileFlags { uint b_tile_flags[]; };
+layout(scalar, binding = kBindingTileWeights) readonly buffer TileWeights { uint64_t b_tile_weights[]; };
+layout(scalar, binding = kBindingTileRowDistance) buffer RowDistance { uint b_row_distance[]; };
+layout(scalar, binding = kBindingSortKeys) writeonly buffer Keys { uint b_keys[]; };
+layout(scalar, binding = kBindingSortValues) writeonly buffer Values { uint b_values[]; };
+
+const uint kNone = 0xffffu;
+
+void main() {
+  const uint tile = gl_GlobalInvocationID.x;
+  if (tile >= u_frame.tileCount) return;
+  const uint x = tile % u_frame.tilesX;
+  const uint y = tile / u_frame.tilesX;
+  if (u_pass == 0u) {
+    uint best = kNone;
+    for (uint i = 0u; i < u_frame.tilesX; ++i)
+      if ((b_tile_flags[y * u_frame.tilesX + i] & kTileActive) != 0u) best = min(best, uint(abs(int(i) - int(x))));
+    b_row_distance[tile] = best;
+    return;
+  }
+  const uint flags = b_tile_flags[tile];
+  uint key;
+  if ((flags & kTileActive) != 0u) {
+    key = 0u;
+  } else if (b_tile_weights[tile] > 0ul) {
+    // Positive float bits order like the numbers; drop one mantissa bit to fit 30 bits.
+    const uint bits = floatBitsToUint(float(b_tile_weights[tile]) / kWeightScale) >> 1u;
+    key = (1u << 30u) | (0x3fffffffu - min(bits, 0x3fffffffu));
+  } else {
+    uint best = 0x3fffffffu;
+    for (uint row = 0u; row < u_frame.tilesY; ++row) {
+      const uint dx = b_row_distance[row * u_frame.tilesX + x];
+      if (dx == kNone) continue;
+      const uint dy = uint(abs(int(row) - int(y)));
+      best = min(best, dx * dx + dy * dy);
+    }
+    key = (2u << 30u) | best;  // no active tile at all: all equal, tile-id order
+  }
+  b_keys[tile] = key;
+  b_values[tile] = tile;
+}

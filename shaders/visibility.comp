@@ -1,0 +1,35 @@
+#version 460
+// HiPR stage 1: one primary ray through every pixel centre.
+// Reads: TLAS, FrameParams. Writes: the G-buffer (record hit, camera-space depth) per pixel.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_ray_query : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+
+layout(local_size_x = 64) in;
+
+#include "shared/abi.h"
+
+layout(binding = kBindingTlas) uniform accelerationStructureEXT u_tlas;
+layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
+layout(scalar, binding = kBindingGBuffer) writeonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
+
+void main() {
+  const uint index = gl_GlobalInvocationID.x;
+  if (index >= u_frame.width * u_frame.height) return;
+  const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
+  const vec2 ndc = (vec2(pixel) + 0.5) / vec2(u_frame.width, u_frame.height) * 2.0 - 1.0;
+  const vec3 direction = normalize(u_frame.cameraForward + ndc.x * u_frame.tanHalfFovY * u_frame.aspect * u_frame.cameraRight -
+                                   ndc.y * u_frame.tanHalfFovY * u_frame.cameraUp);
+  rayQueryEXT query;
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsOpaqueEXT, 0xff, u_frame.cameraPosition, 0.0, direction, 3.0e38);
+  while (rayQueryProceedEXT(query)) {
+  }
+  GBufferTexel texel = GBufferTexel(kInvalidIndex, 3.0e38);
+  if (rayQueryGetIntersectionTypeEXT(query, true) == gl_RayQueryCommittedIntersectionTriangleEXT) {
+    texel.record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
+                   uint(rayQueryGetIntersectionGeometryIndexEXT(query, true));
+    texel.depth = rayQueryGetIntersectionTEXT(query, true) * dot(direction, u_frame.cameraForward);
+  }
+  b_gbuffer[index] = texel;
+}

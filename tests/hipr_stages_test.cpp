@@ -1,0 +1,161 @@
+// HiPR stages on the GPU: the radix sort, unbiased convergence of a scheduled re-render, and
+// discovery on purpose-built edits of the Cornell box.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+
+#include "hipr/edits.h"
+#include "hipr/renderer.h"
+#include "hipr/scene_diff.h"
+#include "hipr/scene_loader.h"
+#include "render/radix_sorter.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+
+class RadixSort : public ::testing::TestWithParam<uint32_t> {};
+
+TEST_P(RadixSort, MatchesStdStableSort) {
+  const uint32_t count = GetParam();
+  const vk::Context& ctx = test::context();
+  RadixSorter sorter(ctx, count);
+  std::mt19937 rng(count);
+  std::vector<uint32_t> keys(count), values(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    // Few distinct keys in part of the range, so stability (ties by value) is exercised.
+    keys[i] = i % 3 == 0 ? rng() : (rng() % 7) << 28;
+    values[i] = i;
+  }
+  sorter.keys.upload(keys.data(), count * 4);
+  sorter.values.upload(values.data(), count * 4);
+  ctx.submit_and_wait([&](VkCommandBuffer cmd) { sorter.record(cmd, count); });
+  std::vector<uint32_t> order(count);
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });
+  const auto sorted_keys = sorter.keys.download_all<uint32_t>();
+  const auto sorted_values = sorter.values.download_all<uint32_t>();
+  for (uint32_t i = 0; i < count; ++i) {
+    ASSERT_EQ(sorted_values[i], order[i]) << "position " << i;
+    ASSERT_EQ(sorted_keys[i], keys[order[i]]) << "position " << i;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Counts, RadixSort, ::testing::Values(1u, 2u, 255u, 256u, 257u, 1000u, 65537u, 1000000u));
+
+RenderSettings settings() {
+  RenderSettings s;
+  s.width = 64;
+  s.height = 48;
+  s.tile_size = 8;
+  s.max_depth = 8;
+  s.seed = 9;
+  return s;
+}
+
+struct Edited {
+  Scene before, after;
+  ChangeSet changes;
+};
+
+Edited edit_cornell(const Edit& edit) {
+  Edited e{load_scene(test::asset("cornell_box.gltf")), {}, {}};
+  e.after = e.before;
+  apply_edit(e.after, edit);
+  e.changes = diff_scenes(e.before, e.after);
+  return e;
+}
+
+// Runs the three stages after `edit` on a renderer that had converged-ish on the old scene.
+std::unique_ptr<Renderer> run_stages(const Edited& e) {
+  auto renderer = std::make_unique<Renderer>(test::context(), e.before, settings());
+  renderer->add_samples_full_frame(2);
+  renderer->stage1_visibility({});  // G-buffer of the scene as it was
+  renderer->update_scene(e.after, e.changes);
+  renderer->stage1_visibility(e.changes);
+  renderer->stage2_discover(1);
+  renderer->build_schedule();
+  return renderer;
+}
+
+size_t count_flag(const std::vector<uint32_t>& flags, uint32_t bit) {
+  return size_t(std::count_if(flags.begin(), flags.end(), [&](uint32_t f) { return (f & bit) != 0; }));
+}
+
+TEST(HiprStages, ScheduledRerenderConvergesToTheFullFrameImage) {
+  for (uint32_t tile : {8u, 16u}) {
+    const Edited e = edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt});
+    RenderSettings s = settings();
+    s.tile_size = tile;
+    Renderer renderer(test::context(), e.before, s);
+    renderer.add_samples_full_frame(3);
+    renderer.stage1_visibility({});
+    renderer.update_scene(e.after, e.changes);
+    renderer.stage1_visibility(e.changes);
+    renderer.stage2_discover(1);
+    renderer.build_schedule();
+    // Stage 3 in steps of 5 tiles, then ordinary passes: every pixel ends with 3 samples.
+    for (uint32_t offset = 0; offset < renderer.tile_count(); offset += 5) renderer.render_schedule(offset, 5, 1, true);
+    renderer.render_schedule(0, renderer.tile_count(), 2, false);
+    Renderer full(test::context(), e.after, s);
+    full.add_samples_full_frame(3);
+    EXPECT_EQ(renderer.image().rgb, full.image().rgb) << "tile " << tile;
+    const auto counts = renderer.sample_counts();
+    EXPECT_TRUE(std::all_of(counts.begin(), counts.end(), [](uint32_t c) { return c == 3; }));
+  }
+}
+
+TEST(HiprStages, ScheduleListsActiveThenDiscoveredByWeightThenTheRest) {
+  const auto renderer = run_stages(edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt}));
+  const auto flags = renderer->tile_flags();
+  const auto weights = renderer->tile_weights();
+  const auto order = renderer->schedule();
+  std::vector<uint32_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (uint32_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i) << "the schedule is a permutation";
+  const size_t active = count_flag(flags, 1);
+  ASSERT_GT(active, 0u);
+  for (size_t i = 0; i < order.size(); ++i) EXPECT_EQ((flags[order[i]] & 1) != 0, i < active) << i;
+  for (size_t i = active + 1; i < order.size() && weights[order[i]] > 0.0; ++i)
+    EXPECT_GE(weights[order[i - 1]], weights[order[i]]) << "discovered tiles by descending weight";
+}
+
+TEST(HiprStages, RecolouredWallDiscoversItsColourBleeding) {
+  const auto renderer = run_stages(edit_cornell(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}}));
+  const auto flags = renderer->tile_flags();
+  const auto weights = renderer->tile_weights();
+  // The wall's light reaches most of the box (floor, ceiling, back wall, blocks, and most of
+  // all the wall facing it), so most other tiles are discovered, with weight.
+  size_t others = 0, discovered = 0;
+  for (uint32_t t = 0; t < flags.size(); ++t) {
+    if (flags[t] & 1) continue;
+    ++others;
+    if ((flags[t] & 2) && weights[t] > 0.0) ++discovered;
+  }
+  EXPECT_GT(discovered, others / 2);
+}
+
+TEST(HiprStages, MovedBlockDiscoversItsShadowAndSurroundings) {
+  const auto renderer = run_stages(edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt}));
+  const auto flags = renderer->tile_flags();
+  size_t discovered_only = 0;
+  for (uint32_t f : flags) discovered_only += (f & 2) && !(f & 1) ? 1 : 0;
+  EXPECT_GT(discovered_only, 0u);
+}
+
+TEST(HiprStages, HiddenObjectWithoutLightInteractionDiscoversNothing) {
+  // The short block moved far below the floor: no pixel shows it before or after.
+  Edited e = edit_cornell(TransformEdit{"short_block", glm::vec3(0.0f, -5.0f, 0.0f), std::nullopt});
+  e.before = e.after;
+  apply_edit(e.after, TransformEdit{"short_block", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt});
+  e.changes = diff_scenes(e.before, e.after);
+  const auto renderer = run_stages(e);
+  const auto flags = renderer->tile_flags();
+  EXPECT_EQ(count_flag(flags, 1), 0u);
+  EXPECT_EQ(count_flag(flags, 2), 0u);
+}
+
+}  // namespace
+}  // namespace hipr
