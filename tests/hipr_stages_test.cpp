@@ -74,6 +74,7 @@ std::unique_ptr<Renderer> run_stages(const Edited& e) {
   renderer->add_samples_full_frame(2);
   renderer->stage1_visibility({});  // G-buffer of the scene as it was
   renderer->update_scene(e.after, e.changes);
+  renderer->mark_all_owed();
   renderer->stage1_visibility(e.changes);
   renderer->stage2_discover(1);
   renderer->build_schedule();
@@ -93,6 +94,7 @@ TEST(HiprStages, ScheduledRerenderConvergesToTheFullFrameImage) {
     renderer.add_samples_full_frame(3);
     renderer.stage1_visibility({});
     renderer.update_scene(e.after, e.changes);
+    renderer.mark_all_owed();
     renderer.stage1_visibility(e.changes);
     renderer.stage2_discover(1);
     renderer.build_schedule();

@@ -71,8 +71,8 @@ class Renderer {
 
   // ---- HiPR stages (DESIGN.md). Each records GPU work and waits; none reads results back.
   // Stage 1: G-buffer of the edited scene (the previous one is kept), active tiles where an
-  // element of `changes` is visible now or was before, and every pixel owes a restart.
-  // A camera change or a light edit makes every tile active.
+  // element of `changes` is visible now or was before. A camera change or a light edit makes
+  // every tile active. (Pixels owing a restart are marked separately: mark_all_owed.)
   void stage1_visibility(const ChangeSet& changes);
   // Stage 2: path-traces the active tiles (restarting them) with discovery on.
   void stage2_discover(uint32_t samples_per_pixel);

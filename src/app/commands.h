@@ -13,5 +13,6 @@ struct Command {
 
 Command add_render_command(CLI::App& app);
 Command add_info_command(CLI::App& app);
+Command add_replay_command(CLI::App& app);
 
 }  // namespace hipr::app

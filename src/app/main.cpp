@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   const hipr::app::Command commands[] = {
       hipr::app::add_render_command(app),
       hipr::app::add_info_command(app),
+      hipr::app::add_replay_command(app),
   };
 
   try {

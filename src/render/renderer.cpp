@@ -266,7 +266,6 @@ void Renderer::stage1_visibility(const ChangeSet& changes) {
     vk::compute_to_compute_barrier(cmd);
     m->mark_active->dispatch(cmd, nullptr, groups_for(m->pixels));
   });
-  mark_all_owed();
 }
 
 void Renderer::mark_all_owed() {
