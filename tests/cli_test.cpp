@@ -218,5 +218,43 @@ INSTANTIATE_TEST_SUITE_P(Scenes, InfoOnShippedScene,
                                          "furnace_sphere.gltf"),
                          scene_test_name);
 
+
+// `hipr replay`: every policy ends in the same final image (bit for bit: the schedule changes
+// only the order of samples, never their values), with the step and debug images asked for.
+TEST(Replay, PoliciesEndInTheSameFinalImage) {
+  const fs::path dir = test::temp_dir("replay");
+  const std::string common = quoted(test::asset("cornell_box.gltf")) + " " + quoted(test::asset("cornell_box.edits.json")) +
+                             " --width 32 --height 32 --spp 2 --tile 8 --max-depth 4 --validate -q";
+  std::vector<float> reference;
+  for (const char* policy : {"hipr", "full", "spiral"}) {
+    const fs::path out = dir / policy;
+    const test::CommandResult result =
+        test::run_hipr("replay " + common + " -o " + quoted(out) + " --policy " + policy + " --dump-steps 1,3");
+    ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+    for (const char* file : {"final.exr", "final.png", "edit1_step1.exr", "edit2_step3.png", "summary.json"})
+      EXPECT_TRUE(fs::exists(out / file)) << policy << ": " << file;
+    const ImageRGB final_image = read_image(out / "final.exr");
+    if (reference.empty()) reference = final_image.rgb;
+    EXPECT_EQ(final_image.rgb, reference) << policy;
+  }
+  for (const char* file : {"edit1_objects.png", "edit1_weights.png", "edit1_tiles.png"})
+    EXPECT_TRUE(fs::exists(dir / "hipr" / file)) << file;
+}
+
+TEST(Replay, BadPolicyOrUnknownNameWritesNothing) {
+  const fs::path dir = test::temp_dir("replay-bad");
+  const fs::path script = dir / "edits.json";
+  std::ofstream(script) << R"({"edits": [{"op": "transform", "node": "teapot", "translate": [0, 0, 0]}]})";
+  const std::string scene = quoted(test::asset("cornell_box.gltf"));
+  test::CommandResult result = test::run_hipr("replay " + scene + " " + quoted(script) + " -o " + quoted(dir / "a"));
+  EXPECT_EQ(result.exit_code, kExitBadInput);
+  EXPECT_NE(result.output.find("teapot"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(dir / "a"));
+  result = test::run_hipr("replay " + scene + " " + quoted(test::asset("cornell_box.edits.json")) + " -o " +
+                          quoted(dir / "b") + " --policy zigzag");
+  EXPECT_EQ(result.exit_code, kExitBadInput);
+  EXPECT_FALSE(fs::exists(dir / "b"));
+}
+
 }  // namespace
 }  // namespace hipr

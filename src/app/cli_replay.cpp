@@ -55,35 +55,45 @@ int run_replay(const ReplayOptions& o) {
   log::set_quiet(o.common.quiet);
   const Policy policy = parse_policy(o.policy);
   if (o.visit_spp < 1 || o.visit_spp > o.common.spp) throw InputError("--visit-spp must be between 1 and --spp");
-  std::error_code ec;
-  fs::create_directories(o.output, ec);
-  if (!fs::is_directory(o.output)) throw InputError("cannot create output folder " + o.output.string());
   Scene scene = load_scene(o.common.scene, o.common.load);
   const std::vector<Edit> edits = load_edit_script(o.edits);
-  // Check every name before rendering anything: a typo in edit 5 must not cost 4 renders.
+  // Check every name before rendering or writing anything: a typo in edit 5 must not cost
+  // four renders and leave a half-filled folder.
   {
     Scene probe = scene;
     for (const Edit& edit : edits) apply_edit(probe, edit);
   }
+  std::error_code ec;
+  fs::create_directories(o.output, ec);
+  if (!fs::is_directory(o.output)) throw InputError("cannot create output folder " + o.output.string());
 
   const vk::Context ctx(context_options(o.common));
   Renderer renderer(ctx, scene, o.common.render);
   const uint32_t tiles = renderer.tile_count();
   const uint32_t per_step = o.tiles_per_step ? o.tiles_per_step : std::max(1u, (tiles + 7) / 8);
   Scheduler scheduler(renderer, policy, per_step, o.visit_spp);
-  for (uint32_t done = 0; done < o.common.spp; done += 16) renderer.add_samples_full_frame(std::min(16u, o.common.spp - done));
+  // Converge the scene as loaded; the last 1-spp pass is timed: the unit of the overhead share.
+  for (uint32_t done = 0; done + 1 < o.common.spp; done += 16) renderer.add_samples_full_frame(std::min(16u, o.common.spp - 1 - done));
+  const Timer pass_timer;
+  renderer.add_samples_full_frame(1);
+  const double pass_seconds = pass_timer.seconds();
 
   const uint32_t rounds = (o.common.spp + o.visit_spp - 1) / o.visit_spp;
   const uint32_t steps = o.steps ? o.steps : rounds * ((tiles + per_step - 1) / per_step) + (policy == Policy::Hipr ? 1 : 0);
   const std::set<uint32_t> dumps(o.dump_steps.begin(), o.dump_steps.end());
-  nlohmann::json summary = {{"scene", o.common.scene.string()}, {"policy", o.policy}, {"edits", nlohmann::json::array()}};
+  nlohmann::json summary = {{"scene", o.common.scene.string()},
+                            {"policy", o.policy},
+                            {"full_frame_pass_seconds", pass_seconds},
+                            {"edits", nlohmann::json::array()}};
   for (size_t e = 0; e < edits.size(); ++e) {
     const Scene before = scene;
     apply_edit(scene, edits[e]);
     const Timer timer;
     scheduler.on_edit(scene, diff_scenes(before, scene));
+    double work_after_first_step = 0.0;
     for (uint32_t s = 1; s <= steps; ++s) {
       scheduler.step();
+      if (s == 1) work_after_first_step = scheduler.work_since_edit();
       if (s == 1 && policy == Policy::Hipr) write_debug_images(o.output, e, renderer);
       if (dumps.count(s)) write_pair(o.output, step_name(e, s), scheduler.displayed_image());
     }
@@ -91,7 +101,9 @@ int run_replay(const ReplayOptions& o) {
                                 {"steps", steps},
                                 {"work", scheduler.work_since_edit()},
                                 {"seconds", timer.seconds()},
-                                {"overhead_seconds", scheduler.overhead_seconds()}});
+                                {"work_after_first_step", work_after_first_step},
+                                {"overhead_seconds", scheduler.overhead_seconds()},
+                                {"overhead_share_of_full_pass", scheduler.overhead_seconds() / pass_seconds}});
     log::info("edit " + std::to_string(e + 1) + " (" + describe(edits[e]) + "): " + std::to_string(steps) + " steps, " +
               std::to_string(timer.seconds()) + " s");
   }
