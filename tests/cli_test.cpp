@@ -256,5 +256,18 @@ TEST(Replay, BadPolicyOrUnknownNameWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "b"));
 }
 
+TEST(Replay, HiprParametersAreValidated) {
+  const fs::path dir = test::temp_dir("replay-params");
+  const std::string base = "replay " + quoted(test::asset("cornell_box.gltf")) + " " +
+                           quoted(test::asset("cornell_box.edits.json")) + " --width 16 --height 16 --spp 1 -q -o ";
+  EXPECT_EQ(test::run_hipr(base + quoted(dir / "ok") + " --preset mirror --w-path 2,1,1 --eps 0.02").exit_code, kExitOk);
+  for (const char* bad : {"--preset shiny", "--w-lobe 1,2", "--w-lobe 0,0,0,0", "--w-path -1,1,1", "--eps 0", "--eps 2",
+                          "--w-occlusion -1"}) {
+    const test::CommandResult result = test::run_hipr(base + quoted(dir / "bad") + " " + bad);
+    EXPECT_EQ(result.exit_code, kExitBadInput) << bad << "\n" << result.output;
+    EXPECT_FALSE(fs::exists(dir / "bad")) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace hipr

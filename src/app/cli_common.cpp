@@ -1,5 +1,7 @@
 #include "app/cli_common.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "core/error.h"
@@ -19,12 +21,53 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
       ->capture_default_str();
   app.add_option("--env-rotation", o.load.environment_rotation_degrees, "Environment rotation about +Y, degrees")
       ->capture_default_str();
+  app.add_option("--preset", o.preset, "HiPR weights preset: default, lookdev, glass, mirror");
+  app.add_option("--w-lobe", o.w_lobe, "HiPR lobe weights: diffuse,glossy,specular,transmission")->delimiter(',')->expected(4);
+  app.add_option("--w-path", o.w_path, "HiPR path weights: direct,indirect,caustic")->delimiter(',')->expected(3);
+  app.add_option("--w-occlusion", o.render.hipr.w_occlusion, "HiPR occlusion priority")->capture_default_str();
+  app.add_option("--eps", o.render.hipr.depth_epsilon, "HiPR relative depth tolerance")->capture_default_str();
   app.add_flag("--validate", o.validate, "Enable Vulkan validation layers; any validation error fails the run");
   app.add_option("--device", o.device, "Use the Vulkan device whose name contains this text");
   app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors and warnings");
 }
 
-void validate_common_options(const CommonOptions& o) {
+namespace {
+
+// Copies `values` into `out` scaled to sum 1 (the paper's weights are a distribution).
+void set_weights(const std::vector<float>& values, float* out, const char* flag) {
+  float sum = 0.0f;
+  for (float v : values) {
+    if (!std::isfinite(v) || v < 0.0f) throw InputError(std::string(flag) + " weights must be finite and non-negative");
+    sum += v;
+  }
+  if (!(sum > 0.0f)) throw InputError(std::string(flag) + " weights must not all be zero");
+  for (size_t i = 0; i < values.size(); ++i) out[i] = values[i] / sum;
+}
+
+// The paper's use cases: look development favours diffuse + direct response, a glass
+// interior caustics + transmission, a mirror-heavy set the specular lobe.
+void apply_preset(const std::string& name, HiprParameters& h) {
+  const HiprParameters defaults;
+  if (name.empty() || name == "default") {
+    std::copy(std::begin(defaults.w_lobe), std::end(defaults.w_lobe), h.w_lobe);
+    std::copy(std::begin(defaults.w_path), std::end(defaults.w_path), h.w_path);
+  } else if (name == "lookdev") {
+    set_weights({0.55f, 0.25f, 0.15f, 0.05f}, h.w_lobe, "--preset");
+    set_weights({0.7f, 0.25f, 0.05f}, h.w_path, "--preset");
+  } else if (name == "glass") {
+    set_weights({0.15f, 0.15f, 0.3f, 0.4f}, h.w_lobe, "--preset");
+    set_weights({0.3f, 0.2f, 0.5f}, h.w_path, "--preset");
+  } else if (name == "mirror") {
+    set_weights({0.1f, 0.2f, 0.6f, 0.1f}, h.w_lobe, "--preset");
+    set_weights({0.6f, 0.25f, 0.15f}, h.w_path, "--preset");
+  } else {
+    throw InputError("unknown --preset '" + name + "' (default, lookdev, glass, mirror)");
+  }
+}
+
+}  // namespace
+
+void validate_common_options(CommonOptions& o) {
   const auto require = [](bool ok, const std::string& message) {
     if (!ok) throw InputError(message);
   };
@@ -36,6 +79,13 @@ void validate_common_options(const CommonOptions& o) {
   require(std::isfinite(o.load.environment_intensity) && o.load.environment_intensity >= 0.0f,
           "--env-intensity must be a finite non-negative number");
   require(std::isfinite(o.load.environment_rotation_degrees), "--env-rotation must be finite");
+  HiprParameters& h = o.render.hipr;
+  require(std::isfinite(h.w_occlusion) && h.w_occlusion >= 0.0f, "--w-occlusion must be finite and non-negative");
+  require(std::isfinite(h.depth_epsilon) && h.depth_epsilon > 0.0f && h.depth_epsilon < 1.0f,
+          "--eps must be between 0 and 1 (relative depth)");
+  apply_preset(o.preset, h);
+  if (!o.w_lobe.empty()) set_weights(o.w_lobe, h.w_lobe, "--w-lobe");
+  if (!o.w_path.empty()) set_weights(o.w_path, h.w_path, "--w-path");
 }
 
 vk::ContextOptions context_options(const CommonOptions& o) {

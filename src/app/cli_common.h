@@ -14,6 +14,9 @@ namespace hipr::app {
 struct CommonOptions {
   std::filesystem::path scene;
   RenderSettings render;
+  // HiPR weights as given on the command line (normalized to sum 1 when applied).
+  std::vector<float> w_lobe, w_path;
+  std::string preset;
   uint32_t spp = 64;
   SceneLoadOptions load;
   bool validate = false;
@@ -25,8 +28,8 @@ struct CommonOptions {
 // --validate --device --quiet.
 void add_common_options(CLI::App& app, CommonOptions& options);
 
-// Checks ranges CLI11 cannot express; throws InputError.
-void validate_common_options(const CommonOptions& options);
+// Checks ranges CLI11 cannot express and applies the HiPR preset/weights; throws InputError.
+void validate_common_options(CommonOptions& options);
 
 vk::ContextOptions context_options(const CommonOptions& options);
 

@@ -31,7 +31,7 @@ void write_stats(const std::filesystem::path& path, const nlohmann::json& stats)
   });
 }
 
-int run_render(const RenderOptions& o) {
+int run_render(RenderOptions& o) {
   validate_common_options(o.common);
   log::set_quiet(o.common.quiet);
   // Every output is checked before the render starts: a bad path must not cost a render, and

@@ -50,7 +50,7 @@ void write_debug_images(const fs::path& dir, size_t edit, const Renderer& render
   write_image(dir / (stem + "_tiles.png"), tile_mask_image(flags, renderer.tiles_x(), s.tile_size, s.width, s.height));
 }
 
-int run_replay(const ReplayOptions& o) {
+int run_replay(ReplayOptions& o) {
   validate_common_options(o.common);
   log::set_quiet(o.common.quiet);
   const Policy policy = parse_policy(o.policy);
