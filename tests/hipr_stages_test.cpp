@@ -193,5 +193,20 @@ TEST(HiprStages, TilesChangedByARecolouredWallAreDiscovered) {
   expect_changed_tiles_discovered(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}});
 }
 
+TEST(HiprStages, StagesRunOnAFreshRenderer) {
+  // No update_scene before the stages: the discovery kernel must still see the whole scene
+  // (validation layers catch any binding left out).
+  const Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  ChangeSet changes;
+  changes.instances = {0};
+  renderer.mark_all_owed();
+  renderer.stage1_visibility(changes);
+  renderer.stage2_discover(1);
+  renderer.build_schedule();
+  EXPECT_GT(count_flag(renderer.tile_flags(), 1), 0u);
+  EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
+}
+
 }  // namespace
 }  // namespace hipr

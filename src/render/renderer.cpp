@@ -127,8 +127,8 @@ struct Renderer::Impl {
         std::vector<vk::BindingSlot>{{abi::kBindingFrame}, {abi::kBindingTileFlags}, {abi::kBindingTileWeights},
                                      {abi::kBindingTileRowDistance}, {abi::kBindingSortKeys}, {abi::kBindingSortValues}},
         sizeof(uint32_t));
-    gbuffer.clear();
     bind_hipr();
+    bind_scene_buffers(*discover);
     // The first G-buffer describes the scene as loaded, so the first edit has a "before".
     ctx.submit_and_wait([&](VkCommandBuffer cmd) { visibility->dispatch(cmd, nullptr, groups_for(pixels)); });
   }
@@ -137,27 +137,31 @@ struct Renderer::Impl {
   void bind_scene(const Scene& scene) {
     const abi::FrameParams params = make_frame_params(scene, gpu, settings);
     frame.upload(&params, sizeof params);
-    for (vk::ComputePipeline* pipeline : {&trace, discover.get()}) {
-      if (!pipeline) continue;
-      pipeline->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
-      const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
-          {abi::kBindingPositions, &gpu.positions}, {abi::kBindingNormals, &gpu.normals},
-          {abi::kBindingTangents, &gpu.tangents},   {abi::kBindingUvs, &gpu.uvs},
-          {abi::kBindingIndices, &gpu.indices},     {abi::kBindingGeometries, &gpu.geometries},
-          {abi::kBindingMaterials, &gpu.materials}, {abi::kBindingTextures, &gpu.textures},
-          {abi::kBindingTexels, &gpu.texels},       {abi::kBindingLights, &gpu.lights},
-          {abi::kBindingLightCdf, &gpu.light_cdf},  {abi::kBindingEnvironment, &gpu.environment},
-          {abi::kBindingTileList, &tile_list},      {abi::kBindingAccumulation, &accumulation},
-          {abi::kBindingStats, &stats},             {abi::kBindingFrame, &frame},
-          {abi::kBindingTileFlags, &tile_flags},
-      };
-      for (const auto& [binding, buffer] : buffers) pipeline->bind_buffer(binding, *buffer);
-    }
+    bind_scene_buffers(trace);
+    if (discover) bind_scene_buffers(*discover);
     if (visibility) visibility->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
   }
 
+  void bind_scene_buffers(vk::ComputePipeline& pipeline) {
+    pipeline.bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
+    const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
+        {abi::kBindingPositions, &gpu.positions}, {abi::kBindingNormals, &gpu.normals},
+        {abi::kBindingTangents, &gpu.tangents},   {abi::kBindingUvs, &gpu.uvs},
+        {abi::kBindingIndices, &gpu.indices},     {abi::kBindingGeometries, &gpu.geometries},
+        {abi::kBindingMaterials, &gpu.materials}, {abi::kBindingTextures, &gpu.textures},
+        {abi::kBindingTexels, &gpu.texels},       {abi::kBindingLights, &gpu.lights},
+        {abi::kBindingLightCdf, &gpu.light_cdf},  {abi::kBindingEnvironment, &gpu.environment},
+        {abi::kBindingTileList, &tile_list},      {abi::kBindingAccumulation, &accumulation},
+        {abi::kBindingStats, &stats},             {abi::kBindingFrame, &frame},
+        {abi::kBindingTileFlags, &tile_flags},
+    };
+    for (const auto& [binding, buffer] : buffers) pipeline.bind_buffer(binding, *buffer);
+  }
+
   void bind_hipr() {
-    bind_scene_buffers_for_discovery();
+    discover->bind_buffer(abi::kBindingGBuffer, gbuffer);
+    discover->bind_buffer(abi::kBindingChangedRecords, changed_records);
+    discover->bind_buffer(abi::kBindingTileWeights, tile_weights);
     visibility->bind_buffer(abi::kBindingFrame, frame);
     visibility->bind_buffer(abi::kBindingGBuffer, gbuffer);
     visibility->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
@@ -172,12 +176,6 @@ struct Renderer::Impl {
     keys->bind_buffer(abi::kBindingTileRowDistance, row_distance);
     keys->bind_buffer(abi::kBindingSortKeys, sorter->keys);
     keys->bind_buffer(abi::kBindingSortValues, sorter->values);
-  }
-
-  void bind_scene_buffers_for_discovery() {
-    discover->bind_buffer(abi::kBindingGBuffer, gbuffer);
-    discover->bind_buffer(abi::kBindingChangedRecords, changed_records);
-    discover->bind_buffer(abi::kBindingTileWeights, tile_weights);
   }
 
   abi::TracePush trace_push(uint32_t offset, uint32_t count, uint32_t spp) const {
@@ -274,7 +272,9 @@ void Renderer::mark_all_owed() {
 
 void Renderer::stage2_discover(uint32_t samples_per_pixel) {
   m->ensure_hipr();
-  build_schedule();  // active tiles first; stage 2 visits only those
+  // The dispatch covers the whole schedule (which the sort guarantees to list every tile, active
+  // ones first); tiles without kTileActive leave at once, so |A| never has to be read back.
+  build_schedule();
   abi::TracePush push = m->trace_push(0, tile_count(), samples_per_pixel);
   push.requireFlags = abi::kTileActive;
   m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, *m->discover, push); });
