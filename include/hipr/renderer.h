@@ -95,6 +95,7 @@ class Renderer {
   ImageRGB image() const;                     // per-pixel mean radiance
   std::vector<uint32_t> sample_counts() const;  // per pixel
   RenderCounters counters() const;
+  void reset_counters();  // on the GPU, no read-back
   void reset();
 
  private:

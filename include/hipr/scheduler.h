@@ -39,6 +39,7 @@ class Scheduler {
 
   ImageRGB displayed_image() const;
   // Samples rendered since the last edit, in full-frame 1-spp passes (DESIGN.md's work unit).
+  // The renderer's counters restart at each edit.
   double work_since_edit() const;
   // Seconds spent in stage 1 and sorting since the last edit (scheduler overhead).
   double overhead_seconds() const { return m_overhead_seconds; }
@@ -52,7 +53,6 @@ class Scheduler {
   uint32_t m_cursor = 0;       // next schedule entry
   bool m_first_round = false;  // still in the first pass over the schedule since the edit
   bool m_stage2_pending = false;
-  uint64_t m_samples_at_edit = 0;
   double m_overhead_seconds = 0.0;
   std::optional<ImageRGB> m_full_display;  // `full`: what the screen shows until a pass ends
 };

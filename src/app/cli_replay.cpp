@@ -85,7 +85,9 @@ int run_replay(ReplayOptions& o) {
                             {"policy", o.policy},
                             {"full_frame_pass_seconds", pass_seconds},
                             {"edits", nlohmann::json::array()}};
+  uint64_t non_finite = 0;  // the counters restart at every edit
   for (size_t e = 0; e < edits.size(); ++e) {
+    non_finite += renderer.counters().non_finite_samples;
     const Scene before = scene;
     apply_edit(scene, edits[e]);
     const Timer timer;
@@ -113,8 +115,8 @@ int run_replay(ReplayOptions& o) {
   write_atomically(o.output / "summary.json", [&](const fs::path& temp) {
     std::ofstream(temp) << summary.dump(2) << "\n";
   });
-  const RenderCounters counters = renderer.counters();
-  if (counters.non_finite_samples) log::warn(std::to_string(counters.non_finite_samples) + " non-finite samples were dropped");
+  non_finite += renderer.counters().non_finite_samples;
+  if (non_finite) log::warn(std::to_string(non_finite) + " non-finite samples were dropped");
   return kExitOk;
 }
 

@@ -53,7 +53,9 @@ Scheduler::Scheduler(Renderer& renderer, Policy policy, uint32_t tiles_per_step,
 }
 
 void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
-  m_samples_at_edit = m_renderer.counters().samples;
+  // Restarting the counters (a GPU fill) instead of reading them keeps read-backs off the
+  // edit path: work is only read when someone asks for it.
+  m_renderer.reset_counters();
   m_overhead_seconds = 0.0;
   m_renderer.update_scene(scene, changes);
   m_cursor = 0;
@@ -96,7 +98,7 @@ ImageRGB Scheduler::displayed_image() const { return m_full_display ? *m_full_di
 
 double Scheduler::work_since_edit() const {
   const double pixels = double(m_renderer.settings().width) * m_renderer.settings().height;
-  return double(m_renderer.counters().samples - m_samples_at_edit) / pixels;
+  return double(m_renderer.counters().samples) / pixels;
 }
 
 }  // namespace hipr

@@ -363,6 +363,8 @@ RenderCounters Renderer::counters() const {
   return {s.rays, s.samples, s.nonFiniteSamples};
 }
 
+void Renderer::reset_counters() { m->stats.clear(); }
+
 void Renderer::reset() {
   m->accumulation.clear();
   m->stats.clear();
