@@ -18,11 +18,11 @@ layout(local_size_x = 64) in;  // == kWorkgroupSize
 #include "common/sampling.glsl"
 #include "common/ray_offset.glsl"
 #include "common/textures.glsl"
+#include "bsdf/bsdf.glsl"
 #include "common/surface.glsl"
 #include "common/environment.glsl"
 #include "common/lights.glsl"
 #include "common/tile_pixels.glsl"
-#include "bsdf/bsdf.glsl"
 
 layout(push_constant, scalar) uniform Push { TracePush u_push; };
 
@@ -99,7 +99,7 @@ float emitter_hit_weight(SurfaceHit surface, float distance, vec3 direction, flo
   return bsdf_hit_weight(bsdfPdf, lightPdf);
 }
 
-vec3 direct_light(SurfaceHit surface, BsdfParams params, BsdfFrame frame, vec3 wo, vec4 u, float occlusionWeight,
+vec3 direct_light(SurfaceHit surface, BaseParams params, BsdfFrame frame, vec3 wo, vec4 u, float occlusionWeight,
                   inout uint rays) {
   const LightSample ls = sample_light(surface.position, u);
   if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
@@ -187,7 +187,7 @@ bool path_step(inout PathState p, inout uint rays) {
   }
   if (p.depth >= u_frame.maxDepth) return true;
 
-  const BsdfParams params = BsdfParams(shading.baseColor, shading.baseWeight);
+  const BaseParams params = shading.bsdf;
   const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal);
   const vec3 wo = -p.direction;
   if (u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly)

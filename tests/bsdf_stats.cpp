@@ -63,9 +63,12 @@ ChiSquareResult chi_square_sphere(const SampleFn& sample, const PdfFn& pdf, int 
     const auto s = sample(glm::vec2(uniform(rng), uniform(rng)), uniform(rng));
     if (s) observed[size_t(bin_of(s->direction, z_bins, phi_bins))] += 1.0;
   }
-  // Each bin is 4pi / bins steradians; integrate pdf with a midpoint rule on an 8x8 sub-grid.
-  constexpr int kSub = 8;
+  double successes = 0.0;
+  for (double o : observed) successes += o;
+  // Each bin is 4pi / bins steradians; integrate pdf with a midpoint rule on a 12x12 sub-grid.
+  constexpr int kSub = 12;
   ChiSquareResult result;
+  result.sampled_fraction = successes / samples;
   const double bin_area = 4 * kPi / bins / (kSub * kSub);
   for (int zi = 0; zi < z_bins; ++zi)
     for (int pi = 0; pi < phi_bins; ++pi) {

@@ -21,7 +21,8 @@ struct ChiSquareResult {
   double statistic = 0.0;
   int degrees_of_freedom = 0;
   double p_value = 0.0;
-  double pdf_integral = 0.0;  // of pdf() over the sphere
+  double pdf_integral = 0.0;      // of pdf() over the sphere
+  double sampled_fraction = 0.0;  // of sample() calls that returned a direction
 };
 
 // Bins directions on an equal-area (cos theta, phi) grid; expected counts integrate pdf() per

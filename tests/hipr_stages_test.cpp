@@ -60,12 +60,29 @@ struct Edited {
   ChangeSet changes;
 };
 
-Edited edit_cornell(const Edit& edit) {
-  Edited e{load_scene(test::asset("cornell_box.gltf")), {}, {}};
+Edited edit_scene(Scene base, const Edit& edit) {
+  Edited e{std::move(base), {}, {}};
   e.after = e.before;
   apply_edit(e.after, edit);
   e.changes = diff_scenes(e.before, e.after);
   return e;
+}
+
+Edited edit_cornell(const Edit& edit) { return edit_scene(load_scene(test::asset("cornell_box.gltf")), edit); }
+
+// The Cornell box with its back wall turned into a mirror (smooth white metal).
+Scene mirror_cornell() {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Material mirror;
+  mirror.name = "mirror";
+  mirror.params = default_material_params();
+  mirror.params.base_color = glm::vec3(0.95f);
+  mirror.params.base_metalness = 1.0f;
+  mirror.params.specular_roughness = 0.0f;
+  scene.materials.push_back(mirror);
+  for (const Node& node : scene.nodes)
+    if (node.name == "back_wall") scene.meshes[size_t(node.mesh)].primitives[0].material = uint32_t(scene.materials.size() - 1);
+  return scene;
 }
 
 // Runs the three stages after `edit` on a renderer that had converged-ish on the old scene.
@@ -154,8 +171,7 @@ TEST(HiprStages, HiddenObjectWithoutLightInteractionDiscoversNothing) {
 
 // Discovery completeness: tiles whose converged radiance the edit really changed (shadows,
 // colour bleeding), outside the active set, must be discovered.
-void expect_changed_tiles_discovered(const Edit& edit) {
-  const Edited e = edit_cornell(edit);
+void expect_changed_tiles_discovered(const Edited& e) {
   const auto renderer = run_stages(e);
   const auto flags = renderer->tile_flags();
   ImageRGB before, after;
@@ -186,11 +202,39 @@ void expect_changed_tiles_discovered(const Edit& edit) {
 }
 
 TEST(HiprStages, TilesChangedByAMovedBlockAreDiscovered) {
-  expect_changed_tiles_discovered(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt});
+  expect_changed_tiles_discovered(edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt}));
 }
 
 TEST(HiprStages, TilesChangedByARecolouredWallAreDiscovered) {
-  expect_changed_tiles_discovered(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}});
+  expect_changed_tiles_discovered(edit_cornell(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}}));
+}
+
+TEST(HiprStages, BlockMovedBesideAMirrorDiscoversTheMirror) {
+  const Edited e = edit_scene(mirror_cornell(), TransformEdit{"short_block", glm::vec3(-0.05f, 0.0f, 0.1f), std::nullopt});
+  expect_changed_tiles_discovered(e);
+  // The mirror's tiles (back wall in the G-buffer) that are not active are discovered through
+  // specular paths.
+  const auto renderer = run_stages(e);
+  const auto flags = renderer->tile_flags();
+  const auto weights = renderer->tile_weights();
+  const auto instances = renderer->gbuffer_instances();
+  const auto scene_instances = e.after.instances();
+  const RenderSettings s = settings();
+  std::vector<bool> shows_mirror(flags.size(), false);
+  for (uint32_t y = 0; y < s.height; ++y)
+    for (uint32_t x = 0; x < s.width; ++x) {
+      const uint32_t id = instances[size_t(y) * s.width + x];
+      if (id != UINT32_MAX && e.after.nodes[scene_instances[id].node].name == "back_wall")
+        shows_mirror[(y / s.tile_size) * renderer->tiles_x() + x / s.tile_size] = true;
+    }
+  size_t mirror_tiles = 0, discovered = 0;
+  for (size_t t = 0; t < flags.size(); ++t) {
+    if (!shows_mirror[t] || (flags[t] & 1)) continue;
+    ++mirror_tiles;
+    discovered += (flags[t] & 2) && weights[t] > 0.0 ? 1 : 0;
+  }
+  ASSERT_GT(mirror_tiles, 0u);
+  EXPECT_GE(double(discovered), 0.9 * double(mirror_tiles)) << discovered << " of " << mirror_tiles;
 }
 
 TEST(HiprStages, StagesRunOnAFreshRenderer) {

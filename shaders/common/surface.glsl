@@ -15,8 +15,7 @@ struct SurfaceHit {
 };
 
 struct ShadingParams {
-  vec3 baseColor;
-  float baseWeight;
+  BaseParams bsdf;
   vec3 emission;  // radiance leaving the front side (both sides if double-sided), nits
   bool doubleSided;
 };
@@ -90,10 +89,23 @@ vec3 material_emission(uint material, vec2 uv) {
 ShadingParams shading_params(SurfaceHit hit) {
   const uint material = hit.material;
   ShadingParams s;
-  s.baseColor = b_materials[material].base_color;
+  vec3 baseColor = b_materials[material].base_color;
   const uint baseTexture = b_materials[material].base_color_texture;
-  if (baseTexture != kInvalidIndex) s.baseColor *= sample_texture(baseTexture, hit.uv).rgb;
-  s.baseWeight = b_materials[material].base_weight;
+  if (baseTexture != kInvalidIndex) baseColor *= sample_texture(baseTexture, hit.uv).rgb;
+  float metalness = b_materials[material].base_metalness;
+  float roughness = b_materials[material].specular_roughness;
+  const uint mrTexture = b_materials[material].metallic_roughness_texture;
+  if (mrTexture != kInvalidIndex) {
+    const vec4 mr = sample_texture(mrTexture, hit.uv);  // glTF packing: G roughness, B metalness
+    roughness *= mr.g;
+    metalness *= mr.b;
+  }
+  s.bsdf.baseColor = baseColor * b_materials[material].base_weight;
+  s.bsdf.metalness = clamp(metalness, 0.0, 1.0);
+  s.bsdf.specularColor = b_materials[material].specular_color;
+  s.bsdf.specularWeight = b_materials[material].specular_weight;
+  s.bsdf.specularIor = max(b_materials[material].specular_ior, 1.0);
+  s.bsdf.alpha = ggx_alpha(clamp(roughness, 0.0, 1.0));
   s.doubleSided = (b_materials[material].flags & kMaterialDoubleSided) != 0u;
   s.emission = (hit.frontFacing || s.doubleSided) ? material_emission(material, hit.uv) : vec3(0.0);
   return s;
