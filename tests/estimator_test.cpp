@@ -36,6 +36,21 @@ TEST(Estimators, EmissiveTrianglesAgree) {
   expect_estimators_agree(load_scene(test::asset("cornell_box.gltf")), 32, 256, 2, 0.02);
 }
 
+TEST(Estimators, GlossyMaterialsAgree) {
+  // Rough metal and a shiny dielectric: the GGX pdfs must match what the lobes sample.
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  for (Material& m : scene.materials) {
+    if (m.name == "white") {
+      m.params.base_metalness = 1.0f;
+      m.params.specular_roughness = 0.35f;
+    } else if (m.name == "red" || m.name == "green") {
+      m.params.specular_weight = 1.0f;
+      m.params.specular_roughness = 0.2f;
+    }
+  }
+  expect_estimators_agree(scene, 32, 256, 2, 0.03);
+}
+
 TEST(Estimators, EnvironmentImportanceSamplingAgrees) {
   // A grey sphere under a sky with a bright "sun" patch: the environment CDF must match its pdf.
   Scene scene = test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.5f, 0.3f);
