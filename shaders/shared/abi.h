@@ -185,7 +185,6 @@ struct FrameParams {
   vec3 cameraRight;  // unit vectors of the camera frame in world space
   float aspect;      // width / height
   vec3 cameraUp;
-  float sceneScale;  // bounding radius, for offsets and directional-light sampling
   vec3 cameraForward;
   uint seed;
   uint width;
@@ -206,7 +205,6 @@ struct FrameParams {
   float depthEpsilon; // relative depth tolerance of the projection test
   uint tileCount;
   uint tilesY;
-  uint recordCount;
 };
 
 // Stage 1 output per pixel: what the pixel-centre ray hit.

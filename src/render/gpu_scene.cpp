@@ -130,7 +130,6 @@ void GpuScene::update_lights(const Scene& scene) {
   for (size_t r = 0; r < m_records.size(); ++r) m_records[r].lightOffset = m_lights.record_light_offset[r];
   geometries.upload(m_records.data(), m_records.size() * sizeof(abi::GeometryRecord));
   m_info.light_count = m_lights.lights.size();
-  m_info.emissive_triangles = m_lights.emissive_triangle_count;
   lights = vk::make_storage_buffer(m_ctx, m_lights.lights);
   light_cdf = vk::make_storage_buffer(m_ctx, m_lights.cdf);
 }

@@ -16,7 +16,6 @@ struct GpuSceneInfo {
   size_t instance_count = 0;
   size_t triangle_count = 0;  // over all visible instances
   size_t light_count = 0;
-  double emissive_triangles = 0;
   float scene_radius = 1.0f;
 };
 

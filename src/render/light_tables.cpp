@@ -67,7 +67,6 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
         if (!std::isfinite(light.area)) light.area = 0.0f;
         t.lights.push_back(light);
         power.push_back(double(radiance) * light.area * kPi * (two_sided ? 2.0 : 1.0));
-        t.emissive_triangle_count += 1;
       }
     }
   }

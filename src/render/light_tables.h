@@ -12,7 +12,6 @@ struct LightTables {
   std::vector<float> cdf;                 // lights.size() + 1 entries, cdf[0] = 0, last = 1
   std::vector<uint32_t> record_light_offset;  // per GeometryRecord: first Light, or kInvalidIndex
   uint32_t environment_index = abi::kInvalidIndex;
-  double emissive_triangle_count = 0;
 };
 
 // `record_base[i]` is the first GeometryRecord of instances[i]; records follow the mesh's

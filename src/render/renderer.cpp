@@ -30,7 +30,6 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, cons
   f.cameraForward = -glm::normalize(glm::vec3(camera.camera_to_world[2]));
   f.tanHalfFovY = std::tan(0.5f * camera.yfov);
   f.aspect = float(s.width) / float(s.height);
-  f.sceneScale = gpu.info().scene_radius;
   f.seed = s.seed;
   f.width = s.width;
   f.height = s.height;
@@ -52,7 +51,6 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, cons
   f.wPath = glm::vec3(h.w_path[0], h.w_path[1], h.w_path[2]);
   f.wOcclusion = h.w_occlusion;
   f.depthEpsilon = h.depth_epsilon;
-  f.recordCount = gpu.record_count();
   return f;
 }
 
