@@ -110,10 +110,12 @@ TEST(BaseLobes, FurnaceAlbedoNeverExceedsOne) {
       for (float theta : {0.0f, 0.7f, 1.3f, 1.55f}) {
         const glm::dvec3 a = test::albedo(base_sampler(base_params(glm::vec3(1.0f), metalness, roughness), direction(theta)), 50000);
         EXPECT_LE(a.x, 1.01) << "metal " << metalness << " roughness " << roughness << " theta " << theta;
-        // Single-scattering GGX loses energy at high roughness (no compensation yet) but not
-        // at low roughness.
-        if (roughness <= 0.2f && theta < 1.3f) {
-          EXPECT_GT(a.x, 0.9) << "metal " << metalness << " roughness " << roughness;
+        // The white metal keeps its energy at every roughness (multiple-scattering
+        // compensation); the dielectric base is not compensated yet and loses about 10%.
+        if (metalness == 1.0f) {
+          EXPECT_NEAR(a.x, 1.0, 0.02) << "roughness " << roughness << " theta " << theta;
+        } else if (roughness <= 0.2f && theta < 1.3f) {
+          EXPECT_GT(a.x, 0.88) << "roughness " << roughness;
         }
       }
 }

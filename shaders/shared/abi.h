@@ -36,6 +36,7 @@ HIPR_CONST uint kBindingTileList = 13u;      // uint tile ids, in the order to r
 HIPR_CONST uint kBindingAccumulation = 14u;  // PixelAccum per pixel
 HIPR_CONST uint kBindingStats = 15u;         // RenderStats
 HIPR_CONST uint kBindingFrame = 16u;         // FrameParams (one)
+HIPR_CONST uint kBindingBsdfTables = 28u;    // float: generated BSDF tables (bsdf/ggx_energy_table.glsl)
 // HiPR scheduling (stages 1-3)
 HIPR_CONST uint kBindingGBuffer = 17u;          // GBufferTexel per pixel, this scene state
 HIPR_CONST uint kBindingPreviousGBuffer = 18u;  // GBufferTexel per pixel, before the edit

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "hipr/scene_diff.h"
+#include "render/bsdf_tables.h"
 #include "render/gpu_scene.h"
 #include "render/radix_sorter.h"
 #include "scene/default_camera.h"
@@ -58,6 +59,7 @@ std::vector<vk::BindingSlot> trace_bindings(bool discovery) {
   std::vector<vk::BindingSlot> slots = {{abi::kBindingTlas, vk::BindingKind::AccelerationStructure}};
   for (uint32_t b = abi::kBindingPositions; b <= abi::kBindingFrame; ++b) slots.push_back({b});
   slots.push_back({abi::kBindingTileFlags});
+  slots.push_back({abi::kBindingBsdfTables});
   if (discovery)
     for (uint32_t b : {abi::kBindingGBuffer, abi::kBindingChangedRecords, abi::kBindingTileWeights}) slots.push_back({b});
   return slots;
@@ -87,6 +89,7 @@ struct Renderer::Impl {
         frame(storage(c, sizeof(abi::FrameParams))),
         tile_list(storage(c, size_t(tiles_x) * tiles_y * sizeof(uint32_t))),
         tile_flags(storage(c, size_t(tiles_x) * tiles_y * sizeof(uint32_t))),
+        bsdf_tables(vk::make_storage_buffer(c, bsdf_table_data())),
         mark_owed(c, "mark_owed.comp", {}, {{abi::kBindingFrame}, {abi::kBindingAccumulation}}, 0) {
     all_tiles.resize(size_t(tiles_x) * tiles_y);
     std::iota(all_tiles.begin(), all_tiles.end(), 0u);
@@ -151,7 +154,7 @@ struct Renderer::Impl {
         {abi::kBindingLightCdf, &gpu.light_cdf},  {abi::kBindingEnvironment, &gpu.environment},
         {abi::kBindingTileList, &tile_list},      {abi::kBindingAccumulation, &accumulation},
         {abi::kBindingStats, &stats},             {abi::kBindingFrame, &frame},
-        {abi::kBindingTileFlags, &tile_flags},
+        {abi::kBindingTileFlags, &tile_flags},    {abi::kBindingBsdfTables, &bsdf_tables},
     };
     for (const auto& [binding, buffer] : buffers) pipeline.bind_buffer(binding, *buffer);
   }
@@ -197,7 +200,7 @@ struct Renderer::Impl {
   GpuScene gpu;
   uint32_t tiles_x, tiles_y, pixels;
   vk::ComputePipeline trace;
-  vk::Buffer accumulation, stats, frame, tile_list, tile_flags;
+  vk::Buffer accumulation, stats, frame, tile_list, tile_flags, bsdf_tables;
   vk::ComputePipeline mark_owed;
   std::vector<uint32_t> all_tiles;
   // HiPR (made by ensure_hipr)
