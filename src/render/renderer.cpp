@@ -244,10 +244,16 @@ void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
 
 void Renderer::stage1_visibility(const ChangeSet& changes) {
   m->ensure_hipr();
-  std::vector<uint32_t> changed(std::max<uint32_t>(m->gpu.record_count(), 1), 0);
-  for (uint32_t instance : changes.instances)
-    for (uint32_t r = 0; r < m->gpu.record_count(); ++r)
-      if (m->gpu.record_instance()[r] == instance) changed[r] = 1;
+  // One pass over the records: a flag per instance, then each record looks up its own.
+  const std::vector<uint32_t>& record_instance = m->gpu.record_instance();
+  std::vector<bool> instance_changed;
+  for (uint32_t instance : changes.instances) {
+    if (instance >= instance_changed.size()) instance_changed.resize(instance + 1, false);
+    instance_changed[instance] = true;
+  }
+  std::vector<uint32_t> changed(std::max<size_t>(record_instance.size(), 1), 0);
+  for (size_t r = 0; r < record_instance.size(); ++r)
+    changed[r] = record_instance[r] < instance_changed.size() && instance_changed[record_instance[r]] ? 1 : 0;
   m->changed_records.upload(changed.data(), changed.size() * 4);
   // What no G-buffer shows (a moved camera, a punctual light's reach) makes every tile active.
   const bool everything = changes.camera || !changes.lights.empty();
