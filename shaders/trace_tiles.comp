@@ -99,13 +99,19 @@ float emitter_hit_weight(SurfaceHit surface, float distance, vec3 direction, flo
   return bsdf_hit_weight(bsdfPdf, lightPdf);
 }
 
-vec3 direct_light(SurfaceHit surface, BaseParams params, BsdfFrame frame, vec3 wo, vec4 u, float occlusionWeight,
+// Ray origin just off the surface on the side `direction` leaves toward (transmission leaves
+// through the back).
+vec3 leave_surface(vec3 position, vec3 geometricNormal, vec3 direction) {
+  return offset_ray_origin(position, dot(direction, geometricNormal) >= 0.0 ? geometricNormal : -geometricNormal);
+}
+
+vec3 direct_light(SurfaceHit surface, OpenPbrParams params, BsdfFrame frame, vec3 wo, vec4 u, float occlusionWeight,
                   inout uint rays) {
   const LightSample ls = sample_light(surface.position, u);
   if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
   const vec3 f = bsdf_eval(params, frame, wo, ls.direction);
   if (max3(f) <= 0.0) return vec3(0.0);
-  const vec3 origin = offset_ray_origin(surface.position, frame.geometricNormal);
+  const vec3 origin = leave_surface(surface.position, frame.geometricNormal, ls.direction);
   vec3 direction = ls.direction;
   float tMax = kFloatMax;
   if (ls.distance < kFloatMax) {
@@ -144,7 +150,7 @@ struct PathState {
   vec3 radiance;
   vec3 throughput;
   float previousPdf;
-  bool previousDelta;  // the camera ray counts as a delta "bounce": no MIS
+  bool previousDelta;  // the camera ray, and delta events, found radiance without MIS
   uint depth;
   uint firstLobe;             // lobe sampled at x_0 (discovery path classes)
   bool specularSinceFirst;    // every lobe after x_0 so far was specular or transmission
@@ -180,16 +186,19 @@ bool path_step(inout PathState p, inout uint rays) {
   }
   const SurfaceHit surface = make_surface_hit(hit.geometry, hit.primitive, hit.barycentrics, hit.objectToWorld,
                                               hit.worldToObject, p.direction);
-  const ShadingParams shading = shading_params(surface);
+  const vec3 wo = -p.direction;
+  const ShadingParams shading = shading_params(surface, wo);
+  const OpenPbrParams params = shading.bsdf;
+  // A ray that hits a transmissive solid from inside crossed its medium: Beer-Lambert.
+  // (Media are not nested: a segment inside one solid that ends on another is not absorbed.)
+  if (!surface.frontFacing && max3(shading.absorption) > 0.0) p.throughput *= exp(-shading.absorption * hit.t);
   if (max3(shading.emission) > 0.0) {
     const float weight = p.previousDelta ? 1.0 : emitter_hit_weight(surface, hit.t, p.direction, p.previousPdf);
     p.radiance += p.throughput * shading.emission * weight;
   }
   if (p.depth >= u_frame.maxDepth) return true;
 
-  const BaseParams params = shading.bsdf;
-  const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal);
-  const vec3 wo = -p.direction;
+  const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal, surface.tangent);
   if (u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly)
     p.radiance += p.throughput * direct_light(surface, params, frame, wo, rng_uniform4(p.rng, p.depth, 1u),
                                               luminance(p.throughput), rays);
@@ -210,7 +219,7 @@ bool path_step(inout PathState p, inout uint rays) {
   if (bs.pdf <= 0.0) return true;
   p.throughput *= bs.weight;
   p.previousPdf = bs.pdf;
-  p.previousDelta = bs.lobe == kLobeSpecular;
+  p.previousDelta = bs.isDelta;
 
   // Russian roulette from the second vertex on; unbiased because survivors are reweighted.
   // Starting it this early measured ~18% less error per second than after three bounces on
@@ -221,7 +230,7 @@ bool path_step(inout PathState p, inout uint rays) {
     p.throughput /= survive;
   }
   if (max3(p.throughput) <= 0.0) return true;
-  p.origin = offset_ray_origin(surface.position, surface.geometricNormal);
+  p.origin = leave_surface(surface.position, surface.geometricNormal, bs.direction);
   p.direction = bs.direction;
   p.depth += 1u;
   return false;

@@ -69,7 +69,7 @@ LightSample sample_light(vec3 position, vec4 u) {
     s.lightNormal = cosAtLight < 0.0 ? -n : n;
     cosAtLight = abs(cosAtLight);
     const uvec3 v = triangle_vertices(g, light.primitive);
-    s.radiance = material_emission(g.materialIndex, interpolate_uv(v, b));
+    s.radiance = material_emission(g.materialIndex, interpolate_uv(v, b), cosAtLight);
     s.pdf = selection * triangle_light_pdf(light, s.distance, cosAtLight);
   } else if (light.type == kLightEnvironment) {
     float pdf;

@@ -7,6 +7,7 @@ struct SurfaceHit {
   vec3 position;
   vec3 geometricNormal;  // front side per glTF winding, unit
   vec3 shadingNormal;    // interpolated (and normal-mapped), unit, same side as geometricNormal
+  vec3 tangent;          // anisotropy direction (specular_rotation applied); zero when isotropic
   vec2 uv;
   uint geometry;         // GeometryRecord index
   uint primitive;
@@ -15,8 +16,9 @@ struct SurfaceHit {
 };
 
 struct ShadingParams {
-  BaseParams bsdf;
-  vec3 emission;  // radiance leaving the front side (both sides if double-sided), nits
+  OpenPbrParams bsdf;
+  vec3 emission;    // radiance toward wo leaving the front side (both sides if double-sided), nits
+  vec3 absorption;  // Beer-Lambert coefficient (1/m) of the medium behind the surface; 0 for none
   bool doubleSided;
 };
 
@@ -53,17 +55,26 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
 
   // Materials are read field by field: copying the whole block costs loads on CPU devices.
   const uint normalTexture = b_materials[hit.material].normal_texture;
-  if (normalTexture != kInvalidIndex) {
+  const float anisotropy = b_materials[hit.material].specular_anisotropy;
+  hit.tangent = vec3(0.0);
+  if (normalTexture != kInvalidIndex || anisotropy > 0.0) {
     const vec4 t = b_tangents[v.x] * b0 + b_tangents[v.y] * bary.x + b_tangents[v.z] * bary.y;
     vec3 tangent = mat3(objectToWorld) * t.xyz;
     tangent = tangent - ns * dot(ns, tangent);
     if (dot(tangent, tangent) > 1e-12) {
       tangent = normalize(tangent);
       const vec3 bitangent = cross(ns, tangent) * (t.w < 0.0 ? -1.0 : 1.0);
-      vec3 local = sample_texture(normalTexture, hit.uv).xyz * 2.0 - 1.0;
-      local.xy *= b_materials[hit.material].normal_scale;
-      const vec3 mapped = tangent * local.x + bitangent * local.y + ns * local.z;
-      if (dot(mapped, mapped) > 1e-12) ns = normalize(mapped);
+      if (normalTexture != kInvalidIndex) {
+        vec3 local = sample_texture(normalTexture, hit.uv).xyz * 2.0 - 1.0;
+        local.xy *= b_materials[hit.material].normal_scale;
+        const vec3 mapped = tangent * local.x + bitangent * local.y + ns * local.z;
+        if (dot(mapped, mapped) > 1e-12) ns = normalize(mapped);
+      }
+      if (anisotropy > 0.0) {
+        // specular_rotation turns the anisotropy direction from the tangent toward the bitangent.
+        const float angle = b_materials[hit.material].specular_rotation;
+        hit.tangent = tangent * cos(angle) + bitangent * sin(angle);
+      }
     }
   }
 
@@ -79,14 +90,23 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   return hit;
 }
 
-vec3 material_emission(uint material, vec2 uv) {
+// Emitted radiance toward a direction at cosine mu_o from the shading normal, after the coat.
+vec3 material_emission(uint material, vec2 uv, float mu_o) {
   vec3 e = b_materials[material].emission_color * b_materials[material].emission_luminance;
+  if (max3(e) <= 0.0) return vec3(0.0);
   const uint texture = b_materials[material].emission_texture;
-  if (texture != kInvalidIndex && max3(e) > 0.0) e *= sample_texture(texture, uv).rgb;
+  if (texture != kInvalidIndex) e *= sample_texture(texture, uv).rgb;
+  const float coat = b_materials[material].coat_weight;
+  if (coat > 0.0)
+    e *= coat_emission_scale(clamp(coat, 0.0, 1.0), b_materials[material].coat_color,
+                             ggx_alpha(clamp(b_materials[material].coat_roughness, 0.0, 1.0)),
+                             max(b_materials[material].coat_ior, 1.0), clamp(mu_o, 0.0, 1.0));
   return e;
 }
 
-ShadingParams shading_params(SurfaceHit hit) {
+// OpenPBR parameters at the hit, seen from the side the ray arrived on: a ray inside a
+// transmissive solid sees the inverse index and no coat (the coat is on the outside).
+ShadingParams shading_params(SurfaceHit hit, vec3 wo) {
   const uint material = hit.material;
   ShadingParams s;
   vec3 baseColor = b_materials[material].base_color;
@@ -100,14 +120,34 @@ ShadingParams shading_params(SurfaceHit hit) {
     roughness *= mr.g;
     metalness *= mr.b;
   }
-  s.bsdf.baseColor = baseColor * b_materials[material].base_weight;
-  s.bsdf.metalness = clamp(metalness, 0.0, 1.0);
-  s.bsdf.specularColor = b_materials[material].specular_color;
-  s.bsdf.specularWeight = b_materials[material].specular_weight;
-  s.bsdf.specularIor = max(b_materials[material].specular_ior, 1.0);
-  s.bsdf.alpha = ggx_alpha(clamp(roughness, 0.0, 1.0));
-  s.doubleSided = (b_materials[material].flags & kMaterialDoubleSided) != 0u;
-  s.emission = (hit.frontFacing || s.doubleSided) ? material_emission(material, hit.uv) : vec3(0.0);
+  const uint flags = b_materials[material].flags;
+  const bool thin = (flags & kMaterialThinWalled) != 0u;
+  OpenPbrParams p;
+  p.baseColor = baseColor * b_materials[material].base_weight;
+  p.metalness = clamp(metalness, 0.0, 1.0);
+  p.specularColor = b_materials[material].specular_color;
+  p.specularWeight = b_materials[material].specular_weight;
+  p.alpha = ggx_alpha_anisotropic(clamp(roughness, 0.0, 1.0), b_materials[material].specular_anisotropy);
+  const float ior = ior_with_specular_weight(max(b_materials[material].specular_ior, 1.0), p.specularWeight);
+  p.eta = (thin || hit.frontFacing) ? ior : 1.0 / ior;
+  p.transmission = clamp(b_materials[material].transmission_weight, 0.0, 1.0);
+  const vec3 transmissionColor = b_materials[material].transmission_color;
+  const float depth = b_materials[material].transmission_depth;
+  const bool volume = !thin && depth > 0.0 && p.transmission > 0.0;
+  p.transmissionColor = volume ? vec3(1.0) : transmissionColor;
+  s.absorption = volume ? -log(clamp(transmissionColor, vec3(1.0e-6), vec3(1.0))) / depth : vec3(0.0);
+  p.thinWalled = thin;
+  p.subsurface = clamp(b_materials[material].subsurface_weight, 0.0, 1.0);
+  p.subsurfaceColor = b_materials[material].subsurface_color;
+  const bool inside = !thin && !hit.frontFacing && p.transmission > 0.0;
+  p.coat = inside ? 0.0 : clamp(b_materials[material].coat_weight, 0.0, 1.0);
+  p.coatColor = b_materials[material].coat_color;
+  p.coatAlpha = ggx_alpha(clamp(b_materials[material].coat_roughness, 0.0, 1.0));
+  p.coatEta = max(b_materials[material].coat_ior, 1.0);
+  p.coatDarkening = clamp(b_materials[material].coat_darkening, 0.0, 1.0);
+  s.bsdf = p;
+  s.doubleSided = (flags & kMaterialDoubleSided) != 0u;
+  s.emission = (hit.frontFacing || s.doubleSided) ? material_emission(material, hit.uv, dot(hit.geometricNormal, wo)) : vec3(0.0);
   return s;
 }
 

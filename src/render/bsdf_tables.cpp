@@ -6,10 +6,6 @@
 
 namespace hipr {
 
-std::vector<float> bsdf_table_data() {
-  std::vector<float> data(std::begin(kGgxEnergy), std::end(kGgxEnergy));
-  data.insert(data.end(), std::begin(kGgxEnergyAverage), std::end(kGgxEnergyAverage));
-  return data;
-}
+std::vector<float> bsdf_table_data() { return std::vector<float>(std::begin(kBsdfTables), std::end(kBsdfTables)); }
 
 }  // namespace hipr

@@ -1,0 +1,293 @@
+// The OpenPBR 1.1 surface as one BSDF in the local shading frame (n = +Z, x = tangent), wo.z > 0.
+// Shared with C++ (tests/bsdf_test.cpp runs these very functions).
+//
+// Layers, top to bottom, combined by albedo scaling with generated albedo tables:
+//   coat     GGX dielectric reflection (coat_ior, coat_roughness), weight C; everything below is
+//            scaled by 1 - C max(E_c(wo), E_c(wi)) (reciprocal, and never more than the energy
+//            the coat lets through), tinted by coat_color and darkened by the light the coat
+//            reflects back onto an absorbing base (coat_darkening);
+//   base     mix by base_metalness of
+//            metal       F82-tint GGX with multiple-scattering compensation (metal.glsl);
+//            dielectric  specular reflection (specular_ior modulated by specular_weight,
+//                        tinted by specular_color), mixed by transmission_weight t with
+//                        t:     the transmitting interface, reflection + refraction (or a
+//                               thin-walled slab), compensated by 1 / E_rt(wo) so rough glass
+//                               keeps its energy; refraction tinted by transmission_color;
+//                        1 - t: diffuse under the specular layer, scaled by
+//                               (1 - E_r(wo)) (1 - E_r(wi)) / (1 - E_r,avg), which is reciprocal
+//                               and gives exactly 1 for a white Lambertian base;
+//            the diffuse is mixed by subsurface_weight with subsurface_color: our approximation
+//            of subsurface until a volumetric walk exists (diffuse reflection; thin-walled, half
+//            of it is transmitted diffusely to the far side).
+// Approximations, documented: the coat tint is applied once (its value at normal incidence);
+// the specular interface under a coat keeps its own index (not specular_ior / coat_ior);
+// anisotropic lobes read the isotropic tables at one stand-in alpha (ggx_alpha_for_tables);
+// refraction leaves out the
+// 1/eta^2 radiance scaling (it cancels for paths that enter and leave an object).
+#ifndef HIPR_OPENPBR_GLSL
+#define HIPR_OPENPBR_GLSL
+
+#include "dielectric.glsl"
+#include "energy_tables.glsl"
+#include "lambert.glsl"
+#include "metal.glsl"
+
+// Lobe classes every sample reports (HiPR's tile weights depend on them).
+const uint kLobeDiffuse = 0u;
+const uint kLobeGlossy = 1u;
+const uint kLobeSpecular = 2u;
+const uint kLobeTransmission = 3u;
+
+// GGX lobes narrower than this (roughness ~0.1) count as "specular" for HiPR.
+const float kSpecularAlpha = 0.01f;
+
+// Resolved parameters at one surface point (textures applied, sidedness decided).
+struct OpenPbrParams {
+  vec3 baseColor;           // base_color x base_weight
+  float metalness;
+  vec3 specularColor;
+  float specularWeight;     // scales the metal's Fresnel (the dielectric's is folded into eta)
+  vec2 alpha;               // specular GGX alpha along tangent and bitangent
+  float eta;                // relative index across the base interface seen from wo, specular_weight applied
+  float transmission;       // transmission_weight
+  vec3 transmissionColor;   // tint of refracted light (white when a volume absorbs instead)
+  bool thinWalled;
+  float subsurface;         // subsurface_weight
+  vec3 subsurfaceColor;
+  float coat;               // coat_weight; 0 when wo is not on the coated side
+  vec3 coatColor;
+  float coatAlpha;
+  float coatEta;
+  float coatDarkening;
+};
+
+// What eval, pdf and sample need from wo alone.
+struct OpenPbrContext {
+  float coatEnergy;       // C E_c(wo)
+  vec3 baseTint;          // coat colour and darkening, on all light that reaches the base
+  float specularEnergy;   // E_r(wo) of the dielectric reflection, 0 when index-matched
+  float specularAverage;  // its cosine-weighted average
+  float interfaceEnergy;  // E_rt(wo), or E(wo) for a thin-walled slab: the transmitting interface
+  vec4 weights;           // sampling probabilities: coat, metal, dielectric reflection, interface
+  float diffuseWeight;    // ... and the diffuse lobe (all five sum to 1, or all are 0)
+};
+
+HIPR_FN bool specular_reflects(OpenPbrParams p) { return !index_matched(p.eta); }
+
+// Diffuse colours reflected to wo's side and transmitted to the far side.
+HIPR_FN vec3 diffuse_reflection_color(OpenPbrParams p) {
+  return p.baseColor * (1.0f - p.subsurface) + p.subsurfaceColor * (p.subsurface * (p.thinWalled ? 0.5f : 1.0f));
+}
+HIPR_FN vec3 diffuse_transmission_color(OpenPbrParams p) {
+  return p.thinWalled ? p.subsurfaceColor * (0.5f * p.subsurface) : vec3(0.0f);
+}
+
+// Share of diffuse samples sent to the far side.
+HIPR_FN float diffuse_transmission_probability(OpenPbrParams p) {
+  const float t = luminance(diffuse_transmission_color(p));
+  return t > 0.0f ? t / (t + luminance(diffuse_reflection_color(p))) : 0.0f;
+}
+
+HIPR_FN float coat_energy(OpenPbrParams p, float mu) {
+  return p.coat > 0.0f ? p.coat * dielectric_reflection_energy(mu, p.coatAlpha, p.coatEta) : 0.0f;
+}
+
+// Light the coat reflects back down meets the base again; an absorbing base loses part of it.
+// With K the coat's internal diffuse reflectance and rho the base albedo the base's reflectance
+// becomes rho (1 - K) / (1 - K rho) (no change for rho = 1, so white furnaces stay white).
+HIPR_FN vec3 coat_darkening(OpenPbrParams p) {
+  const float amount = p.coat * p.coatDarkening;
+  if (amount <= 0.0f) return vec3(1.0f);
+  const float k = 1.0f - (1.0f - dielectric_reflection_energy_average(p.coatAlpha, p.coatEta)) / (p.coatEta * p.coatEta);
+  const vec3 rho = mix((1.0f - p.transmission) * diffuse_reflection_color(p), p.baseColor, p.metalness);
+  return mix(vec3(1.0f), (1.0f - k) / (vec3(1.0f) - k * clamp(rho, vec3(0.0f), vec3(1.0f))), amount);
+}
+
+HIPR_FN OpenPbrContext openpbr_context(OpenPbrParams p, vec3 wo) {
+  OpenPbrContext c;
+  const float mu_o = wo.z;
+  c.coatEnergy = coat_energy(p, mu_o);
+  c.baseTint = p.coat > 0.0f ? mix(vec3(1.0f), p.coatColor, p.coat) * coat_darkening(p) : vec3(1.0f);
+  const float a = ggx_alpha_for_tables(p.alpha);
+  c.specularEnergy = specular_reflects(p) ? dielectric_reflection_energy(mu_o, a, p.eta) : 0.0f;
+  c.specularAverage = specular_reflects(p) ? dielectric_reflection_energy_average(a, p.eta) : 0.0f;
+  c.interfaceEnergy = 1.0f;
+  if (p.transmission > 0.0f && specular_reflects(p))
+    c.interfaceEnergy = mix(1.0f, max(p.thinWalled ? ggx_energy(mu_o, a) : dielectric_interface_energy(mu_o, a, p.eta), 0.05f),
+                            ggx_isotropy(p.alpha));
+
+  // Estimated albedo of each lobe from wo; floors keep a lobe sampled wherever it can be non-zero.
+  const float under = (1.0f - c.coatEnergy) * luminance(c.baseTint);
+  const float dielectric = (1.0f - p.metalness) * under;
+  c.weights = vec4(0.0f);
+  c.weights.x = c.coatEnergy;
+  if (p.metalness > 0.0f && p.specularWeight > 0.0f)
+    c.weights.y = p.metalness * under *
+                  max(luminance(fresnel_f82_tint(p.baseColor, p.specularColor, mu_o)) * min(p.specularWeight, 1.0f), 0.05f);
+  if (p.transmission < 1.0f) c.weights.z = dielectric * (1.0f - p.transmission) * c.specularEnergy * luminance(p.specularColor);
+  if (p.transmission > 0.0f)
+    c.weights.w = dielectric * p.transmission * max(luminance(p.transmissionColor + p.specularColor) * 0.5f, 0.05f);
+  c.diffuseWeight = 0.0f;
+  if (p.transmission < 1.0f)
+    c.diffuseWeight = dielectric * (1.0f - p.transmission) * (1.0f - c.specularEnergy) *
+                      luminance(diffuse_reflection_color(p) + diffuse_transmission_color(p));
+  const float total = c.weights.x + c.weights.y + c.weights.z + c.weights.w + c.diffuseWeight;
+  if (total > 0.0f) {
+    c.weights /= total;
+    c.diffuseWeight /= total;
+  }
+  return c;
+}
+
+// The diffuse lobe under the specular layer, f * |cos_i|, either side.
+HIPR_FN vec3 diffuse_under_specular_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wi) {
+  const float mu_i = abs(wi.z);
+  float scale = 1.0f;
+  if (c.specularEnergy > 0.0f) {
+    const float e_i = dielectric_reflection_energy(mu_i, ggx_alpha_for_tables(p.alpha), p.eta);
+    scale = (1.0f - c.specularEnergy) * (1.0f - e_i) / max(1.0f - c.specularAverage, 1.0e-4f);
+  }
+  const vec3 color = wi.z > 0.0f ? diffuse_reflection_color(p) : diffuse_transmission_color(p);
+  return color * (scale * lambert_eval_cos(mu_i));
+}
+
+// The base (metal and dielectric) below the coat, f * |cos_i|.
+HIPR_FN vec3 openpbr_base_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, vec3 wi) {
+  vec3 result = vec3(0.0f);
+  const bool reflection = wi.z > 0.0f;
+  if (reflection && p.metalness > 0.0f && p.specularWeight > 0.0f)
+    result += (p.metalness * p.specularWeight) * metal_eval_cos(p.baseColor, p.specularColor, p.alpha, wo, wi);
+  if (p.metalness >= 1.0f) return result;
+
+  vec3 dielectric = vec3(0.0f);
+  const float t = p.transmission;
+  if (reflection && specular_reflects(p)) {
+    const float f = fresnel_dielectric(dot(wo, normalize(wo + wi)), p.eta);
+    float amount = (1.0f - t) * f;
+    if (t > 0.0f) amount += t * (p.thinWalled ? thin_slab_reflectance(f) : f) / c.interfaceEnergy;
+    dielectric += p.specularColor * (amount * ggx_reflection_eval_cos(wo, wi, p.alpha));
+  } else if (!reflection && t > 0.0f && specular_reflects(p)) {
+    const float through = p.thinWalled ? thin_interface_eval_cos(wo, wi, p.eta, p.alpha)
+                                       : dielectric_interface_eval_cos(wo, wi, p.eta, p.alpha);
+    dielectric += p.transmissionColor * (t * through / c.interfaceEnergy);
+  }
+  if (t < 1.0f) dielectric += (1.0f - t) * diffuse_under_specular_eval_cos(p, c, wi);
+  return result + (1.0f - p.metalness) * dielectric;
+}
+
+// Scale of everything under the coat for the pair (wo, wi), colour included.
+HIPR_FN vec3 under_coat_scale(OpenPbrParams p, OpenPbrContext c, float mu_i) {
+  if (p.coat <= 0.0f) return vec3(1.0f);
+  return c.baseTint * (1.0f - max(c.coatEnergy, coat_energy(p, mu_i)));
+}
+
+// f(wo, wi) * |cos(wi)|; wi on either side.
+HIPR_FN vec3 openpbr_eval_cos(OpenPbrParams p, vec3 wo, vec3 wi) {
+  if (wo.z <= 0.0f || wi.z == 0.0f) return vec3(0.0f);
+  const OpenPbrContext c = openpbr_context(p, wo);
+  vec3 result = openpbr_base_eval_cos(p, c, wo, wi) * under_coat_scale(p, c, abs(wi.z));
+  if (p.coat > 0.0f && wi.z > 0.0f) {
+    const float f = fresnel_dielectric(dot(wo, normalize(wo + wi)), p.coatEta);
+    result += vec3(p.coat * f * ggx_reflection_eval_cos(wo, wi, vec2(p.coatAlpha)));
+  }
+  return result;
+}
+
+// Solid-angle pdf of openpbr_sample producing wi (delta events excluded).
+HIPR_FN float openpbr_pdf(OpenPbrParams p, vec3 wo, vec3 wi) {
+  if (wo.z <= 0.0f || wi.z == 0.0f) return 0.0f;
+  const OpenPbrContext c = openpbr_context(p, wo);
+  float pdf = 0.0f;
+  if (wi.z > 0.0f) {
+    if (c.weights.x > 0.0f) pdf += c.weights.x * ggx_reflection_pdf(wo, wi, vec2(p.coatAlpha));
+    if (c.weights.y > 0.0f) pdf += c.weights.y * metal_pdf(p.alpha, wo, wi);
+    if (c.weights.z > 0.0f) pdf += c.weights.z * ggx_reflection_pdf(wo, wi, p.alpha);
+  }
+  if (c.weights.w > 0.0f)
+    pdf += c.weights.w * (p.thinWalled ? thin_interface_pdf(wo, wi, p.eta, p.alpha)
+                                       : dielectric_interface_pdf(wo, wi, p.eta, p.alpha));
+  if (c.diffuseWeight > 0.0f) {
+    const float q = diffuse_transmission_probability(p);
+    pdf += c.diffuseWeight * (wi.z > 0.0f ? (1.0f - q) * lambert_pdf(wi.z) : q * lambert_pdf(-wi.z));
+  }
+  return pdf;
+}
+
+// A sampled direction. A delta event (light passing an index-matched interface unbent) has no
+// density: `deltaWeight` is its f |cos| / probability, and eval/pdf never see it.
+struct OpenPbrSample {
+  vec3 wi;
+  uint lobe;
+  bool valid;
+  bool delta;
+  vec3 deltaWeight;
+};
+
+HIPR_FN uint reflection_lobe_class(float alpha) { return alpha < kSpecularAlpha ? kLobeSpecular : kLobeGlossy; }
+
+// u picks the direction within a lobe; u_lobe picks the lobe, and what is left of it after the
+// pick makes the lobe's own discrete choices (reflect or refract, which side, which term).
+HIPR_FN OpenPbrSample openpbr_sample(OpenPbrParams p, vec3 wo, vec2 u, float u_lobe) {
+  OpenPbrSample s;
+  s.wi = vec3(0.0f, 0.0f, 1.0f);
+  s.lobe = kLobeDiffuse;
+  s.valid = false;
+  s.delta = false;
+  s.deltaWeight = vec3(0.0f);
+  if (wo.z <= 0.0f) return s;
+  const OpenPbrContext c = openpbr_context(p, wo);
+  const vec4 w = c.weights;
+  float x = u_lobe;
+  if (x < w.x) {
+    const vec3 m = ggx_sample_visible_normal(wo, vec2(p.coatAlpha), u);
+    s.wi = 2.0f * dot(wo, m) * m - wo;
+    s.lobe = reflection_lobe_class(p.coatAlpha);
+    s.valid = s.wi.z > 0.0f;
+    return s;
+  }
+  x -= w.x;
+  if (x < w.y) {
+    s.valid = metal_sample(p.alpha, wo, u, x / w.y, s.wi);
+    s.lobe = reflection_lobe_class(ggx_alpha_mean(p.alpha));
+    return s;
+  }
+  x -= w.y;
+  if (x < w.z) {
+    const vec3 m = ggx_sample_visible_normal(wo, p.alpha, u);
+    s.wi = 2.0f * dot(wo, m) * m - wo;
+    s.lobe = reflection_lobe_class(ggx_alpha_mean(p.alpha));
+    s.valid = s.wi.z > 0.0f;
+    return s;
+  }
+  x -= w.z;
+  if (x < w.w) {
+    const float choice = x / w.w;
+    const int result = p.thinWalled ? thin_interface_sample(wo, p.eta, p.alpha, u, choice, s.wi)
+                                    : dielectric_interface_sample(wo, p.eta, p.alpha, u, choice, s.wi);
+    s.valid = result > 0;
+    s.lobe = s.wi.z < 0.0f ? kLobeTransmission : reflection_lobe_class(ggx_alpha_mean(p.alpha));
+    if (result == 2) {
+      // Index-matched: every bit of the interface's share passes; nothing is reflected.
+      s.delta = true;
+      s.deltaWeight = under_coat_scale(p, c, wo.z) * p.transmissionColor *
+                      ((1.0f - p.metalness) * p.transmission / w.w);
+    }
+    return s;
+  }
+  if (c.diffuseWeight <= 0.0f) return s;
+  const float choice = min((x - w.w) / c.diffuseWeight, 1.0f);
+  s.wi = lambert_sample_local(u);
+  if (choice < diffuse_transmission_probability(p)) s.wi.z = -s.wi.z;
+  s.lobe = kLobeDiffuse;
+  s.valid = s.wi.z != 0.0f;
+  return s;
+}
+
+// Emission leaves from under the coat: what the coat reflects back and its tint are taken off.
+// Takes the coat's parameters, not OpenPbrParams, so light sampling can call it cheaply.
+HIPR_FN vec3 coat_emission_scale(float coat, vec3 coatColor, float coatAlpha, float coatEta, float mu_o) {
+  if (coat <= 0.0f) return vec3(1.0f);
+  return mix(vec3(1.0f), coatColor, coat) * (1.0f - coat * dielectric_reflection_energy(mu_o, coatAlpha, coatEta));
+}
+
+#endif
