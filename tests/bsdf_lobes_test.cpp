@@ -10,6 +10,7 @@
 namespace hipr::shader {
 using namespace glm;
 #include "shaders/bsdf/eon.glsl"
+#include "shaders/bsdf/fuzz_layer.glsl"
 }  // namespace hipr::shader
 
 namespace hipr {
@@ -38,6 +39,11 @@ test::SampleFn lobe_sampler(Eval eval, Pdf pdf, Sample sample) {
 test::SampleFn eon_sampler(glm::vec3 rho, float roughness, glm::vec3 wo) {
   return lobe_sampler([=](glm::vec3 wi) { return shader::eon_eval_cos(rho, roughness, wo, wi); },
                       [=](glm::vec3 wi) { return shader::eon_pdf(wo, wi); }, [](glm::vec2 u) { return shader::eon_sample(u); });
+}
+
+test::SampleFn fuzz_sampler(float roughness, glm::vec3 wo) {
+  return lobe_sampler([=](glm::vec3 wi) { return glm::vec3(shader::fuzz_eval_cos(roughness, wo, wi)); },
+                      [=](glm::vec3 wi) { return shader::fuzz_pdf(wo, wi); }, [](glm::vec2 u) { return shader::fuzz_sample(u); });
 }
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -141,6 +147,82 @@ TEST(Eon, FiniteAtGrazingAndExtremeInputs) {
           EXPECT_TRUE(std::isfinite(shader::eon_pdf(wo, wi)));
         }
   for (float mu : {0.0f, 1e-30f, 1e-7f, 1.0f}) EXPECT_TRUE(std::isfinite(shader::eon_fon_loss(mu)));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fuzz
+
+class FuzzFit : public ::testing::TestWithParam<std::tuple<float, float>> {};
+
+TEST_P(FuzzFit, SamplesFollowThePdf) {
+  const auto [roughness, theta] = GetParam();
+  const glm::vec3 wo = direction(theta);
+  const auto result = test::chi_square_sphere(fuzz_sampler(roughness, wo),
+                                              [&](glm::vec3 wi) { return shader::fuzz_pdf(wo, wi); }, 100000);
+  EXPECT_GT(result.p_value, 0.001) << "chi2 " << result.statistic << " dof " << result.degrees_of_freedom;
+  EXPECT_NEAR(result.pdf_integral, 1.0, 2e-3);
+  EXPECT_EQ(result.sampled_fraction, 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Params, FuzzFit, ::testing::Combine(::testing::Values(0.3f, 1.0f), ::testing::Values(0.2f, 1.4f)));
+
+// Off the table's grid points, so the bilinear lookup is checked too.
+TEST(Fuzz, WhiteAlbedoMatchesTheTableAndStaysBelowOne) {
+  for (float roughness : {0.0f, 0.1f, 0.33f, 0.7f, 1.0f})
+    for (float theta : {0.05f, 0.6f, 1.1f, 1.4f, 1.53f}) {
+      const glm::vec3 wo = direction(theta);
+      const double a = test::albedo(fuzz_sampler(roughness, wo), 40000).x;
+      EXPECT_LE(a, 1.0) << "roughness " << roughness << " theta " << theta;
+      EXPECT_NEAR(shader::fuzz_energy(wo.z, roughness), a, 0.01) << "roughness " << roughness << " theta " << theta;
+    }
+}
+
+TEST(Fuzz, Reciprocity) {
+  for (float roughness : {0.0f, 0.4f, 1.0f})
+    for (float a : {0.1f, 0.7f, 1.3f})
+      for (float b : {0.2f, 0.9f, 1.5f})
+        for (float phi : {0.5f, 2.0f, 3.1f}) {
+          const glm::vec3 wo = direction(a), wi = skew_direction(b, phi);
+          const float f1 = shader::fuzz_eval_cos(roughness, wo, wi) / wi.z;
+          const float f2 = shader::fuzz_eval_cos(roughness, wi, wo) / wo.z;
+          EXPECT_NEAR(f1, f2, 1e-5f * std::max(1.0f, f1)) << roughness << " " << a << " " << b << " " << phi;
+        }
+}
+
+TEST(Fuzz, FiniteAtTheRoughnessLimitsAndGrazing) {
+  for (float roughness : {-1.0f, 0.0f, shader::kFuzzMinRoughness, 1.0f, 3.0f})
+    for (float zo : {0.0f, 1e-30f, 1e-7f, 0.5f, 1.0f})
+      for (float zi : {0.0f, 1e-30f, 1e-7f, 0.5f, 1.0f})
+        for (float phi : {0.0f, 3.14159265f}) {
+          const glm::vec3 wo = glm::normalize(glm::vec3(std::sqrt(1.0f - zo * zo), 0.0f, zo));
+          const glm::vec3 wi = skew_direction(std::acos(zi), phi);
+          const float f = shader::fuzz_eval_cos(roughness, wo, wi);
+          EXPECT_TRUE(std::isfinite(f) && f >= 0.0f) << roughness << " " << zo << " " << zi << " " << phi;
+          EXPECT_TRUE(std::isfinite(shader::fuzz_energy(zo, roughness)));
+          const float scale = shader::fuzz_layer_scale(1.0f, roughness, zo, zi);
+          EXPECT_TRUE(scale >= 0.0f && scale <= 1.0f);
+        }
+}
+
+// OpenPBR's fuzz over a white Lambertian base: the fuzz reflects w E(mu_o), the base what
+// fuzz_layer_scale lets through. Never more than 1; how much less is the price of keeping
+// the scale reciprocal and bounded for every possible underlayer.
+TEST(Fuzz, LayeredOverWhiteLambertKeepsAlbedoInBounds) {
+  double lowest = 1.0;
+  for (float weight : {0.5f, 1.0f})
+    for (float roughness : {0.0f, 0.3f, 0.6f, 1.0f})
+      for (float theta : {0.0f, 0.6f, 1.1f, 1.4f, 1.55f}) {
+        const glm::vec3 wo = direction(theta);
+        const double a = test::hemisphere_integral(
+            [&](glm::vec3 wi) {
+              return double(weight * shader::fuzz_eval_cos(roughness, wo, wi) +
+                            shader::fuzz_layer_scale(weight, roughness, wo.z, wi.z) * wi.z / float(kPi));
+            });
+        EXPECT_LE(a, 1.0 + 1e-3) << "weight " << weight << " roughness " << roughness << " theta " << theta;
+        EXPECT_GE(a, weight == 1.0f ? 0.8 : 0.9) << "weight " << weight << " roughness " << roughness << " theta " << theta;
+        lowest = std::min(lowest, a);
+      }
+  std::printf("lowest albedo of fuzz over white Lambert: %.4f\n", lowest);
 }
 
 }  // namespace
