@@ -1,4 +1,4 @@
-// The stand-alone OpenPBR lobes on the CPU, compiled from the
+// The stand-alone OpenPBR lobes (EON diffuse, fuzz, thin film) on the CPU, compiled from the
 // same GLSL-style headers the kernels include.
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@ namespace hipr::shader {
 using namespace glm;
 #include "shaders/bsdf/eon.glsl"
 #include "shaders/bsdf/fuzz_layer.glsl"
+#include "shaders/bsdf/thin_film.glsl"
 }  // namespace hipr::shader
 
 namespace hipr {
@@ -223,6 +224,101 @@ TEST(Fuzz, LayeredOverWhiteLambertKeepsAlbedoInBounds) {
         lowest = std::min(lowest, a);
       }
   std::printf("lowest albedo of fuzz over white Lambert: %.4f\n", lowest);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Thin film
+
+TEST(ThinFilm, NoFilmIsThePlainInterface) {
+  for (float base : {1.0f / 3.0f, 0.7f, 1.0f, 1.5f, 3.0f})
+    for (int i = 0; i <= 200; ++i) {
+      const float c = float(i) / 200;
+      const float plain = shader::fresnel_dielectric(c, base);
+      const glm::vec3 zero_thickness = shader::fresnel_thin_film(c, 1.8f, base, 0.0f);
+      const glm::vec3 vacuum_film = shader::fresnel_thin_film(c, 1.0f, base, 380.0f);
+      const glm::vec3 matched_film = shader::fresnel_thin_film(c, base, base, 380.0f);
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(zero_thickness[k], plain, 1e-4f) << "base " << base << " cos " << c;
+        EXPECT_NEAR(vacuum_film[k], plain, 1e-4f) << "base " << base << " cos " << c;
+        EXPECT_NEAR(matched_film[k], plain, 1e-4f) << "base " << base << " cos " << c;
+      }
+      const glm::vec3 unweighted = shader::fresnel_with_thin_film(c, base, 0.0f, 1.8f, 380.0f);
+      EXPECT_EQ(unweighted, glm::vec3(plain));
+    }
+}
+
+TEST(ThinFilm, ReflectanceStaysWithinZeroAndOne) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  float highest = 0.0f;
+  for (int i = 0; i < 20000; ++i) {
+    const float c = uniform(rng);
+    const float film = 0.5f + 2.5f * uniform(rng);
+    const float base = 0.3f + 2.7f * uniform(rng);
+    const float thickness = 2000.0f * uniform(rng);
+    const glm::vec3 r = shader::fresnel_thin_film(c, film, base, thickness);
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_GE(r[k], 0.0f) << c << " " << film << " " << base << " " << thickness;
+      ASSERT_LE(r[k], 1.0f + 1e-5f) << c << " " << film << " " << base << " " << thickness;
+      highest = std::max(highest, r[k]);
+    }
+  }
+  EXPECT_GT(highest, 0.5f);  // the inputs did reach strongly reflecting configurations
+}
+
+TEST(ThinFilm, QuarterWaveFilmIsAntiReflective) {
+  // n_film = sqrt(n_base) and optical thickness lambda / 4: the two reflections have equal
+  // amplitude and opposite phase at the design wavelength (the green channel).
+  const float base = 1.5f, film = std::sqrt(base);
+  const float thickness = 532.0f / (4.0f * film);
+  const glm::vec3 r = shader::fresnel_thin_film(1.0f, film, base, thickness);
+  EXPECT_LT(r.g, 1e-3f);
+  EXPECT_GT(r.r, r.g);
+  EXPECT_GT(r.b, r.g);
+  EXPECT_LT(r.g, shader::fresnel_dielectric(1.0f, base) * 0.05f);
+  // A half-wave film of the same material is invisible at its design wavelength.
+  EXPECT_NEAR(shader::fresnel_thin_film(1.0f, film, base, 2.0f * thickness).g, shader::fresnel_dielectric(1.0f, base), 1e-4f);
+}
+
+TEST(ThinFilm, GrazingReflectsEverything) {
+  for (float film : {1.0f, 1.3f, 2.5f})
+    for (float base : {1.0f / 3.0f, 1.0f, 1.5f, 3.0f})
+      for (float thickness : {0.0f, 250.0f, 1e4f}) {
+        const glm::vec3 r = shader::fresnel_thin_film(0.0f, film, base, thickness);
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(r[k], 1.0f);
+        // Just above grazing it tends to 1 too, unless there is no interface at all (a base
+        // of index 1 with no film, or with a film of index 1).
+        if (base == 1.0f && (film == 1.0f || thickness == 0.0f)) continue;
+        const glm::vec3 near = shader::fresnel_thin_film(1e-4f, film, base, thickness);
+        for (int k = 0; k < 3; ++k) EXPECT_GT(near[k], 0.99f) << film << " " << base << " " << thickness;
+      }
+}
+
+TEST(ThinFilm, FiniteAtExtremeInputs) {
+  const auto check = [](glm::vec3 r) {
+    return finite(r) && r.x >= 0.0f && r.y >= 0.0f && r.z >= 0.0f && r.x <= 1.0f + 1e-5f && r.y <= 1.0f + 1e-5f &&
+           r.z <= 1.0f + 1e-5f;
+  };
+  for (float c : {-1.0f, 0.0f, 1e-30f, 1e-7f, 0.5f, 1.0f, 2.0f})
+    for (float film : {0.0f, 1.0f, 1.0001f, 3.0f})
+      for (float base : {0.0f, 1.0f / 3.0f, 1.0f, 1.0001f, 3.0f})
+        for (float thickness : {-5.0f, 0.0f, 1e-3f, 1e4f}) {
+          EXPECT_TRUE(check(shader::fresnel_thin_film(c, film, base, thickness))) << c << " " << film << " " << base << " " << thickness;
+          // The blend also calls the plain fresnel_dielectric, which needs a positive index.
+          if (base == 0.0f) continue;
+          for (float weight : {0.0f, 0.5f, 1.0f})
+            EXPECT_TRUE(check(shader::fresnel_with_thin_film(c, base, weight, film, thickness))) << c << " " << film << " " << base;
+        }
+}
+
+TEST(ThinFilm, TotalInternalReflectionAtTheBaseIsComplete) {
+  // Seen from inside glass (relative base index 1 / 1.5) past the critical angle, no film
+  // changes the fact that everything is reflected.
+  for (float film : {1.0f, 1.33f, 2.0f})
+    for (float thickness : {100.0f, 400.0f}) {
+      const glm::vec3 r = shader::fresnel_thin_film(0.5f, film, 1.0f / 1.5f, thickness);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(r[k], 1.0f, 1e-5f) << film << " " << thickness;
+    }
 }
 
 }  // namespace
