@@ -49,6 +49,14 @@ test::SampleFn fuzz_sampler(float roughness, glm::vec3 wo) {
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// These lobes never reject a sample, so their pdfs integrate to 1.
+void expect_samples_follow_pdf(const test::SampleFn& sampler, const test::PdfFn& pdf) {
+  const auto result = test::chi_square_sphere(sampler, pdf, 100000);
+  EXPECT_GT(result.p_value, 0.001) << "chi2 " << result.statistic << " dof " << result.degrees_of_freedom;
+  EXPECT_NEAR(result.pdf_integral, 1.0, 2e-3);
+  EXPECT_EQ(result.sampled_fraction, 1.0);
+}
+
 // ---------------------------------------------------------------------------------------------
 // EON
 
@@ -57,11 +65,8 @@ class EonFit : public ::testing::TestWithParam<std::tuple<float, float>> {};
 TEST_P(EonFit, SamplesFollowThePdf) {
   const auto [roughness, theta] = GetParam();
   const glm::vec3 wo = direction(theta);
-  const auto result = test::chi_square_sphere(eon_sampler(glm::vec3(0.8f), roughness, wo),
-                                              [&](glm::vec3 wi) { return shader::eon_pdf(roughness, wo, wi); }, 100000);
-  EXPECT_GT(result.p_value, 0.001) << "chi2 " << result.statistic << " dof " << result.degrees_of_freedom;
-  EXPECT_NEAR(result.pdf_integral, 1.0, 2e-3);
-  EXPECT_EQ(result.sampled_fraction, 1.0);
+  expect_samples_follow_pdf(eon_sampler(glm::vec3(0.8f), roughness, wo),
+                            [&](glm::vec3 wi) { return shader::eon_pdf(roughness, wo, wi); });
 }
 
 INSTANTIATE_TEST_SUITE_P(Params, EonFit,
@@ -176,11 +181,7 @@ class FuzzFit : public ::testing::TestWithParam<std::tuple<float, float>> {};
 TEST_P(FuzzFit, SamplesFollowThePdf) {
   const auto [roughness, theta] = GetParam();
   const glm::vec3 wo = direction(theta);
-  const auto result = test::chi_square_sphere(fuzz_sampler(roughness, wo),
-                                              [&](glm::vec3 wi) { return shader::fuzz_pdf(wo, wi); }, 100000);
-  EXPECT_GT(result.p_value, 0.001) << "chi2 " << result.statistic << " dof " << result.degrees_of_freedom;
-  EXPECT_NEAR(result.pdf_integral, 1.0, 2e-3);
-  EXPECT_EQ(result.sampled_fraction, 1.0);
+  expect_samples_follow_pdf(fuzz_sampler(roughness, wo), [&](glm::vec3 wi) { return shader::fuzz_pdf(wo, wi); });
 }
 
 INSTANTIATE_TEST_SUITE_P(Params, FuzzFit, ::testing::Combine(::testing::Values(0.3f, 1.0f), ::testing::Values(0.2f, 1.4f)));
@@ -238,7 +239,7 @@ TEST(Fuzz, LayeredOverWhiteLambertKeepsAlbedoInBounds) {
                             shader::fuzz_layer_scale(weight, roughness, wo.z, wi.z) * wi.z / float(kPi));
             });
         EXPECT_LE(a, 1.0 + 1e-3) << "weight " << weight << " roughness " << roughness << " theta " << theta;
-        EXPECT_GE(a, weight == 1.0f ? 0.8 : 0.9) << "weight " << weight << " roughness " << roughness << " theta " << theta;
+        EXPECT_GE(a, weight == 1.0f ? 0.85 : 0.9) << "weight " << weight << " roughness " << roughness << " theta " << theta;
         lowest = std::min(lowest, a);
       }
   std::printf("lowest albedo of fuzz over white Lambert: %.4f\n", lowest);

@@ -93,7 +93,8 @@ HIPR_FN float thin_film_reflectance(float cos_i, float film_ior, float base_ior,
 HIPR_FN vec3 thin_film_polarisation_xyz(vec4 r, float opd_nm) {
   const float r01 = r.x;
   const float rho = length(vec2(r.z, r.w));
-  const float phi = atan(r.w, r.z);
+  // GLSL leaves atan(0, 0) undefined, and a NaN phase would survive its zero weight.
+  const float phi = rho > 0.0f ? atan(r.w, r.z) : 0.0f;
   const float x = r01 * rho;
   const float one_minus_x2 = 1.0f - x * x;
   // |x| -> 1 only when the first interface reflects everything (grazing): R = 1.
