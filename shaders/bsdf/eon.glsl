@@ -34,7 +34,7 @@ HIPR_FN float eon_fon_albedo(float mu, float roughness) {
   return 1.0f - eon_fon_a(roughness) * roughness * eon_fon_loss(mu);
 }
 
-// f(wo, wi) cos(wi); roughness in [0, 1] (clamped), rho the diffuse albedo colour.
+// f(wo, wi) cos(wi); roughness in [0, 1] (clamped), rho the diffuse albedo colour in [0, 1].
 HIPR_FN vec3 eon_eval_cos(vec3 rho, float roughness, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
   const float r = clamp(roughness, 0.0f, 1.0f);
