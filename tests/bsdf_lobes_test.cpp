@@ -173,6 +173,17 @@ TEST(Eon, FiniteAtGrazingAndExtremeInputs) {
           EXPECT_TRUE(std::isfinite(shader::eon_pdf(roughness, wo, wi)));
         }
   for (float mu : {0.0f, 1e-30f, 1e-7f, 1.0f}) EXPECT_TRUE(std::isfinite(shader::eon_fon_loss(mu)));
+  // Samples at the corners of the unit square, for wo from normal to grazing.
+  for (float roughness : {0.0f, 0.5f, 1.0f})
+    for (float theta : {0.0f, 1.0f, 1.5707f, 1.5708f})
+      for (glm::vec2 u : {glm::vec2(0.0f), glm::vec2(0.99999994f), glm::vec2(0.0f, 0.99999994f), glm::vec2(0.99999994f, 0.0f),
+                          glm::vec2(0.19999999f, 0.5f)}) {
+        const glm::vec3 wo = direction(theta);
+        const glm::vec3 wi = shader::eon_sample(roughness, wo, u);
+        EXPECT_TRUE(finite(wi) && wi.z >= 0.0f) << roughness << " " << theta << " " << u.x << " " << u.y;
+        EXPECT_NEAR(glm::length(wi), 1.0f, 1e-5f);
+        EXPECT_TRUE(std::isfinite(shader::eon_pdf(roughness, wo, wi)));
+      }
 }
 
 // ---------------------------------------------------------------------------------------------
