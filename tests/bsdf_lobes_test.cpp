@@ -135,6 +135,20 @@ TEST(Eon, ClosedFormFonAlbedoMatchesIntegration) {
   }
 }
 
+TEST(Eon, ClosedFormAlbedoMatchesIntegration) {
+  const glm::vec3 rho(0.9f, 0.5f, 0.1f);
+  for (float roughness : {0.0f, 0.4f, 1.0f})
+    for (float theta : {0.0f, 0.8f, 1.3f, 1.55f}) {
+      const glm::vec3 wo = direction(theta);
+      const glm::vec3 closed = shader::eon_albedo(rho, roughness, wo.z);
+      for (int c = 0; c < 3; ++c) {
+        const double integral = test::hemisphere_integral(
+            [&](glm::vec3 wi) { return double(shader::eon_eval_cos(rho, roughness, wo, wi)[c]); }, 128, 128);
+        EXPECT_NEAR(closed[c], integral, 1e-3) << "roughness " << roughness << " theta " << theta << " channel " << c;
+      }
+    }
+}
+
 TEST(Eon, Reciprocity) {
   const glm::vec3 rho(0.9f, 0.5f, 0.2f);
   for (float roughness : {0.3f, 1.0f})

@@ -34,6 +34,21 @@ HIPR_FN float eon_fon_albedo(float mu, float roughness) {
   return 1.0f - eon_fon_a(roughness) * roughness * eon_fon_loss(mu);
 }
 
+// The multiply-scattered colour: the geometric series of bounces between the microfacets,
+// rho^2 E_avg / (1 - rho (1 - E_avg)); 1 for a white surface.
+HIPR_FN vec3 eon_rho_ms(vec3 rho, float r) {
+  const float e_avg = eon_fon_a(r) * (1.0f + kEonC2 * r);
+  return rho * rho * e_avg / (vec3(1.0f) - rho * (1.0f - e_avg));
+}
+
+// Directional albedo of EON at cosine mu, in closed form: what single scattering keeps plus
+// what the compensation adds back (for lobe-selection weights and layering).
+HIPR_FN vec3 eon_albedo(vec3 rho, float roughness, float mu) {
+  const float r = clamp(roughness, 0.0f, 1.0f);
+  const float e = eon_fon_albedo(mu, r);
+  return rho * e + eon_rho_ms(rho, r) * (1.0f - e);
+}
+
 // f(wo, wi) cos(wi); roughness in [0, 1] (clamped), rho the diffuse albedo colour in [0, 1].
 HIPR_FN vec3 eon_eval_cos(vec3 rho, float roughness, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
@@ -47,11 +62,7 @@ HIPR_FN vec3 eon_eval_cos(vec3 rho, float roughness, vec3 wo, vec3 wi) {
   // with every factor's A r pulled out: A r appears twice on top and once below.
   const float loss_avg = kEonC1 - kEonC2;
   const float shape = a * r * eon_fon_loss(wo.z) * eon_fon_loss(wi.z) / loss_avg;
-  // The multiply-scattered colour: geometric series of bounces between the microfacets that
-  // sums to rho^2 E_avg / (1 - rho (1 - E_avg)); it is 1 for a white surface.
-  const float e_avg = a * (1.0f + kEonC2 * r);
-  const vec3 rho_ms = rho * rho * e_avg / (vec3(1.0f) - rho * (1.0f - e_avg));
-  return (single_scattering + rho_ms * (kInvPi * shape)) * wi.z;
+  return (single_scattering + eon_rho_ms(rho, r) * (kInvPi * shape)) * wi.z;
 }
 
 // Sampling: the single-scattering part by the paper's "clipped linearly transformed cosine"
