@@ -115,4 +115,16 @@ glm::dvec3 albedo(const SampleFn& sample, int samples) {
   return sum / double(samples);
 }
 
+double hemisphere_integral(const std::function<double(glm::vec3 direction)>& f, int z_steps, int phi_steps) {
+  double sum = 0.0;
+  for (int i = 0; i < z_steps; ++i)
+    for (int j = 0; j < phi_steps; ++j) {
+      const double z = (i + 0.5) / z_steps;
+      const double phi = 2 * kPi * (j + 0.5) / phi_steps;
+      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+      sum += f(glm::vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)));
+    }
+  return sum * 2 * kPi / (double(z_steps) * phi_steps);
+}
+
 }  // namespace hipr::test

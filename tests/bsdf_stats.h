@@ -33,6 +33,10 @@ ChiSquareResult chi_square_sphere(const SampleFn& sample, const PdfFn& pdf, int 
 // Mean of sample weights: the directional albedo. Failed samples count as zero.
 glm::dvec3 albedo(const SampleFn& sample, int samples = 200000);
 
+// Integral over the upper hemisphere (z > 0) with a midpoint rule uniform in (z, phi):
+// deterministic and accurate for smooth integrands, for checks tighter than sampling allows.
+double hemisphere_integral(const std::function<double(glm::vec3 direction)>& f, int z_steps = 256, int phi_steps = 256);
+
 // Upper regularized incomplete gamma Q(a, x): the chi-square p-value is Q(dof/2, stat/2).
 double gamma_q(double a, double x);
 

@@ -12,6 +12,11 @@
 HIPR_FN float bsdf_table(int i) { return kBsdfTables[i]; }
 #else
 HIPR_FN float bsdf_table(int i) { return b_bsdf_tables[i]; }
+// Albedo of the fuzz lobe (unit colour) at cos_o = mu; roughness as OpenPBR's fuzz_roughness.
+HIPR_FN float fuzz_energy(float mu, float roughness) {
+  return table_2d(kTableFuzzEnergy, kGgxTableSize, kFuzzTableMuSize, roughness, sqrt(max(mu, 0.0f)));
+}
+
 #endif
 
 // Continuous grid coordinate of `t` in [0, 1] on `size` points: the lower index and weight.
@@ -22,14 +27,14 @@ HIPR_FN int table_cell(float t, int size, OUT(float) weight) {
   return i;
 }
 
-// Bilinear lookup of a [row][column] table of size x size at (row t, column s).
-HIPR_FN float table_2d(int offset, int size, float t_row, float s_column) {
+// Bilinear lookup of a [row][column] table of rows x columns at (row t, column s).
+HIPR_FN float table_2d(int offset, int rows, int columns, float t_row, float s_column) {
   float fr, fc;
-  const int r = table_cell(t_row, size, fr);
-  const int c = table_cell(s_column, size, fc);
-  const int i = offset + r * size + c;
+  const int r = table_cell(t_row, rows, fr);
+  const int c = table_cell(s_column, columns, fc);
+  const int i = offset + r * columns + c;
   const float low = mix(bsdf_table(i), bsdf_table(i + 1), fc);
-  const float high = mix(bsdf_table(i + size), bsdf_table(i + size + 1), fc);
+  const float high = mix(bsdf_table(i + columns), bsdf_table(i + columns + 1), fc);
   return mix(low, high, fr);
 }
 
@@ -47,7 +52,7 @@ HIPR_FN float eta_coordinate(float eta) {
 
 // GGX reflection albedo with F = 1 at cos_o = mu, and its cosine-weighted average.
 HIPR_FN float ggx_energy(float mu, float alpha) {
-  return table_2d(kTableGgxEnergy, kGgxTableSize, sqrt(alpha), sqrt(max(mu, 0.0f)));
+  return table_2d(kTableGgxEnergy, kGgxTableSize, kGgxTableSize, sqrt(alpha), sqrt(max(mu, 0.0f)));
 }
 
 HIPR_FN float ggx_energy_average(float alpha) { return table_1d(kTableGgxEnergyAverage, kGgxTableSize, sqrt(alpha)); }
@@ -57,8 +62,8 @@ HIPR_FN float dielectric_table(int offset, float mu, float alpha, float eta) {
   const int n = kDielectricTableSize;
   float fe;
   const int e = table_cell(eta_coordinate(eta), n, fe);
-  const float low = table_2d(offset + e * n * n, n, sqrt(alpha), sqrt(max(mu, 0.0f)));
-  const float high = table_2d(offset + (e + 1) * n * n, n, sqrt(alpha), sqrt(max(mu, 0.0f)));
+  const float low = table_2d(offset + e * n * n, n, n, sqrt(alpha), sqrt(max(mu, 0.0f)));
+  const float high = table_2d(offset + (e + 1) * n * n, n, n, sqrt(alpha), sqrt(max(mu, 0.0f)));
   return mix(low, high, fe);
 }
 
@@ -80,6 +85,11 @@ HIPR_FN float dielectric_reflection_energy_average(float alpha, float eta) {
 // Albedo of reflection plus refraction of a rough interface, entering (eta > 1) or leaving.
 HIPR_FN float dielectric_interface_energy(float mu, float alpha, float eta) {
   return dielectric_table(eta >= 1.0f ? kTableDielectricEntering : kTableDielectricLeaving, mu, alpha, eta);
+}
+
+// Albedo of the fuzz lobe (unit colour) at cos_o = mu; roughness as OpenPBR's fuzz_roughness.
+HIPR_FN float fuzz_energy(float mu, float roughness) {
+  return table_2d(kTableFuzzEnergy, kGgxTableSize, kFuzzTableMuSize, roughness, sqrt(max(mu, 0.0f)));
 }
 
 #endif

@@ -44,6 +44,15 @@ HIPR_FN vec3 sample_cosine_hemisphere(vec2 u) {
   return vec3(p, sqrt(max(0.0f, 1.0f - dot(p, p))));
 }
 
+// Uniform over the hemisphere around +Z (pdf 1 / (2 pi)): for lobes that do not fall off
+// toward the horizon, where cosine sampling would give unbounded weights.
+HIPR_FN vec3 sample_uniform_hemisphere(vec2 u) {
+  const float z = u.x;
+  const float r = sqrt(max(0.0f, 1.0f - z * z));
+  const float phi = 2.0f * kPi * u.y;
+  return vec3(r * cos(phi), r * sin(phi), z);
+}
+
 // Uniform point on a triangle as barycentrics (b1, b2) (Heitz 2019 low-distortion warp).
 HIPR_FN vec2 sample_triangle(vec2 u) {
   if (u.y > u.x) {
