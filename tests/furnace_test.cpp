@@ -59,6 +59,94 @@ TEST(Furnace, GreySphereReflectsItsAlbedo) {
   EXPECT_NEAR(image.rgb[0], 2.0, 1e-5);  // corner: background seen directly
 }
 
+// OpenPBR configurations that neither absorb nor emit: through every lobe, transmission and
+// volumes included, the sphere must vanish into the white sky (the GPU side of the CPU furnace
+// tests in openpbr_test.cpp, with the integrator's refraction, media and delta events).
+struct FurnaceMaterial {
+  const char* name;
+  void (*set)(abi::MaterialBlock&);
+  double low, high;  // bounds of the sphere's mean (layers that only lose a little)
+};
+
+void PrintTo(const FurnaceMaterial& m, std::ostream* os) { *os << m.name; }
+
+class FurnaceMaterials : public ::testing::TestWithParam<FurnaceMaterial> {};
+
+TEST_P(FurnaceMaterials, WhiteSkyStaysWhite) {
+  const FurnaceMaterial& config = GetParam();
+  Scene scene = test::make_furnace_scene(1.0f, glm::vec3(0.0f), 1.0f, 1.0f);
+  for (Material& m : scene.materials) config.set(m.params);
+  const ImageRGB image = render(scene, 64, 64);
+  ASSERT_TRUE(test::all_finite(image));
+  // The centre 8x8 pixels see only the sphere.
+  double sum = 0.0;
+  for (uint32_t y = 12; y < 20; ++y)
+    for (uint32_t x = 12; x < 20; ++x) sum += image.rgb[(y * 32 + x) * 3 + 1];
+  const double sphere = sum / 64.0;
+  EXPECT_GE(sphere, config.low) << config.name;
+  EXPECT_LE(sphere, config.high) << config.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    OpenPbr, FurnaceMaterials,
+    ::testing::Values(
+        FurnaceMaterial{"RoughDielectric",
+                        [](abi::MaterialBlock& m) {
+                          m.specular_weight = 1.0f;
+                          m.specular_roughness = 0.5f;
+                        },
+                        0.98, 1.02},
+        FurnaceMaterial{"RoughMetal",
+                        [](abi::MaterialBlock& m) {
+                          m.specular_weight = 1.0f;
+                          m.base_metalness = 1.0f;
+                          m.specular_roughness = 0.7f;
+                        },
+                        0.98, 1.02},
+        FurnaceMaterial{"RoughGlass",
+                        [](abi::MaterialBlock& m) {
+                          m.specular_weight = 1.0f;
+                          m.transmission_weight = 1.0f;
+                          m.specular_roughness = 0.4f;
+                        },
+                        0.97, 1.03},
+        FurnaceMaterial{"SmoothGlassWithClearVolume",
+                        [](abi::MaterialBlock& m) {
+                          m.specular_weight = 1.0f;
+                          m.transmission_weight = 1.0f;
+                          m.specular_roughness = 0.0f;
+                          m.transmission_depth = 0.5f;  // white colour: the medium absorbs nothing
+                        },
+                        0.97, 1.03},
+        FurnaceMaterial{"ThinWalledGlass",
+                        [](abi::MaterialBlock& m) {
+                          m.specular_weight = 1.0f;
+                          m.transmission_weight = 1.0f;
+                          m.specular_roughness = 0.3f;
+                          m.flags |= abi::kMaterialThinWalled;
+                        },
+                        0.97, 1.03},
+        FurnaceMaterial{"IndexMatchedGlass",
+                        [](abi::MaterialBlock& m) {
+                          m.transmission_weight = 1.0f;
+                          m.specular_ior = 1.0f;
+                        },
+                        0.99, 1.01},
+        FurnaceMaterial{"RoughDiffuseUnderCoat",
+                        [](abi::MaterialBlock& m) {
+                          m.base_diffuse_roughness = 1.0f;
+                          m.coat_weight = 1.0f;
+                          m.coat_roughness = 0.2f;
+                        },
+                        0.88, 1.02},
+        FurnaceMaterial{"FuzzOverDiffuse",
+                        [](abi::MaterialBlock& m) {
+                          m.fuzz_weight = 1.0f;
+                          m.fuzz_roughness = 0.5f;
+                        },
+                        0.85, 1.02}),
+    [](const auto& test_info) { return std::string(test_info.param.name); });
+
 TEST(Furnace, MaxDepthZeroShowsOnlyEmitters) {
   const Scene scene = test::make_furnace_scene(1.0f, glm::vec3(0.0f), 1.0f, 1.0f);
   const ImageRGB image = render(scene, 4, 0);

@@ -65,6 +65,25 @@ TEST(IncrementalUpdate, FiftyRapidEditsEndInTheFinalScene) {
   EXPECT_EQ(renderer.image().rgb, fresh_render(scene, 2).rgb);
 }
 
+// The Lambert-only box compiles a kernel without coat or transmission; an edit that adds them
+// recompiles it, keeps what was accumulated elsewhere in the pipeline, and renders exactly what
+// a renderer made for the edited scene renders.
+TEST(IncrementalUpdate, AnEditThatAddsAMaterialFeatureRecompilesTheKernel) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(1);
+  const uint32_t before_features = renderer.kernel_features();
+  const Scene before = scene;
+  apply_edit(scene, MaterialEdit{"white", {{"coat_weight", {1.0f}}, {"transmission_weight", {0.5f}}}});
+  renderer.update_scene(scene, diff_scenes(before, scene));
+  EXPECT_NE(renderer.kernel_features(), before_features);
+  EXPECT_EQ(renderer.kernel_features() & before_features, before_features) << "features are only added";
+  renderer.reset();
+  renderer.add_samples_full_frame(2);
+  EXPECT_EQ(renderer.image().rgb, fresh_render(scene, 2).rgb);
+  EXPECT_NE(renderer.image().rgb, fresh_render(before, 2).rgb);
+}
+
 TEST(EditEquivalence, MovedBlockScriptConvergesToTheMovedFile) {
   Scene edited = load_scene(test::asset("cornell_box.gltf"));
   apply_edit(edited, load_edit_script(test::asset("cornell_box.edits.json")).front());

@@ -23,6 +23,7 @@ OpenPbrParams dielectric(float roughness, float ior = 1.5f) {
   OpenPbrParams p;
   p.baseColor = glm::vec3(1.0f);
   p.metalness = 0.0f;
+  p.diffuseRoughness = 0.0f;
   p.specularColor = glm::vec3(1.0f);
   p.specularWeight = 1.0f;
   p.alpha = glm::vec2(shader::ggx_alpha(roughness));
@@ -37,6 +38,12 @@ OpenPbrParams dielectric(float roughness, float ior = 1.5f) {
   p.coatAlpha = shader::ggx_alpha(0.0f);
   p.coatEta = 1.6f;
   p.coatDarkening = 1.0f;
+  p.fuzz = 0.0f;
+  p.fuzzColor = glm::vec3(1.0f);
+  p.fuzzRoughness = 0.5f;
+  p.thinFilm = 0.0f;
+  p.thinFilmThickness = 500.0f;
+  p.thinFilmIor = 1.4f;
   return p;
 }
 
@@ -82,6 +89,13 @@ OpenPbrParams random_params(unsigned seed) {
   p.coatAlpha = shader::ggx_alpha(0.3f + 0.7f * u(rng));
   p.coatEta = 1.2f + u(rng);
   p.coatDarkening = u(rng);
+  p.diffuseRoughness = u(rng);
+  p.fuzz = u(rng) < 0.5f ? 0.0f : u(rng);
+  p.fuzzColor = color();
+  p.fuzzRoughness = u(rng);
+  p.thinFilm = u(rng) < 0.5f ? 0.0f : u(rng);
+  p.thinFilmThickness = 1000.0f * u(rng);
+  p.thinFilmIor = 1.0f + u(rng);
   return p;
 }
 
@@ -130,6 +144,13 @@ std::vector<Case> lobe_cases() {
   OpenPbrParams aniso = metal(0.6f);
   aniso.alpha = shader::ggx_alpha_anisotropic(0.6f, 0.8f);
   cases.push_back({"anisotropic_metal", aniso});
+  OpenPbrParams rough_diffuse = dielectric(0.5f);
+  rough_diffuse.diffuseRoughness = 1.0f;
+  cases.push_back({"rough_diffuse", rough_diffuse});
+  OpenPbrParams fuzzy = dielectric(0.5f);
+  fuzzy.fuzz = 1.0f;
+  fuzzy.fuzzRoughness = 0.4f;
+  cases.push_back({"fuzz_over_dielectric", fuzzy});
   OpenPbrParams translucent = dielectric(0.5f);
   translucent.thinWalled = true;
   translucent.subsurface = 1.0f;
@@ -153,7 +174,7 @@ TEST_P(OpenPbrFit, SamplesFollowThePdf) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Lobes, OpenPbrFit,
-                         ::testing::Combine(::testing::Range(0, 16), ::testing::Values(0.3f, 1.0f, 1.4f)),
+                         ::testing::Combine(::testing::Range(0, 18), ::testing::Values(0.3f, 1.0f, 1.4f)),
                          [](const auto& test_info) {
                            return lobe_cases()[size_t(std::get<0>(test_info.param))].name + "_theta" +
                                   std::to_string(int(std::get<1>(test_info.param) * 10));
@@ -166,6 +187,12 @@ TEST(OpenPbrFurnace, NonAbsorbingConfigurationsKeepTheirEnergy) {
   };
   const Row rows[] = {
       {"white dielectric", [](float r) { return dielectric(r); }},
+      {"white rough-diffuse dielectric",
+       [](float r) {
+         OpenPbrParams p = dielectric(r);
+         p.diffuseRoughness = 1.0f;
+         return p;
+       }},
       {"white metal", [](float r) { return metal(r); }},
       {"glass entering", [](float r) { return glass(r, 1.5f); }},
       {"glass leaving", [](float r) { return glass(r, 1.0f / 1.5f); }},
@@ -183,7 +210,8 @@ TEST(OpenPbrFurnace, AlbedoNeverExceedsOne) {
   for (unsigned seed = 100; seed < 140; ++seed) {
     OpenPbrParams p = random_params(seed);
     // White everything: the worst case for energy gain.
-    p.baseColor = p.specularColor = p.transmissionColor = p.subsurfaceColor = p.coatColor = glm::vec3(1.0f);
+    p.baseColor = p.specularColor = p.transmissionColor = p.subsurfaceColor = p.coatColor = p.fuzzColor = glm::vec3(1.0f);
+    p.thinFilm = 0.0f;  // a film may reflect more than the bare interface: not an energy-neutral layer
     for (float theta : {0.2f, 1.0f, 1.5f}) {
       const glm::dvec3 a = albedo(p, direction(theta), 20000);
       EXPECT_LE(a.x, 1.01) << "seed " << seed << " theta " << theta;
@@ -198,6 +226,32 @@ TEST(OpenPbrFurnace, CoatOverWhiteDiffuseLosesLittle) {
       EXPECT_LE(a, 1.01);
       EXPECT_GE(a, 0.9) << "coat roughness " << coat_roughness << " theta " << theta;
     }
+}
+
+TEST(OpenPbrFurnace, FuzzOverWhiteDielectricLosesLittle) {
+  for (float fuzz_roughness : {0.1f, 0.5f, 1.0f})
+    for (float theta : {0.0f, 0.8f, 1.3f}) {
+      OpenPbrParams p = dielectric(0.5f);
+      p.fuzz = 1.0f;
+      p.fuzzRoughness = fuzz_roughness;
+      const double a = albedo(p, direction(theta)).x;
+      EXPECT_LE(a, 1.01);
+      EXPECT_GE(a, 0.85) << "fuzz roughness " << fuzz_roughness << " theta " << theta;
+    }
+}
+
+TEST(OpenPbrAnalytic, ThinFilmColoursTheReflectionOnly) {
+  OpenPbrParams p = dielectric(0.3f);
+  p.baseColor = glm::vec3(0.0f);
+  const glm::vec3 wo = direction(0.3f), wi = direction(-0.4f);
+  const glm::vec3 bare = shader::openpbr_eval_cos(p, wo, wi);
+  p.thinFilm = 1.0f;
+  p.thinFilmThickness = 0.0f;  // no film: the bare interface
+  const glm::vec3 none = shader::openpbr_eval_cos(p, wo, wi);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(none[c], bare[c], 1e-3f * bare[c]);
+  p.thinFilmThickness = 300.0f;
+  const glm::vec3 film = shader::openpbr_eval_cos(p, wo, wi);
+  EXPECT_GT(std::abs(film.r - film.b), 0.2f * bare.r) << "a 300 nm film must colour the reflection";
 }
 
 TEST(OpenPbrReciprocity, OpaqueConfigurations) {

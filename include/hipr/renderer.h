@@ -35,6 +35,9 @@ struct RenderSettings {
   uint32_t max_depth = 32;  // scattering events; 0 = emitters seen directly only
   uint32_t tile_size = 16;
   LightSampling light_sampling = LightSampling::Mis;
+  // Compile the path-tracing kernel with only the material features the scene uses (false: the
+  // uber kernel with every feature, for comparison).
+  bool specialize_kernel = true;
   HiprParameters hipr;
 };
 
@@ -58,6 +61,8 @@ class Renderer {
   uint32_t tiles_y() const;
   uint32_t tile_count() const;
   const GpuSceneInfo& scene_info() const;
+  // The material features (render/material_features.h bits) the kernel is compiled with.
+  uint32_t kernel_features() const;
 
   // Adds `samples_per_pixel` samples to every pixel of the listed tiles (ids = y * tiles_x + x)
   // and waits for the GPU.

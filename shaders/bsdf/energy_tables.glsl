@@ -1,6 +1,6 @@
 // Lookups of the generated albedo tables (ggx_energy_table.glsl, made by
 // tools/make_ggx_tables.cpp): interpolation on the generator's grids. Roughness is recovered
-// from alpha as sqrt(alpha); anisotropic lobes pass their mean alpha. Shared with C++.
+// from alpha as sqrt(alpha). Shared with C++.
 #ifndef HIPR_ENERGY_TABLES_GLSL
 #define HIPR_ENERGY_TABLES_GLSL
 
@@ -12,11 +12,6 @@
 HIPR_FN float bsdf_table(int i) { return kBsdfTables[i]; }
 #else
 HIPR_FN float bsdf_table(int i) { return b_bsdf_tables[i]; }
-// Albedo of the fuzz lobe (unit colour) at cos_o = mu; roughness as OpenPBR's fuzz_roughness.
-HIPR_FN float fuzz_energy(float mu, float roughness) {
-  return table_2d(kTableFuzzEnergy, kGgxTableSize, kFuzzTableMuSize, roughness, sqrt(max(mu, 0.0f)));
-}
-
 #endif
 
 // Continuous grid coordinate of `t` in [0, 1] on `size` points: the lower index and weight.

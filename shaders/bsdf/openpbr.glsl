@@ -2,6 +2,8 @@
 // Shared with C++ (tests/bsdf_test.cpp runs these very functions).
 //
 // Layers, top to bottom, combined by albedo scaling with generated albedo tables:
+//   fuzz     Charlie sheen (fuzz.glsl), weight F, colour; below it everything is scaled by
+//            1 - F max(E_f(wo), E_f(wi)) (fuzz_layer.glsl);
 //   coat     GGX dielectric reflection (coat_ior, coat_roughness), weight C; everything below is
 //            scaled by 1 - C max(E_c(wo), E_c(wi)) (reciprocal, and never more than the energy
 //            the coat lets through), tinted by coat_color and darkened by the light the coat
@@ -9,17 +11,21 @@
 //   base     mix by base_metalness of
 //            metal       F82-tint GGX with multiple-scattering compensation (metal.glsl);
 //            dielectric  specular reflection (specular_ior modulated by specular_weight,
-//                        tinted by specular_color), mixed by transmission_weight t with
+//                        tinted by specular_color, thin-film iridescence on its Fresnel),
+//                        mixed by transmission_weight t with
 //                        t:     the transmitting interface, reflection + refraction (or a
 //                               thin-walled slab), compensated by 1 / E_rt(wo) so rough glass
 //                               keeps its energy; refraction tinted by transmission_color;
-//                        1 - t: diffuse under the specular layer, scaled by
+//                        1 - t: diffuse (EON, base_diffuse_roughness) under the specular
+//                               layer, scaled by
 //                               (1 - E_r(wo)) (1 - E_r(wi)) / (1 - E_r,avg), which is reciprocal
 //                               and gives exactly 1 for a white Lambertian base;
 //            the diffuse is mixed by subsurface_weight with subsurface_color: our approximation
 //            of subsurface until a volumetric walk exists (diffuse reflection; thin-walled, half
 //            of it is transmitted diffusely to the far side).
 // Approximations, documented: the coat tint is applied once (its value at normal incidence);
+// thin film changes the reflected colour but not the energy left to the layers below, and
+// leaves metals alone;
 // the specular interface under a coat keeps its own index (not specular_ior / coat_ior);
 // anisotropic lobes read the isotropic tables at one stand-in alpha (ggx_alpha_for_tables);
 // refraction leaves out the
@@ -29,8 +35,11 @@
 
 #include "dielectric.glsl"
 #include "energy_tables.glsl"
+#include "eon.glsl"
+#include "fuzz_layer.glsl"
 #include "lambert.glsl"
 #include "metal.glsl"
+#include "thin_film.glsl"
 
 // Lobe classes every sample reports (HiPR's tile weights depend on them).
 const uint kLobeDiffuse = 0u;
@@ -45,6 +54,7 @@ const float kSpecularAlpha = 0.01f;
 struct OpenPbrParams {
   vec3 baseColor;           // base_color x base_weight
   float metalness;
+  float diffuseRoughness;   // base_diffuse_roughness
   vec3 specularColor;
   float specularWeight;     // scales the metal's Fresnel (the dielectric's is folded into eta)
   vec2 alpha;               // specular GGX alpha along tangent and bitangent
@@ -59,17 +69,25 @@ struct OpenPbrParams {
   float coatAlpha;
   float coatEta;
   float coatDarkening;
+  float fuzz;               // fuzz_weight; 0 when wo is not on the outer side
+  vec3 fuzzColor;
+  float fuzzRoughness;
+  float thinFilm;           // thin_film_weight
+  float thinFilmThickness;  // nanometres
+  float thinFilmIor;
 };
 
 // What eval, pdf and sample need from wo alone.
 struct OpenPbrContext {
+  float fuzzEnergy;       // F E_f(wo)
   float coatEnergy;       // C E_c(wo)
   vec3 baseTint;          // coat colour and darkening, on all light that reaches the base
   float specularEnergy;   // E_r(wo) of the dielectric reflection, 0 when index-matched
   float specularAverage;  // its cosine-weighted average
   float interfaceEnergy;  // E_rt(wo), or E(wo) for a thin-walled slab: the transmitting interface
   vec4 weights;           // sampling probabilities: coat, metal, dielectric reflection, interface
-  float diffuseWeight;    // ... and the diffuse lobe (all five sum to 1, or all are 0)
+  float diffuseWeight;    // ... the diffuse lobe
+  float fuzzWeight;       // ... and the fuzz (all six sum to 1, or all are 0)
 };
 
 HIPR_FN bool specular_reflects(OpenPbrParams p) { return !index_matched(p.eta); }
@@ -106,6 +124,7 @@ HIPR_FN vec3 coat_darkening(OpenPbrParams p) {
 HIPR_FN OpenPbrContext openpbr_context(OpenPbrParams p, vec3 wo) {
   OpenPbrContext c;
   const float mu_o = wo.z;
+  c.fuzzEnergy = p.fuzz > 0.0f ? p.fuzz * fuzz_energy(mu_o, p.fuzzRoughness) : 0.0f;
   c.coatEnergy = coat_energy(p, mu_o);
   c.baseTint = p.coat > 0.0f ? mix(vec3(1.0f), p.coatColor, p.coat) * coat_darkening(p) : vec3(1.0f);
   const float a = ggx_alpha_for_tables(p.alpha);
@@ -117,10 +136,10 @@ HIPR_FN OpenPbrContext openpbr_context(OpenPbrParams p, vec3 wo) {
                             ggx_isotropy(p.alpha));
 
   // Estimated albedo of each lobe from wo; floors keep a lobe sampled wherever it can be non-zero.
-  const float under = (1.0f - c.coatEnergy) * luminance(c.baseTint);
+  const float under = (1.0f - c.fuzzEnergy) * (1.0f - c.coatEnergy) * luminance(c.baseTint);
   const float dielectric = (1.0f - p.metalness) * under;
   c.weights = vec4(0.0f);
-  c.weights.x = c.coatEnergy;
+  c.weights.x = (1.0f - c.fuzzEnergy) * c.coatEnergy;
   if (p.metalness > 0.0f && p.specularWeight > 0.0f)
     c.weights.y = p.metalness * under *
                   max(luminance(fresnel_f82_tint(p.baseColor, p.specularColor, mu_o)) * min(p.specularWeight, 1.0f), 0.05f);
@@ -131,24 +150,38 @@ HIPR_FN OpenPbrContext openpbr_context(OpenPbrParams p, vec3 wo) {
   if (p.transmission < 1.0f)
     c.diffuseWeight = dielectric * (1.0f - p.transmission) * (1.0f - c.specularEnergy) *
                       luminance(diffuse_reflection_color(p) + diffuse_transmission_color(p));
-  const float total = c.weights.x + c.weights.y + c.weights.z + c.weights.w + c.diffuseWeight;
+  c.fuzzWeight = c.fuzzEnergy * luminance(p.fuzzColor);
+  const float total = c.weights.x + c.weights.y + c.weights.z + c.weights.w + c.diffuseWeight + c.fuzzWeight;
   if (total > 0.0f) {
     c.weights /= total;
     c.diffuseWeight /= total;
+    c.fuzzWeight /= total;
   }
   return c;
 }
 
 // The diffuse lobe under the specular layer, f * |cos_i|, either side.
-HIPR_FN vec3 diffuse_under_specular_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wi) {
+HIPR_FN vec3 diffuse_under_specular_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, vec3 wi) {
   const float mu_i = abs(wi.z);
   float scale = 1.0f;
   if (c.specularEnergy > 0.0f) {
     const float e_i = dielectric_reflection_energy(mu_i, ggx_alpha_for_tables(p.alpha), p.eta);
     scale = (1.0f - c.specularEnergy) * (1.0f - e_i) / max(1.0f - c.specularAverage, 1.0e-4f);
   }
-  const vec3 color = wi.z > 0.0f ? diffuse_reflection_color(p) : diffuse_transmission_color(p);
-  return color * (scale * lambert_eval_cos(mu_i));
+  if (wi.z < 0.0f) return diffuse_transmission_color(p) * (scale * lambert_eval_cos(mu_i));
+  // The base's own diffuse is EON; the subsurface stand-in stays Lambertian. (EON at roughness
+  // 0 is Lambert: the branch only spares the work.)
+  if (p.diffuseRoughness <= 0.0f) return diffuse_reflection_color(p) * (scale * lambert_eval_cos(mu_i));
+  const vec3 subsurface = diffuse_reflection_color(p) - p.baseColor * (1.0f - p.subsurface);
+  return (eon_eval_cos(p.baseColor * (1.0f - p.subsurface), p.diffuseRoughness, wo, wi) +
+          subsurface * lambert_eval_cos(mu_i)) * scale;
+}
+
+// Fresnel of the dielectric specular reflection, with the thin film's colours.
+HIPR_FN vec3 specular_fresnel(OpenPbrParams p, float cos_o) {
+  if (p.thinFilm > 0.0f)
+    return fresnel_with_thin_film(cos_o, p.eta, p.thinFilm, p.thinFilmIor, p.thinFilmThickness);
+  return vec3(fresnel_dielectric(cos_o, p.eta));
 }
 
 // The base (metal and dielectric) below the coat, f * |cos_i|.
@@ -162,16 +195,17 @@ HIPR_FN vec3 openpbr_base_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, v
   vec3 dielectric = vec3(0.0f);
   const float t = p.transmission;
   if (reflection && specular_reflects(p)) {
-    const float f = fresnel_dielectric(dot(wo, normalize(wo + wi)), p.eta);
-    float amount = (1.0f - t) * f;
-    if (t > 0.0f) amount += t * (p.thinWalled ? thin_slab_reflectance(f) : f) / c.interfaceEnergy;
-    dielectric += p.specularColor * (amount * ggx_reflection_eval_cos(wo, wi, p.alpha));
+    const vec3 f = specular_fresnel(p, dot(wo, normalize(wo + wi)));
+    vec3 amount = (1.0f - t) * f;
+    // A slab reflects 2F / (1 + F) of what reaches it (thin_slab_reflectance), per colour.
+    if (t > 0.0f) amount += (t / c.interfaceEnergy) * (p.thinWalled ? 2.0f * f / (vec3(1.0f) + f) : f);
+    dielectric += p.specularColor * amount * ggx_reflection_eval_cos(wo, wi, p.alpha);
   } else if (!reflection && t > 0.0f && specular_reflects(p)) {
     const float through = p.thinWalled ? thin_interface_eval_cos(wo, wi, p.eta, p.alpha)
                                        : dielectric_interface_eval_cos(wo, wi, p.eta, p.alpha);
     dielectric += p.transmissionColor * (t * through / c.interfaceEnergy);
   }
-  if (t < 1.0f) dielectric += (1.0f - t) * diffuse_under_specular_eval_cos(p, c, wi);
+  if (t < 1.0f) dielectric += (1.0f - t) * diffuse_under_specular_eval_cos(p, c, wo, wi);
   return result + (1.0f - p.metalness) * dielectric;
 }
 
@@ -189,6 +223,10 @@ HIPR_FN vec3 openpbr_eval_cos(OpenPbrParams p, vec3 wo, vec3 wi) {
   if (p.coat > 0.0f && wi.z > 0.0f) {
     const float f = fresnel_dielectric(dot(wo, normalize(wo + wi)), p.coatEta);
     result += vec3(p.coat * f * ggx_reflection_eval_cos(wo, wi, vec2(p.coatAlpha)));
+  }
+  if (p.fuzz > 0.0f) {
+    result *= fuzz_layer_scale(p.fuzz, p.fuzzRoughness, wo.z, abs(wi.z));
+    if (wi.z > 0.0f) result += (p.fuzz * fuzz_eval_cos(p.fuzzRoughness, wo, wi)) * p.fuzzColor;
   }
   return result;
 }
@@ -208,8 +246,10 @@ HIPR_FN float openpbr_pdf(OpenPbrParams p, vec3 wo, vec3 wi) {
                                        : dielectric_interface_pdf(wo, wi, p.eta, p.alpha));
   if (c.diffuseWeight > 0.0f) {
     const float q = diffuse_transmission_probability(p);
-    pdf += c.diffuseWeight * (wi.z > 0.0f ? (1.0f - q) * lambert_pdf(wi.z) : q * lambert_pdf(-wi.z));
+    const float reflected = p.diffuseRoughness > 0.0f ? eon_pdf(p.diffuseRoughness, wo, wi) : lambert_pdf(wi.z);
+    pdf += c.diffuseWeight * (wi.z > 0.0f ? (1.0f - q) * reflected : q * lambert_pdf(-wi.z));
   }
+  if (c.fuzzWeight > 0.0f) pdf += c.fuzzWeight * fuzz_pdf(wo, wi);
   return pdf;
 }
 
@@ -270,24 +310,41 @@ HIPR_FN OpenPbrSample openpbr_sample(OpenPbrParams p, vec3 wo, vec2 u, float u_l
       // Index-matched: every bit of the interface's share passes; nothing is reflected.
       s.delta = true;
       s.deltaWeight = under_coat_scale(p, c, wo.z) * p.transmissionColor *
-                      ((1.0f - p.metalness) * p.transmission / w.w);
+                      ((1.0f - p.metalness) * p.transmission * (1.0f - c.fuzzEnergy) / w.w);
     }
     return s;
   }
-  if (c.diffuseWeight <= 0.0f) return s;
-  const float choice = min((x - w.w) / c.diffuseWeight, 1.0f);
-  s.wi = lambert_sample_local(u);
-  if (choice < diffuse_transmission_probability(p)) s.wi.z = -s.wi.z;
-  s.lobe = kLobeDiffuse;
-  s.valid = s.wi.z != 0.0f;
+  x -= w.w;
+  if (x < c.diffuseWeight) {
+    // The whole diffuse reflection is sampled as EON samples (their mixture includes the cosine
+    // that suits the Lambertian subsurface part; at roughness 0 it is the cosine alone).
+    if (x / c.diffuseWeight < diffuse_transmission_probability(p)) {
+      s.wi = lambert_sample_local(u);
+      s.wi.z = -s.wi.z;
+    } else {
+      s.wi = p.diffuseRoughness > 0.0f ? eon_sample(p.diffuseRoughness, wo, u) : lambert_sample_local(u);
+    }
+    s.lobe = kLobeDiffuse;
+    s.valid = s.wi.z != 0.0f;
+    return s;
+  }
+  if (c.fuzzWeight <= 0.0f) return s;
+  s.wi = fuzz_sample(u);
+  s.lobe = kLobeDiffuse;  // a broad sheen: HiPR weighs it as diffuse
+  s.valid = s.wi.z > 0.0f;
   return s;
 }
 
-// Emission leaves from under the coat: what the coat reflects back and its tint are taken off.
-// Takes the coat's parameters, not OpenPbrParams, so light sampling can call it cheaply.
-HIPR_FN vec3 coat_emission_scale(float coat, vec3 coatColor, float coatAlpha, float coatEta, float mu_o) {
-  if (coat <= 0.0f) return vec3(1.0f);
-  return mix(vec3(1.0f), coatColor, coat) * (1.0f - coat * dielectric_reflection_energy(mu_o, coatAlpha, coatEta));
+// Emission leaves from under the coat and the fuzz: what they reflect back and the coat's tint
+// are taken off. Takes the layers' parameters, not OpenPbrParams, so light sampling can call it
+// cheaply.
+HIPR_FN vec3 layers_emission_scale(float coat, vec3 coatColor, float coatAlpha, float coatEta, float fuzz,
+                                   float fuzzRoughness, float mu_o) {
+  vec3 scale = vec3(1.0f);
+  if (coat > 0.0f)
+    scale = mix(vec3(1.0f), coatColor, coat) * (1.0f - coat * dielectric_reflection_energy(mu_o, coatAlpha, coatEta));
+  if (fuzz > 0.0f) scale *= 1.0f - fuzz * fuzz_energy(mu_o, fuzzRoughness);
+  return scale;
 }
 
 #endif

@@ -3,6 +3,8 @@
 #ifndef HIPR_SURFACE_GLSL
 #define HIPR_SURFACE_GLSL
 
+#include "features.glsl"
+
 struct SurfaceHit {
   vec3 position;
   vec3 geometricNormal;  // front side per glTF winding, unit
@@ -55,7 +57,7 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
 
   // Materials are read field by field: copying the whole block costs loads on CPU devices.
   const uint normalTexture = b_materials[hit.material].normal_texture;
-  const float anisotropy = b_materials[hit.material].specular_anisotropy;
+  const float anisotropy = HIPR_FEATURE_ANISOTROPY != 0 ? b_materials[hit.material].specular_anisotropy : 0.0;
   hit.tangent = vec3(0.0);
   if (normalTexture != kInvalidIndex || anisotropy > 0.0) {
     const vec4 t = b_tangents[v.x] * b0 + b_tangents[v.y] * bary.x + b_tangents[v.z] * bary.y;
@@ -90,17 +92,19 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   return hit;
 }
 
-// Emitted radiance toward a direction at cosine mu_o from the shading normal, after the coat.
+// Emitted radiance toward a direction at cosine mu_o from the normal, after the coat and fuzz.
 vec3 material_emission(uint material, vec2 uv, float mu_o) {
   vec3 e = b_materials[material].emission_color * b_materials[material].emission_luminance;
   if (max3(e) <= 0.0) return vec3(0.0);
   const uint texture = b_materials[material].emission_texture;
   if (texture != kInvalidIndex) e *= sample_texture(texture, uv).rgb;
-  const float coat = b_materials[material].coat_weight;
-  if (coat > 0.0)
-    e *= coat_emission_scale(clamp(coat, 0.0, 1.0), b_materials[material].coat_color,
-                             ggx_alpha(clamp(b_materials[material].coat_roughness, 0.0, 1.0)),
-                             max(b_materials[material].coat_ior, 1.0), clamp(mu_o, 0.0, 1.0));
+  const float coat = HIPR_FEATURE_COAT != 0 ? b_materials[material].coat_weight : 0.0;
+  const float fuzz = HIPR_FEATURE_FUZZ != 0 ? b_materials[material].fuzz_weight : 0.0;
+  if (coat > 0.0 || fuzz > 0.0)
+    e *= layers_emission_scale(clamp(coat, 0.0, 1.0), b_materials[material].coat_color,
+                               ggx_alpha(clamp(b_materials[material].coat_roughness, 0.0, 1.0)),
+                               max(b_materials[material].coat_ior, 1.0), clamp(fuzz, 0.0, 1.0),
+                               b_materials[material].fuzz_roughness, clamp(mu_o, 0.0, 1.0));
   return e;
 }
 
@@ -122,29 +126,39 @@ ShadingParams shading_params(SurfaceHit hit, vec3 wo) {
   }
   const uint flags = b_materials[material].flags;
   const bool thin = (flags & kMaterialThinWalled) != 0u;
+  // Features the kernel was compiled without become constants here (features.glsl).
   OpenPbrParams p;
   p.baseColor = baseColor * b_materials[material].base_weight;
-  p.metalness = clamp(metalness, 0.0, 1.0);
+  p.metalness = HIPR_FEATURE_METAL != 0 ? clamp(metalness, 0.0, 1.0) : 0.0;
+  p.diffuseRoughness =
+      HIPR_FEATURE_DIFFUSE_ROUGHNESS != 0 ? clamp(b_materials[material].base_diffuse_roughness, 0.0, 1.0) : 0.0;
   p.specularColor = b_materials[material].specular_color;
   p.specularWeight = b_materials[material].specular_weight;
-  p.alpha = ggx_alpha_anisotropic(clamp(roughness, 0.0, 1.0), b_materials[material].specular_anisotropy);
+  p.alpha = ggx_alpha_anisotropic(clamp(roughness, 0.0, 1.0),
+                                  HIPR_FEATURE_ANISOTROPY != 0 ? b_materials[material].specular_anisotropy : 0.0);
   const float ior = ior_with_specular_weight(max(b_materials[material].specular_ior, 1.0), p.specularWeight);
-  p.eta = (thin || hit.frontFacing) ? ior : 1.0 / ior;
-  p.transmission = clamp(b_materials[material].transmission_weight, 0.0, 1.0);
+  p.eta = HIPR_FEATURE_SPECULAR != 0 || HIPR_FEATURE_TRANSMISSION != 0 ? ((thin || hit.frontFacing) ? ior : 1.0 / ior) : 1.0;
+  p.transmission = HIPR_FEATURE_TRANSMISSION != 0 ? clamp(b_materials[material].transmission_weight, 0.0, 1.0) : 0.0;
   const vec3 transmissionColor = b_materials[material].transmission_color;
   const float depth = b_materials[material].transmission_depth;
   const bool volume = !thin && depth > 0.0 && p.transmission > 0.0;
   p.transmissionColor = volume ? vec3(1.0) : transmissionColor;
   s.absorption = volume ? -log(clamp(transmissionColor, vec3(1.0e-6), vec3(1.0))) / depth : vec3(0.0);
   p.thinWalled = thin;
-  p.subsurface = clamp(b_materials[material].subsurface_weight, 0.0, 1.0);
+  p.subsurface = HIPR_FEATURE_SUBSURFACE != 0 ? clamp(b_materials[material].subsurface_weight, 0.0, 1.0) : 0.0;
   p.subsurfaceColor = b_materials[material].subsurface_color;
   const bool inside = !thin && !hit.frontFacing && p.transmission > 0.0;
-  p.coat = inside ? 0.0 : clamp(b_materials[material].coat_weight, 0.0, 1.0);
+  p.coat = HIPR_FEATURE_COAT != 0 && !inside ? clamp(b_materials[material].coat_weight, 0.0, 1.0) : 0.0;
   p.coatColor = b_materials[material].coat_color;
   p.coatAlpha = ggx_alpha(clamp(b_materials[material].coat_roughness, 0.0, 1.0));
   p.coatEta = max(b_materials[material].coat_ior, 1.0);
   p.coatDarkening = clamp(b_materials[material].coat_darkening, 0.0, 1.0);
+  p.fuzz = HIPR_FEATURE_FUZZ != 0 && !inside ? clamp(b_materials[material].fuzz_weight, 0.0, 1.0) : 0.0;
+  p.fuzzColor = b_materials[material].fuzz_color;
+  p.fuzzRoughness = clamp(b_materials[material].fuzz_roughness, 0.0, 1.0);
+  p.thinFilm = HIPR_FEATURE_THIN_FILM != 0 ? clamp(b_materials[material].thin_film_weight, 0.0, 1.0) : 0.0;
+  p.thinFilmThickness = 1000.0 * max(b_materials[material].thin_film_thickness, 0.0);  // OpenPBR: micrometres
+  p.thinFilmIor = max(b_materials[material].thin_film_ior, 1.0);
   s.bsdf = p;
   s.doubleSided = (flags & kMaterialDoubleSided) != 0u;
   s.emission = (hit.frontFacing || s.doubleSided) ? material_emission(material, hit.uv, dot(hit.geometricNormal, wo)) : vec3(0.0);

@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "render/material_features.h"
 
 namespace hipr::app {
 namespace {
@@ -72,11 +73,18 @@ int run_info(const InfoOptions& o) {
   for (const std::string& e : scene.extensions_used) extensions += (extensions.empty() ? "" : ", ") + e;
   std::printf("extensions %s\n", extensions.empty() ? "none" : extensions.c_str());
 
+  // The kernel is compiled with the BSDF features the materials use and nothing else.
+  const uint32_t features = material_features(scene);
+  std::string used = "diffuse";
+  for (const std::string& name : material_feature_names(features)) used += ", " + name;
+  std::printf("bsdf       %s\n", used.c_str());
+
   // What the path tracer has nothing to do for in this scene.
   std::string skipped;
-  const auto skip = [&](bool condition, const char* what) {
-    if (condition) skipped += std::string(skipped.empty() ? "" : ", ") + what;
+  const auto skip = [&](bool condition, const std::string& what) {
+    if (condition) skipped += (skipped.empty() ? "" : ", ") + what;
   };
+  for (const std::string& name : material_feature_names(features, false)) skip(true, name);
   skip(emissive_triangles == 0 && punctual == 0 && !scene.environment, "next-event estimation (no lights)");
   skip(scene.textures.empty(), "texture sampling");
   skip(!scene.environment, "environment lookups");

@@ -7,6 +7,7 @@
 #include "hipr/scene_diff.h"
 #include "render/bsdf_tables.h"
 #include "render/gpu_scene.h"
+#include "render/material_features.h"
 #include "render/radix_sorter.h"
 #include "scene/default_camera.h"
 #include "vk/compute_pipeline.h"
@@ -65,8 +66,11 @@ std::vector<vk::BindingSlot> trace_bindings(bool discovery) {
   return slots;
 }
 
-vk::ShaderDefines trace_defines(const RenderSettings& s, bool discovery) {
-  return {{"HIPR_LIGHT_SAMPLING", std::to_string(int(s.light_sampling))}, {"HIPR_DISCOVERY", discovery ? "1" : "0"}};
+vk::ShaderDefines trace_defines(const RenderSettings& s, bool discovery, uint32_t features) {
+  vk::ShaderDefines defines = material_feature_defines(features);
+  defines.emplace_back("HIPR_LIGHT_SAMPLING", std::to_string(int(s.light_sampling)));
+  defines.emplace_back("HIPR_DISCOVERY", discovery ? "1" : "0");
+  return defines;
 }
 
 vk::Buffer storage(const vk::Context& ctx, size_t bytes) { return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT); }
@@ -83,7 +87,8 @@ struct Renderer::Impl {
         tiles_x((s.width + s.tile_size - 1) / s.tile_size),
         tiles_y((s.height + s.tile_size - 1) / s.tile_size),
         pixels(s.width * s.height),
-        trace(c, "trace_tiles.comp", trace_defines(s, false), trace_bindings(false), sizeof(abi::TracePush)),
+        features(s.specialize_kernel ? material_features(scene) : all_material_features()),
+        trace(make_trace(false)),
         accumulation(storage(c, size_t(pixels) * sizeof(abi::PixelAccum))),
         stats(storage(c, sizeof(abi::RenderStats))),
         frame(storage(c, sizeof(abi::FrameParams))),
@@ -101,6 +106,25 @@ struct Renderer::Impl {
     bind_scene(scene);
   }
 
+  std::unique_ptr<vk::ComputePipeline> make_trace(bool discovery) const {
+    return std::make_unique<vk::ComputePipeline>(ctx, "trace_tiles.comp", trace_defines(settings, discovery, features),
+                                                 trace_bindings(discovery), sizeof(abi::TracePush));
+  }
+
+  // An edit that gives a material a feature the kernels lack recompiles them with it (features
+  // are only ever added, so editing back and forth compiles once). Accumulation, schedule and
+  // G-buffers are buffers, untouched.
+  void ensure_features(const Scene& scene) {
+    const uint32_t needed = material_features(scene);
+    if ((needed & ~features) == 0) return;
+    features |= needed;
+    trace = make_trace(false);
+    if (discover) {
+      discover = make_trace(true);
+      bind_hipr();
+    }
+  }
+
   // HiPR resources are made on first use: plain renders never pay for them.
   void ensure_hipr() {
     if (discover) return;
@@ -111,8 +135,7 @@ struct Renderer::Impl {
     tile_weights = storage(ctx, tiles * 8);
     row_distance = storage(ctx, tiles * 4);
     sorter = std::make_unique<RadixSorter>(ctx, uint32_t(tiles));
-    discover = std::make_unique<vk::ComputePipeline>(ctx, "trace_tiles.comp", trace_defines(settings, true),
-                                                     trace_bindings(true), sizeof(abi::TracePush));
+    discover = make_trace(true);
     visibility = std::make_unique<vk::ComputePipeline>(
         ctx, "visibility.comp", vk::ShaderDefines{},
         std::vector<vk::BindingSlot>{{abi::kBindingTlas, vk::BindingKind::AccelerationStructure}, {abi::kBindingFrame},
@@ -138,7 +161,7 @@ struct Renderer::Impl {
   void bind_scene(const Scene& scene) {
     const abi::FrameParams params = make_frame_params(scene, gpu, settings);
     frame.upload(&params, sizeof params);
-    bind_scene_buffers(trace);
+    bind_scene_buffers(*trace);
     if (discover) bind_scene_buffers(*discover);
     if (visibility) visibility->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
   }
@@ -199,7 +222,8 @@ struct Renderer::Impl {
   RenderSettings settings;
   GpuScene gpu;
   uint32_t tiles_x, tiles_y, pixels;
-  vk::ComputePipeline trace;
+  uint32_t features;  // material features the trace kernels are compiled with
+  std::unique_ptr<vk::ComputePipeline> trace;
   vk::Buffer accumulation, stats, frame, tile_list, tile_flags, bsdf_tables;
   vk::ComputePipeline mark_owed;
   std::vector<uint32_t> all_tiles;
@@ -223,6 +247,7 @@ uint32_t Renderer::tiles_x() const { return m->tiles_x; }
 uint32_t Renderer::tiles_y() const { return m->tiles_y; }
 uint32_t Renderer::tile_count() const { return m->tiles_x * m->tiles_y; }
 const GpuSceneInfo& Renderer::scene_info() const { return m->gpu.info(); }
+uint32_t Renderer::kernel_features() const { return m->features; }
 
 void Renderer::add_samples(std::span<const uint32_t> tiles, uint32_t samples_per_pixel) {
   if (tiles.empty() || samples_per_pixel == 0) return;
@@ -230,13 +255,16 @@ void Renderer::add_samples(std::span<const uint32_t> tiles, uint32_t samples_per
     if (t >= tile_count()) throw InternalError("tile id out of range");
   m->tile_list.upload(tiles.data(), tiles.size_bytes());
   const abi::TracePush push = m->trace_push(0, uint32_t(tiles.size()), samples_per_pixel);
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, m->trace, push); });
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, *m->trace, push); });
 }
 
 void Renderer::add_samples_full_frame(uint32_t samples_per_pixel) { add_samples(m->all_tiles, samples_per_pixel); }
 
 void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
-  if (changes.materials) m->gpu.update_materials(scene);
+  if (changes.materials) {
+    m->gpu.update_materials(scene);
+    if (m->settings.specialize_kernel) m->ensure_features(scene);
+  }
   if (changes.transforms) m->gpu.update_instances(scene);  // includes the light tables
   else if (changes.light_tables) m->gpu.update_lights(scene);
   m->bind_scene(scene);
@@ -316,7 +344,7 @@ void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples
   count = std::min(count, tile_count() - offset);
   abi::TracePush push = m->trace_push(offset, count, samples_per_pixel);
   push.skipFlags = skip_active ? abi::kTileActive : 0u;
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, m->trace, push); });
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, *m->trace, push); });
 }
 
 std::vector<uint32_t> Renderer::gbuffer_instances() const {
