@@ -20,6 +20,8 @@ layout(local_size_x = 64) in;  // == kWorkgroupSize
 #include "common/textures.glsl"
 #include "bsdf/bsdf.glsl"
 #include "common/surface.glsl"
+#include "common/cutout.glsl"
+#include "common/material_inputs.glsl"
 #include "common/environment.glsl"
 #include "common/lights.glsl"
 #include "common/tile_pixels.glsl"
@@ -59,9 +61,8 @@ struct RayHit {
 
 bool trace_closest(vec3 origin, vec3 direction, out RayHit hit) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsOpaqueEXT, 0xff, origin, 0.0, direction, kFloatMax);
-  while (rayQueryProceedEXT(query)) {
-  }
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsNoneEXT, 0xff, origin, 0.0, direction, kFloatMax);
+  cutout_proceed(query, origin, direction);
   if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return false;
   hit.t = rayQueryGetIntersectionTEXT(query, true);
   hit.geometry = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
@@ -75,10 +76,8 @@ bool trace_closest(vec3 origin, vec3 direction, out RayHit hit) {
 
 bool occluded(vec3 origin, vec3 direction, float tMax) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT, 0xff, origin,
-                        0.0, direction, tMax);
-  while (rayQueryProceedEXT(query)) {
-  }
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsTerminateOnFirstHitEXT, 0xff, origin, 0.0, direction, tMax);
+  cutout_proceed(query, origin, direction);
   return rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
 }
 

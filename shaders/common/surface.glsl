@@ -3,11 +3,15 @@
 #ifndef HIPR_SURFACE_GLSL
 #define HIPR_SURFACE_GLSL
 
+#include "vertices.glsl"
+
 struct SurfaceHit {
   vec3 position;
   vec3 geometricNormal;  // front side per glTF winding, unit
   vec3 shadingNormal;    // interpolated (and normal-mapped), unit, same side as geometricNormal
-  vec2 uv;
+  vec3 vertexNormal;     // interpolated, before normal mapping, same side as geometricNormal
+  vec4 tangent;          // xyz: unit, orthogonal to vertexNormal (or 0); w: bitangent sign (glTF)
+  vec4 uvs;              // TEXCOORD_0 in xy, TEXCOORD_1 in zw
   uint geometry;         // GeometryRecord index
   uint primitive;
   uint material;
@@ -20,14 +24,21 @@ struct ShadingParams {
   bool doubleSided;
 };
 
-// Vertex indices of a primitive, already offset into the shared vertex buffers.
-uvec3 triangle_vertices(GeometryRecord g, uint primitive) {
-  const uint base = g.firstIndex + 3u * primitive;
-  return uvec3(b_indices[base], b_indices[base + 1u], b_indices[base + 2u]) + g.vertexOffset;
-}
+// A material texture at the hit: the texture's own UV set and transform (textures.glsl).
+vec4 sample_material_texture(uint textureSlot, SurfaceHit hit) { return sample_texture(textureSlot, hit.uvs); }
 
-vec2 interpolate_uv(uvec3 v, vec2 bary) {
-  return b_uvs[v.x] * (1.0 - bary.x - bary.y) + b_uvs[v.y] * bary.x + b_uvs[v.z] * bary.y;
+// Tangent-space normal map `texture` (scale as glTF's normalTexture.scale) applied to the unit
+// normal `n`, in the hit's tangent frame; `n` itself when the frame is degenerate. `n` must be
+// on the side the tangent frame was built for (the front side, glTF's bitangent sign).
+vec3 apply_normal_map(uint texture, float scale, SurfaceHit hit, vec3 n) {
+  vec3 tangent = hit.tangent.xyz - n * dot(n, hit.tangent.xyz);
+  if (dot(tangent, tangent) <= 1e-12) return n;
+  tangent = normalize(tangent);
+  const vec3 bitangent = cross(n, tangent) * (hit.tangent.w < 0.0 ? -1.0 : 1.0);
+  vec3 local = sample_material_texture(texture, hit).xyz * 2.0 - 1.0;
+  local.xy *= scale;
+  const vec3 mapped = tangent * local.x + bitangent * local.y + n * local.z;
+  return dot(mapped, mapped) > 1e-12 ? normalize(mapped) : n;
 }
 
 SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 objectToWorld,
@@ -49,29 +60,23 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   ng = dot(ng, ng) > 0.0 ? normalize(ng) : vec3(0.0, 1.0, 0.0);
   vec3 ns = normalMatrix * (b_normals[v.x] * b0 + b_normals[v.y] * bary.x + b_normals[v.z] * bary.y);
   ns = dot(ns, ns) > 0.0 ? normalize(ns) : ng;
-  hit.uv = interpolate_uv(v, bary);
+  hit.uvs = interpolate_uv(v, bary);
+  const vec4 t = b_tangents[v.x] * b0 + b_tangents[v.y] * bary.x + b_tangents[v.z] * bary.y;
+  vec3 tangent = mat3(objectToWorld) * t.xyz;
+  tangent = tangent - ns * dot(ns, tangent);
+  hit.tangent = vec4(dot(tangent, tangent) > 1e-12 ? normalize(tangent) : vec3(0.0), t.w < 0.0 ? -1.0 : 1.0);
 
   // Materials are read field by field: copying the whole block costs loads on CPU devices.
   const uint normalTexture = b_materials[hit.material].normal_texture;
-  if (normalTexture != kInvalidIndex) {
-    const vec4 t = b_tangents[v.x] * b0 + b_tangents[v.y] * bary.x + b_tangents[v.z] * bary.y;
-    vec3 tangent = mat3(objectToWorld) * t.xyz;
-    tangent = tangent - ns * dot(ns, tangent);
-    if (dot(tangent, tangent) > 1e-12) {
-      tangent = normalize(tangent);
-      const vec3 bitangent = cross(ns, tangent) * (t.w < 0.0 ? -1.0 : 1.0);
-      vec3 local = sample_texture(normalTexture, hit.uv).xyz * 2.0 - 1.0;
-      local.xy *= b_materials[hit.material].normal_scale;
-      const vec3 mapped = tangent * local.x + bitangent * local.y + ns * local.z;
-      if (dot(mapped, mapped) > 1e-12) ns = normalize(mapped);
-    }
-  }
+  hit.vertexNormal = ns;
+  if (normalTexture != kInvalidIndex) ns = apply_normal_map(normalTexture, b_materials[hit.material].normal_scale, hit, ns);
 
   hit.frontFacing = dot(ng, rayDirection) < 0.0;
   // Shade on the side the ray arrived from; the shading normal follows the geometric one.
   if (!hit.frontFacing) {
     ng = -ng;
     ns = -ns;
+    hit.vertexNormal = -hit.vertexNormal;
   }
   if (dot(ns, ng) < 0.0) ns = normalize(ns - ng * (1.01 * dot(ns, ng)));
   hit.geometricNormal = ng;
@@ -79,10 +84,11 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   return hit;
 }
 
-vec3 material_emission(uint material, vec2 uv) {
+// uvSets as in SurfaceHit.uvs (light sampling has no SurfaceHit).
+vec3 material_emission(uint material, vec4 uvSets) {
   vec3 e = b_materials[material].emission_color * b_materials[material].emission_luminance;
   const uint texture = b_materials[material].emission_texture;
-  if (texture != kInvalidIndex && max3(e) > 0.0) e *= sample_texture(texture, uv).rgb;
+  if (texture != kInvalidIndex && max3(e) > 0.0) e *= sample_texture(texture, uvSets).rgb;
   return e;
 }
 
@@ -91,12 +97,12 @@ ShadingParams shading_params(SurfaceHit hit) {
   ShadingParams s;
   vec3 baseColor = b_materials[material].base_color;
   const uint baseTexture = b_materials[material].base_color_texture;
-  if (baseTexture != kInvalidIndex) baseColor *= sample_texture(baseTexture, hit.uv).rgb;
+  if (baseTexture != kInvalidIndex) baseColor *= sample_material_texture(baseTexture, hit).rgb;
   float metalness = b_materials[material].base_metalness;
   float roughness = b_materials[material].specular_roughness;
   const uint mrTexture = b_materials[material].metallic_roughness_texture;
   if (mrTexture != kInvalidIndex) {
-    const vec4 mr = sample_texture(mrTexture, hit.uv);  // glTF packing: G roughness, B metalness
+    const vec4 mr = sample_material_texture(mrTexture, hit);  // glTF packing: G roughness, B metalness
     roughness *= mr.g;
     metalness *= mr.b;
   }
@@ -107,7 +113,7 @@ ShadingParams shading_params(SurfaceHit hit) {
   s.bsdf.specularIor = max(b_materials[material].specular_ior, 1.0);
   s.bsdf.alpha = ggx_alpha(clamp(roughness, 0.0, 1.0));
   s.doubleSided = (b_materials[material].flags & kMaterialDoubleSided) != 0u;
-  s.emission = (hit.frontFacing || s.doubleSided) ? material_emission(material, hit.uv) : vec3(0.0);
+  s.emission = (hit.frontFacing || s.doubleSided) ? material_emission(material, hit.uvs) : vec3(0.0);
   return s;
 }
 

@@ -113,11 +113,10 @@ struct Renderer::Impl {
     sorter = std::make_unique<RadixSorter>(ctx, uint32_t(tiles));
     discover = std::make_unique<vk::ComputePipeline>(ctx, "trace_tiles.comp", trace_defines(settings, true),
                                                      trace_bindings(true), sizeof(abi::TracePush));
-    visibility = std::make_unique<vk::ComputePipeline>(
-        ctx, "visibility.comp", vk::ShaderDefines{},
-        std::vector<vk::BindingSlot>{{abi::kBindingTlas, vk::BindingKind::AccelerationStructure}, {abi::kBindingFrame},
-                                     {abi::kBindingGBuffer}},
-        0);
+    // Stage 1 declares the path tracer's scene bindings too: its opacity cutout reads them.
+    std::vector<vk::BindingSlot> visibility_slots = trace_bindings(false);
+    visibility_slots.push_back({abi::kBindingGBuffer});
+    visibility = std::make_unique<vk::ComputePipeline>(ctx, "visibility.comp", vk::ShaderDefines{}, visibility_slots, 0);
     mark_active = std::make_unique<vk::ComputePipeline>(
         ctx, "mark_active.comp", vk::ShaderDefines{},
         std::vector<vk::BindingSlot>{{abi::kBindingFrame}, {abi::kBindingGBuffer}, {abi::kBindingPreviousGBuffer},
@@ -130,6 +129,7 @@ struct Renderer::Impl {
         sizeof(uint32_t));
     bind_hipr();
     bind_scene_buffers(*discover);
+    bind_scene_buffers(*visibility);
     // The first G-buffer describes the scene as loaded, so the first edit has a "before".
     ctx.submit_and_wait([&](VkCommandBuffer cmd) { visibility->dispatch(cmd, nullptr, groups_for(pixels)); });
   }
@@ -140,7 +140,7 @@ struct Renderer::Impl {
     frame.upload(&params, sizeof params);
     bind_scene_buffers(trace);
     if (discover) bind_scene_buffers(*discover);
-    if (visibility) visibility->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
+    if (visibility) bind_scene_buffers(*visibility);
   }
 
   void bind_scene_buffers(vk::ComputePipeline& pipeline) {
@@ -163,9 +163,7 @@ struct Renderer::Impl {
     discover->bind_buffer(abi::kBindingGBuffer, gbuffer);
     discover->bind_buffer(abi::kBindingChangedRecords, changed_records);
     discover->bind_buffer(abi::kBindingTileWeights, tile_weights);
-    visibility->bind_buffer(abi::kBindingFrame, frame);
     visibility->bind_buffer(abi::kBindingGBuffer, gbuffer);
-    visibility->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
     mark_active->bind_buffer(abi::kBindingFrame, frame);
     mark_active->bind_buffer(abi::kBindingGBuffer, gbuffer);
     mark_active->bind_buffer(abi::kBindingPreviousGBuffer, previous_gbuffer);
