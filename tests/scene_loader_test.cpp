@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "hipr/scene_loader.h"
 #include "scene/default_camera.h"
+#include "gltf_document.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -20,8 +21,12 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr int kFloat = 5126;
-constexpr int kUnsignedShort = 5123;
+using test::Document;
+using test::kFloat;
+using test::kUnsignedShort;
+using test::triangle_document;
+using test::write_bytes;
+using test::write_document;
 constexpr int kTriangleStrip = 5;
 
 // ---- Our shipped scenes -------------------------------------------------------------------
@@ -154,80 +159,6 @@ TEST(ShippedScenes, ContentHashIsStable) {
 }
 
 // ---- Scenes written by the tests ----------------------------------------------------------
-
-std::string base64(const std::vector<unsigned char>& bytes) {
-  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const uint32_t chunk = uint32_t(bytes[i]) << 16 | (i + 1 < bytes.size() ? uint32_t(bytes[i + 1]) << 8 : 0u) |
-                           (i + 2 < bytes.size() ? uint32_t(bytes[i + 2]) : 0u);
-    out += kAlphabet[chunk >> 18 & 63];
-    out += kAlphabet[chunk >> 12 & 63];
-    out += i + 1 < bytes.size() ? kAlphabet[chunk >> 6 & 63] : '=';
-    out += i + 2 < bytes.size() ? kAlphabet[chunk & 63] : '=';
-  }
-  return out;
-}
-
-void write_bytes(const fs::path& path, const std::vector<unsigned char>& bytes) {
-  fs::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-}
-
-// A glTF document and its one binary buffer, built in code.
-struct Document {
-  json gltf;
-  std::vector<unsigned char> bin;
-
-  // Appends `values` as a new bufferView + accessor; returns the accessor index.
-  template <typename T>
-  int add_accessor(const std::vector<T>& values, int component_type, const char* type, size_t count) {
-    const size_t offset = bin.size();
-    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-    bin.insert(bin.end(), bytes, bytes + values.size() * sizeof(T));
-    bin.resize((bin.size() + 3) / 4 * 4, 0);  // keep every view 4-byte aligned
-    gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
-    gltf["accessors"].push_back({{"bufferView", gltf["bufferViews"].size() - 1},
-                                 {"componentType", component_type},
-                                 {"type", type},
-                                 {"count", count}});
-    return int(gltf["accessors"].size() - 1);
-  }
-
-  json& primitive() { return gltf["meshes"][0]["primitives"][0]; }
-};
-
-// One triangle (node "tri", mesh "tri_mesh", material "mat") facing +Z. The buffer has no URI
-// yet: write_document() adds one.
-Document triangle_document() {
-  Document doc;
-  doc.gltf = {{"asset", {{"version", "2.0"}}},
-              {"scene", 0},
-              {"scenes", json::array({{{"nodes", {0}}}})},
-              {"nodes", json::array({{{"name", "tri"}, {"mesh", 0}}})},
-              {"materials", json::array({{{"name", "mat"}}})},
-              {"bufferViews", json::array()},
-              {"accessors", json::array()}};
-  const int position = doc.add_accessor(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, kFloat, "VEC3", 3);
-  const int normal = doc.add_accessor(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1}, kFloat, "VEC3", 3);
-  const int indices = doc.add_accessor(std::vector<uint16_t>{0, 1, 2}, kUnsignedShort, "SCALAR", 3);
-  doc.gltf["meshes"] = json::array(
-      {{{"name", "tri_mesh"},
-        {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"NORMAL", normal}}},
-                                     {"indices", indices},
-                                     {"material", 0}}})}}});
-  return doc;
-}
-
-// Writes `doc` as `file`; an empty `buffer_uri` embeds the buffer as a data: URI, any other is
-// written as is (the test places the bytes where it wants them).
-void write_document(const fs::path& file, Document doc, const std::string& buffer_uri = "") {
-  const std::string uri = buffer_uri.empty() ? "data:application/octet-stream;base64," + base64(doc.bin) : buffer_uri;
-  doc.gltf["buffers"] = json::array({{{"byteLength", doc.bin.size()}, {"uri", uri}}});
-  fs::create_directories(file.parent_path());
-  std::ofstream(file) << doc.gltf.dump(1);
-}
 
 // Adds an image with `uri`, a texture on it and uses it as the material's base colour.
 void add_base_color_image(Document& doc, const std::string& uri) {
