@@ -3,6 +3,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "test_support.h"
+
 namespace hipr::test {
 
 Scene make_card_camera_scene(float env) {
@@ -17,13 +19,7 @@ Scene make_card_camera_scene(float env) {
   Camera camera;
   camera.yfov = 2.0f * std::atan(1.0f / 3.0f);  // half-height 1 at distance 3: the card fills the view
   scene.cameras.push_back(camera);
-  if (env > 0.0f) {
-    Environment environment;
-    environment.width = 8;
-    environment.height = 4;
-    environment.texels.assign(32, glm::vec3(env));
-    scene.environment = environment;
-  }
+  if (env > 0.0f) scene.environment = uniform_environment(env);
   return scene;
 }
 
