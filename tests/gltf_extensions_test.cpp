@@ -128,7 +128,7 @@ TEST(GltfExtensions, SheenBecomesFuzz) {
   EXPECT_EQ(load_with({{"extensions", {{"KHR_materials_sheen", json::object()}}}}).material().fuzz_weight, 0.0f);
 }
 
-TEST(GltfExtensions, IridescenceBecomesThinFilmInMicrometres) {
+TEST(GltfExtensions, IridescenceBecomesThinFilmInNanometres) {
   const Loaded l = load_with({{"extensions",
                                {{"KHR_materials_iridescence",
                                  {{"iridescenceFactor", 0.9}, {"iridescenceIor", 1.8}, {"iridescenceThicknessMinimum", 200.0},
@@ -137,14 +137,14 @@ TEST(GltfExtensions, IridescenceBecomesThinFilmInMicrometres) {
   const abi::MaterialBlock& m = l.material();
   EXPECT_FLOAT_EQ(m.thin_film_weight, 0.9f);
   EXPECT_FLOAT_EQ(m.thin_film_ior, 1.8f);
-  EXPECT_FLOAT_EQ(m.thin_film_thickness_min, 0.2f);
-  EXPECT_FLOAT_EQ(m.thin_film_thickness, 0.65f);
+  EXPECT_FLOAT_EQ(m.thin_film_thickness_min, 200.0f);
+  EXPECT_FLOAT_EQ(m.thin_film_thickness, 650.0f);
   EXPECT_NE(m.iridescence_texture, abi::kInvalidIndex);
   EXPECT_NE(m.iridescence_thickness_texture, abi::kInvalidIndex);
   // glTF's defaults: 100-400 nm, ior 1.3.
   const abi::MaterialBlock d = load_with({{"extensions", {{"KHR_materials_iridescence", json::object()}}}}).material();
-  EXPECT_FLOAT_EQ(d.thin_film_thickness_min, 0.1f);
-  EXPECT_FLOAT_EQ(d.thin_film_thickness, 0.4f);
+  EXPECT_FLOAT_EQ(d.thin_film_thickness_min, 100.0f);
+  EXPECT_FLOAT_EQ(d.thin_film_thickness, 400.0f);
   EXPECT_FLOAT_EQ(d.thin_film_ior, 1.3f);
 }
 

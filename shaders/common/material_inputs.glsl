@@ -64,7 +64,7 @@ float material_thin_film_weight(SurfaceHit hit) {
   return material_scalar(b_materials[hit.material].thin_film_weight, b_materials[hit.material].iridescence_texture, 0, hit);
 }
 
-// Thin-film thickness in micrometres: mix(thin_film_thickness_min, thin_film_thickness,
+// Thin-film thickness in nanometres: mix(thin_film_thickness_min, thin_film_thickness,
 // iridescenceThicknessTexture.g), or thin_film_thickness without the texture.
 float material_thin_film_thickness(SurfaceHit hit) {
   const float thickest = b_materials[hit.material].thin_film_thickness;

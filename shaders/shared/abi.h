@@ -101,7 +101,8 @@ struct GeometryRecord {
 
 // OpenPBR 1.1 surface parameters (names follow the spec). The foundation BSDF reads the base
 // diffuse and emission; the remaining parameters are carried for the full OpenPBR BSDF.
-// Units: thin_film_thickness(_min) in micrometres (OpenPBR), specular_rotation in radians
+// Units: thin_film_thickness(_min) in nanometres (glTF's unit; OpenPBR's micrometres x 1000),
+// specular_rotation in radians
 // (glTF's anisotropyRotation, counter-clockwise from the tangent), transmission_depth in metres.
 // How glTF fills each field: src/scene/gltf_material_table.cpp.
 struct MaterialBlock {

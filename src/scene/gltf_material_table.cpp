@@ -30,8 +30,8 @@
 // KHR_materials_sheen              sheenColorFactor -> fuzz_color, fuzz_weight = 1 when the colour or its
 //                                  texture is non-zero; sheenRoughnessFactor -> fuzz_roughness
 // KHR_materials_iridescence        iridescenceFactor -> thin_film_weight, iridescenceIor -> thin_film_ior,
-//                                  iridescenceThicknessMaximum / Minimum (nm) -> thin_film_thickness /
-//                                  thin_film_thickness_min (micrometres, OpenPBR's unit)
+//                                  iridescenceThicknessMaximum / Minimum -> thin_film_thickness /
+//                                  thin_film_thickness_min (nanometres, as glTF; OpenPBR uses um)
 // KHR_materials_anisotropy         anisotropyStrength -> specular_anisotropy,
 //                                  anisotropyRotation -> specular_rotation (radians, glTF's unit)
 // KHR_materials_diffuse_transmission diffuseTransmissionFactor / ColorFactor -> subsurface_weight /
@@ -53,27 +53,27 @@ const std::vector<FactorRow>& factor_rows() {
   using M = abi::MaterialBlock;
   const glm::vec3 one(1.0f), zero(0.0f);
   static const std::vector<FactorRow> rows = {
-      {"KHR_materials_emissive_strength", "emissiveStrength", offsetof(M, emission_luminance), 1, one, 0, kInf, 1},
-      {"KHR_materials_ior", "ior", offsetof(M, specular_ior), 1, glm::vec3(1.5f), 1, kInf, 1},
-      {"KHR_materials_specular", "specularFactor", offsetof(M, specular_weight), 1, one, 0, kInf, 1},
-      {"KHR_materials_specular", "specularColorFactor", offsetof(M, specular_color), 3, one, 0, kInf, 1},
-      {"KHR_materials_transmission", "transmissionFactor", offsetof(M, transmission_weight), 1, zero, 0, 1, 1},
-      {"KHR_materials_volume", "attenuationColor", offsetof(M, transmission_color), 3, one, 0, 1, 1},
-      {"KHR_materials_volume", "attenuationDistance", offsetof(M, transmission_depth), 1, glm::vec3(kInf), 0, kInf, 1},
-      {"KHR_materials_clearcoat", "clearcoatFactor", offsetof(M, coat_weight), 1, zero, 0, 1, 1},
-      {"KHR_materials_clearcoat", "clearcoatRoughnessFactor", offsetof(M, coat_roughness), 1, zero, 0, 1, 1},
-      {"KHR_materials_sheen", "sheenColorFactor", offsetof(M, fuzz_color), 3, zero, 0, 1, 1},
-      {"KHR_materials_sheen", "sheenRoughnessFactor", offsetof(M, fuzz_roughness), 1, zero, 0, 1, 1},
-      {"KHR_materials_iridescence", "iridescenceFactor", offsetof(M, thin_film_weight), 1, zero, 0, 1, 1},
-      {"KHR_materials_iridescence", "iridescenceIor", offsetof(M, thin_film_ior), 1, glm::vec3(1.3f), 1, kInf, 1},
+      {"KHR_materials_emissive_strength", "emissiveStrength", offsetof(M, emission_luminance), 1, one, 0, kInf},
+      {"KHR_materials_ior", "ior", offsetof(M, specular_ior), 1, glm::vec3(1.5f), 1, kInf},
+      {"KHR_materials_specular", "specularFactor", offsetof(M, specular_weight), 1, one, 0, kInf},
+      {"KHR_materials_specular", "specularColorFactor", offsetof(M, specular_color), 3, one, 0, kInf},
+      {"KHR_materials_transmission", "transmissionFactor", offsetof(M, transmission_weight), 1, zero, 0, 1},
+      {"KHR_materials_volume", "attenuationColor", offsetof(M, transmission_color), 3, one, 0, 1},
+      {"KHR_materials_volume", "attenuationDistance", offsetof(M, transmission_depth), 1, glm::vec3(kInf), 0, kInf},
+      {"KHR_materials_clearcoat", "clearcoatFactor", offsetof(M, coat_weight), 1, zero, 0, 1},
+      {"KHR_materials_clearcoat", "clearcoatRoughnessFactor", offsetof(M, coat_roughness), 1, zero, 0, 1},
+      {"KHR_materials_sheen", "sheenColorFactor", offsetof(M, fuzz_color), 3, zero, 0, 1},
+      {"KHR_materials_sheen", "sheenRoughnessFactor", offsetof(M, fuzz_roughness), 1, zero, 0, 1},
+      {"KHR_materials_iridescence", "iridescenceFactor", offsetof(M, thin_film_weight), 1, zero, 0, 1},
+      {"KHR_materials_iridescence", "iridescenceIor", offsetof(M, thin_film_ior), 1, glm::vec3(1.3f), 1, kInf},
       {"KHR_materials_iridescence", "iridescenceThicknessMinimum", offsetof(M, thin_film_thickness_min), 1,
-       glm::vec3(100.0f), 0, kInf, 1e-3f},
+       glm::vec3(100.0f), 0, kInf},
       {"KHR_materials_iridescence", "iridescenceThicknessMaximum", offsetof(M, thin_film_thickness), 1,
-       glm::vec3(400.0f), 0, kInf, 1e-3f},
-      {"KHR_materials_anisotropy", "anisotropyStrength", offsetof(M, specular_anisotropy), 1, zero, 0, 1, 1},
-      {"KHR_materials_anisotropy", "anisotropyRotation", offsetof(M, specular_rotation), 1, zero, -kInf, kInf, 1},
-      {"KHR_materials_diffuse_transmission", "diffuseTransmissionFactor", offsetof(M, subsurface_weight), 1, zero, 0, 1, 1},
-      {"KHR_materials_diffuse_transmission", "diffuseTransmissionColorFactor", offsetof(M, subsurface_color), 3, one, 0, 1, 1},
+       glm::vec3(400.0f), 0, kInf},
+      {"KHR_materials_anisotropy", "anisotropyStrength", offsetof(M, specular_anisotropy), 1, zero, 0, 1},
+      {"KHR_materials_anisotropy", "anisotropyRotation", offsetof(M, specular_rotation), 1, zero, -kInf, kInf},
+      {"KHR_materials_diffuse_transmission", "diffuseTransmissionFactor", offsetof(M, subsurface_weight), 1, zero, 0, 1},
+      {"KHR_materials_diffuse_transmission", "diffuseTransmissionColorFactor", offsetof(M, subsurface_color), 3, one, 0, 1},
   };
   return rows;
 }

@@ -15,7 +15,6 @@ struct FactorRow {
   int components;
   glm::vec3 fallback; // glTF's default when the extension is present but the key is not
   float lo, hi;       // valid range; values outside are clamped
-  float scale;        // unit conversion
 };
 
 // A textureInfo of a material extension that lands in one MaterialBlock texture slot.

@@ -23,7 +23,7 @@ const tinygltf::Value* extension(const tinygltf::Material& m, const char* name) 
   return it == m.extensions.end() ? nullptr : &it->second;
 }
 
-// Reads a row's number or colour (glTF's default when absent or not finite), clamped and scaled.
+// Reads a row's number or colour (glTF's default when absent or not a number), clamped.
 glm::vec3 factor(const tinygltf::Value& ext, const FactorRow& row) {
   glm::vec3 v = row.fallback;
   if (ext.Has(row.key)) {
@@ -36,7 +36,7 @@ glm::vec3 factor(const tinygltf::Value& ext, const FactorRow& row) {
     for (int k = 0; k < row.components; ++k)
       if (std::isnan(v[k])) v[k] = row.fallback[k];
   }
-  return glm::clamp(v, glm::vec3(row.lo), glm::vec3(row.hi)) * row.scale;
+  return glm::clamp(v, glm::vec3(row.lo), glm::vec3(row.hi));
 }
 
 void apply_extension_rows(const tinygltf::Material& m, abi::MaterialBlock& p, TextureTable& textures,

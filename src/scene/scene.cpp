@@ -23,7 +23,7 @@ abi::MaterialBlock default_material_params() {
   m.coat_color = glm::vec3(1.0f);
   m.fuzz_color = glm::vec3(1.0f);
   m.fuzz_roughness = 0.5f;
-  m.thin_film_thickness = 0.5f;
+  m.thin_film_thickness = 500.0f;  // nm (OpenPBR's default 0.5 um)
   m.thin_film_ior = 1.4f;
   m.emission_luminance = 0.0f;
   m.emission_color = glm::vec3(1.0f);
