@@ -37,6 +37,7 @@ HIPR_CONST uint kBindingAccumulation = 14u;  // PixelAccum per pixel
 HIPR_CONST uint kBindingStats = 15u;         // RenderStats
 HIPR_CONST uint kBindingFrame = 16u;         // FrameParams (one)
 HIPR_CONST uint kBindingBsdfTables = 28u;    // float: generated BSDF tables (bsdf/ggx_energy_table.glsl)
+HIPR_CONST uint kBindingMaterialProbe = 29u; // MaterialInputsProbe: material_probe.comp's output (inspection)
 // HiPR scheduling (stages 1-3)
 HIPR_CONST uint kBindingGBuffer = 17u;          // GBufferTexel per pixel, this scene state
 HIPR_CONST uint kBindingPreviousGBuffer = 18u;  // GBufferTexel per pixel, before the edit
@@ -168,6 +169,29 @@ struct TextureInfo {
   uint flags;         // kTexture*
   vec3 uvTransformU;  // u' = dot(uvTransformU, vec3(u, v, 1))
   vec3 uvTransformV;  // v' = dot(uvTransformV, vec3(u, v, 1))
+};
+
+// What shaders/common/material_inputs.glsl returns at one surface point (material_probe.comp).
+struct MaterialInputsProbe {
+  float transmissionWeight;
+  float coatWeight;
+  float coatRoughness;
+  vec3 coatNormal;
+  vec3 fuzzColor;
+  float fuzzRoughness;
+  float specularWeight;
+  vec3 specularColor;
+  float thinFilmWeight;
+  float thinFilmThickness;
+  float anisotropyStrength;
+  vec3 anisotropyDirection;
+};
+
+// Where material_probe.comp evaluates: a point of one triangle, in its object space.
+struct ProbePush {
+  uint record;
+  uint primitive;
+  vec2 barycentrics;
 };
 
 // Emissive triangles reference their geometry (so emission textures evaluate exactly as on a

@@ -141,6 +141,7 @@ struct Renderer::Impl {
     bind_scene_buffers(trace);
     if (discover) bind_scene_buffers(*discover);
     if (visibility) bind_scene_buffers(*visibility);
+    if (probe) bind_scene_buffers(*probe);
   }
 
   void bind_scene_buffers(vk::ComputePipeline& pipeline) {
@@ -157,6 +158,18 @@ struct Renderer::Impl {
         {abi::kBindingTileFlags, &tile_flags},    {abi::kBindingBsdfTables, &bsdf_tables},
     };
     for (const auto& [binding, buffer] : buffers) pipeline.bind_buffer(binding, *buffer);
+  }
+
+  // The inspection pass of material_inputs_at, made on first use.
+  void ensure_probe() {
+    if (probe) return;
+    std::vector<vk::BindingSlot> slots = trace_bindings(false);
+    slots.push_back({abi::kBindingMaterialProbe});
+    probe = std::make_unique<vk::ComputePipeline>(ctx, "material_probe.comp", vk::ShaderDefines{}, slots,
+                                                  sizeof(abi::ProbePush));
+    probe_output = storage(ctx, sizeof(abi::MaterialInputsProbe));
+    probe->bind_buffer(abi::kBindingMaterialProbe, probe_output);
+    bind_scene_buffers(*probe);
   }
 
   void bind_hipr() {
@@ -205,6 +218,8 @@ struct Renderer::Impl {
   vk::Buffer gbuffer, previous_gbuffer, changed_records, tile_weights, row_distance;
   std::unique_ptr<RadixSorter> sorter;
   std::unique_ptr<vk::ComputePipeline> discover, visibility, mark_active, keys;
+  std::unique_ptr<vk::ComputePipeline> probe;  // material_inputs_at
+  vk::Buffer probe_output;
 };
 
 Renderer::Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
@@ -324,6 +339,14 @@ std::vector<uint32_t> Renderer::gbuffer_instances() const {
   for (size_t i = 0; i < texels.size(); ++i)
     if (texels[i].record != abi::kInvalidIndex) out[i] = m->gpu.record_instance()[texels[i].record];
   return out;
+}
+
+abi::MaterialInputsProbe Renderer::material_inputs_at(uint32_t record, uint32_t primitive, glm::vec2 barycentrics) const {
+  if (record >= m->gpu.record_count()) throw InternalError("probe of a missing geometry record");
+  m->ensure_probe();
+  const abi::ProbePush push{record, primitive, barycentrics};
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->probe->dispatch(cmd, &push, 1); });
+  return m->probe_output.download_all<abi::MaterialInputsProbe>()[0];
 }
 
 std::vector<uint32_t> Renderer::tile_flags() const {
