@@ -20,6 +20,9 @@ layout(local_size_x = 64) in;  // == kWorkgroupSize
 #include "common/textures.glsl"
 #include "bsdf/bsdf.glsl"
 #include "common/surface.glsl"
+#include "common/cutout.glsl"
+#include "common/material_inputs.glsl"
+#include "common/shading.glsl"
 #include "common/environment.glsl"
 #include "common/lights.glsl"
 #include "common/tile_pixels.glsl"
@@ -59,9 +62,8 @@ struct RayHit {
 
 bool trace_closest(vec3 origin, vec3 direction, out RayHit hit) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsOpaqueEXT, 0xff, origin, 0.0, direction, kFloatMax);
-  while (rayQueryProceedEXT(query)) {
-  }
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsNoneEXT, 0xff, origin, 0.0, direction, kFloatMax);
+  cutout_proceed(query, origin, direction);
   if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return false;
   hit.t = rayQueryGetIntersectionTEXT(query, true);
   hit.geometry = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
@@ -75,10 +77,8 @@ bool trace_closest(vec3 origin, vec3 direction, out RayHit hit) {
 
 bool occluded(vec3 origin, vec3 direction, float tMax) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT, 0xff, origin,
-                        0.0, direction, tMax);
-  while (rayQueryProceedEXT(query)) {
-  }
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsTerminateOnFirstHitEXT, 0xff, origin, 0.0, direction, tMax);
+  cutout_proceed(query, origin, direction);
   return rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
 }
 
@@ -198,7 +198,7 @@ bool path_step(inout PathState p, inout uint rays) {
   }
   if (p.depth >= u_frame.maxDepth) return true;
 
-  const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal, surface.tangent);
+  const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent);
   if (u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly)
     p.radiance += p.throughput * direct_light(surface, params, frame, wo, rng_uniform4(p.rng, p.depth, 1u),
                                               luminance(p.throughput), rays);

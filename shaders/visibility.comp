@@ -1,6 +1,7 @@
 #version 460
 // HiPR stage 1: one primary ray through every pixel centre.
-// Reads: TLAS, FrameParams. Writes: the G-buffer (record hit, camera-space depth) per pixel.
+// Reads: TLAS, FrameParams, and the scene buffers the opacity cutout needs (geometry records,
+// materials, UVs, textures). Writes: the G-buffer (record hit, camera-space depth) per pixel.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_ray_query : require
 #extension GL_EXT_scalar_block_layout : require
@@ -8,10 +9,10 @@
 
 layout(local_size_x = 64) in;
 
-#include "shared/abi.h"
+#include "common/bindings.glsl"
+#include "common/textures.glsl"
+#include "common/cutout.glsl"
 
-layout(binding = kBindingTlas) uniform accelerationStructureEXT u_tlas;
-layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
 layout(scalar, binding = kBindingGBuffer) writeonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 
 void main() {
@@ -22,9 +23,8 @@ void main() {
   const vec3 direction = normalize(u_frame.cameraForward + ndc.x * u_frame.tanHalfFovY * u_frame.aspect * u_frame.cameraRight -
                                    ndc.y * u_frame.tanHalfFovY * u_frame.cameraUp);
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsOpaqueEXT, 0xff, u_frame.cameraPosition, 0.0, direction, 3.0e38);
-  while (rayQueryProceedEXT(query)) {
-  }
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsNoneEXT, 0xff, u_frame.cameraPosition, 0.0, direction, 3.0e38);
+  cutout_proceed(query, u_frame.cameraPosition, direction);
   GBufferTexel texel = GBufferTexel(kInvalidIndex, 3.0e38);
   if (rayQueryGetIntersectionTypeEXT(query, true) == gl_RayQueryCommittedIntersectionTriangleEXT) {
     texel.record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +

@@ -110,6 +110,20 @@ TEST(Cli, BadStatsPathWritesNoImage) {
   EXPECT_FALSE(fs::exists(out_dir / "out.exr")) << "an image was written although the command failed";
 }
 
+TEST(Cli, RequiredUnsupportedExtensionIsABadInput) {
+  // The Cornell box, but requiring an extension the renderer does not implement.
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(test::asset("cornell_box.gltf")));
+  scene["extensionsUsed"].push_back("EXT_hipr_made_up");
+  scene["extensionsRequired"] = {"EXT_hipr_made_up"};
+  const fs::path dir = test::temp_dir("cli-required-extension");
+  std::ofstream(dir / "scene.gltf") << scene.dump();
+  const test::CommandResult result = test::run_hipr("render " + quoted(dir / "scene.gltf") + " -o " + quoted(dir / "out.png") +
+                                                    " --width 8 --height 8 --spp 1");
+  expect_one_error_line(result);
+  EXPECT_NE(result.output.find("requires unsupported glTF extension EXT_hipr_made_up"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
 // One render of the Cornell box to EXR + PNG + stats, shared by the tests that inspect it.
 class CornellRender : public testing::Test {
  protected:

@@ -36,6 +36,15 @@ TEST(Estimators, EmissiveTrianglesAgree) {
   expect_estimators_agree(load_scene(test::asset("cornell_box.gltf")), 32, 256, 2, 0.02);
 }
 
+TEST(Estimators, HalfCoveredEmitterAgrees) {
+  // A stochastic (BLEND) emitter: BSDF rays find it half the time, so light sampling must
+  // weight its radiance by its coverage.
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  for (Material& m : scene.materials)
+    if (m.name == "light") m.params.geometry_opacity = 0.5f;
+  expect_estimators_agree(scene, 32, 256, 2, 0.02);
+}
+
 TEST(Estimators, GlossyMaterialsAgree) {
   // Rough metal and a shiny dielectric: the GGX pdfs must match what the lobes sample.
   Scene scene = load_scene(test::asset("cornell_box.gltf"));

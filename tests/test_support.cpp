@@ -156,12 +156,16 @@ Scene make_furnace_scene(float radius, glm::vec3 center, float albedo, float env
   camera.yfov = 0.6f;
   scene.cameras.push_back(camera);
 
+  scene.environment = uniform_environment(env);
+  return scene;
+}
+
+Environment uniform_environment(float radiance) {
   Environment environment;
   environment.width = 8;
   environment.height = 4;
-  environment.texels.assign(32, glm::vec3(env));
-  scene.environment = environment;
-  return scene;
+  environment.texels.assign(32, glm::vec3(radiance));
+  return environment;
 }
 
 }  // namespace hipr::test

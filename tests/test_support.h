@@ -43,6 +43,9 @@ namespace hipr::test {
 // `center`, a camera on +Z framing it, and a uniform environment of radiance `env`.
 Scene make_furnace_scene(float radius, glm::vec3 center, float albedo, float env);
 
+// A small equirectangular environment of one radiance everywhere.
+Environment uniform_environment(float radiance);
+
 }  // namespace hipr::test
 
 namespace hipr::test {

@@ -96,6 +96,9 @@ class Renderer {
   std::vector<uint32_t> tile_flags() const;
   std::vector<double> tile_weights() const;
   std::vector<uint32_t> schedule() const;
+  // What shaders/common/material_inputs.glsl gives the BSDF at a point of a GeometryRecord's
+  // triangle (object space, seen from its front).
+  abi::MaterialInputsProbe material_inputs_at(uint32_t record, uint32_t primitive, glm::vec2 barycentrics) const;
 
   ImageRGB image() const;                     // per-pixel mean radiance
   std::vector<uint32_t> sample_counts() const;  // per pixel

@@ -18,6 +18,7 @@ struct MeshPrimitive {
   std::vector<glm::vec3> normals;   // unit length, one per position
   std::vector<glm::vec4> tangents;  // xyz unit, w = bitangent sign; one per position
   std::vector<glm::vec2> uvs;       // TEXCOORD_0, one per position (zeros when absent)
+  std::vector<glm::vec2> uvs1;      // TEXCOORD_1, one per position (zeros when absent)
   std::vector<uint32_t> indices;    // triangle list
   uint32_t material = 0;
 };
@@ -46,12 +47,21 @@ struct Instance {
   bool visible = true;
 };
 
-struct Texture {
+// Decoded texels of one image, shared by every texture reference that samples it.
+struct Image {
   std::string name;
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<uint8_t> rgba8;  // row-major, top row first
-  uint32_t flags = 0;          // abi::kTexture*
+};
+
+// One way a material reads an image: colour space, sampler, UV set and UV transform.
+struct Texture {
+  std::string name;
+  uint32_t image = 0;   // into Scene::images
+  uint32_t flags = 0;   // abi::kTexture*
+  glm::vec3 uv_transform_u{1.0f, 0.0f, 0.0f};  // u' = dot(uv_transform_u, (u, v, 1))
+  glm::vec3 uv_transform_v{0.0f, 1.0f, 0.0f};
 };
 
 struct Material {
@@ -90,13 +100,18 @@ struct Environment {
 // Default OpenPBR parameters (the spec's defaults), used for glTF's default material too.
 abi::MaterialBlock default_material_params();
 
+// Whether rays may treat the material's triangles as opaque without an alpha test (the
+// acceleration structures then mark them VK_GEOMETRY_OPAQUE_BIT_KHR).
+bool material_is_opaque(const abi::MaterialBlock& m);
+
 struct Scene {
   std::filesystem::path source;
   std::string content_hash;  // of every byte read to build the scene
   std::vector<Node> nodes;
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
-  std::vector<Texture> textures;
+  std::vector<Texture> textures;  // what MaterialBlock texture indices refer to
+  std::vector<Image> images;
   std::vector<PunctualLight> lights;
   std::vector<Camera> cameras;  // camera nodes reference these
   std::optional<Environment> environment;

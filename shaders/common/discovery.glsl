@@ -1,5 +1,6 @@
 // HiPR stage 2: project path vertices into the camera and grow the weight of the tile they
-// land in, if the G-buffer shows that very point there (depth test). Needs bindings.glsl.
+// land in, if the G-buffer shows that very point there (depth test). Needs bindings.glsl and
+// cutout.glsl.
 #ifndef HIPR_DISCOVERY_GLSL
 #define HIPR_DISCOVERY_GLSL
 
@@ -40,9 +41,8 @@ void discover_vertex(vec3 x, float weight) {
 // The record a shadow ray hits first, or kInvalidIndex when it is unblocked.
 uint closest_blocker(vec3 origin, vec3 direction, float tMax) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsOpaqueEXT, 0xff, origin, 0.0, direction, tMax);
-  while (rayQueryProceedEXT(query)) {
-  }
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsNoneEXT, 0xff, origin, 0.0, direction, tMax);
+  cutout_proceed(query, origin, direction);
   if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return kInvalidIndex;
   return uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
          uint(rayQueryGetIntersectionGeometryIndexEXT(query, true));

@@ -1,5 +1,6 @@
 // Light selection (CDF over all lights, proportional to estimated power) and next-event
-// sampling of emissive triangles, punctual lights and the environment.
+// sampling of emissive triangles, punctual lights and the environment. Needs cutout.glsl: a
+// cut-out emitter emits only where it is there.
 #ifndef HIPR_LIGHTS_GLSL
 #define HIPR_LIGHTS_GLSL
 
@@ -69,7 +70,8 @@ LightSample sample_light(vec3 position, vec4 u) {
     s.lightNormal = cosAtLight < 0.0 ? -n : n;
     cosAtLight = abs(cosAtLight);
     const uvec3 v = triangle_vertices(g, light.primitive);
-    s.radiance = material_emission(g.materialIndex, interpolate_uv(v, b), cosAtLight);
+    s.radiance = material_emission(g.materialIndex, interpolate_uv(v, b), cosAtLight) *
+                 cutout_coverage(light.geometryRecord, light.primitive, b);
     s.pdf = selection * triangle_light_pdf(light, s.distance, cosAtLight);
   } else if (light.type == kLightEnvironment) {
     float pdf;

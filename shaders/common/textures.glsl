@@ -1,5 +1,6 @@
 // Texture lookups from the packed RGBA8 texel buffer, with bilinear filtering and the glTF
-// wrap modes. sRGB textures are decoded per texel before filtering, as hardware does.
+// wrap modes. sRGB textures are decoded per texel before filtering, as hardware does. Each
+// TextureInfo picks its UV set and applies its KHR_texture_transform before the lookup.
 #ifndef HIPR_TEXTURES_GLSL
 #define HIPR_TEXTURES_GLSL
 
@@ -27,8 +28,11 @@ vec4 fetch_texel(TextureInfo tex, int x, int y) {
   return c;
 }
 
-vec4 sample_texture(uint index, vec2 uv) {
+// uvSets: TEXCOORD_0 in xy, TEXCOORD_1 in zw (as the UV buffer stores them).
+vec4 sample_texture(uint index, vec4 uvSets) {
   const TextureInfo tex = b_textures[index];
+  const vec3 uv1 = vec3((tex.flags & kTextureUv1) != 0u ? uvSets.zw : uvSets.xy, 1.0);
+  vec2 uv = vec2(dot(tex.uvTransformU, uv1), dot(tex.uvTransformV, uv1));
   // Guard against NaN/huge UVs: they would index nowhere sensible.
   uv = clamp(uv, vec2(-1.0e6), vec2(1.0e6));
   if (any(isnan(uv))) uv = vec2(0.0);

@@ -23,7 +23,7 @@ HIPR_CONST uint kBindingTlas = 0u;
 HIPR_CONST uint kBindingPositions = 1u;      // vec3 per vertex, object space
 HIPR_CONST uint kBindingNormals = 2u;        // vec3 per vertex
 HIPR_CONST uint kBindingTangents = 3u;       // vec4 per vertex (w = handedness)
-HIPR_CONST uint kBindingUvs = 4u;            // vec2 per vertex (TEXCOORD_0)
+HIPR_CONST uint kBindingUvs = 4u;            // vec4 per vertex: TEXCOORD_0 in xy, TEXCOORD_1 in zw
 HIPR_CONST uint kBindingIndices = 5u;        // uint, 3 per triangle, relative to the vertex offset
 HIPR_CONST uint kBindingGeometries = 6u;     // GeometryRecord per (instance, primitive)
 HIPR_CONST uint kBindingMaterials = 7u;      // MaterialBlock
@@ -37,6 +37,7 @@ HIPR_CONST uint kBindingAccumulation = 14u;  // PixelAccum per pixel
 HIPR_CONST uint kBindingStats = 15u;         // RenderStats
 HIPR_CONST uint kBindingFrame = 16u;         // FrameParams (one)
 HIPR_CONST uint kBindingBsdfTables = 28u;    // float: generated BSDF tables (bsdf/ggx_energy_table.glsl)
+HIPR_CONST uint kBindingMaterialProbe = 29u; // MaterialInputsProbe: material_probe.comp's output (inspection)
 // HiPR scheduling (stages 1-3)
 HIPR_CONST uint kBindingGBuffer = 17u;          // GBufferTexel per pixel, this scene state
 HIPR_CONST uint kBindingPreviousGBuffer = 18u;  // GBufferTexel per pixel, before the edit
@@ -79,6 +80,7 @@ HIPR_CONST uint kLightEnvironment = 4u;
 
 HIPR_CONST uint kMaterialDoubleSided = 1u;
 HIPR_CONST uint kMaterialThinWalled = 2u;
+HIPR_CONST uint kMaterialIgnoreTextureAlpha = 4u;  // glTF OPAQUE: base colour texture alpha is not opacity
 
 HIPR_CONST uint kTextureSrgb = 1u;        // texels are sRGB-encoded colour (decode to linear)
 HIPR_CONST uint kTextureNearest = 2u;     // nearest-texel lookup instead of bilinear
@@ -86,6 +88,7 @@ HIPR_CONST uint kTextureClampU = 4u;
 HIPR_CONST uint kTextureClampV = 8u;
 HIPR_CONST uint kTextureMirrorU = 16u;
 HIPR_CONST uint kTextureMirrorV = 32u;
+HIPR_CONST uint kTextureUv1 = 64u;        // reads TEXCOORD_1 instead of TEXCOORD_0
 
 // ---- structs ----
 
@@ -99,6 +102,10 @@ struct GeometryRecord {
 
 // OpenPBR 1.1 surface parameters (names follow the spec). The foundation BSDF reads the base
 // diffuse and emission; the remaining parameters are carried for the full OpenPBR BSDF.
+// Units: thin_film_thickness(_min) in nanometres (glTF's unit; OpenPBR's micrometres x 1000),
+// specular_rotation in radians
+// (glTF's anisotropyRotation, counter-clockwise from the tangent), transmission_depth in metres.
+// How glTF fills each field: src/scene/gltf_material_table.cpp.
 struct MaterialBlock {
   vec3 base_color;
   float base_weight;
@@ -125,25 +132,66 @@ struct MaterialBlock {
   vec3 fuzz_color;
   float fuzz_roughness;
   float thin_film_weight;
-  float thin_film_thickness;
+  float thin_film_thickness;      // at iridescence_thickness_texture G = 1 (or without texture)
   float thin_film_ior;
+  float thin_film_thickness_min;  // at iridescence_thickness_texture G = 0
   float emission_luminance;
   vec3 emission_color;
   float geometry_opacity;
+  float alpha_cutoff;  // >= 0: opaque where opacity >= cutoff, else absent (MASK); < 0: stochastic coverage
   uint flags;  // kMaterial*
   float normal_scale;
-  // Texture indices into the TextureInfo table, or kInvalidIndex.
+  float coat_normal_scale;
+  // Texture indices into the TextureInfo table, or kInvalidIndex. Channels as glTF packs them.
   uint base_color_texture;         // RGB: base_color, A: opacity
   uint metallic_roughness_texture; // glTF packing: G roughness, B metalness
   uint normal_texture;             // tangent-space normal map
   uint emission_texture;           // RGB: emission_color multiplier
+  uint transmission_texture;          // R: transmission_weight
+  uint clearcoat_texture;             // R: coat_weight
+  uint clearcoat_roughness_texture;   // G: coat_roughness
+  uint clearcoat_normal_texture;      // tangent-space normal of the coat (coat_normal_scale)
+  uint sheen_color_texture;           // RGB: fuzz_color
+  uint sheen_roughness_texture;       // A: fuzz_roughness
+  uint specular_texture;              // A: specular_weight
+  uint specular_color_texture;        // RGB: specular_color
+  uint iridescence_texture;           // R: thin_film_weight
+  uint iridescence_thickness_texture; // G: thin_film_thickness = mix(min, max, G)
+  uint anisotropy_texture;            // RG: direction in tangent space (x2-1), B: strength
 };
 
+// How a material reads one texture: which texels, sampler, UV set and UV transform
+// (KHR_texture_transform). Several entries may share texels (texelOffset).
 struct TextureInfo {
   uint texelOffset;
   uint width;
   uint height;
-  uint flags;  // kTexture*
+  uint flags;         // kTexture*
+  vec3 uvTransformU;  // u' = dot(uvTransformU, vec3(u, v, 1))
+  vec3 uvTransformV;  // v' = dot(uvTransformV, vec3(u, v, 1))
+};
+
+// What shaders/common/material_inputs.glsl returns at one surface point (material_probe.comp).
+struct MaterialInputsProbe {
+  float transmissionWeight;
+  float coatWeight;
+  float coatRoughness;
+  vec3 coatNormal;
+  vec3 fuzzColor;
+  float fuzzRoughness;
+  float specularWeight;
+  vec3 specularColor;
+  float thinFilmWeight;
+  float thinFilmThickness;
+  float anisotropyStrength;
+  vec3 anisotropyDirection;
+};
+
+// Where material_probe.comp evaluates: a point of one triangle, in its object space.
+struct ProbePush {
+  uint record;
+  uint primitive;
+  vec2 barycentrics;
 };
 
 // Emissive triangles reference their geometry (so emission textures evaluate exactly as on a

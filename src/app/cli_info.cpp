@@ -1,4 +1,5 @@
 // `hipr info SCENE`: what the scene contains and which renderer features it uses.
+#include <algorithm>
 #include <cstdio>
 #include <set>
 
@@ -59,7 +60,7 @@ int run_info(const InfoOptions& o) {
                 m.params.specular_roughness, m.params.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.params.emission_color, glm::vec3(0))) ? "  emissive" : "",
                 (m.params.flags & abi::kMaterialDoubleSided) ? "  double-sided" : "");
   }
-  std::printf("textures   %zu\n", scene.textures.size());
+  std::printf("textures   %zu (on %zu images)\n", scene.textures.size(), scene.images.size());
   std::printf("lights     %zu punctual, %zu emissive triangles%s\n", punctual, emissive_triangles,
               scene.environment ? ", environment map" : "");
   for (const Node& node : scene.nodes)
@@ -87,6 +88,8 @@ int run_info(const InfoOptions& o) {
   for (const std::string& name : material_feature_names(features, false)) skip(true, name);
   skip(emissive_triangles == 0 && punctual == 0 && !scene.environment, "next-event estimation (no lights)");
   skip(scene.textures.empty(), "texture sampling");
+  skip(std::all_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return material_is_opaque(m.params); }),
+       "opacity cutout (all geometry opaque)");
   skip(!scene.environment, "environment lookups");
   std::printf("skipped    %s\n", skipped.empty() ? "nothing" : skipped.c_str());
   return kExitOk;

@@ -1,5 +1,6 @@
 #include "render/gpu_scene.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/error.h"
@@ -20,6 +21,7 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene) : m_ctx(ctx) {
   upload_geometry(scene);
   upload_textures(scene);
   update_materials(scene);
+  build_blases(scene);
   environment = vk::make_storage_buffer(ctx, scene.environment ? build_environment_buffer(*scene.environment)
                                                                : std::vector<float>{});
 
@@ -42,7 +44,7 @@ void GpuScene::upload_geometry(const Scene& scene) {
   // Shared vertex data: each mesh primitive once, however many instances use it.
   std::vector<glm::vec3> all_positions, all_normals;
   std::vector<glm::vec4> all_tangents;
-  std::vector<glm::vec2> all_uvs;
+  std::vector<glm::vec4> all_uvs;  // TEXCOORD_0 in xy, TEXCOORD_1 in zw
   std::vector<uint32_t> all_indices;
   m_ranges.assign(scene.meshes.size(), {});
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -54,7 +56,8 @@ void GpuScene::upload_geometry(const Scene& scene) {
       all_positions.insert(all_positions.end(), p.positions.begin(), p.positions.end());
       all_normals.insert(all_normals.end(), p.normals.begin(), p.normals.end());
       all_tangents.insert(all_tangents.end(), p.tangents.begin(), p.tangents.end());
-      all_uvs.insert(all_uvs.end(), p.uvs.begin(), p.uvs.end());
+      for (size_t v = 0; v < p.uvs.size(); ++v)
+        all_uvs.emplace_back(p.uvs[v], v < p.uvs1.size() ? p.uvs1[v] : glm::vec2(0.0f));
       all_indices.insert(all_indices.end(), p.indices.begin(), p.indices.end());
     }
   }
@@ -64,30 +67,50 @@ void GpuScene::upload_geometry(const Scene& scene) {
   uvs = vk::make_storage_buffer(m_ctx, all_uvs);
   indices = vk::make_storage_buffer(m_ctx, all_indices, kBuildInput);
 
-  // One BLAS per mesh, one geometry per primitive. BLAS indices are relative to the
-  // primitive's first vertex, which is why the vertex address carries the offset.
   m_blas.resize(scene.meshes.size());
   m_has_blas.assign(scene.meshes.size(), false);
+  m_blas_opaque.assign(scene.meshes.size(), {});
+}
+
+bool GpuScene::build_blases(const Scene& scene) {
+  // One BLAS per mesh, one geometry per primitive. BLAS indices are relative to the
+  // primitive's first vertex, which is why the vertex address carries the offset.
+  bool rebuilt = false;
+  m_info.cutout_geometries = 0;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    std::vector<bool> opaque;
+    for (const MeshPrimitive& p : scene.meshes[m].primitives) opaque.push_back(material_is_opaque(scene.materials[p.material].params));
+    m_info.cutout_geometries += size_t(std::count(opaque.begin(), opaque.end(), false));
+    if (m_ranges[m].empty() || (m_has_blas[m] && opaque == m_blas_opaque[m])) continue;
     std::vector<vk::TriangleGeometry> geometry;
-    for (const PrimitiveRange& r : m_ranges[m]) {
+    for (size_t p = 0; p < m_ranges[m].size(); ++p) {
+      const PrimitiveRange& r = m_ranges[m][p];
       geometry.push_back({positions.address() + VkDeviceAddress(r.vertex_offset) * sizeof(glm::vec3), r.vertex_count,
-                          indices.address() + VkDeviceAddress(r.first_index) * sizeof(uint32_t), r.triangle_count});
+                          indices.address() + VkDeviceAddress(r.first_index) * sizeof(uint32_t), r.triangle_count,
+                          opaque[p]});
     }
-    if (geometry.empty()) continue;
     m_blas[m] = vk::build_blas(m_ctx, geometry);
     m_has_blas[m] = true;
+    m_blas_opaque[m] = std::move(opaque);
+    rebuilt = true;
   }
+  return rebuilt;
 }
 
 void GpuScene::upload_textures(const Scene& scene) {
-  std::vector<abi::TextureInfo> infos;
-  std::vector<uint32_t> packed;
-  for (const Texture& t : scene.textures) {
-    infos.push_back({uint32_t(packed.size()), t.width, t.height, t.flags});
+  // Texels once per image; every texture reference on it points at the same offset.
+  std::vector<uint32_t> packed, image_offset;
+  for (const Image& image : scene.images) {
+    image_offset.push_back(uint32_t(packed.size()));
     const size_t start = packed.size();
-    packed.resize(start + t.rgba8.size() / 4);
-    std::memcpy(packed.data() + start, t.rgba8.data(), t.rgba8.size() / 4 * 4);
+    packed.resize(start + image.rgba8.size() / 4);
+    std::memcpy(packed.data() + start, image.rgba8.data(), image.rgba8.size() / 4 * 4);
+  }
+  std::vector<abi::TextureInfo> infos;
+  for (const Texture& t : scene.textures) {
+    if (t.image >= scene.images.size()) throw InternalError("texture references a missing image");
+    const Image& image = scene.images[t.image];
+    infos.push_back({image_offset[t.image], image.width, image.height, t.flags, t.uv_transform_u, t.uv_transform_v});
   }
   textures = vk::make_storage_buffer(m_ctx, infos);
   texels = vk::make_storage_buffer(m_ctx, packed);
@@ -96,8 +119,12 @@ void GpuScene::upload_textures(const Scene& scene) {
 void GpuScene::update_materials(const Scene& scene) {
   std::vector<abi::MaterialBlock> blocks;
   for (const Material& m : scene.materials) blocks.push_back(m.params);
-  if (materials && materials.size() == blocks.size() * sizeof(abi::MaterialBlock)) materials.upload(blocks.data(), materials.size());
-  else materials = vk::make_storage_buffer(m_ctx, blocks);
+  if (materials && materials.size() == blocks.size() * sizeof(abi::MaterialBlock)) {
+    materials.upload(blocks.data(), materials.size());
+    if (build_blases(scene)) update_instances(scene);  // new BLAS addresses need a new TLAS
+  } else {
+    materials = vk::make_storage_buffer(m_ctx, blocks);
+  }
 }
 
 void GpuScene::update_instances(const Scene& scene) {

@@ -16,6 +16,7 @@ struct GpuSceneInfo {
   size_t instance_count = 0;
   size_t triangle_count = 0;  // over all visible instances
   size_t light_count = 0;
+  size_t cutout_geometries = 0;  // BLAS geometries without VK_GEOMETRY_OPAQUE_BIT_KHR (alpha-tested)
   float scene_radius = 1.0f;
 };
 
@@ -23,7 +24,9 @@ class GpuScene {
  public:
   GpuScene(const vk::Context& ctx, const Scene& scene);
 
-  // Re-uploads the material blocks (same count: edits change parameters, not the table).
+  // Re-uploads the material blocks (same count: edits change parameters, not the table). An
+  // edit that makes a material need the alpha test, or no longer need it, rebuilds the BLAS of
+  // the meshes using it and the TLAS.
   void update_materials(const Scene& scene);
   // Rebuilds the TLAS (transforms, visibility) and the light tables that depend on them.
   void update_instances(const Scene& scene);
@@ -50,6 +53,9 @@ class GpuScene {
   };
   void upload_geometry(const Scene& scene);
   void upload_textures(const Scene& scene);
+  // (Re)builds the BLAS of every mesh whose per-primitive opacity flags differ from the built
+  // ones; returns whether any was rebuilt.
+  bool build_blases(const Scene& scene);
 
   const vk::Context& m_ctx;
   GpuSceneInfo m_info;
@@ -57,6 +63,7 @@ class GpuScene {
   std::vector<std::vector<PrimitiveRange>> m_ranges;  // per mesh, per primitive
   std::vector<vk::AccelerationStructure> m_blas;      // one per mesh (empty meshes: none)
   std::vector<bool> m_has_blas;
+  std::vector<std::vector<bool>> m_blas_opaque;       // per mesh, per primitive, as built
   std::vector<abi::GeometryRecord> m_records;
   std::vector<uint32_t> m_record_base;      // per instance
   std::vector<uint32_t> m_record_instance;  // per record

@@ -136,11 +136,10 @@ struct Renderer::Impl {
     row_distance = storage(ctx, tiles * 4);
     sorter = std::make_unique<RadixSorter>(ctx, uint32_t(tiles));
     discover = make_trace(true);
-    visibility = std::make_unique<vk::ComputePipeline>(
-        ctx, "visibility.comp", vk::ShaderDefines{},
-        std::vector<vk::BindingSlot>{{abi::kBindingTlas, vk::BindingKind::AccelerationStructure}, {abi::kBindingFrame},
-                                     {abi::kBindingGBuffer}},
-        0);
+    // Stage 1 declares the path tracer's scene bindings too: its opacity cutout reads them.
+    std::vector<vk::BindingSlot> visibility_slots = trace_bindings(false);
+    visibility_slots.push_back({abi::kBindingGBuffer});
+    visibility = std::make_unique<vk::ComputePipeline>(ctx, "visibility.comp", vk::ShaderDefines{}, visibility_slots, 0);
     mark_active = std::make_unique<vk::ComputePipeline>(
         ctx, "mark_active.comp", vk::ShaderDefines{},
         std::vector<vk::BindingSlot>{{abi::kBindingFrame}, {abi::kBindingGBuffer}, {abi::kBindingPreviousGBuffer},
@@ -153,6 +152,7 @@ struct Renderer::Impl {
         sizeof(uint32_t));
     bind_hipr();
     bind_scene_buffers(*discover);
+    bind_scene_buffers(*visibility);
     // The first G-buffer describes the scene as loaded, so the first edit has a "before".
     ctx.submit_and_wait([&](VkCommandBuffer cmd) { visibility->dispatch(cmd, nullptr, groups_for(pixels)); });
   }
@@ -163,7 +163,8 @@ struct Renderer::Impl {
     frame.upload(&params, sizeof params);
     bind_scene_buffers(*trace);
     if (discover) bind_scene_buffers(*discover);
-    if (visibility) visibility->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
+    if (visibility) bind_scene_buffers(*visibility);
+    if (probe) bind_scene_buffers(*probe);
   }
 
   void bind_scene_buffers(vk::ComputePipeline& pipeline) {
@@ -182,13 +183,23 @@ struct Renderer::Impl {
     for (const auto& [binding, buffer] : buffers) pipeline.bind_buffer(binding, *buffer);
   }
 
+  // The inspection pass of material_inputs_at, made on first use.
+  void ensure_probe() {
+    if (probe) return;
+    std::vector<vk::BindingSlot> slots = trace_bindings(false);
+    slots.push_back({abi::kBindingMaterialProbe});
+    probe = std::make_unique<vk::ComputePipeline>(ctx, "material_probe.comp", vk::ShaderDefines{}, slots,
+                                                  sizeof(abi::ProbePush));
+    probe_output = storage(ctx, sizeof(abi::MaterialInputsProbe));
+    probe->bind_buffer(abi::kBindingMaterialProbe, probe_output);
+    bind_scene_buffers(*probe);
+  }
+
   void bind_hipr() {
     discover->bind_buffer(abi::kBindingGBuffer, gbuffer);
     discover->bind_buffer(abi::kBindingChangedRecords, changed_records);
     discover->bind_buffer(abi::kBindingTileWeights, tile_weights);
-    visibility->bind_buffer(abi::kBindingFrame, frame);
     visibility->bind_buffer(abi::kBindingGBuffer, gbuffer);
-    visibility->bind_acceleration_structure(abi::kBindingTlas, gpu.tlas());
     mark_active->bind_buffer(abi::kBindingFrame, frame);
     mark_active->bind_buffer(abi::kBindingGBuffer, gbuffer);
     mark_active->bind_buffer(abi::kBindingPreviousGBuffer, previous_gbuffer);
@@ -231,6 +242,8 @@ struct Renderer::Impl {
   vk::Buffer gbuffer, previous_gbuffer, changed_records, tile_weights, row_distance;
   std::unique_ptr<RadixSorter> sorter;
   std::unique_ptr<vk::ComputePipeline> discover, visibility, mark_active, keys;
+  std::unique_ptr<vk::ComputePipeline> probe;  // material_inputs_at
+  vk::Buffer probe_output;
 };
 
 Renderer::Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
@@ -354,6 +367,14 @@ std::vector<uint32_t> Renderer::gbuffer_instances() const {
   for (size_t i = 0; i < texels.size(); ++i)
     if (texels[i].record != abi::kInvalidIndex) out[i] = m->gpu.record_instance()[texels[i].record];
   return out;
+}
+
+abi::MaterialInputsProbe Renderer::material_inputs_at(uint32_t record, uint32_t primitive, glm::vec2 barycentrics) const {
+  if (record >= m->gpu.record_count()) throw InternalError("probe of a missing geometry record");
+  m->ensure_probe();
+  const abi::ProbePush push{record, primitive, barycentrics};
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->probe->dispatch(cmd, &push, 1); });
+  return m->probe_output.download_all<abi::MaterialInputsProbe>()[0];
 }
 
 std::vector<uint32_t> Renderer::tile_flags() const {

@@ -26,11 +26,31 @@ namespace fs = std::filesystem;
 
 const std::vector<std::string>& supported_gltf_extensions() {
   static const std::vector<std::string> list = {
-      "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_specular",
-      "KHR_materials_ior",
+      "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_materials_specular",
+      "KHR_materials_ior",         "KHR_materials_transmission",      "KHR_materials_volume",
+      "KHR_materials_clearcoat",   "KHR_materials_sheen",             "KHR_materials_iridescence",
+      "KHR_materials_anisotropy",  "KHR_materials_diffuse_transmission", "KHR_texture_transform",
   };
   return list;
 }
+
+namespace {
+
+// One warning per optional extension the renderer does not implement (the file still renders).
+void warn_unsupported_extensions(const std::vector<std::string>& used, const std::string& name) {
+  const auto& supported = supported_gltf_extensions();
+  for (const std::string& ext : used) {
+    if (std::find(supported.begin(), supported.end(), ext) != supported.end()) continue;
+    if (ext == "KHR_materials_dispersion")
+      log::warn(name + ": KHR_materials_dispersion is not supported; rendered without dispersion");
+    else if (ext == "KHR_materials_variants")
+      log::warn(name + ": KHR_materials_variants is not supported; the default materials are used");
+    else
+      log::warn(name + ": glTF extension " + ext + " is not supported; ignored");
+  }
+}
+
+}  // namespace
 
 namespace {
 
@@ -123,6 +143,7 @@ class Converter {
     convert_lights();
     convert_nodes();
     for (const std::string& ext : m_model.extensionsUsed) m_scene.extensions_used.push_back(ext);
+    warn_unsupported_extensions(m_model.extensionsUsed, m_name);
   }
 
  private:
@@ -179,6 +200,7 @@ class Converter {
     if (attribute("NORMAL") >= 0) p.normals = gltf::to_vec3(gltf::read_floats(m_model, attribute("NORMAL"), 3, what + " NORMAL"));
     if (attribute("TANGENT") >= 0) p.tangents = gltf::to_vec4(gltf::read_floats(m_model, attribute("TANGENT"), 4, what + " TANGENT"));
     if (attribute("TEXCOORD_0") >= 0) p.uvs = gltf::to_vec2(gltf::read_floats(m_model, attribute("TEXCOORD_0"), 2, what + " TEXCOORD_0"));
+    if (attribute("TEXCOORD_1") >= 0) p.uvs1 = gltf::to_vec2(gltf::read_floats(m_model, attribute("TEXCOORD_1"), 2, what + " TEXCOORD_1"));
     if (source.indices >= 0) {
       p.indices = gltf::read_indices(m_model, source.indices, what + " indices");
     } else {

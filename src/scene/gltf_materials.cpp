@@ -2,20 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "core/error.h"
-#include "core/log.h"
+#include "scene/gltf_material_table.h"
 
 namespace hipr::gltf {
 namespace {
-
-float number(const tinygltf::Value& object, const char* key, float fallback) {
-  if (!object.IsObject() || !object.Has(key)) return fallback;
-  const tinygltf::Value& v = object.Get(key);
-  if (!v.IsNumber()) return fallback;
-  const double d = v.GetNumberAsDouble();
-  return std::isfinite(d) ? float(d) : fallback;
-}
 
 glm::vec3 color(const std::vector<double>& values, glm::vec3 fallback) {
   if (values.size() < 3) return fallback;
@@ -30,92 +23,85 @@ const tinygltf::Value* extension(const tinygltf::Material& m, const char* name) 
   return it == m.extensions.end() ? nullptr : &it->second;
 }
 
-// A checkerboard so a missing texture is obvious in the image, never silently black.
-Texture fallback_texture(const std::string& name, bool srgb) {
-  Texture t;
-  t.name = name + " (missing image)";
-  t.width = t.height = 8;
-  t.flags = abi::kTextureNearest | (srgb ? abi::kTextureSrgb : 0u);
-  for (uint32_t y = 0; y < 8; ++y)
-    for (uint32_t x = 0; x < 8; ++x) {
-      const bool magenta = ((x / 2) + (y / 2)) % 2 == 0;
-      t.rgba8.insert(t.rgba8.end(), {uint8_t(magenta ? 255 : 0), 0, uint8_t(magenta ? 255 : 0), 255});
+// Reads a row's number or colour (glTF's default when absent or not a number), clamped.
+glm::vec3 factor(const tinygltf::Value& ext, const FactorRow& row) {
+  glm::vec3 v = row.fallback;
+  if (ext.Has(row.key)) {
+    const tinygltf::Value& value = ext.Get(row.key);
+    if (row.components == 1 && value.IsNumber()) {
+      v.x = float(value.GetNumberAsDouble());
+    } else if (row.components == 3 && value.IsArray() && value.ArrayLen() >= 3) {
+      for (int k = 0; k < 3; ++k) v[k] = float(value.Get(k).GetNumberAsDouble());
     }
-  return t;
-}
-
-uint32_t wrap_flags(int wrap, uint32_t clamp_bit, uint32_t mirror_bit) {
-  if (wrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return clamp_bit;
-  if (wrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return mirror_bit;
-  return 0;
-}
-
-bool to_rgba8(const tinygltf::Image& image, std::vector<uint8_t>& out) {
-  const size_t pixels = size_t(image.width) * size_t(image.height);
-  const int comps = image.component;
-  const int bytes = image.bits / 8;
-  if (image.width <= 0 || image.height <= 0 || comps < 1 || comps > 4 || (bytes != 1 && bytes != 2) ||
-      image.image.size() < pixels * size_t(comps) * size_t(bytes))
-    return false;
-  out.resize(pixels * 4);
-  for (size_t i = 0; i < pixels; ++i) {
-    uint8_t c[4] = {0, 0, 0, 255};
-    for (int k = 0; k < comps; ++k) {
-      const size_t at = (i * size_t(comps) + size_t(k)) * size_t(bytes);
-      // 16-bit PNG data is stored little-endian by stb; keep the high byte.
-      c[k] = bytes == 1 ? image.image[at] : image.image[at + 1];
-    }
-    if (comps == 1) c[1] = c[2] = c[0];                    // grey
-    if (comps == 2) { c[3] = c[1]; c[1] = c[2] = c[0]; }   // grey + alpha
-    std::copy(c, c + 4, out.begin() + std::ptrdiff_t(i * 4));
+    for (int k = 0; k < row.components; ++k)
+      if (std::isnan(v[k])) v[k] = row.fallback[k];
   }
-  return true;
+  return glm::clamp(v, glm::vec3(row.lo), glm::vec3(row.hi));
+}
+
+void apply_extension_rows(const tinygltf::Material& m, abi::MaterialBlock& p, TextureTable& textures,
+                          const std::string& what) {
+  auto* bytes = reinterpret_cast<unsigned char*>(&p);
+  for (const FactorRow& row : factor_rows()) {
+    const tinygltf::Value* ext = extension(m, row.extension);
+    if (!ext) continue;
+    const glm::vec3 v = factor(*ext, row);
+    std::memcpy(bytes + row.field, &v, sizeof(float) * size_t(row.components));
+  }
+  for (const TextureRow& row : texture_rows()) {
+    const tinygltf::Value* ext = extension(m, row.extension);
+    if (!ext) continue;
+    const uint32_t index = textures.get(texture_reference(*ext, row.key), row.srgb, what);
+    std::memcpy(bytes + row.field, &index, sizeof index);
+  }
+}
+
+// alphaMode: OPAQUE ignores alpha; MASK thresholds it; BLEND becomes stochastic coverage.
+void apply_alpha_mode(const tinygltf::Material& m, abi::MaterialBlock& p, const std::string& what) {
+  const auto& factor = m.pbrMetallicRoughness.baseColorFactor;
+  const float alpha = factor.size() >= 4 && std::isfinite(factor[3]) ? std::clamp(float(factor[3]), 0.0f, 1.0f) : 1.0f;
+  p.alpha_cutoff = -1.0f;
+  if (m.alphaMode == "MASK") {
+    p.geometry_opacity = alpha;
+    p.alpha_cutoff = std::isfinite(m.alphaCutoff) ? std::max(float(m.alphaCutoff), 0.0f) : 0.5f;
+  } else if (m.alphaMode == "BLEND") {
+    p.geometry_opacity = alpha;
+  } else if (m.alphaMode.empty() || m.alphaMode == "OPAQUE") {
+    p.geometry_opacity = 1.0f;
+    p.flags |= abi::kMaterialIgnoreTextureAlpha;
+  } else {
+    throw InputError(what + " has unknown alphaMode '" + m.alphaMode + "' (expected OPAQUE, MASK or BLEND)");
+  }
+}
+
+// The rules of gltf_material_table.cpp that are more than a copy.
+void apply_extension_rules(const tinygltf::Material& m, abi::MaterialBlock& p) {
+  const tinygltf::Value* volume = extension(m, "KHR_materials_volume");
+  const bool thick = volume && volume->Has("thicknessFactor") && volume->Get("thicknessFactor").IsNumber() &&
+                     volume->Get("thicknessFactor").GetNumberAsDouble() > 0.0;
+  if (!thick) {
+    p.flags |= abi::kMaterialThinWalled;
+    p.transmission_color = p.base_color;
+    p.transmission_depth = 0.0f;
+  } else if (!std::isfinite(p.transmission_depth)) {
+    p.transmission_color = glm::vec3(1.0f);  // no absorption
+    p.transmission_depth = 0.0f;
+  }
+  if (extension(m, "KHR_materials_clearcoat")) {
+    p.coat_ior = 1.5f;
+    p.coat_color = glm::vec3(1.0f);
+    p.coat_darkening = 0.0f;
+    const tinygltf::Value& coat = *extension(m, "KHR_materials_clearcoat");
+    if (coat.Has("clearcoatNormalTexture") && coat.Get("clearcoatNormalTexture").Has("scale")) {
+      const double scale = coat.Get("clearcoatNormalTexture").Get("scale").GetNumberAsDouble();
+      if (std::isfinite(scale)) p.coat_normal_scale = float(scale);
+    }
+  }
+  if (extension(m, "KHR_materials_sheen"))
+    p.fuzz_weight = (glm::length(p.fuzz_color) > 0.0f || p.sheen_color_texture != abi::kInvalidIndex) ? 1.0f : 0.0f;
 }
 
 }  // namespace
-
-uint32_t TextureTable::get(int texture, bool srgb, const std::string& what) {
-  if (texture < 0) return abi::kInvalidIndex;
-  for (size_t i = 0; i < m_keys.size(); ++i)
-    if (m_keys[i] == std::make_pair(texture, srgb)) return m_values[i];
-  if (size_t(texture) >= m_model.textures.size())
-    throw InputError(what + " references missing texture " + std::to_string(texture));
-  const tinygltf::Texture& source = m_model.textures[size_t(texture)];
-
-  Texture t;
-  t.name = source.name.empty() ? "texture " + std::to_string(texture) : source.name;
-  t.flags = srgb ? abi::kTextureSrgb : 0u;
-  if (source.sampler >= 0) {
-    if (size_t(source.sampler) >= m_model.samplers.size())
-      throw InputError(what + ": texture " + std::to_string(texture) + " references missing sampler");
-    const tinygltf::Sampler& s = m_model.samplers[size_t(source.sampler)];
-    t.flags |= wrap_flags(s.wrapS, abi::kTextureClampU, abi::kTextureMirrorU);
-    t.flags |= wrap_flags(s.wrapT, abi::kTextureClampV, abi::kTextureMirrorV);
-    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) t.flags |= abi::kTextureNearest;
-  }
-  bool ok = false;
-  if (source.source >= 0 && size_t(source.source) < m_model.images.size()) {
-    const tinygltf::Image& image = m_model.images[size_t(source.source)];
-    ok = to_rgba8(image, t.rgba8);
-    t.width = uint32_t(std::max(image.width, 0));
-    t.height = uint32_t(std::max(image.height, 0));
-    if (!ok) {
-      const std::string where = image.uri.empty() ? std::to_string(source.source) : "'" + image.uri + "'";
-      log::warn(what + ": texture image " + where + " could not be read; rendering a magenta checkerboard instead");
-    }
-  } else if (source.source >= 0) {
-    throw InputError(what + ": texture " + std::to_string(texture) + " references missing image " + std::to_string(source.source));
-  } else {
-    log::warn(what + ": texture " + std::to_string(texture) + " has no image; rendering a magenta checkerboard instead");
-  }
-  if (!ok) t = fallback_texture(t.name, srgb);
-
-  m_scene.textures.push_back(std::move(t));
-  const uint32_t index = uint32_t(m_scene.textures.size() - 1);
-  m_keys.emplace_back(texture, srgb);
-  m_values.push_back(index);
-  return index;
-}
 
 Material convert_material(const tinygltf::Material& m, size_t index, TextureTable& textures,
                           const std::string& file) {
@@ -130,28 +116,17 @@ Material convert_material(const tinygltf::Material& m, size_t index, TextureTabl
   p.base_weight = 1.0f;
   p.base_metalness = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
   p.specular_roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
-  const float alpha = pbr.baseColorFactor.size() >= 4 ? float(pbr.baseColorFactor[3]) : 1.0f;
-  p.geometry_opacity = m.alphaMode == "OPAQUE" ? 1.0f : std::clamp(alpha, 0.0f, 1.0f);
-  p.base_color_texture = textures.get(pbr.baseColorTexture.index, true, what);
-  p.metallic_roughness_texture = textures.get(pbr.metallicRoughnessTexture.index, false, what);
-  p.normal_texture = textures.get(m.normalTexture.index, false, what);
+  p.base_color_texture = textures.get(texture_reference(pbr.baseColorTexture), true, what);
+  p.metallic_roughness_texture = textures.get(texture_reference(pbr.metallicRoughnessTexture), false, what);
+  p.normal_texture = textures.get(texture_reference(m.normalTexture), false, what);
   p.normal_scale = float(m.normalTexture.scale);
-  p.emission_texture = textures.get(m.emissiveTexture.index, true, what);
-
+  p.emission_texture = textures.get(texture_reference(m.emissiveTexture), true, what);
   // Emission in nits: emissiveFactor (colour) x KHR_materials_emissive_strength (luminance).
   p.emission_color = color(m.emissiveFactor, glm::vec3(0.0f));
   p.emission_luminance = 1.0f;
-  if (const auto* ext = extension(m, "KHR_materials_emissive_strength"))
-    p.emission_luminance = std::max(number(*ext, "emissiveStrength", 1.0f), 0.0f);
-  if (const auto* ext = extension(m, "KHR_materials_specular")) {
-    p.specular_weight = std::max(number(*ext, "specularFactor", 1.0f), 0.0f);
-    if (ext->Has("specularColorFactor") && ext->Get("specularColorFactor").IsArray()) {
-      const tinygltf::Value& c = ext->Get("specularColorFactor");
-      for (int k = 0; k < 3 && size_t(k) < c.ArrayLen(); ++k)
-        p.specular_color[k] = std::max(float(c.Get(k).GetNumberAsDouble()), 0.0f);
-    }
-  }
-  if (const auto* ext = extension(m, "KHR_materials_ior")) p.specular_ior = std::max(number(*ext, "ior", 1.5f), 1.0f);
+  apply_alpha_mode(m, p, what);
+  apply_extension_rows(m, p, textures, what);
+  apply_extension_rules(m, p);
   if (m.doubleSided) p.flags |= abi::kMaterialDoubleSided;
   return out;
 }

@@ -37,6 +37,7 @@ void make_flat(MeshPrimitive& p) {
       flat.positions.push_back(p.positions[i]);
       flat.normals.push_back(n);
       flat.uvs.push_back(p.uvs.empty() ? glm::vec2(0) : p.uvs[i]);
+      flat.uvs1.push_back(p.uvs1.empty() ? glm::vec2(0) : p.uvs1[i]);
       if (!p.tangents.empty()) flat.tangents.push_back(p.tangents[i]);
       flat.indices.push_back(uint32_t(3 * t + size_t(k)));
     }
@@ -98,11 +99,13 @@ void complete_primitive(MeshPrimitive& p, const std::string& what) {
       throw InputError(what + ": index " + std::to_string(i) + " >= vertex count " + std::to_string(vertices));
   }
   if (!p.uvs.empty() && p.uvs.size() != vertices) throw InputError(what + ": TEXCOORD_0 count differs from POSITION");
+  if (!p.uvs1.empty() && p.uvs1.size() != vertices) throw InputError(what + ": TEXCOORD_1 count differs from POSITION");
   if (!p.normals.empty() && p.normals.size() != vertices) throw InputError(what + ": NORMAL count differs from POSITION");
   if (!p.tangents.empty() && p.tangents.size() != vertices) throw InputError(what + ": TANGENT count differs from POSITION");
 
   if (p.normals.empty()) make_flat(p);
   if (p.uvs.empty()) p.uvs.assign(p.positions.size(), glm::vec2(0));
+  if (p.uvs1.empty()) p.uvs1.assign(p.positions.size(), glm::vec2(0));
 
   // Unusable normals (zero, NaN) fall back to the face normal of a triangle using the vertex.
   std::vector<glm::vec3> fallback(p.positions.size(), glm::vec3(0));

@@ -23,7 +23,7 @@ abi::MaterialBlock default_material_params() {
   m.coat_color = glm::vec3(1.0f);
   m.fuzz_color = glm::vec3(1.0f);
   m.fuzz_roughness = 0.5f;
-  m.thin_film_thickness = 0.5f;
+  m.thin_film_thickness = 500.0f;  // nm (OpenPBR's default 0.5 um)
   m.thin_film_ior = 1.4f;
   m.emission_luminance = 0.0f;
   m.emission_color = glm::vec3(1.0f);
@@ -34,7 +34,22 @@ abi::MaterialBlock default_material_params() {
   m.metallic_roughness_texture = abi::kInvalidIndex;
   m.normal_texture = abi::kInvalidIndex;
   m.emission_texture = abi::kInvalidIndex;
+  m.alpha_cutoff = -1.0f;
+  m.coat_normal_scale = 1.0f;
+  m.thin_film_thickness_min = 0.0f;
+  for (uint32_t* texture : {&m.transmission_texture, &m.clearcoat_texture, &m.clearcoat_roughness_texture,
+                            &m.clearcoat_normal_texture, &m.sheen_color_texture, &m.sheen_roughness_texture,
+                            &m.specular_texture, &m.specular_color_texture, &m.iridescence_texture,
+                            &m.iridescence_thickness_texture, &m.anisotropy_texture})
+    *texture = abi::kInvalidIndex;
   return m;
+}
+
+bool material_is_opaque(const abi::MaterialBlock& m) {
+  // A MASK material is tested even at full opacity: its texture alpha may cut it out.
+  if (m.alpha_cutoff >= 0.0f) return false;
+  const bool texture_alpha = m.base_color_texture != abi::kInvalidIndex && !(m.flags & abi::kMaterialIgnoreTextureAlpha);
+  return m.geometry_opacity >= 1.0f && !texture_alpha;
 }
 
 glm::mat4 Scene::world_transform(uint32_t node) const {

@@ -82,8 +82,9 @@ AccelerationStructure build_blas(const Context& ctx, const std::vector<TriangleG
   for (const TriangleGeometry& g : geometries) {
     VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
     geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
-    // Opaque: no any-hit work; cutout opacity is resolved in the shader's query loop later.
-    geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+    // Non-opaque geometry stops ray queries at candidates, where the shader's alpha test
+    // decides (shaders/common/cutout.glsl).
+    geometry.flags = g.opaque ? VK_GEOMETRY_OPAQUE_BIT_KHR : 0;
     auto& tri = geometry.geometry.triangles;
     tri.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
     tri.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;

@@ -41,6 +41,8 @@ struct TriangleGeometry {
   uint32_t vertex_count;
   VkDeviceAddress indices;    // address of the first index (uint32)
   uint32_t triangle_count;
+  // Opaque geometry never reaches the shader's candidate loop (no alpha test): the fast path.
+  bool opaque = true;
 };
 
 AccelerationStructure build_blas(const Context& ctx, const std::vector<TriangleGeometry>& geometries);

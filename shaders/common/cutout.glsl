@@ -1,0 +1,60 @@
+// Opacity cutout (glTF alphaMode MASK / BLEND, OpenPBR geometry_opacity) inside ray queries.
+// Geometry whose material needs no test is VK_GEOMETRY_OPAQUE_BIT_KHR and never reaches the
+// candidate loop; the rest stops there and is confirmed only where the test passes. Every
+// query of the renderer (closest hit, shadow, discovery blocker, stage 1) runs this one loop.
+// Needs bindings.glsl (scene buffers) and textures.glsl.
+#ifndef HIPR_CUTOUT_GLSL
+#define HIPR_CUTOUT_GLSL
+
+#include "rng.glsl"
+#include "vertices.glsl"
+
+// A uniform number in [0,1) fixed by the ray and the triangle: the same ray makes the same
+// choice whatever tile order or dispatch size produced it, so renders stay deterministic.
+float cutout_random(vec3 origin, vec3 direction, uint record, uint primitive) {
+  const uvec4 h = rng_hash4(uvec4(floatBitsToUint(origin), primitive));
+  return float(rng_hash4(uvec4(floatBitsToUint(direction), record) ^ h).x >> 8u) * (1.0 / 16777216.0);
+}
+
+// Opacity at a point of the triangle: geometry_opacity x base colour texture alpha (unless
+// alphaMode OPAQUE). Returns the material's alpha_cutoff in `cutoff`.
+float cutout_opacity(uint record, uint primitive, vec2 bary, out float cutoff) {
+  const GeometryRecord g = b_geometries[record];
+  float opacity = b_materials[g.materialIndex].geometry_opacity;
+  const uint texture = b_materials[g.materialIndex].base_color_texture;
+  if (texture != kInvalidIndex && (b_materials[g.materialIndex].flags & kMaterialIgnoreTextureAlpha) == 0u)
+    opacity *= sample_texture(texture, interpolate_uv(triangle_vertices(g, primitive), bary)).a;
+  cutoff = b_materials[g.materialIndex].alpha_cutoff;
+  return opacity;
+}
+
+// Whether a ray stops at this point: the opacity thresholded at alpha_cutoff (MASK) or, with no
+// cutoff, a stop with probability opacity (stochastic BLEND: the right coverage on average).
+bool cutout_hit(uint record, uint primitive, vec2 bary, vec3 origin, vec3 direction) {
+  float cutoff;
+  const float opacity = cutout_opacity(record, primitive, bary, cutoff);
+  if (cutoff >= 0.0) return opacity >= cutoff;
+  return cutout_random(origin, direction, record, primitive) < opacity;
+}
+
+// The mean of cutout_hit over rays: what light sampling weights an emitter's radiance by, so
+// it agrees with BSDF sampling, whose rays find the emitter only where cutout_hit lets them.
+float cutout_coverage(uint record, uint primitive, vec2 bary) {
+  float cutoff;
+  const float opacity = cutout_opacity(record, primitive, bary, cutoff);
+  return cutoff >= 0.0 ? (opacity >= cutoff ? 1.0 : 0.0) : opacity;
+}
+
+// Runs an initialised query to its end, confirming the candidate triangles that pass the test.
+void cutout_proceed(rayQueryEXT query, vec3 origin, vec3 direction) {
+  while (rayQueryProceedEXT(query)) {
+    if (rayQueryGetIntersectionTypeEXT(query, false) != gl_RayQueryCandidateIntersectionTriangleEXT) continue;
+    const uint record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false)) +
+                        uint(rayQueryGetIntersectionGeometryIndexEXT(query, false));
+    if (cutout_hit(record, uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, false)),
+                   rayQueryGetIntersectionBarycentricsEXT(query, false), origin, direction))
+      rayQueryConfirmIntersectionEXT(query);
+  }
+}
+
+#endif

@@ -1,0 +1,16 @@
+// Vertex data of one triangle from the shared buffers (needs bindings.glsl).
+#ifndef HIPR_VERTICES_GLSL
+#define HIPR_VERTICES_GLSL
+
+// Vertex indices of a primitive, already offset into the shared vertex buffers.
+uvec3 triangle_vertices(GeometryRecord g, uint primitive) {
+  const uint base = g.firstIndex + 3u * primitive;
+  return uvec3(b_indices[base], b_indices[base + 1u], b_indices[base + 2u]) + g.vertexOffset;
+}
+
+// Both UV sets at once (TEXCOORD_0 in xy, TEXCOORD_1 in zw): one interpolation for either.
+vec4 interpolate_uv(uvec3 v, vec2 bary) {
+  return b_uvs[v.x] * (1.0 - bary.x - bary.y) + b_uvs[v.y] * bary.x + b_uvs[v.z] * bary.y;
+}
+
+#endif

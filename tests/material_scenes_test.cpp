@@ -1,0 +1,55 @@
+// The real-world material test scenes of ../shared/scenes (skipped when absent), each rendered
+// small under a studio environment: every sample finite, and a picture, not a black frame.
+// The full-size renders these stand for are looked at by hand (see the README's commands).
+#include <gtest/gtest.h>
+
+#include "hipr/renderer.h"
+#include "hipr/scene_loader.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+
+struct MaterialScene {
+  const char* name;  // folder in ../shared/scenes
+  const char* file;
+};
+
+void PrintTo(const MaterialScene& s, std::ostream* os) { *os << s.name; }
+
+class MaterialScenes : public ::testing::TestWithParam<MaterialScene> {};
+
+TEST_P(MaterialScenes, RenderWithoutNonFiniteSamples) {
+  if (!test::shared_scenes_available()) GTEST_SKIP() << "../shared/scenes is not available";
+  const MaterialScene& param = GetParam();
+  SceneLoadOptions options;
+  options.environment = test::shared_scene("EnvMaps/studio_small_03_1k.hdr");
+  const Scene scene = load_scene(test::shared_scene(std::string(param.name) + "/" + param.file), options);
+  RenderSettings s;
+  s.width = s.height = 48;
+  s.max_depth = 8;
+  s.seed = 9;
+  Renderer renderer(test::context(), scene, s);
+  renderer.add_samples_full_frame(4);
+  EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
+  const ImageRGB image = renderer.image();
+  ASSERT_TRUE(test::all_finite(image));
+  EXPECT_GT(test::mean(image), 0.01) << "a black frame";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Shared, MaterialScenes,
+    ::testing::Values(MaterialScene{"MetalRoughSpheresNoTextures", "MetalRoughSpheresNoTextures.glb"},
+                      MaterialScene{"TransmissionTest", "TransmissionTest.glb"},
+                      MaterialScene{"TransmissionRoughnessTest", "TransmissionRoughnessTest.glb"},
+                      MaterialScene{"AttenuationTest", "AttenuationTest.glb"},
+                      MaterialScene{"ClearCoatTest", "ClearCoatTest.glb"},
+                      MaterialScene{"SpecularTest", "SpecularTest.glb"},
+                      MaterialScene{"SheenChair", "SheenChair.gltf"},
+                      MaterialScene{"EmissiveStrengthTest", "EmissiveStrengthTest.glb"},
+                      MaterialScene{"LightsPunctualLamp", "LightsPunctualLamp.gltf"},
+                      MaterialScene{"GlassVaseFlowers", "GlassVaseFlowers.glb"}),
+    [](const auto& test_info) { return std::string(test_info.param.name); });
+
+}  // namespace
+}  // namespace hipr
