@@ -1,5 +1,5 @@
 // The OpenPBR 1.1 surface as one BSDF in the local shading frame (n = +Z, x = tangent), wo.z > 0.
-// Shared with C++ (tests/bsdf_test.cpp runs these very functions).
+// Shared with C++ (tests/openpbr_test.cpp runs these very functions).
 //
 // Layers, top to bottom, combined by albedo scaling with generated albedo tables:
 //   fuzz     Charlie sheen (fuzz.glsl), weight F, colour; below it everything is scaled by
@@ -25,10 +25,9 @@
 //            of it is transmitted diffusely to the far side).
 // Approximations, documented: the coat tint is applied once (its value at normal incidence);
 // thin film changes the reflected colour but not the energy left to the layers below, and
-// leaves metals alone;
-// the specular interface under a coat keeps its own index (not specular_ior / coat_ior);
-// anisotropic lobes read the isotropic tables at one stand-in alpha (ggx_alpha_for_tables);
-// refraction leaves out the
+// leaves metals alone; the specular interface under a coat keeps its own index (not
+// specular_ior / coat_ior); the coat follows the base's shading normal; anisotropic lobes read
+// the isotropic tables at one stand-in alpha (ggx_alpha_for_tables); refraction leaves out the
 // 1/eta^2 radiance scaling (it cancels for paths that enter and leave an object).
 #ifndef HIPR_OPENPBR_GLSL
 #define HIPR_OPENPBR_GLSL
@@ -56,7 +55,7 @@ struct OpenPbrParams {
   float metalness;
   float diffuseRoughness;   // base_diffuse_roughness
   vec3 specularColor;
-  float specularWeight;     // scales the metal's Fresnel (the dielectric's is folded into eta)
+  float specularWeight;     // scales the metal's Fresnel, up to 1 (the dielectric's is folded into eta)
   vec2 alpha;               // specular GGX alpha along tangent and bitangent
   float eta;                // relative index across the base interface seen from wo, specular_weight applied
   float transmission;       // transmission_weight
@@ -189,7 +188,7 @@ HIPR_FN vec3 openpbr_base_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, v
   vec3 result = vec3(0.0f);
   const bool reflection = wi.z > 0.0f;
   if (reflection && p.metalness > 0.0f && p.specularWeight > 0.0f)
-    result += (p.metalness * p.specularWeight) * metal_eval_cos(p.baseColor, p.specularColor, p.alpha, wo, wi);
+    result += (p.metalness * min(p.specularWeight, 1.0f)) * metal_eval_cos(p.baseColor, p.specularColor, p.alpha, wo, wi);
   if (p.metalness >= 1.0f) return result;
 
   vec3 dielectric = vec3(0.0f);

@@ -26,7 +26,7 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
   app.add_option("--w-path", o.w_path, "HiPR path weights: direct,indirect,caustic")->delimiter(',')->expected(3);
   app.add_option("--w-occlusion", o.render.hipr.w_occlusion, "HiPR occlusion priority")->capture_default_str();
   app.add_option("--eps", o.render.hipr.depth_epsilon, "HiPR relative depth tolerance")->capture_default_str();
-  app.add_flag("!--uber-kernel", o.render.specialize_kernel,
+  app.add_flag("--uber-kernel", o.uber_kernel,
                "Compile every BSDF feature into the kernel instead of only those the scene uses");
   app.add_flag("--validate", o.validate, "Enable Vulkan validation layers; any validation error fails the run");
   app.add_option("--device", o.device, "Use the Vulkan device whose name contains this text");
@@ -70,6 +70,7 @@ void apply_preset(const std::string& name, HiprParameters& h) {
 }  // namespace
 
 void validate_common_options(CommonOptions& o) {
+  o.render.specialize_kernel = !o.uber_kernel;
   const auto require = [](bool ok, const std::string& message) {
     if (!ok) throw InputError(message);
   };
