@@ -56,7 +56,7 @@ TEST_P(EveryPolicy, ConvergesToTheFullFrameImageOfTheEditedScene) {
 
 INSTANTIATE_TEST_SUITE_P(Policies, EveryPolicy,
                          ::testing::Values(Policy::Hipr, Policy::Full, Policy::Scanline, Policy::Spiral, Policy::Random),
-                         [](const auto& info) { return policy_name(info.param); });
+                         [](const auto& test_info) { return policy_name(test_info.param); });
 
 TEST(Scheduler, FiftyRapidEditsEndInExactlyTheFinalScene) {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
