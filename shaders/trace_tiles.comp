@@ -105,13 +105,12 @@ vec3 leave_surface(vec3 position, vec3 geometricNormal, vec3 direction) {
   return offset_ray_origin(position, dot(direction, geometricNormal) >= 0.0 ? geometricNormal : -geometricNormal);
 }
 
-vec3 direct_light(SurfaceHit surface, OpenPbrParams params, BsdfFrame frame, vec3 wo, vec4 u, float occlusionWeight,
-                  inout uint rays) {
+vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWeight, inout uint rays) {
   const LightSample ls = sample_light(surface.position, u);
   if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
-  const vec3 f = bsdf_eval(params, frame, wo, ls.direction);
+  const vec3 f = bsdf_eval(bsdf, ls.direction);
   if (max3(f) <= 0.0) return vec3(0.0);
-  const vec3 origin = leave_surface(surface.position, frame.geometricNormal, ls.direction);
+  const vec3 origin = leave_surface(surface.position, surface.geometricNormal, ls.direction);
   vec3 direction = ls.direction;
   float tMax = kFloatMax;
   if (ls.distance < kFloatMax) {
@@ -137,7 +136,7 @@ vec3 direct_light(SurfaceHit surface, OpenPbrParams params, BsdfFrame frame, vec
 #endif
   const float weight = (ls.isDelta || HIPR_LIGHT_SAMPLING == kLightSamplingLightOnly)
                            ? 1.0
-                           : power_heuristic(ls.pdf, bsdf_pdf(params, frame, wo, ls.direction));
+                           : power_heuristic(ls.pdf, bsdf_pdf(bsdf, ls.direction));
   return f * ls.radiance * (weight / ls.pdf);
 }
 
@@ -198,13 +197,12 @@ bool path_step(inout PathState p, inout uint rays) {
   }
   if (p.depth >= u_frame.maxDepth) return true;
 
-  const BsdfFrame frame = BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent);
+  const BsdfPoint bsdf = bsdf_point(params, BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent), wo);
   if (u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly)
-    p.radiance += p.throughput * direct_light(surface, params, frame, wo, rng_uniform4(p.rng, p.depth, 1u),
-                                              luminance(p.throughput), rays);
+    p.radiance += p.throughput * direct_light(surface, bsdf, rng_uniform4(p.rng, p.depth, 1u), luminance(p.throughput), rays);
 
   const vec4 u = rng_uniform4(p.rng, p.depth, 0u);
-  const BsdfSample bs = bsdf_sample(params, frame, wo, u.xyz);
+  const BsdfSample bs = bsdf_sample(bsdf, u.xyz);
 #if HIPR_DISCOVERY
   if (p.depth >= 1u) {
     const uint pathClass = p.depth == 1u ? kPathDirect

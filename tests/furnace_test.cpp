@@ -15,10 +15,7 @@ ImageRGB render(const Scene& scene, uint32_t spp, uint32_t max_depth = 16) {
   s.width = s.height = 32;
   s.max_depth = max_depth;
   s.seed = 3;
-  Renderer renderer(test::context(), scene, s);
-  renderer.add_samples_full_frame(spp);
-  EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
-  return renderer.image();
+  return test::render_finite(scene, s, spp);
 }
 
 void expect_white(const ImageRGB& image, double mean_tolerance, double pixel_tolerance) {

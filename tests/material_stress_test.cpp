@@ -73,10 +73,7 @@ TEST_P(MaterialStress, NoNonFiniteSamples) {
   s.width = s.height = 24;
   s.max_depth = 24;
   s.seed = 5;
-  Renderer renderer(test::context(), scene, s);
-  renderer.add_samples_full_frame(4);
-  EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
-  EXPECT_TRUE(test::all_finite(renderer.image()));
+  test::render_finite(scene, s, 4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Extremes, MaterialStress,

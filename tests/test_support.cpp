@@ -109,6 +109,15 @@ bool all_finite(const ImageRGB& image) {
   return true;
 }
 
+ImageRGB render_finite(const Scene& scene, const RenderSettings& settings, uint32_t spp) {
+  Renderer renderer(context(), scene, settings);
+  renderer.add_samples_full_frame(spp);
+  EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
+  ImageRGB image = renderer.image();
+  EXPECT_TRUE(all_finite(image));
+  return image;
+}
+
 }  // namespace hipr::test
 
 namespace hipr::test {

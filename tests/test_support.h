@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "hipr/renderer.h"
 #include "hipr/scene.h"
 #include "image/image_io.h"
 #include "vk/context.h"
@@ -34,6 +35,10 @@ std::vector<std::string> lines_of(const std::string& text);
 
 double mean(const ImageRGB& image, int channel = -1);  // channel -1: mean over RGB
 bool all_finite(const ImageRGB& image);
+
+// Renders `spp` samples per pixel over the whole frame and checks (non-fatally) that no sample
+// came out NaN or infinite and that the image is finite.
+ImageRGB render_finite(const Scene& scene, const RenderSettings& settings, uint32_t spp);
 
 }  // namespace hipr::test
 

@@ -2,7 +2,8 @@
 // points away from the surface toward the previous vertex, `wi` toward the next. The lobes
 // live in openpbr.glsl (local frame, shared with the C++ tests); this file moves directions
 // into the shading frame, keeps shading normals from leaking light through surfaces, and
-// reports the lobe class of every sample.
+// reports the lobe class of every sample. A shading point is prepared once (bsdf_point): its
+// frame, wo in that frame and the lobes' context serve every eval, pdf and sample there.
 #ifndef HIPR_BSDF_GLSL
 #define HIPR_BSDF_GLSL
 
@@ -14,6 +15,18 @@ struct BsdfFrame {
   vec3 tangent;          // anisotropy direction; any vector not along the normal otherwise
 };
 
+// One shading point seen from wo.
+struct BsdfPoint {
+  OpenPbrParams params;
+  OpenPbrContext context;
+  vec3 shadingNormal;
+  vec3 geometricNormal;
+  vec3 tangent;    // orthonormal shading basis: tangent, bitangent, shadingNormal
+  vec3 bitangent;
+  vec3 wo;         // world
+  vec3 woLocal;    // in the shading basis, lifted above the horizon (see bsdf_point)
+};
+
 struct BsdfSample {
   vec3 direction;
   vec3 weight;  // f * |cos| / pdf
@@ -22,81 +35,77 @@ struct BsdfSample {
   bool isDelta;  // no density: no MIS with light sampling, and light sampling never finds it
 };
 
-void bsdf_basis(BsdfFrame frame, out vec3 t, out vec3 b) {
-  const vec3 n = frame.shadingNormal;
-  t = frame.tangent - n * dot(n, frame.tangent);
+vec3 bsdf_to_local(BsdfPoint s, vec3 v) {
+  return vec3(dot(v, s.tangent), dot(v, s.bitangent), dot(v, s.shadingNormal));
+}
+
+vec3 bsdf_to_world(BsdfPoint s, vec3 v) { return v.x * s.tangent + v.y * s.bitangent + v.z * s.shadingNormal; }
+
+BsdfPoint bsdf_point(OpenPbrParams params, BsdfFrame frame, vec3 wo) {
+  BsdfPoint s;
+  s.params = params;
+  s.shadingNormal = frame.shadingNormal;
+  s.geometricNormal = frame.geometricNormal;
+  vec3 t = frame.tangent - frame.shadingNormal * dot(frame.shadingNormal, frame.tangent);
   if (dot(t, t) < 1.0e-10) {
-    make_basis(n, t, b);
-    return;
+    make_basis(frame.shadingNormal, s.tangent, s.bitangent);
+  } else {
+    s.tangent = normalize(t);
+    s.bitangent = cross(frame.shadingNormal, s.tangent);
   }
-  t = normalize(t);
-  b = cross(n, t);
-}
-
-vec3 bsdf_to_local(BsdfFrame frame, vec3 v) {
-  vec3 t, b;
-  bsdf_basis(frame, t, b);
-  return vec3(dot(v, t), dot(v, b), dot(v, frame.shadingNormal));
-}
-
-vec3 bsdf_to_world(BsdfFrame frame, vec3 v) {
-  vec3 t, b;
-  bsdf_basis(frame, t, b);
-  return v.x * t + v.y * b + v.z * frame.shadingNormal;
-}
-
-// wo as the lobes see it: a shading normal can face slightly away from a wo that the
-// geometric normal accepts; lift it just above the horizon instead of losing the sample.
-vec3 bsdf_local_wo(BsdfFrame frame, vec3 wo) {
-  vec3 w = bsdf_to_local(frame, wo);
+  s.wo = wo;
+  // A shading normal can face slightly away from a wo that the geometric normal accepts; lift
+  // wo just above the horizon instead of losing the sample.
+  vec3 w = bsdf_to_local(s, wo);
   w.z = max(w.z, 1.0e-4f);
-  return normalize(w);
+  s.woLocal = normalize(w);
+  s.context = openpbr_context(params, s.woLocal);
+  return s;
 }
 
 // A direction counts only when the geometric and the shading normal agree on its side.
-bool bsdf_sides_agree(BsdfFrame frame, vec3 wi_world, vec3 wi_local) {
-  const float g = dot(wi_world, frame.geometricNormal);
+bool bsdf_sides_agree(BsdfPoint s, vec3 wi_world, vec3 wi_local) {
+  const float g = dot(wi_world, s.geometricNormal);
   return g > 0.0 ? wi_local.z > 0.0 : (g < 0.0 && wi_local.z < 0.0);
 }
 
 // f(wo, wi) * |cos(wi, n_s)|.
-vec3 bsdf_eval(OpenPbrParams p, BsdfFrame frame, vec3 wo, vec3 wi) {
-  const vec3 wi_local = bsdf_to_local(frame, wi);
-  if (!bsdf_sides_agree(frame, wi, wi_local)) return vec3(0.0);
-  return openpbr_eval_cos(p, bsdf_local_wo(frame, wo), wi_local);
+vec3 bsdf_eval(BsdfPoint s, vec3 wi) {
+  const vec3 wi_local = bsdf_to_local(s, wi);
+  if (!bsdf_sides_agree(s, wi, wi_local)) return vec3(0.0);
+  return openpbr_eval_cos(s.params, s.context, s.woLocal, wi_local);
 }
 
-float bsdf_pdf(OpenPbrParams p, BsdfFrame frame, vec3 wo, vec3 wi) {
-  const vec3 wi_local = bsdf_to_local(frame, wi);
-  if (!bsdf_sides_agree(frame, wi, wi_local)) return 0.0;
-  return openpbr_pdf(p, bsdf_local_wo(frame, wo), wi_local);
+float bsdf_pdf(BsdfPoint s, vec3 wi) {
+  const vec3 wi_local = bsdf_to_local(s, wi);
+  if (!bsdf_sides_agree(s, wi, wi_local)) return 0.0;
+  return openpbr_pdf(s.params, s.context, s.woLocal, wi_local);
 }
 
-BsdfSample bsdf_sample(OpenPbrParams p, BsdfFrame frame, vec3 wo, vec3 u) {
-  BsdfSample s;
-  s.pdf = 0.0;
-  s.weight = vec3(0.0);
-  s.isDelta = false;
-  const vec3 wo_local = bsdf_local_wo(frame, wo);
-  const OpenPbrSample ls = openpbr_sample(p, wo_local, u.xy, u.z);
-  s.lobe = ls.lobe;
-  if (!ls.valid) return s;
+BsdfSample bsdf_sample(BsdfPoint s, vec3 u) {
+  BsdfSample b;
+  b.pdf = 0.0;
+  b.weight = vec3(0.0);
+  b.isDelta = false;
+  const OpenPbrSample ls = openpbr_sample(s.params, s.context, s.woLocal, u.xy, u.z);
+  b.lobe = ls.lobe;
+  if (!ls.valid) return b;
   if (ls.delta) {  // straight through, exactly: -wo needs no frame
-    s.direction = -wo;
-    s.isDelta = true;
-    s.pdf = 1.0;
-    s.weight = ls.deltaWeight;
-    return s;
+    b.direction = -s.wo;
+    b.isDelta = true;
+    b.pdf = 1.0;
+    b.weight = ls.deltaWeight;
+    return b;
   }
-  s.direction = bsdf_to_world(frame, ls.wi);
-  if (!bsdf_sides_agree(frame, s.direction, ls.wi)) return s;
-  s.pdf = openpbr_pdf(p, wo_local, ls.wi);
-  if (!(s.pdf > 0.0)) {
-    s.pdf = 0.0;
-    return s;
+  b.direction = bsdf_to_world(s, ls.wi);
+  if (!bsdf_sides_agree(s, b.direction, ls.wi)) return b;
+  b.pdf = openpbr_pdf(s.params, s.context, s.woLocal, ls.wi);
+  if (!(b.pdf > 0.0)) {
+    b.pdf = 0.0;
+    return b;
   }
-  s.weight = openpbr_eval_cos(p, wo_local, ls.wi) / s.pdf;
-  return s;
+  b.weight = openpbr_eval_cos(s.params, s.context, s.woLocal, ls.wi) / b.pdf;
+  return b;
 }
 
 #endif

@@ -115,6 +115,7 @@ HIPR_FN int dielectric_interface_sample(vec3 wo, float eta, vec2 alpha, vec2 u, 
 // Reflectance of a slab of two identical interfaces with Fresnel f, summing the inner
 // bounces incoherently: f + (1-f)^2 f / (1 - f^2) = 2f / (1 + f); the rest is transmitted.
 HIPR_FN float thin_slab_reflectance(float f) { return 2.0f * f / (1.0f + f); }
+HIPR_FN vec3 thin_slab_reflectance(vec3 f) { return 2.0f * f / (vec3(1.0f) + f); }  // per colour (thin film)
 
 HIPR_FN vec3 mirror_through_slab(vec3 w) { return vec3(w.x, w.y, -w.z); }
 

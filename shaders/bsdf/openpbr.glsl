@@ -196,8 +196,7 @@ HIPR_FN vec3 openpbr_base_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, v
   if (reflection && specular_reflects(p)) {
     const vec3 f = specular_fresnel(p, dot(wo, normalize(wo + wi)));
     vec3 amount = (1.0f - t) * f;
-    // A slab reflects 2F / (1 + F) of what reaches it (thin_slab_reflectance), per colour.
-    if (t > 0.0f) amount += (t / c.interfaceEnergy) * (p.thinWalled ? 2.0f * f / (vec3(1.0f) + f) : f);
+    if (t > 0.0f) amount += (t / c.interfaceEnergy) * (p.thinWalled ? thin_slab_reflectance(f) : f);
     dielectric += p.specularColor * amount * ggx_reflection_eval_cos(wo, wi, p.alpha);
   } else if (!reflection && t > 0.0f && specular_reflects(p)) {
     const float through = p.thinWalled ? thin_interface_eval_cos(wo, wi, p.eta, p.alpha)
@@ -214,10 +213,12 @@ HIPR_FN vec3 under_coat_scale(OpenPbrParams p, OpenPbrContext c, float mu_i) {
   return c.baseTint * (1.0f - max(c.coatEnergy, coat_energy(p, mu_i)));
 }
 
+// eval, pdf and sample come in two forms: given the context of wo (openpbr_context), so a
+// shading point computes it once for all of them, and a form that makes it (tests).
+
 // f(wo, wi) * |cos(wi)|; wi on either side.
-HIPR_FN vec3 openpbr_eval_cos(OpenPbrParams p, vec3 wo, vec3 wi) {
+HIPR_FN vec3 openpbr_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z == 0.0f) return vec3(0.0f);
-  const OpenPbrContext c = openpbr_context(p, wo);
   vec3 result = openpbr_base_eval_cos(p, c, wo, wi) * under_coat_scale(p, c, abs(wi.z));
   if (p.coat > 0.0f && wi.z > 0.0f) {
     const float f = fresnel_dielectric(dot(wo, normalize(wo + wi)), p.coatEta);
@@ -230,10 +231,13 @@ HIPR_FN vec3 openpbr_eval_cos(OpenPbrParams p, vec3 wo, vec3 wi) {
   return result;
 }
 
+HIPR_FN vec3 openpbr_eval_cos(OpenPbrParams p, vec3 wo, vec3 wi) {
+  return wo.z > 0.0f ? openpbr_eval_cos(p, openpbr_context(p, wo), wo, wi) : vec3(0.0f);
+}
+
 // Solid-angle pdf of openpbr_sample producing wi (delta events excluded).
-HIPR_FN float openpbr_pdf(OpenPbrParams p, vec3 wo, vec3 wi) {
+HIPR_FN float openpbr_pdf(OpenPbrParams p, OpenPbrContext c, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z == 0.0f) return 0.0f;
-  const OpenPbrContext c = openpbr_context(p, wo);
   float pdf = 0.0f;
   if (wi.z > 0.0f) {
     if (c.weights.x > 0.0f) pdf += c.weights.x * ggx_reflection_pdf(wo, wi, vec2(p.coatAlpha));
@@ -252,6 +256,10 @@ HIPR_FN float openpbr_pdf(OpenPbrParams p, vec3 wo, vec3 wi) {
   return pdf;
 }
 
+HIPR_FN float openpbr_pdf(OpenPbrParams p, vec3 wo, vec3 wi) {
+  return wo.z > 0.0f ? openpbr_pdf(p, openpbr_context(p, wo), wo, wi) : 0.0f;
+}
+
 // A sampled direction. A delta event (light passing an index-matched interface unbent) has no
 // density: `deltaWeight` is its f |cos| / probability, and eval/pdf never see it.
 struct OpenPbrSample {
@@ -266,7 +274,7 @@ HIPR_FN uint reflection_lobe_class(float alpha) { return alpha < kSpecularAlpha 
 
 // u picks the direction within a lobe; u_lobe picks the lobe, and what is left of it after the
 // pick makes the lobe's own discrete choices (reflect or refract, which side, which term).
-HIPR_FN OpenPbrSample openpbr_sample(OpenPbrParams p, vec3 wo, vec2 u, float u_lobe) {
+HIPR_FN OpenPbrSample openpbr_sample(OpenPbrParams p, OpenPbrContext c, vec3 wo, vec2 u, float u_lobe) {
   OpenPbrSample s;
   s.wi = vec3(0.0f, 0.0f, 1.0f);
   s.lobe = kLobeDiffuse;
@@ -274,7 +282,6 @@ HIPR_FN OpenPbrSample openpbr_sample(OpenPbrParams p, vec3 wo, vec2 u, float u_l
   s.delta = false;
   s.deltaWeight = vec3(0.0f);
   if (wo.z <= 0.0f) return s;
-  const OpenPbrContext c = openpbr_context(p, wo);
   const vec4 w = c.weights;
   float x = u_lobe;
   if (x < w.x) {
@@ -332,6 +339,10 @@ HIPR_FN OpenPbrSample openpbr_sample(OpenPbrParams p, vec3 wo, vec2 u, float u_l
   s.lobe = kLobeDiffuse;  // a broad sheen: HiPR weighs it as diffuse
   s.valid = s.wi.z > 0.0f;
   return s;
+}
+
+HIPR_FN OpenPbrSample openpbr_sample(OpenPbrParams p, vec3 wo, vec2 u, float u_lobe) {
+  return openpbr_sample(p, openpbr_context(p, wo), wo, u, u_lobe);  // no sample for wo.z <= 0
 }
 
 // Emission leaves from under the coat and the fuzz: what they reflect back and the coat's tint

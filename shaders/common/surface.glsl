@@ -11,7 +11,7 @@ struct SurfaceHit {
   vec3 geometricNormal;  // front side per glTF winding, unit
   vec3 shadingNormal;    // interpolated (and normal-mapped), unit, same side as geometricNormal
   vec3 vertexNormal;     // interpolated, before normal mapping, same side as geometricNormal
-  vec4 tangent;          // xyz: unit, orthogonal to vertexNormal (or 0); w: bitangent sign (glTF)
+  vec4 tangent;          // xyz: unit, orthogonal to vertexNormal (0 without normal map or anisotropy); w: bitangent sign
   vec4 uvs;              // TEXCOORD_0 in xy, TEXCOORD_1 in zw
   uint geometry;         // GeometryRecord index
   uint primitive;
@@ -56,10 +56,16 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   vec3 ns = normalMatrix * (b_normals[v.x] * b0 + b_normals[v.y] * bary.x + b_normals[v.z] * bary.y);
   ns = dot(ns, ns) > 0.0 ? normalize(ns) : ng;
   hit.uvs = interpolate_uv(v, bary);
-  const vec4 t = b_tangents[v.x] * b0 + b_tangents[v.y] * bary.x + b_tangents[v.z] * bary.y;
-  vec3 tangent = mat3(objectToWorld) * t.xyz;
-  tangent = tangent - ns * dot(ns, tangent);
-  hit.tangent = vec4(dot(tangent, tangent) > 1e-12 ? normalize(tangent) : vec3(0.0), t.w < 0.0 ? -1.0 : 1.0);
+  // Only normal maps and anisotropy need the tangent frame: other hits skip its three loads.
+  hit.tangent = vec4(0.0, 0.0, 0.0, 1.0);
+  if (b_materials[hit.material].normal_texture != kInvalidIndex ||
+      b_materials[hit.material].clearcoat_normal_texture != kInvalidIndex ||
+      (HIPR_FEATURE_ANISOTROPY != 0 && b_materials[hit.material].specular_anisotropy > 0.0)) {
+    const vec4 t = b_tangents[v.x] * b0 + b_tangents[v.y] * bary.x + b_tangents[v.z] * bary.y;
+    vec3 tangent = mat3(objectToWorld) * t.xyz;
+    tangent = tangent - ns * dot(ns, tangent);
+    hit.tangent = vec4(dot(tangent, tangent) > 1e-12 ? normalize(tangent) : vec3(0.0), t.w < 0.0 ? -1.0 : 1.0);
+  }
 
   // Materials are read field by field: copying the whole block costs loads on CPU devices.
   const uint normalTexture = b_materials[hit.material].normal_texture;
