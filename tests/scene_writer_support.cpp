@@ -58,7 +58,8 @@ void expect_same_scene(const Scene& want, const Scene& got, bool same_extensions
     const Material &a = want.materials[i], &b = got.materials[i];
     SCOPED_TRACE("material " + std::to_string(i) + " '" + a.name + "'");
     EXPECT_EQ(a.name, b.name);
-    for (const MaterialParameter& p : material_parameters()) EXPECT_EQ(field(a.params, p), field(b.params, p)) << p.name;
+    for (const MaterialParameter& p : material_parameters())
+      EXPECT_EQ(field(a.params, p), field(b.params, p)) << p.name;
     // Everything else of the block (flags, cutoff, scales, texture slots) too, to the byte.
     EXPECT_EQ(std::memcmp(&a.params, &b.params, sizeof(abi::MaterialBlock)), 0);
   }
@@ -129,7 +130,8 @@ std::vector<Edit> typical_edits(const Scene& scene) {
   const auto [lo, hi] = scene.bounds();
   const float size = glm::length(hi - lo);
   if (first_mesh >= 0)
-    edits.push_back(TransformEdit{"#" + std::to_string(first_mesh), glm::vec3(0.05f, 0.02f, -0.03f) * size, std::nullopt});
+    edits.push_back(
+        TransformEdit{"#" + std::to_string(first_mesh), glm::vec3(0.05f, 0.02f, -0.03f) * size, std::nullopt});
   if (last_mesh >= 0) edits.push_back(VisibilityEdit{"#" + std::to_string(last_mesh), false});
   edits.push_back(MaterialEdit{"#0",
                                {{"base_color", {0.2f, 0.4f, 0.6f}},

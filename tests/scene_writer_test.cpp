@@ -2,15 +2,16 @@
 // .gltf and .glb, in place and elsewhere), an unedited one as the same document, and bad
 // output paths fail cleanly with nothing left behind. Also the loader's side of it:
 // KHR_node_visibility and the hipr extras, validated.
+#include "hipr/scene_writer.h"
+
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstring>
 #include <fstream>
-
-#include <unistd.h>
-
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 
 #include "core/error.h"
 #include "core/file_util.h"
@@ -18,7 +19,6 @@
 #include "hipr/edits.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
-#include "hipr/scene_writer.h"
 #include "scene/material_parameters.h"
 #include "scene_writer_support.h"
 #include "test_support.h"
@@ -34,16 +34,33 @@ json read_json(const fs::path& file) {
   return json::parse(in);
 }
 
+// The JSON chunk (parsed) and BIN chunk of a .glb.
+std::pair<json, std::vector<unsigned char>> glb_chunks(const fs::path& file) {
+  const std::vector<unsigned char> bytes = read_file_bytes(file);
+  uint32_t json_length = 0, bin_length = 0;
+  std::memcpy(&json_length, bytes.data() + 12, 4);
+  const auto json_begin = bytes.begin() + 20;
+  json doc = json::parse(json_begin, json_begin + json_length);
+  std::vector<unsigned char> bin;
+  if (20 + json_length + 8 <= bytes.size()) {
+    std::memcpy(&bin_length, bytes.data() + 20 + json_length, 4);
+    bin.assign(json_begin + json_length + 8, json_begin + json_length + 8 + bin_length);
+  }
+  return {doc, bin};
+}
+
 std::vector<std::string> folder_listing(const fs::path& folder) {
   std::vector<std::string> names;
-  for (const auto& entry : fs::recursive_directory_iterator(folder)) names.push_back(entry.path().lexically_relative(folder).string());
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    names.push_back(entry.path().lexically_relative(folder).string());
   std::sort(names.begin(), names.end());
   return names;
 }
 
-// Loads, applies `edits`, saves to `out`, reloads; the reloaded scene must equal the edited one.
-Scene round_trip(const fs::path& source, const std::vector<Edit>& edits, const fs::path& out) {
-  Scene scene = load_scene(source);
+// Applies `edits` to (a copy of) `loaded`, saves to `out`, reloads: the reloaded scene must
+// equal the edited one.
+Scene round_trip(const Scene& loaded, const std::vector<Edit>& edits, const fs::path& out) {
+  Scene scene = loaded;
   for (const Edit& edit : edits) apply_edit(scene, edit);
   save_scene(scene, out);
   Scene reloaded = load_scene(out);
@@ -51,12 +68,17 @@ Scene round_trip(const fs::path& source, const std::vector<Edit>& edits, const f
   return reloaded;
 }
 
+Scene round_trip(const fs::path& source, const std::vector<Edit>& edits, const fs::path& out) {
+  return round_trip(load_scene(source), edits, out);
+}
+
 // Every edit kind on the shipped Cornell box: a TRS node moved, one set by matrix, one hidden,
 // the camera moved, a material given every OpenPBR parameter, the emitter brightened beyond
 // glTF's [0, 1] emissive range.
 std::vector<Edit> cornell_box_edits() {
   glm::mat4 matrix = glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.01f, 0.2f)) *
-                     glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(0, 1, 0)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.9f));
+                     glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(0, 1, 0)) *
+                     glm::scale(glm::mat4(1.0f), glm::vec3(0.9f));
   return {TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt},
           TransformEdit{"short_block", std::nullopt, matrix},
           VisibilityEdit{"back_wall", false},
@@ -89,7 +111,8 @@ TEST(SceneWriter, GltfIntoAnotherFolderRoundTripsEveryEditKind) {
   EXPECT_EQ(node("back_wall")["extensions"]["KHR_node_visibility"]["visible"], false);
   EXPECT_FALSE(node("floor").contains("extensions"));
   const auto used = doc["extensionsUsed"].get<std::vector<std::string>>();
-  for (const char* e : {"KHR_node_visibility", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_iridescence"})
+  for (const char* e :
+       {"KHR_node_visibility", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_iridescence"})
     EXPECT_NE(std::find(used.begin(), used.end(), e), used.end()) << e;
 
   // Values glTF can hold go to glTF (and only there); the rest to extras.hipr_openpbr.
@@ -121,7 +144,8 @@ TEST(SceneWriter, GlbRoundTripsEveryEditKindInOneFile) {
   round_trip(test::asset("cornell_box.gltf"), cornell_box_edits(), dir / "edited.glb");
   EXPECT_EQ(folder_listing(dir), std::vector<std::string>{"edited.glb"});
   // And back from .glb to .gltf: the BIN chunk becomes <name>.bin.
-  round_trip(dir / "edited.glb", {TransformEdit{"floor", glm::vec3(0.0f, -0.01f, 0.0f), std::nullopt}}, dir / "again.gltf");
+  round_trip(dir / "edited.glb", {TransformEdit{"floor", glm::vec3(0.0f, -0.01f, 0.0f), std::nullopt}},
+             dir / "again.gltf");
   EXPECT_TRUE(fs::exists(dir / "again.bin"));
 }
 
@@ -174,9 +198,14 @@ TEST(SceneWriter, UneditedSceneSavesAsTheSameDocument) {
     expect_same_scene(scene, reloaded, true);
     EXPECT_EQ(reloaded.content_hash, scene.content_hash) << name;
   }
+  // A .gltf whose buffer is a data: URI, into a .glb.
+  const Scene furnace = load_scene(test::asset("furnace_sphere.gltf"));
+  save_scene(furnace, dir / "furnace.glb");
+  expect_same_scene(furnace, load_scene(dir / "furnace.glb"), true);
+
   const Scene sphere = load_scene(test::asset("cornell_sphere.glb"));
   save_scene(sphere, dir / "sphere.glb");
-  EXPECT_EQ(read_file_bytes(dir / "sphere.glb").size(), read_file_bytes(test::asset("cornell_sphere.glb")).size());
+  EXPECT_EQ(glb_chunks(dir / "sphere.glb"), glb_chunks(test::asset("cornell_sphere.glb")));
   expect_same_scene(sphere, load_scene(dir / "sphere.glb"), true);
   save_scene(sphere, dir / "sphere.gltf");
   expect_same_scene(sphere, load_scene(dir / "sphere.gltf"), true);
@@ -187,22 +216,21 @@ TEST(SceneWriter, EveryParameterRoundTripsOnAMaterialWithEveryExtension) {
   // A thick, masked material with every extension the loader reads; then every editable
   // parameter set (twice: varied values, then all weights and colours at their minimum).
   test::Document doc = test::triangle_document();
-  doc.gltf["materials"][0] = {
-      {"name", "mat"},
-      {"alphaMode", "MASK"},
-      {"alphaCutoff", 0.3},
-      {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.4, 0.3, 0.8}}}},
-      {"extensions",
-       {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}},
-        {"KHR_materials_volume", {{"thicknessFactor", 0.2}, {"attenuationDistance", 0.5}}},
-        {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.5}}},
-        {"KHR_materials_sheen", {{"sheenColorFactor", {0.2, 0.2, 0.2}}}},
-        {"KHR_materials_iridescence", {{"iridescenceFactor", 0.5}}},
-        {"KHR_materials_anisotropy", {{"anisotropyStrength", 0.5}}},
-        {"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.1}}},
-        {"KHR_materials_ior", {{"ior", 1.3}}},
-        {"KHR_materials_specular", {{"specularFactor", 0.7}}},
-        {"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}};
+  doc.gltf["materials"][0] = {{"name", "mat"},
+                              {"alphaMode", "MASK"},
+                              {"alphaCutoff", 0.3},
+                              {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.4, 0.3, 0.8}}}},
+                              {"extensions",
+                               {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}},
+                                {"KHR_materials_volume", {{"thicknessFactor", 0.2}, {"attenuationDistance", 0.5}}},
+                                {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.5}}},
+                                {"KHR_materials_sheen", {{"sheenColorFactor", {0.2, 0.2, 0.2}}}},
+                                {"KHR_materials_iridescence", {{"iridescenceFactor", 0.5}}},
+                                {"KHR_materials_anisotropy", {{"anisotropyStrength", 0.5}}},
+                                {"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.1}}},
+                                {"KHR_materials_ior", {{"ior", 1.3}}},
+                                {"KHR_materials_specular", {{"specularFactor", 0.7}}},
+                                {"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}};
   const fs::path dir = test::temp_dir("writer-every-parameter");
   test::write_document(dir / "source.gltf", doc);
   for (int variant : {1, 2, 0}) {
@@ -227,12 +255,15 @@ TEST(SceneWriter, SharedScenesRoundTrip) {
     const fs::path folder = dir / fs::path(s.file).parent_path();
     fs::create_directories(folder);
     const std::string stem = fs::path(s.file).stem().string();
-    round_trip(source, edits, folder / (stem + ".gltf"));
-    round_trip(source, edits, folder / (stem + ".glb"));
-    // Unedited, in the source's own container: the same scene.
-    const fs::path unedited = folder / (stem + "_unedited" + fs::path(s.file).extension().string());
+    round_trip(scene, edits, folder / (stem + ".gltf"));
+    round_trip(scene, edits, folder / (stem + ".glb"));
+    // Unedited, in the source's own container: the same scene and the same document (for a
+    // .glb the same binary chunk too: nothing was decoded and re-encoded).
+    const fs::path unedited = folder / (stem + "_unedited" + source.extension().string());
     save_scene(scene, unedited);
     expect_same_scene(scene, load_scene(unedited), true);
+    if (source.extension() == ".gltf") EXPECT_EQ(read_json(unedited), read_json(source));
+    else EXPECT_EQ(glb_chunks(unedited), glb_chunks(source));
   }
   // SheenChair's images were copied beside the .gltf under their own names (URIs with "./").
   EXPECT_TRUE(fs::exists(dir / "SheenChair" / "chair_fabric_albedo.png"));
@@ -286,8 +317,14 @@ TEST(SceneWriter, RefusesToReplaceOtherFilesAndNeedsItsSource) {
   fs::remove(copy / "s.glb");
   EXPECT_THROW(save_scene(sphere, copy / "s.glb"), InputError);
   EXPECT_TRUE(fs::is_empty(copy));
+  // A value JSON cannot hold (only the API, not an edit script, can set it).
+  Scene infinite = scene;
+  infinite.materials[0].params.coat_darkening = std::numeric_limits<float>::infinity();
+  EXPECT_THROW(save_scene(infinite, dir / "infinite.gltf"), InputError);
+  EXPECT_FALSE(fs::exists(dir / "infinite.gltf"));
   // A scene built in code has no source at all.
-  EXPECT_THROW(save_scene(test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.5f, 1.0f), dir / "furnace.gltf"), InputError);
+  EXPECT_THROW(save_scene(test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.5f, 1.0f), dir / "furnace.gltf"),
+               InputError);
   EXPECT_FALSE(fs::exists(dir / "furnace.gltf"));
 }
 
@@ -349,10 +386,11 @@ TEST(SceneWriter, EditedAndSavedScenesRenderBitIdentical) {
   const std::vector<Edit> edits = {TransformEdit{"sphere", glm::vec3(-0.05f, 0.0f, 0.05f), std::nullopt},
                                    VisibilityEdit{"tall_block", false},
                                    LightEdit{"lamp", 2.0f, glm::vec3(3.0f, 0.9f, 0.8f), 1.5f},
-                                   MaterialEdit{"red", {{"base_color", {0.1f, 0.6f, 0.2f}},
-                                                        {"specular_roughness", {0.4f}},
-                                                        {"base_diffuse_roughness", {0.7f}},
-                                                        {"specular_weight", {1.0f}}}},
+                                   MaterialEdit{"red",
+                                                {{"base_color", {0.1f, 0.6f, 0.2f}},
+                                                 {"specular_roughness", {0.4f}},
+                                                 {"base_diffuse_roughness", {0.7f}},
+                                                 {"specular_weight", {1.0f}}}},
                                    MaterialEdit{"light", {{"emission_luminance", {25.0f}}}},
                                    CameraEdit{glm::vec3(0.01f, 0.0f, -0.05f), std::nullopt}};
   for (const Edit& edit : edits) apply_edit(scene, edit);

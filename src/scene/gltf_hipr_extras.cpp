@@ -23,7 +23,8 @@ std::vector<float> numbers(const tinygltf::Value& value, int count, float lo, fl
     }
   }
   if (out.size() != size_t(count))
-    throw InputError(what + (count == 1 ? " must be a number" : " must be an array of " + std::to_string(count) + " numbers"));
+    throw InputError(what +
+                     (count == 1 ? " must be a number" : " must be an array of " + std::to_string(count) + " numbers"));
   for (float v : out)
     if (!std::isfinite(v) || v < lo || v > hi)
       throw InputError(what + " holds " + std::to_string(v) + ", outside [" + std::to_string(lo) + ", " +
@@ -48,7 +49,8 @@ void apply_openpbr_extras(const tinygltf::Value& extras, const char* key, abi::M
     const std::string where = what + ": extras." + key + "." + name;
     const MaterialParameter* parameter = find_material_parameter(name);
     if (!parameter) throw InputError(where + " is not an OpenPBR parameter hipr knows");
-    const std::vector<float> v = numbers(overrides->Get(name), parameter->components, parameter->min, parameter->max, where);
+    const std::vector<float> v =
+        numbers(overrides->Get(name), parameter->components, parameter->min, parameter->max, where);
     std::memcpy(reinterpret_cast<char*>(&params) + parameter->offset, v.data(), v.size() * sizeof(float));
   }
 }

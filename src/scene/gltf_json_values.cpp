@@ -1,5 +1,6 @@
 #include "scene/gltf_json_values.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -18,6 +19,8 @@ std::vector<double> json_numbers(const Json& object, const char* key) {
 }
 
 double json_number(float value) {
+  // JSON has no infinity or NaN (nlohmann would write null); edits never make them, the API might.
+  if (!std::isfinite(value)) throw InputError("cannot save a non-finite number (" + std::to_string(value) + ")");
   // The loader parses a double and rounds it to float: find the shortest text for which that
   // gives `value` back (9 significant digits always do).
   char text[32];

@@ -3,7 +3,6 @@
 // for the writer: a value is rewritten only when the file does not already load as it, so what
 // an edit did not touch keeps the file's own text.
 #include <nlohmann/json.hpp>
-
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +16,7 @@ using Json = nlohmann::ordered_json;
 std::vector<double> json_numbers(const Json& object, const char* key);
 
 // The shortest decimal that still loads as `value` (0.05f is written 0.05, not 0.0500000007).
+// InputError for infinity or NaN, which JSON cannot hold.
 double json_number(float value);
 
 // Sets object[key] to `written` (n numbers; n == 1 writes a number, else an array) unless the

@@ -33,8 +33,10 @@ void write_light(Json& json, const PunctualLight& light, const std::string& what
   }
   // range: 0 is infinite, which glTF says by leaving it out.
   if (!loads_as(json, "range", {light.range}, {0.0f})) {
-    if (light.range > 0.0f) json["range"] = json_number(light.range);
-    else json.erase("range");
+    if (light.range > 0.0f)
+      json["range"] = json_number(light.range);
+    else
+      json.erase("range");
   }
 }
 
@@ -42,8 +44,9 @@ void write_light(Json& json, const PunctualLight& light, const std::string& what
 
 void write_lights(Json& doc, const std::vector<PunctualLight>& lights, const std::string& name) {
   Json* list = nullptr;
-  if (doc.contains("extensions") && doc["extensions"].is_object() && doc["extensions"].contains("KHR_lights_punctual") &&
-      doc["extensions"]["KHR_lights_punctual"].is_object() && doc["extensions"]["KHR_lights_punctual"].contains("lights"))
+  if (doc.contains("extensions") && doc["extensions"].is_object() &&
+      doc["extensions"].contains("KHR_lights_punctual") && doc["extensions"]["KHR_lights_punctual"].is_object() &&
+      doc["extensions"]["KHR_lights_punctual"].contains("lights"))
     list = &doc["extensions"]["KHR_lights_punctual"]["lights"];
   const size_t count = list && list->is_array() ? list->size() : 0;
   if (count != lights.size())

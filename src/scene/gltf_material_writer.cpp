@@ -74,13 +74,14 @@ bool has_extension(const Json& m, const std::string& extension) {
 }
 
 void write_core(Json& m, const M& t) {
-  const std::string mode = m.contains("alphaMode") && m["alphaMode"].is_string() ? m["alphaMode"].get<std::string>() : "OPAQUE";
+  const std::string mode =
+      m.contains("alphaMode") && m["alphaMode"].is_string() ? m["alphaMode"].get<std::string>() : "OPAQUE";
   edit_object(m, "pbrMetallicRoughness", [&](Json& pbr) {
     // Alpha is geometry_opacity for MASK and BLEND; OPAQUE ignores it, so it stays as it was.
     const std::vector<double> current = json_numbers(pbr, "baseColorFactor");
     const float alpha = (mode == "MASK" || mode == "BLEND") ? t.geometry_opacity
-                        : current.size() == 4                ? float(current[3])
-                                                             : 1.0f;
+                        : current.size() == 4               ? float(current[3])
+                                                            : 1.0f;
     const std::vector<float> wanted = {t.base_color.x, t.base_color.y, t.base_color.z, alpha};
     put_numbers(pbr, "baseColorFactor", wanted, clamped(wanted, 0.0f, 1.0f), {1.0f, 1.0f, 1.0f, 1.0f});
     put_number(pbr, "metallicFactor", t.base_metalness, std::clamp(t.base_metalness, 0.0f, 1.0f), 1.0f);
@@ -93,9 +94,9 @@ void write_core(Json& m, const M& t) {
 void write_emission(Json& m, const M& t) {
   const std::vector<float> color = {t.emission_color.x, t.emission_color.y, t.emission_color.z};
   const bool has_strength = has_extension(m, kEmissiveStrength);
-  const bool strength_loads = has_strength ? loads_as(m["extensions"][kEmissiveStrength], "emissiveStrength",
-                                                      {t.emission_luminance}, {1.0f})
-                                           : t.emission_luminance == 1.0f;
+  const bool strength_loads =
+      has_strength ? loads_as(m["extensions"][kEmissiveStrength], "emissiveStrength", {t.emission_luminance}, {1.0f})
+                   : t.emission_luminance == 1.0f;
   if (loads_as(m, "emissiveFactor", color, {0.0f, 0.0f, 0.0f}) && strength_loads) return;
   const float peak = std::max({color[0], color[1], color[2], 1.0f});
   const std::vector<float> factor = {color[0] / peak, color[1] / peak, color[2] / peak};
@@ -136,8 +137,8 @@ void write_extension_rows(Json& m, const M& t) {
 void write_volume(Json& m, const M& t) {
   if (!has_extension(m, kVolume)) return;
   Json& volume = m["extensions"][kVolume];
-  const bool thick = volume.is_object() && volume.contains("thicknessFactor") && volume["thicknessFactor"].is_number() &&
-                     volume["thicknessFactor"].get<double>() > 0.0;
+  const bool thick = volume.is_object() && volume.contains("thicknessFactor") &&
+                     volume["thicknessFactor"].is_number() && volume["thicknessFactor"].get<double>() > 0.0;
   if (!thick) return;
   const std::vector<float> color = {t.transmission_color.x, t.transmission_color.y, t.transmission_color.z};
   constexpr float kInf = std::numeric_limits<float>::infinity();

@@ -1,7 +1,6 @@
 #include "scene/gltf_node_transform.h"
 
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -19,7 +18,8 @@ glm::mat4 local_transform(const std::vector<double>& matrix, const std::vector<d
   glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
   if (translation.size() == 3) t = {translation[0], translation[1], translation[2]};
   if (scale.size() == 3) s = {scale[0], scale[1], scale[2]};
-  if (rotation.size() == 4) r = glm::quat(float(rotation[3]), float(rotation[0]), float(rotation[1]), float(rotation[2]));
+  if (rotation.size() == 4)
+    r = glm::quat(float(rotation[3]), float(rotation[0]), float(rotation[1]), float(rotation[2]));
   const float len = glm::length(r);
   if (std::isfinite(len) && len > 0.0f) r /= len;
   return glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);

@@ -1,9 +1,8 @@
 #pragma once
 // A glTF node's local transform, computed one way for the loader and for the writer (which must
 // know, to the bit, what a node's numbers load as, to leave unedited nodes untouched).
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 namespace hipr::gltf {
 

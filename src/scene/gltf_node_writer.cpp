@@ -12,8 +12,8 @@ namespace {
 constexpr const char* kVisibility = "KHR_node_visibility";
 
 glm::mat4 loaded_transform(const Json& node) {
-  return local_transform(json_numbers(node, "matrix"), json_numbers(node, "translation"), json_numbers(node, "rotation"),
-                         json_numbers(node, "scale"));
+  return local_transform(json_numbers(node, "matrix"), json_numbers(node, "translation"),
+                         json_numbers(node, "rotation"), json_numbers(node, "scale"));
 }
 
 Json numbers(const float* v, int count) {
@@ -101,8 +101,8 @@ void write_camera(Json& json, const Camera& camera) {
   if (!json.is_object() || json.value("type", "") != "perspective") return;  // orthographic: loaded as a fixed fov
   edit_object(json, "perspective", [&](Json& p) {
     put_number(p, "yfov", camera.yfov, camera.yfov, camera.yfov);
-    const bool near_loads = p.contains("znear") && p["znear"].is_number() &&
-                            float(std::max(p["znear"].get<double>(), 0.0)) == camera.znear;
+    const bool near_loads =
+        p.contains("znear") && p["znear"].is_number() && float(std::max(p["znear"].get<double>(), 0.0)) == camera.znear;
     if (!near_loads) p["znear"] = json_number(camera.znear);
   });
 }
@@ -126,7 +126,8 @@ void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
   };
   const size_t node_count = size_of("nodes"), camera_count = size_of("cameras");
   if (scene.nodes.size() < node_count || scene.cameras.size() < camera_count)
-    throw InputError(name + ": the scene has fewer nodes or cameras than its file: the file changed since it was loaded");
+    throw InputError(name +
+                     ": the scene has fewer nodes or cameras than its file: the file changed since it was loaded");
 
   for (size_t i = 0; i < camera_count; ++i) write_camera(doc["cameras"][i], scene.cameras[i]);
   for (size_t i = camera_count; i < scene.cameras.size(); ++i) doc["cameras"].push_back(new_camera(scene.cameras[i]));

@@ -22,6 +22,10 @@ void write_file(const fs::path& path, const std::vector<unsigned char>& bytes) {
     out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
     out.close();
     if (!out) throw InputError("cannot write " + path.string() + " (disk full?)");
+    // Replacing a file (saving in place): keep its permissions.
+    std::error_code ec;
+    const fs::file_status existing = fs::status(path, ec);
+    if (!ec && fs::is_regular_file(existing)) fs::permissions(temp, existing.permissions(), ec);
   });
 }
 
@@ -62,8 +66,10 @@ std::string uri_of(const std::string& name) {
   static const char* kHex = "0123456789ABCDEF";
   std::string out;
   for (unsigned char c : name) {
-    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~') out += char(c);
-    else out += {'%', kHex[c >> 4], kHex[c & 15]};
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~')
+      out += char(c);
+    else
+      out += {'%', kHex[c >> 4], kHex[c & 15]};
   }
   return out;
 }
@@ -107,11 +113,16 @@ void write_glb(const SourceDocument& source, Json doc, const fs::path& path) {
     } else {
       bin = source.bin;
     }
+    // The chunk holds the buffer's bytes (plus at most 3 of padding, which is added again below).
+    if (first.contains("byteLength") && first["byteLength"].is_number_unsigned() &&
+        first["byteLength"].get<size_t>() <= bin.size())
+      bin.resize(first["byteLength"].get<size_t>());
     has_bin = true;
     for (size_t i = 1; i < doc["buffers"].size(); ++i) {
       Json& buffer = doc["buffers"][i];
       if (!buffer.contains("uri") || !buffer["uri"].is_string() || is_data_uri(buffer["uri"])) continue;
-      buffer["uri"] = data_uri("application/octet-stream", read_uri(source, buffer["uri"], "buffer " + std::to_string(i)));
+      buffer["uri"] =
+          data_uri("application/octet-stream", read_uri(source, buffer["uri"], "buffer " + std::to_string(i)));
     }
   }
   if (has_array(doc, "images")) {
@@ -208,12 +219,14 @@ void write_gltf(const SourceDocument& source, Json doc, const fs::path& path) {
   std::vector<const Pending*> to_write;
   for (const Pending& file : files) {
     refuse_source_file(source, file.path, false);
-    if (resolved(file.path) == resolved(path)) throw InputError(path.string() + " is also the name of one of its side files");
+    if (resolved(file.path) == resolved(path))
+      throw InputError(path.string() + " is also the name of one of its side files");
     std::error_code ec;
     if (!file.replaces_freely && fs::exists(file.path, ec)) {
       if (read_file_bytes(file.path) == file.bytes) continue;  // already there (an earlier save)
-      throw InputError("cannot save " + path.filename().string() + ": " + file.path.string() +
-                       " already exists with other content (another scene's file?); save into another folder or as .glb");
+      throw InputError(
+          "cannot save " + path.filename().string() + ": " + file.path.string() +
+          " already exists with other content (another scene's file?); save into another folder or as .glb");
     }
     to_write.push_back(&file);
   }

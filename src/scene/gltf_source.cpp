@@ -40,7 +40,8 @@ SourceDocument read_source(const fs::path& path) {
     const size_t bin_at = 20 + size_t(json_length);
     if (bin_at + 8 <= bytes.size()) {
       const uint32_t bin_length = u32(bytes, bin_at);
-      source.bin.assign(bytes.begin() + std::ptrdiff_t(bin_at + 8), bytes.begin() + std::ptrdiff_t(bin_at + 8 + bin_length));
+      source.bin.assign(bytes.begin() + std::ptrdiff_t(bin_at + 8),
+                        bytes.begin() + std::ptrdiff_t(bin_at + 8 + bin_length));
     }
   } else {
     text.assign(bytes.begin(), bytes.end());
@@ -89,7 +90,8 @@ std::vector<SideFile> side_files(const Json& doc) {
       const Json& item = doc[kind][i];
       if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) continue;
       const std::string uri = item["uri"];
-      if (!is_data_uri(uri)) out.push_back({uri, std::string(kind).substr(0, std::strlen(kind) - 1) + " " + std::to_string(i)});
+      if (!is_data_uri(uri))
+        out.push_back({uri, std::string(kind).substr(0, std::strlen(kind) - 1) + " " + std::to_string(i)});
     }
   }
   return out;

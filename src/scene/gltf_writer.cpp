@@ -38,7 +38,8 @@ void declare_extensions(gltf::Json& doc) {
   written.push_back({"nodes", "KHR_node_visibility"});
   for (const auto& [kind, extension] : written) {
     if (!uses_extension(doc, kind, extension)) continue;
-    if (!doc.contains("extensionsUsed") || !doc["extensionsUsed"].is_array()) doc["extensionsUsed"] = gltf::Json::array();
+    if (!doc.contains("extensionsUsed") || !doc["extensionsUsed"].is_array())
+      doc["extensionsUsed"] = gltf::Json::array();
     gltf::Json& used = doc["extensionsUsed"];
     if (std::find(used.begin(), used.end(), extension) == used.end()) used.push_back(extension);
   }
@@ -48,7 +49,8 @@ void declare_extensions(gltf::Json& doc) {
 
 void save_scene(const Scene& scene, const fs::path& path) {
   std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   if (extension != ".gltf" && extension != ".glb")
     throw InputError(path.string() + ": cannot save as this format (expected .gltf or .glb)");
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
@@ -62,8 +64,10 @@ void save_scene(const Scene& scene, const fs::path& path) {
   gltf::write_lights(doc, scene.lights, source.name);
   gltf::write_materials(doc, scene.materials, source.name);
   declare_extensions(doc);
-  if (extension == ".glb") gltf::write_glb(source, std::move(doc), path);
-  else gltf::write_gltf(source, std::move(doc), path);
+  if (extension == ".glb")
+    gltf::write_glb(source, std::move(doc), path);
+  else
+    gltf::write_gltf(source, std::move(doc), path);
 }
 
 }  // namespace hipr
