@@ -244,6 +244,31 @@ TEST(SceneWriter, EveryParameterRoundTripsOnAMaterialWithEveryExtension) {
   round_trip(dir / "no_material.gltf", {test::every_parameter_edit("default", 1)}, dir / "no_material_saved.gltf");
 }
 
+TEST(SceneWriter, AnimatedNodesStayTrs) {
+  // glTF forbids `matrix` on a node an animation targets: a matrix edit is decomposed into TRS.
+  test::Document doc = test::triangle_document();
+  const int times = doc.add_accessor(std::vector<float>{0.0f, 1.0f}, test::kFloat, "SCALAR", 2);
+  const int moves = doc.add_accessor(std::vector<float>{0, 0, 0, 1, 0, 0}, test::kFloat, "VEC3", 2);
+  doc.gltf["accessors"][size_t(times)]["min"] = {0.0};
+  doc.gltf["accessors"][size_t(times)]["max"] = {1.0};
+  doc.gltf["animations"] = json::array({{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}},
+                                         {"samplers", {{{"input", times}, {"output", moves}}}}}});
+  const fs::path dir = test::temp_dir("writer-animated");
+  test::write_document(dir / "animated.gltf", doc);
+  Scene scene = load_scene(dir / "animated.gltf");
+  const glm::mat4 matrix = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, -1.0f, 2.0f)) *
+                           glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1, 2, 3))) *
+                           glm::scale(glm::mat4(1.0f), glm::vec3(2.0f, 0.5f, 1.5f));
+  apply_edit(scene, TransformEdit{"tri", std::nullopt, matrix});
+  save_scene(scene, dir / "saved.gltf");
+  const json node = read_json(dir / "saved.gltf")["nodes"][0];
+  EXPECT_FALSE(node.contains("matrix"));
+  EXPECT_TRUE(node.contains("translation") && node.contains("rotation") && node.contains("scale"));
+  const glm::mat4 loaded = load_scene(dir / "saved.gltf").nodes[0].local;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) EXPECT_NEAR(loaded[c][r], matrix[c][r], 1e-5f) << c << "," << r;
+}
+
 TEST(SceneWriter, SharedScenesRoundTrip) {
   if (!test::shared_scenes_available()) GTEST_SKIP() << "shared scenes not present";
   const fs::path dir = test::temp_dir("writer-shared");
