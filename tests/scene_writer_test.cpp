@@ -2,16 +2,16 @@
 // .gltf and .glb, in place and elsewhere), an unedited one as the same document, and bad
 // output paths fail cleanly with nothing left behind. Also the loader's side of it:
 // KHR_node_visibility and the hipr extras, validated.
-#include "hipr/scene_writer.h"
-
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <cmath>
+#include <algorithm>
 #include <cstring>
 #include <fstream>
-#include <glm/gtc/matrix_transform.hpp>
 #include <limits>
+
+#include <unistd.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
 #include "core/file_util.h"
@@ -19,7 +19,7 @@
 #include "hipr/edits.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
-#include "scene/material_parameters.h"
+#include "hipr/scene_writer.h"
 #include "scene_writer_support.h"
 #include "test_support.h"
 
