@@ -1,0 +1,205 @@
+#include "render/background_tiles.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/default_camera.h"
+
+namespace hipr {
+namespace {
+
+// Relative padding of world bounds: far above the float rounding of the GPU's transforms and hits.
+constexpr double kBoundsPadding = 1e-5;
+// Meshes are bounded by up to this many boxes of consecutive triangles (at least this many each).
+constexpr size_t kMaxChunks = 64;
+constexpr size_t kMinChunkTriangles = 16;
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+glm::dvec3 corner(const glm::dvec3& lo, const glm::dvec3& hi, int i) {
+  return {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
+}
+
+// The camera as the kernel gets it (make_frame_params in renderer.cpp): the ray through pixel
+// coordinates (px, py) has direction F + sx R + sy U, with sx = (2 px / width - 1) tan_x and
+// sy = (1 - 2 py / height) tan_y. Camera coordinates (x, y, z) of a point P solve
+// P - origin = x R + y U + z F, so the ray's points have z = t > 0, x = sx z, y = sy z.
+struct View {
+  glm::dvec3 origin;
+  glm::dmat3 to_camera;
+  double tan_x, tan_y;
+  double width, height;
+};
+
+// Where in the image (pixel coordinates) rays can reach a world box.
+struct Footprint {
+  enum Kind { Nowhere, Rectangle, Everywhere } kind = Nowhere;
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+};
+
+Footprint footprint(const View& view, const glm::dvec3& lo, const glm::dvec3& hi) {
+  glm::dvec3 q[8], q_lo(HUGE_VAL), q_hi(-HUGE_VAL);
+  double reach = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    q[i] = view.to_camera * (corner(lo, hi, i) - view.origin);
+    q_lo = glm::min(q_lo, q[i]);
+    q_hi = glm::max(q_hi, q[i]);
+    reach = std::max(reach, glm::length(q[i]));
+  }
+  if (!finite(q_lo) || !finite(q_hi)) return {Footprint::Everywhere};
+  if (q_hi.z <= 0.0) return {};  // wholly behind the camera: rays only go forward
+  // Between the camera and a plane just ahead of it the view is a tiny pyramid; a box reaching
+  // into its bounds may be hit in any direction.
+  const double near = 1e-4 * reach;
+  const double fx = 1.01 * view.tan_x, fy = 1.01 * view.tan_y;  // the whole image, with a margin
+  if (q_lo.z < near && q_lo.x <= near * fx && q_hi.x >= -near * fx && q_lo.y <= near * fy && q_hi.y >= -near * fy)
+    return {Footprint::Everywhere};
+  // Beyond the plane the box projects inside the rectangle of its corners there and of the
+  // points where its edges cross the plane; nearer, it is outside the view (just checked).
+  double sx0 = HUGE_VAL, sx1 = -HUGE_VAL, sy0 = HUGE_VAL, sy1 = -HUGE_VAL;
+  const auto project = [&](const glm::dvec3& c) {
+    sx0 = std::min(sx0, c.x / c.z);
+    sx1 = std::max(sx1, c.x / c.z);
+    sy0 = std::min(sy0, c.y / c.z);
+    sy1 = std::max(sy1, c.y / c.z);
+  };
+  for (int i = 0; i < 8; ++i) {
+    if (q[i].z >= near) project(q[i]);
+    for (int axis = 1; axis < 8; axis <<= 1) {  // each edge once, from its lower corner
+      if (i & axis) continue;
+      const glm::dvec3& a = q[i];
+      const glm::dvec3& b = q[i | axis];
+      if ((a.z - near) * (b.z - near) < 0.0) project(a + (b - a) * ((near - a.z) / (b.z - a.z)));
+    }
+  }
+  if (!(sx0 <= sx1)) return {};
+  return {Footprint::Rectangle, (sx0 / view.tan_x + 1.0) * 0.5 * view.width, (sx1 / view.tan_x + 1.0) * 0.5 * view.width,
+          (1.0 - sy1 / view.tan_y) * 0.5 * view.height, (1.0 - sy0 / view.tan_y) * 0.5 * view.height};
+}
+
+// The world box of an object box under `world`, padded by kBoundsPadding x `magnitude`.
+std::pair<glm::dvec3, glm::dvec3> world_box(const glm::dmat4& world, const glm::dvec3& lo, const glm::dvec3& hi,
+                                            double magnitude) {
+  glm::dvec3 w_lo(HUGE_VAL), w_hi(-HUGE_VAL);
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 w(world * glm::dvec4(corner(lo, hi, i), 1.0));
+    w_lo = glm::min(w_lo, w);
+    w_hi = glm::max(w_hi, w);
+  }
+  return {w_lo - glm::dvec3(kBoundsPadding * magnitude), w_hi + glm::dvec3(kBoundsPadding * magnitude)};
+}
+
+}  // namespace
+
+BackgroundTiles::BackgroundTiles(const Scene& scene) {
+  for (const Mesh& mesh : scene.meshes) {
+    MeshBounds bounds;
+    size_t triangles = 0;
+    for (const MeshPrimitive& p : mesh.primitives) triangles += p.indices.size() / 3;
+    const size_t chunk = std::max(kMinChunkTriangles, (triangles + kMaxChunks - 1) / kMaxChunks);
+    for (const MeshPrimitive& p : mesh.primitives) {
+      for (size_t t = 0; t < p.indices.size() / 3; ++t) {
+        if (t % chunk == 0) bounds.chunks.emplace_back(glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL));
+        for (size_t k = 0; k < 3; ++k) {
+          const uint32_t index = p.indices[3 * t + k];
+          if (index >= p.positions.size()) continue;  // the loader rejects these; never hit
+          const glm::dvec3 v(p.positions[index]);
+          bounds.chunks.back().first = glm::min(bounds.chunks.back().first, v);
+          bounds.chunks.back().second = glm::max(bounds.chunks.back().second, v);
+        }
+      }
+    }
+    bounds.whole = {glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL)};
+    for (const Box& box : bounds.chunks) {
+      bounds.whole.first = glm::min(bounds.whole.first, box.first);
+      bounds.whole.second = glm::max(bounds.whole.second, box.second);
+    }
+    bounds.empty = !(bounds.whole.first.x <= bounds.whole.second.x);
+    m_meshes.push_back(std::move(bounds));
+  }
+}
+
+std::vector<uint32_t> BackgroundTiles::mask(const Scene& scene, uint32_t width, uint32_t height,
+                                            uint32_t tile_size) const {
+  const uint32_t tiles_x = (width + tile_size - 1) / tile_size;
+  const uint32_t tiles_y = (height + tile_size - 1) / tile_size;
+  std::vector<uint32_t> mask(size_t(tiles_x) * tiles_y, 1u);
+  const auto nothing_is_background = [&] {
+    std::fill(mask.begin(), mask.end(), 0u);
+    return mask;
+  };
+
+  const Camera camera = resolve_camera(scene);
+  View view;
+  view.origin = glm::dvec3(glm::vec3(camera.camera_to_world[3]));
+  const glm::dmat3 frame(glm::dvec3(glm::normalize(glm::vec3(camera.camera_to_world[0]))),
+                         glm::dvec3(glm::normalize(glm::vec3(camera.camera_to_world[1]))),
+                         glm::dvec3(-glm::normalize(glm::vec3(camera.camera_to_world[2]))));
+  view.tan_y = std::tan(0.5f * camera.yfov);
+  view.tan_x = view.tan_y * double(float(width) / float(height));
+  view.width = width;
+  view.height = height;
+  const double det = glm::determinant(frame);
+  if (!std::isfinite(det) || std::abs(det) < 1e-6 || !finite(view.origin) || !(view.tan_x > 0.0) ||
+      !(view.tan_y > 0.0) || !std::isfinite(view.tan_x) || !std::isfinite(view.tan_y))
+    return nothing_is_background();
+  view.to_camera = glm::inverse(frame);
+
+  // Tile range of the pixels whose rays cover part of a footprint, one pixel wider on every side.
+  struct TileRange {
+    int64_t x0, x1, y0, y1;  // inclusive; empty when x0 > x1 or y0 > y1
+  };
+  const auto tiles_of = [&](const Footprint& f) {
+    const auto pixels = [](double lo, double hi, uint32_t size) {
+      const double first = std::floor(std::clamp(lo, -2.0, double(size) + 2.0)) - 1.0;
+      const double last = std::floor(std::clamp(hi, -2.0, double(size) + 2.0)) + 1.0;
+      return std::pair<int64_t, int64_t>(std::max<int64_t>(int64_t(first), 0),
+                                         std::min<int64_t>(int64_t(last), int64_t(size) - 1));
+    };
+    const auto [px0, px1] = pixels(f.x0, f.x1, width);
+    const auto [py0, py1] = pixels(f.y0, f.y1, height);
+    const int64_t t = tile_size;
+    if (px0 > px1 || py0 > py1) return TileRange{0, -1, 0, -1};
+    return TileRange{px0 / t, px1 / t, py0 / t, py1 / t};
+  };
+  const auto any_background = [&](const TileRange& r) {
+    for (int64_t ty = r.y0; ty <= r.y1; ++ty)
+      for (int64_t tx = r.x0; tx <= r.x1; ++tx)
+        if (mask[size_t(ty) * tiles_x + size_t(tx)]) return true;
+    return false;
+  };
+  const auto cover = [&](const TileRange& r) {
+    for (int64_t ty = r.y0; ty <= r.y1; ++ty)
+      for (int64_t tx = r.x0; tx <= r.x1; ++tx) mask[size_t(ty) * tiles_x + size_t(tx)] = 0u;
+  };
+
+  for (const Instance& instance : scene.instances()) {
+    if (!instance.visible || instance.mesh >= m_meshes.size() || m_meshes[instance.mesh].empty) continue;
+    const MeshBounds& bounds = m_meshes[instance.mesh];
+    const glm::dmat4 world(instance.world);
+    const auto [lo, hi] = world_box(world, bounds.whole.first, bounds.whole.second, 0.0);
+    if (!finite(lo) || !finite(hi)) return nothing_is_background();
+    const double magnitude = std::max({glm::length(hi - lo), glm::length(lo - view.origin),
+                                       glm::length(hi - view.origin), glm::length(view.origin)});
+    const Footprint whole = footprint(view, lo - glm::dvec3(kBoundsPadding * magnitude),
+                                      hi + glm::dvec3(kBoundsPadding * magnitude));
+    if (whole.kind == Footprint::Everywhere) return nothing_is_background();
+    if (whole.kind == Footprint::Nowhere) continue;
+    const TileRange range = tiles_of(whole);
+    if (!any_background(range)) continue;  // nothing left to decide there
+    if (bounds.chunks.size() <= 1) {
+      cover(range);
+      continue;
+    }
+    for (const Box& chunk : bounds.chunks) {
+      if (!(chunk.first.x <= chunk.second.x)) continue;  // only out-of-range indices
+      const auto [c_lo, c_hi] = world_box(world, chunk.first, chunk.second, magnitude);
+      const Footprint part = footprint(view, c_lo, c_hi);
+      if (part.kind == Footprint::Everywhere) return nothing_is_background();
+      if (part.kind == Footprint::Rectangle) cover(tiles_of(part));
+    }
+  }
+  return mask;
+}
+
+}  // namespace hipr
