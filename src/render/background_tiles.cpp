@@ -10,9 +10,8 @@ namespace {
 
 // Relative padding of world bounds: far above the float rounding of the GPU's transforms and hits.
 constexpr double kBoundsPadding = 1e-5;
-// Meshes are bounded by up to this many boxes of consecutive triangles (at least this many each).
-constexpr size_t kMaxChunks = 64;
-constexpr size_t kMinChunkTriangles = 16;
+// Triangles per leaf of a mesh's box tree.
+constexpr size_t kLeafTriangles = 8;
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -91,31 +90,55 @@ std::pair<glm::dvec3, glm::dvec3> world_box(const glm::dmat4& world, const glm::
 
 }  // namespace
 
+uint32_t BackgroundTiles::build_tree(std::vector<Node>& nodes, const std::vector<Box>& triangles,
+                                     std::vector<uint32_t>::iterator first, std::vector<uint32_t>::iterator last) {
+  const uint32_t index = uint32_t(nodes.size());
+  nodes.emplace_back();
+  glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL), c_lo(HUGE_VAL), c_hi(-HUGE_VAL);
+  for (auto it = first; it != last; ++it) {
+    lo = glm::min(lo, triangles[*it].first);
+    hi = glm::max(hi, triangles[*it].second);
+    const glm::dvec3 c = triangles[*it].first + triangles[*it].second;
+    c_lo = glm::min(c_lo, c);
+    c_hi = glm::max(c_hi, c);
+  }
+  nodes[index].box = {lo, hi};
+  if (size_t(last - first) <= kLeafTriangles) return index;
+  const glm::dvec3 spread = c_hi - c_lo;
+  const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
+  const auto middle = first + (last - first) / 2;
+  std::nth_element(first, middle, last, [&](uint32_t a, uint32_t b) {
+    return triangles[a].first[axis] + triangles[a].second[axis] < triangles[b].first[axis] + triangles[b].second[axis];
+  });
+  const uint32_t left = build_tree(nodes, triangles, first, middle);
+  const uint32_t right = build_tree(nodes, triangles, middle, last);
+  nodes[index].left = left;
+  nodes[index].right = right;
+  nodes[index].leaf = false;
+  return index;
+}
+
 BackgroundTiles::BackgroundTiles(const Scene& scene) {
   for (const Mesh& mesh : scene.meshes) {
-    MeshBounds bounds;
-    size_t triangles = 0;
-    for (const MeshPrimitive& p : mesh.primitives) triangles += p.indices.size() / 3;
-    const size_t chunk = std::max(kMinChunkTriangles, (triangles + kMaxChunks - 1) / kMaxChunks);
-    for (const MeshPrimitive& p : mesh.primitives) {
-      for (size_t t = 0; t < p.indices.size() / 3; ++t) {
-        if (t % chunk == 0) bounds.chunks.emplace_back(glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL));
+    MeshTree tree;
+    std::vector<Box> triangles;
+    for (const MeshPrimitive& p : mesh.primitives)
+      for (size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+        Box box{glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL)};
         for (size_t k = 0; k < 3; ++k) {
-          const uint32_t index = p.indices[3 * t + k];
-          if (index >= p.positions.size()) continue;  // the loader rejects these; never hit
-          const glm::dvec3 v(p.positions[index]);
-          bounds.chunks.back().first = glm::min(bounds.chunks.back().first, v);
-          bounds.chunks.back().second = glm::max(bounds.chunks.back().second, v);
+          if (p.indices[t + k] >= p.positions.size()) continue;  // the loader rejects these
+          const glm::dvec3 v(p.positions[p.indices[t + k]]);
+          tree.unbounded = tree.unbounded || !finite(v);
+          box = {glm::min(box.first, v), glm::max(box.second, v)};
         }
+        if (box.first.x <= box.second.x) triangles.push_back(box);
       }
+    if (!triangles.empty() && !tree.unbounded) {
+      std::vector<uint32_t> order(triangles.size());
+      for (uint32_t t = 0; t < order.size(); ++t) order[t] = t;
+      build_tree(tree.nodes, triangles, order.begin(), order.end());
     }
-    bounds.whole = {glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL)};
-    for (const Box& box : bounds.chunks) {
-      bounds.whole.first = glm::min(bounds.whole.first, box.first);
-      bounds.whole.second = glm::max(bounds.whole.second, box.second);
-    }
-    bounds.empty = !(bounds.whole.first.x <= bounds.whole.second.x);
-    m_meshes.push_back(std::move(bounds));
+    m_meshes.push_back(std::move(tree));
   }
 }
 
@@ -174,29 +197,32 @@ std::vector<uint32_t> BackgroundTiles::mask(const Scene& scene, uint32_t width, 
   };
 
   for (const Instance& instance : scene.instances()) {
-    if (!instance.visible || instance.mesh >= m_meshes.size() || m_meshes[instance.mesh].empty) continue;
-    const MeshBounds& bounds = m_meshes[instance.mesh];
+    if (!instance.visible || instance.mesh >= m_meshes.size()) continue;
+    const MeshTree& tree = m_meshes[instance.mesh];
+    if (tree.unbounded) return nothing_is_background();
+    if (tree.nodes.empty()) continue;
     const glm::dmat4 world(instance.world);
-    const auto [lo, hi] = world_box(world, bounds.whole.first, bounds.whole.second, 0.0);
+    const auto [lo, hi] = world_box(world, tree.nodes[0].box.first, tree.nodes[0].box.second, 0.0);
     if (!finite(lo) || !finite(hi)) return nothing_is_background();
     const double magnitude = std::max({glm::length(hi - lo), glm::length(lo - view.origin),
                                        glm::length(hi - view.origin), glm::length(view.origin)});
-    const Footprint whole = footprint(view, lo - glm::dvec3(kBoundsPadding * magnitude),
-                                      hi + glm::dvec3(kBoundsPadding * magnitude));
-    if (whole.kind == Footprint::Everywhere) return nothing_is_background();
-    if (whole.kind == Footprint::Nowhere) continue;
-    const TileRange range = tiles_of(whole);
-    if (!any_background(range)) continue;  // nothing left to decide there
-    if (bounds.chunks.size() <= 1) {
-      cover(range);
-      continue;
-    }
-    for (const Box& chunk : bounds.chunks) {
-      if (!(chunk.first.x <= chunk.second.x)) continue;  // only out-of-range indices
-      const auto [c_lo, c_hi] = world_box(world, chunk.first, chunk.second, magnitude);
-      const Footprint part = footprint(view, c_lo, c_hi);
-      if (part.kind == Footprint::Everywhere) return nothing_is_background();
-      if (part.kind == Footprint::Rectangle) cover(tiles_of(part));
+    // Depth-first down the tree, only where a box covers tiles still marked background.
+    std::vector<uint32_t> stack = {0};
+    while (!stack.empty()) {
+      const Node& node = tree.nodes[stack.back()];
+      stack.pop_back();
+      const auto [b_lo, b_hi] = world_box(world, node.box.first, node.box.second, magnitude);
+      const Footprint f = footprint(view, b_lo, b_hi);
+      if (f.kind == Footprint::Everywhere) return nothing_is_background();
+      if (f.kind == Footprint::Nowhere) continue;
+      const TileRange range = tiles_of(f);
+      if (!any_background(range)) continue;  // nothing left to decide there
+      if (node.leaf) {
+        cover(range);
+      } else {
+        stack.push_back(node.left);
+        stack.push_back(node.right);
+      }
     }
   }
   return mask;

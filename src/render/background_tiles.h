@@ -4,6 +4,8 @@
 // trace kernel gives their samples what a miss gives (the environment's radiance in the ray's
 // direction, or nothing) without a ray query. Conservative: a tile that might show geometry is
 // never marked, with a pixel of margin around every projected box.
+// Cost: one pass over the triangles when made; each mask then projects a few boxes per visible
+// instance (more only along silhouettes near empty tiles).
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -25,14 +27,25 @@ class BackgroundTiles {
 
  private:
   using Box = std::pair<glm::dvec3, glm::dvec3>;  // min, max
-  struct MeshBounds {
-    bool empty = true;  // no triangle: nothing in the BLAS
-    Box whole;
-    // Boxes of runs of consecutive triangles: much tighter than the whole box for round or
-    // sprawling meshes (a sphere's box covers the frame corners its triangles leave empty).
-    std::vector<Box> chunks;
+  // A mesh's triangles bounded by a binary tree of boxes (median splits along the longest
+  // axis; leaves of a few triangles). A box is refined only where it covers tiles not yet
+  // known to show geometry, so round or sprawling meshes (a sphere, whose whole box covers the
+  // frame's corners) leave their empty tiles to the background.
+  struct Node {
+    Box box;
+    uint32_t left = 0, right = 0;  // children; none for a leaf
+    bool leaf = true;
   };
-  std::vector<MeshBounds> m_meshes;
+  struct MeshTree {
+    std::vector<Node> nodes;  // nodes[0] is the root; empty for meshes without triangles
+    bool unbounded = false;   // a vertex is not finite: assume it may be seen anywhere
+  };
+  // Appends the subtree over triangles [first, last) (indices into `triangles`, reordered) to
+  // `nodes`; returns its index.
+  static uint32_t build_tree(std::vector<Node>& nodes, const std::vector<Box>& triangles,
+                             std::vector<uint32_t>::iterator first, std::vector<uint32_t>::iterator last);
+
+  std::vector<MeshTree> m_meshes;
 };
 
 }  // namespace hipr
