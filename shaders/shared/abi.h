@@ -255,6 +255,7 @@ struct FrameParams {
   float depthEpsilon; // relative depth tolerance of the projection test
   uint tileCount;
   uint tilesY;
+  float rayOffsetScale;  // size of the scene (diagonal of its bounds): scales ray_offset.glsl's offsets
 };
 
 // Stage 1 output per pixel: what the pixel-centre ray hit.

@@ -54,6 +54,7 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, cons
   f.wPath = glm::vec3(h.w_path[0], h.w_path[1], h.w_path[2]);
   f.wOcclusion = h.w_occlusion;
   f.depthEpsilon = h.depth_epsilon;
+  f.rayOffsetScale = 2.0f * gpu.info().scene_radius;
   return f;
 }
 
