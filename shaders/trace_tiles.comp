@@ -173,6 +173,11 @@ PathState start_path(uvec2 pixel, uint sampleIndex) {
 // Traces one segment and scatters; returns true when the path has ended. `backgroundTile`:
 // the camera ray cannot hit anything (see main), so it misses without a query.
 bool path_step(inout PathState p, bool backgroundTile, inout uint rays) {
+#if !HIPR_HAS_LIGHTS && !HIPR_DISCOVERY
+  // Nothing emits and nothing can be sampled: every sample is black, whatever its path.
+  // (Stage 2 still walks paths: discovery weighs throughput, not radiance.)
+  return true;
+#endif
 #if HIPR_FEATURE_EMISSION == 0 && HIPR_FEATURE_ENVIRONMENT == 0
   // With nothing to find at the end of a segment but a surface, a segment toward the vertex
   // where the depth limit stops the path cannot add anything: not traced.

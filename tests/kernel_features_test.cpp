@@ -191,6 +191,20 @@ INSTANTIATE_TEST_SUITE_P(
                                 [] { return test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.8f, 1.0f); }, false}),
     [](const testing::TestParamInfo<SceneCase>& param_info) { return std::string(param_info.param.name); });
 
+// ---- rays nobody needs ----
+
+TEST(RaysNobodyNeeds, AnUnlitSceneTracesNone) {
+  Scene scene = test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.8f, 1.0f);
+  scene.environment.reset();  // no emitter, no light, no environment: black
+  const Rendered specialized = render(scene, settings(), 2);
+  const Rendered uber = render_uber(scene, settings(), 2);
+  EXPECT_EQ(specialized.counters.rays, 0u);
+  EXPECT_GT(uber.counters.rays, 0u);
+  EXPECT_EQ(specialized.counters.samples, uber.counters.samples);
+  EXPECT_EQ(specialized.image.rgb, uber.image.rgb);
+  EXPECT_EQ(test::mean(uber.image), 0.0);
+}
+
 // ---- tiles that see only background ----
 
 // Renders with and without the background-tile shortcut: the same samples, fewer rays.

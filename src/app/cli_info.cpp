@@ -95,8 +95,8 @@ int run_info(const InfoOptions& o) {
   const auto has = [&](const char* define) { return (features & kernel_feature_bit(define)) != 0; };
   std::vector<std::string> rays;
   if (!has("HIPR_FEATURE_EMISSION") && !has("HIPR_FEATURE_PUNCTUAL_LIGHTS") && !has("HIPR_FEATURE_ENVIRONMENT"))
-    rays.emplace_back("shadow rays (no light to sample)");
-  if (!has("HIPR_FEATURE_EMISSION") && !has("HIPR_FEATURE_ENVIRONMENT"))
+    rays.emplace_back("all of them (nothing emits, no light to sample: the image is black)");
+  else if (!has("HIPR_FEATURE_EMISSION") && !has("HIPR_FEATURE_ENVIRONMENT"))
     rays.emplace_back("segments to the last vertex (nothing emits there)");
   const RenderSettings& r = o.render;
   const std::vector<uint32_t> background = BackgroundTiles(scene).mask(scene, r.width, r.height, r.tile_size);
