@@ -244,7 +244,8 @@ TEST(Info, ListsKernelFeaturesSkippedFeaturesAndRays) {
   const std::string rays = line(furnace.output, "rays");
   EXPECT_NE(rays.find("all of them (nothing emits"), std::string::npos) << rays;
   EXPECT_NE(rays.find(" of 64 tiles (background only at 128x128, tile 16)"), std::string::npos) << rays;
-  EXPECT_EQ(test::run_hipr("info " + quoted(test::asset("furnace_sphere.gltf")) + " --tile 0").exit_code, kExitBadInput);
+  const std::string bad_tile = "info " + quoted(test::asset("furnace_sphere.gltf")) + " --tile 0";
+  EXPECT_EQ(test::run_hipr(bad_tile).exit_code, kExitBadInput);
 }
 
 std::string scene_test_name(const testing::TestParamInfo<std::string>& param_info) {

@@ -142,12 +142,14 @@ std::vector<bool> occluder_interior_tiles(const RenderSettings& s) {
   const float depth = kCamera.z - kOccluderHi.z;
   const auto px = [&](float x) { return ((x - kCamera.x) / depth / tan_x + 1.0f) * 0.5f * float(s.width); };
   const auto py = [&](float y) { return (1.0f - (y - kCamera.y) / depth / tan_y) * 0.5f * float(s.height); };
-  const uint32_t tiles_x = (s.width + s.tile_size - 1) / s.tile_size, tiles_y = (s.height + s.tile_size - 1) / s.tile_size;
+  const uint32_t tiles_x = (s.width + s.tile_size - 1) / s.tile_size;
+  const uint32_t tiles_y = (s.height + s.tile_size - 1) / s.tile_size;
   std::vector<bool> interior(size_t(tiles_x) * tiles_y, false);
   for (uint32_t ty = 0; ty < tiles_y; ++ty)
     for (uint32_t tx = 0; tx < tiles_x; ++tx) {
       const float t = float(s.tile_size);
-      interior[ty * tiles_x + tx] = float(tx) * t >= px(kOccluderLo.x) + t && float(tx + 1) * t <= px(kOccluderHi.x) - t &&
+      interior[ty * tiles_x + tx] = float(tx) * t >= px(kOccluderLo.x) + t &&
+                                    float(tx + 1) * t <= px(kOccluderHi.x) - t &&
                                     float(ty) * t >= py(kOccluderHi.y) + t && float(ty + 1) * t <= py(kOccluderLo.y) - t;
     }
   return interior;

@@ -128,7 +128,8 @@ INSTANTIATE_TEST_SUITE_P(
                     {"HIPR_FEATURE_COAT", "HIPR_FEATURE_TRANSMISSION"}},
         // A glowing sphere in the otherwise unlit furnace scene: emission at hits and light sampling.
         FeatureEdit{"Emission", "furnace_sphere.gltf",
-                    MaterialEdit{"white_lambert", {{"emission_luminance", {2.0f}}, {"emission_color", {1.0f, 0.9f, 0.8f}}}},
+                    MaterialEdit{"white_lambert",
+                                 {{"emission_luminance", {2.0f}}, {"emission_color", {1.0f, 0.9f, 0.8f}}}},
                     MaterialEdit{"white_lambert", {{"emission_luminance", {0.0f}}}},
                     {"HIPR_FEATURE_EMISSION"}},
         // A half-transparent wall: the kernel's rays must stop treating everything as opaque.

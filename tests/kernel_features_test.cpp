@@ -78,7 +78,8 @@ TEST(KernelFeatures, EachFeatureIsFoundWhereTheSceneUsesIt) {
               m.flags |= abi::kMaterialThinWalled;  // a thin wall has no inside to absorb in
             }),
             bit("HIPR_FEATURE_TRANSMISSION"));
-  EXPECT_EQ(with([](Scene& s, M&) { s.environment = test::uniform_environment(1.0f); }), bit("HIPR_FEATURE_ENVIRONMENT"));
+  EXPECT_EQ(with([](Scene& s, M&) { s.environment = test::uniform_environment(1.0f); }),
+            bit("HIPR_FEATURE_ENVIRONMENT"));
   EXPECT_EQ(with([](Scene& s, M&) {
               s.lights.push_back({});
               s.nodes.back().light = 0;

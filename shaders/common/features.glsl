@@ -60,7 +60,8 @@
 #endif
 
 // Something to sample for next-event estimation: without it the light-sampling code is left out.
-#define HIPR_HAS_LIGHTS (HIPR_FEATURE_EMISSION != 0 || HIPR_FEATURE_PUNCTUAL_LIGHTS != 0 || HIPR_FEATURE_ENVIRONMENT != 0)
+#define HIPR_HAS_LIGHTS \
+  (HIPR_FEATURE_EMISSION != 0 || HIPR_FEATURE_PUNCTUAL_LIGHTS != 0 || HIPR_FEATURE_ENVIRONMENT != 0)
 
 // A material's texture slot as the kernel reads it: without the feature every slot is empty
 // (kInvalidIndex), which every lookup tests first, so the lookups fold away.

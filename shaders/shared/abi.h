@@ -38,7 +38,7 @@ HIPR_CONST uint kBindingStats = 15u;         // RenderStats
 HIPR_CONST uint kBindingFrame = 16u;         // FrameParams (one)
 HIPR_CONST uint kBindingBsdfTables = 28u;    // float: generated BSDF tables (bsdf/ggx_energy_table.glsl)
 HIPR_CONST uint kBindingMaterialProbe = 29u; // MaterialInputsProbe: material_probe.comp's output (inspection)
-HIPR_CONST uint kBindingTileBackground = 30u; // uint per tile: 1 = its camera rays cannot hit anything (background only)
+HIPR_CONST uint kBindingTileBackground = 30u; // uint per tile: 1 = its camera rays cannot hit anything
 // HiPR scheduling (stages 1-3)
 HIPR_CONST uint kBindingGBuffer = 17u;          // GBufferTexel per pixel, this scene state
 HIPR_CONST uint kBindingPreviousGBuffer = 18u;  // GBufferTexel per pixel, before the edit

@@ -10,8 +10,10 @@ namespace {
 
 // Relative padding of world bounds: far above the float rounding of the GPU's transforms and hits.
 constexpr double kBoundsPadding = 1e-5;
-// Triangles per leaf of a mesh's box tree.
+// Triangles per leaf of a mesh's box tree: at least this many, and leaves at most that many
+// (huge meshes have triangles far below a pixel; their tree stays small and quick to build).
 constexpr size_t kLeafTriangles = 8;
+constexpr size_t kMaxLeaves = 8192;
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -72,8 +74,9 @@ Footprint footprint(const View& view, const glm::dvec3& lo, const glm::dvec3& hi
     }
   }
   if (!(sx0 <= sx1)) return {};
-  return {Footprint::Rectangle, (sx0 / view.tan_x + 1.0) * 0.5 * view.width, (sx1 / view.tan_x + 1.0) * 0.5 * view.width,
-          (1.0 - sy1 / view.tan_y) * 0.5 * view.height, (1.0 - sy0 / view.tan_y) * 0.5 * view.height};
+  return {Footprint::Rectangle, (sx0 / view.tan_x + 1.0) * 0.5 * view.width,
+          (sx1 / view.tan_x + 1.0) * 0.5 * view.width, (1.0 - sy1 / view.tan_y) * 0.5 * view.height,
+          (1.0 - sy0 / view.tan_y) * 0.5 * view.height};
 }
 
 // The world box of an object box under `world`, padded by kBoundsPadding x `magnitude`.
@@ -90,28 +93,32 @@ std::pair<glm::dvec3, glm::dvec3> world_box(const glm::dmat4& world, const glm::
 
 }  // namespace
 
-uint32_t BackgroundTiles::build_tree(std::vector<Node>& nodes, const std::vector<Box>& triangles,
-                                     std::vector<uint32_t>::iterator first, std::vector<uint32_t>::iterator last) {
+uint32_t BackgroundTiles::build_tree(std::vector<Node>& nodes, size_t leaf_size, std::vector<Triangle>::iterator first,
+                                     std::vector<Triangle>::iterator last) {
   const uint32_t index = uint32_t(nodes.size());
   nodes.emplace_back();
-  glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL), c_lo(HUGE_VAL), c_hi(-HUGE_VAL);
-  for (auto it = first; it != last; ++it) {
-    lo = glm::min(lo, triangles[*it].first);
-    hi = glm::max(hi, triangles[*it].second);
-    const glm::dvec3 c = triangles[*it].first + triangles[*it].second;
-    c_lo = glm::min(c_lo, c);
-    c_hi = glm::max(c_hi, c);
+  if (size_t(last - first) <= leaf_size) {
+    Box box{glm::vec3(HUGE_VALF), glm::vec3(-HUGE_VALF)};
+    for (auto it = first; it != last; ++it)
+      box = {glm::min(box.first, it->box.first), glm::max(box.second, it->box.second)};
+    nodes[index].box = box;
+    return index;
   }
-  nodes[index].box = {lo, hi};
-  if (size_t(last - first) <= kLeafTriangles) return index;
-  const glm::dvec3 spread = c_hi - c_lo;
+  // Median split along the longest axis of the centres.
+  glm::vec3 c_lo(HUGE_VALF), c_hi(-HUGE_VALF);
+  for (auto it = first; it != last; ++it) {
+    c_lo = glm::min(c_lo, it->centre);
+    c_hi = glm::max(c_hi, it->centre);
+  }
+  const glm::vec3 spread = c_hi - c_lo;
   const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
   const auto middle = first + (last - first) / 2;
-  std::nth_element(first, middle, last, [&](uint32_t a, uint32_t b) {
-    return triangles[a].first[axis] + triangles[a].second[axis] < triangles[b].first[axis] + triangles[b].second[axis];
-  });
-  const uint32_t left = build_tree(nodes, triangles, first, middle);
-  const uint32_t right = build_tree(nodes, triangles, middle, last);
+  std::nth_element(first, middle, last,
+                   [axis](const Triangle& a, const Triangle& b) { return a.centre[axis] < b.centre[axis]; });
+  const uint32_t left = build_tree(nodes, leaf_size, first, middle);
+  const uint32_t right = build_tree(nodes, leaf_size, middle, last);
+  nodes[index].box = {glm::min(nodes[left].box.first, nodes[right].box.first),
+                      glm::max(nodes[left].box.second, nodes[right].box.second)};
   nodes[index].left = left;
   nodes[index].right = right;
   nodes[index].leaf = false;
@@ -121,22 +128,22 @@ uint32_t BackgroundTiles::build_tree(std::vector<Node>& nodes, const std::vector
 BackgroundTiles::BackgroundTiles(const Scene& scene) {
   for (const Mesh& mesh : scene.meshes) {
     MeshTree tree;
-    std::vector<Box> triangles;
+    std::vector<Triangle> triangles;
     for (const MeshPrimitive& p : mesh.primitives)
       for (size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-        Box box{glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL)};
+        Triangle triangle{{glm::vec3(HUGE_VALF), glm::vec3(-HUGE_VALF)}, glm::vec3(0.0f)};
         for (size_t k = 0; k < 3; ++k) {
           if (p.indices[t + k] >= p.positions.size()) continue;  // the loader rejects these
-          const glm::dvec3 v(p.positions[p.indices[t + k]]);
-          tree.unbounded = tree.unbounded || !finite(v);
-          box = {glm::min(box.first, v), glm::max(box.second, v)};
+          const glm::vec3& v = p.positions[p.indices[t + k]];
+          tree.unbounded = tree.unbounded || !finite(glm::dvec3(v));
+          triangle.box = {glm::min(triangle.box.first, v), glm::max(triangle.box.second, v)};
         }
-        if (box.first.x <= box.second.x) triangles.push_back(box);
+        triangle.centre = 0.5f * (triangle.box.first + triangle.box.second);
+        if (triangle.box.first.x <= triangle.box.second.x) triangles.push_back(triangle);
       }
     if (!triangles.empty() && !tree.unbounded) {
-      std::vector<uint32_t> order(triangles.size());
-      for (uint32_t t = 0; t < order.size(); ++t) order[t] = t;
-      build_tree(tree.nodes, triangles, order.begin(), order.end());
+      const size_t leaf_size = std::max(kLeafTriangles, triangles.size() / kMaxLeaves);
+      build_tree(tree.nodes, leaf_size, triangles.begin(), triangles.end());
     }
     m_meshes.push_back(std::move(tree));
   }
@@ -202,7 +209,7 @@ std::vector<uint32_t> BackgroundTiles::mask(const Scene& scene, uint32_t width, 
     if (tree.unbounded) return nothing_is_background();
     if (tree.nodes.empty()) continue;
     const glm::dmat4 world(instance.world);
-    const auto [lo, hi] = world_box(world, tree.nodes[0].box.first, tree.nodes[0].box.second, 0.0);
+    const auto [lo, hi] = world_box(world, glm::dvec3(tree.nodes[0].box.first), glm::dvec3(tree.nodes[0].box.second), 0.0);
     if (!finite(lo) || !finite(hi)) return nothing_is_background();
     const double magnitude = std::max({glm::length(hi - lo), glm::length(lo - view.origin),
                                        glm::length(hi - view.origin), glm::length(view.origin)});
@@ -211,7 +218,7 @@ std::vector<uint32_t> BackgroundTiles::mask(const Scene& scene, uint32_t width, 
     while (!stack.empty()) {
       const Node& node = tree.nodes[stack.back()];
       stack.pop_back();
-      const auto [b_lo, b_hi] = world_box(world, node.box.first, node.box.second, magnitude);
+      const auto [b_lo, b_hi] = world_box(world, glm::dvec3(node.box.first), glm::dvec3(node.box.second), magnitude);
       const Footprint f = footprint(view, b_lo, b_hi);
       if (f.kind == Footprint::Everywhere) return nothing_is_background();
       if (f.kind == Footprint::Nowhere) continue;

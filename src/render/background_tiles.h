@@ -26,7 +26,7 @@ class BackgroundTiles {
   std::vector<uint32_t> mask(const Scene& scene, uint32_t width, uint32_t height, uint32_t tile_size) const;
 
  private:
-  using Box = std::pair<glm::dvec3, glm::dvec3>;  // min, max
+  using Box = std::pair<glm::vec3, glm::vec3>;  // min, max (of float vertices: exact in float)
   // A mesh's triangles bounded by a binary tree of boxes (median splits along the longest
   // axis; leaves of a few triangles). A box is refined only where it covers tiles not yet
   // known to show geometry, so round or sprawling meshes (a sphere, whose whole box covers the
@@ -40,10 +40,13 @@ class BackgroundTiles {
     std::vector<Node> nodes;  // nodes[0] is the root; empty for meshes without triangles
     bool unbounded = false;   // a vertex is not finite: assume it may be seen anywhere
   };
-  // Appends the subtree over triangles [first, last) (indices into `triangles`, reordered) to
-  // `nodes`; returns its index.
-  static uint32_t build_tree(std::vector<Node>& nodes, const std::vector<Box>& triangles,
-                             std::vector<uint32_t>::iterator first, std::vector<uint32_t>::iterator last);
+  struct Triangle {
+    Box box;
+    glm::vec3 centre;
+  };
+  // Appends the subtree over triangles [first, last) (reordered) to `nodes`; returns its index.
+  static uint32_t build_tree(std::vector<Node>& nodes, size_t leaf_size, std::vector<Triangle>::iterator first,
+                             std::vector<Triangle>::iterator last);
 
   std::vector<MeshTree> m_meshes;
 };

@@ -33,19 +33,23 @@ const std::vector<KernelFeature>& kernel_feature_table() {
       {1u << 0, "HIPR_FEATURE_SPECULAR", "specular",
        [](const M& m) { return m.specular_weight > 0.0f && m.base_metalness < 1.0f; }, nullptr, true},
       {1u << 1, "HIPR_FEATURE_METAL", "metal", [](const M& m) { return m.base_metalness > 0.0f; }, nullptr, true},
-      {1u << 2, "HIPR_FEATURE_TRANSMISSION", "transmission", [](const M& m) { return m.transmission_weight > 0.0f; },
+      {1u << 2, "HIPR_FEATURE_TRANSMISSION", "transmission",
+       [](const M& m) { return m.transmission_weight > 0.0f; }, nullptr, true},
+      {1u << 3, "HIPR_FEATURE_SUBSURFACE", "subsurface", [](const M& m) { return m.subsurface_weight > 0.0f; },
        nullptr, true},
-      {1u << 3, "HIPR_FEATURE_SUBSURFACE", "subsurface", [](const M& m) { return m.subsurface_weight > 0.0f; }, nullptr, true},
       {1u << 4, "HIPR_FEATURE_COAT", "coat", [](const M& m) { return m.coat_weight > 0.0f; }, nullptr, true},
       {1u << 5, "HIPR_FEATURE_FUZZ", "fuzz", [](const M& m) { return m.fuzz_weight > 0.0f; }, nullptr, true},
-      {1u << 6, "HIPR_FEATURE_THIN_FILM", "thin film", [](const M& m) { return m.thin_film_weight > 0.0f; }, nullptr, true},
+      {1u << 6, "HIPR_FEATURE_THIN_FILM", "thin film", [](const M& m) { return m.thin_film_weight > 0.0f; },
+       nullptr, true},
       {1u << 7, "HIPR_FEATURE_DIFFUSE_ROUGHNESS", "diffuse roughness",
        [](const M& m) { return m.base_diffuse_roughness > 0.0f; }, nullptr, true},
       {1u << 8, "HIPR_FEATURE_ANISOTROPY", "anisotropy", [](const M& m) { return m.specular_anisotropy > 0.0f; },
        nullptr, true},
       {1u << 9, "HIPR_FEATURE_TEXTURES", "textures", has_texture, nullptr, false},
       {1u << 10, "HIPR_FEATURE_NORMAL_MAP", "normal maps",
-       [](const M& m) { return m.normal_texture != abi::kInvalidIndex || m.clearcoat_normal_texture != abi::kInvalidIndex; },
+       [](const M& m) {
+         return m.normal_texture != abi::kInvalidIndex || m.clearcoat_normal_texture != abi::kInvalidIndex;
+       },
        nullptr, false},
       {1u << 11, "HIPR_FEATURE_EMISSION", "emissive triangles", is_emissive, nullptr, false},
       {1u << 12, "HIPR_FEATURE_PUNCTUAL_LIGHTS", "punctual lights", nullptr,
@@ -57,10 +61,12 @@ const std::vector<KernelFeature>& kernel_feature_table() {
        false},
       {1u << 13, "HIPR_FEATURE_ENVIRONMENT", "environment", nullptr,
        [](const Scene& s) { return s.environment.has_value(); }, false},
-      {1u << 14, "HIPR_FEATURE_CUTOUT", "opacity cutout", [](const M& m) { return !material_is_opaque(m); }, nullptr, false},
+      {1u << 14, "HIPR_FEATURE_CUTOUT", "opacity cutout", [](const M& m) { return !material_is_opaque(m); },
+       nullptr, false},
       {1u << 15, "HIPR_FEATURE_VOLUME", "volume absorption",
        [](const M& m) {
-         return m.transmission_weight > 0.0f && m.transmission_depth > 0.0f && (m.flags & abi::kMaterialThinWalled) == 0;
+         return m.transmission_weight > 0.0f && m.transmission_depth > 0.0f &&
+                (m.flags & abi::kMaterialThinWalled) == 0;
        },
        nullptr, false},
   };

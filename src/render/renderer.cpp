@@ -136,7 +136,8 @@ struct Renderer::Impl {
   // Which tiles' camera rays cannot hit anything, for the scene's camera and instances.
   void update_background(const Scene& scene) {
     std::vector<uint32_t> mask(all_tiles.size(), 0u);
-    if (settings.skip_background_tiles) mask = background.mask(scene, settings.width, settings.height, settings.tile_size);
+    if (settings.skip_background_tiles)
+      mask = background.mask(scene, settings.width, settings.height, settings.tile_size);
     tile_background.upload(mask.data(), mask.size() * sizeof(uint32_t));
   }
 
