@@ -62,6 +62,18 @@ TEST(KernelFeatures, EachFeatureIsFoundWhereTheSceneUsesIt) {
   };
   using M = abi::MaterialBlock;
   EXPECT_EQ(with([](Scene&, M& m) { m.metallic_roughness_texture = 0; }), bit("HIPR_FEATURE_TEXTURES"));
+  EXPECT_EQ(with([](Scene&, M& m) {
+              m.base_metalness = 1.0f;
+              m.specular_weight = 1.0f;
+            }),
+            bit("HIPR_FEATURE_METAL"));
+  // The texture scales metalness down: the dielectric specular shows where it does.
+  EXPECT_EQ(with([](Scene&, M& m) {
+              m.base_metalness = 1.0f;
+              m.specular_weight = 1.0f;
+              m.metallic_roughness_texture = 0;
+            }),
+            bit("HIPR_FEATURE_METAL") | bit("HIPR_FEATURE_SPECULAR") | bit("HIPR_FEATURE_TEXTURES"));
   EXPECT_EQ(with([](Scene&, M& m) { m.normal_texture = 0; }),
             bit("HIPR_FEATURE_TEXTURES") | bit("HIPR_FEATURE_NORMAL_MAP"));
   EXPECT_EQ(with([](Scene&, M& m) { m.geometry_opacity = 0.5f; }), bit("HIPR_FEATURE_CUTOUT"));
@@ -162,6 +174,26 @@ Scene textured_blend_card() {
   return scene;
 }
 
+// A metal card whose metallic-roughness texture makes half of it dielectric, under a sky.
+Scene half_metal_card() {
+  Scene scene = test::make_card_camera_scene(1.0f);
+  Image image;
+  image.name = "metalness";
+  image.width = image.height = 2;
+  image.rgba8 = {0, 128, 255, 255, 0, 60, 0, 255, 0, 200, 0, 255, 0, 30, 255, 255};  // G roughness, B metalness
+  scene.images.push_back(image);
+  Texture texture;
+  texture.name = "metalness";
+  texture.flags = abi::kTextureNearest;
+  scene.textures.push_back(texture);
+  abi::MaterialBlock card = default_material_params();
+  card.base_color = glm::vec3(0.9f, 0.6f, 0.3f);
+  card.base_metalness = 1.0f;
+  card.metallic_roughness_texture = 0;
+  test::add_card(scene, "card", glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(1.0f, 0.0f, 0.0f)), card);
+  return scene;
+}
+
 struct SceneCase {
   const char* name;
   Scene (*make)();
@@ -188,6 +220,7 @@ INSTANTIATE_TEST_SUITE_P(
                       SceneCase{"CornellSphere", [] { return load_scene(test::asset("cornell_sphere.glb")); }, false},
                       SceneCase{"LampOnly", lamp_only, true},
                       SceneCase{"TexturedBlendCard", textured_blend_card, false},
+                      SceneCase{"HalfMetalCard", half_metal_card, false},
                       SceneCase{"FurnaceUnderSky",
                                 [] { return test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.8f, 1.0f); }, false}),
     [](const testing::TestParamInfo<SceneCase>& param_info) { return std::string(param_info.param.name); });

@@ -30,8 +30,13 @@ bool is_emissive(const M& m) {
 
 const std::vector<KernelFeature>& kernel_feature_table() {
   static const std::vector<KernelFeature> table = {
+      // Fully metal has no dielectric specular, unless a metallic-roughness texture lowers the metalness.
       {1u << 0, "HIPR_FEATURE_SPECULAR", "specular",
-       [](const M& m) { return m.specular_weight > 0.0f && m.base_metalness < 1.0f; }, nullptr, true},
+       [](const M& m) {
+         return m.specular_weight > 0.0f &&
+                (m.base_metalness < 1.0f || m.metallic_roughness_texture != abi::kInvalidIndex);
+       },
+       nullptr, true},
       {1u << 1, "HIPR_FEATURE_METAL", "metal", [](const M& m) { return m.base_metalness > 0.0f; }, nullptr, true},
       {1u << 2, "HIPR_FEATURE_TRANSMISSION", "transmission",
        [](const M& m) { return m.transmission_weight > 0.0f; }, nullptr, true},
