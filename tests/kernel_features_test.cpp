@@ -316,6 +316,48 @@ TEST(BackgroundTiles, FollowTheCameraAndTheObjects) {
   EXPECT_EQ(renderer.image().rgb, render(scene, trace, 2).image.rgb);
 }
 
+// HiPR from afar: a block outside the box moves back in, so the tiles it left are active and see
+// only background now (stage 2 renders them with the shortcut). Stages 1-3 and the scheduled
+// re-render give the same tile flags, weights, schedule and image with and without it.
+TEST(BackgroundTiles, HiprStagesAreTheSameWithTheShortcut) {
+  Scene before = cornell_from_afar();
+  apply_edit(before, TransformEdit{"short_block", glm::vec3(-0.9f, 0.0f, 0.0f), std::nullopt});
+  const Scene after = cornell_from_afar();
+  const ChangeSet changes = diff_scenes(before, after);
+  const std::vector<uint32_t> left = background_mask(after);
+  struct Result {
+    std::vector<uint32_t> flags, schedule;
+    std::vector<double> weights;
+    ImageRGB image;
+    uint64_t rays;
+  };
+  const auto run = [&](bool skip) {
+    RenderSettings s = settings();
+    s.skip_background_tiles = skip;
+    Renderer renderer(test::context(), before, s);
+    renderer.add_samples_full_frame(1);
+    renderer.stage1_visibility({});
+    renderer.update_scene(after, changes);
+    renderer.mark_all_owed();
+    renderer.reset_counters();
+    renderer.stage1_visibility(changes);
+    renderer.stage2_discover(2);
+    renderer.build_schedule();
+    renderer.render_schedule(0, renderer.tile_count(), 2, true);
+    return Result{renderer.tile_flags(), renderer.schedule(), renderer.tile_weights(), renderer.image(),
+                  renderer.counters().rays};
+  };
+  const Result skipped = run(true), traced = run(false);
+  size_t active_background = 0;
+  for (size_t t = 0; t < left.size(); ++t) active_background += left[t] && (traced.flags[t] & abi::kTileActive) ? 1 : 0;
+  EXPECT_GT(active_background, 0u);
+  EXPECT_EQ(skipped.flags, traced.flags);
+  EXPECT_EQ(skipped.weights, traced.weights);
+  EXPECT_EQ(skipped.schedule, traced.schedule);
+  EXPECT_EQ(skipped.image.rgb, traced.image.rgb);
+  EXPECT_LT(skipped.rays, traced.rays);
+}
+
 TEST(BackgroundTiles, NoneAroundACameraInsideGeometryAllWhenEverythingIsBehind) {
   Scene inside = load_scene(test::asset("cornell_box.gltf"));
   EXPECT_EQ(count_background(background_mask(inside)), 0u);
