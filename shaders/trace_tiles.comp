@@ -1,7 +1,7 @@
 #version 460
 // Path-tracing megakernel over a list of tiles.
 // Reads:  scene buffers (geometry, materials, textures, lights, environment), the TLAS,
-//         the tile list (tile ids in render order) and FrameParams.
+//         the tile list (tile ids in render order), the background-tile mask and FrameParams.
 // Writes: per-pixel accumulation (radiance sum + sample count) and the ray/sample counters.
 // One invocation owns one pixel for the whole dispatch and adds `samplesPerPixel` samples
 // whose indices continue the pixel's count, so results never depend on tile order.
@@ -62,7 +62,7 @@ struct RayHit {
 
 bool trace_closest(vec3 origin, vec3 direction, out RayHit hit) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsNoneEXT, 0xff, origin, 0.0, direction, kFloatMax);
+  rayQueryInitializeEXT(query, u_tlas, kCutoutRayFlags, 0xff, origin, 0.0, direction, kFloatMax);
   cutout_proceed(query, origin, direction);
   if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return false;
   hit.t = rayQueryGetIntersectionTEXT(query, true);
@@ -77,7 +77,8 @@ bool trace_closest(vec3 origin, vec3 direction, out RayHit hit) {
 
 bool occluded(vec3 origin, vec3 direction, float tMax) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsTerminateOnFirstHitEXT, 0xff, origin, 0.0, direction, tMax);
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsTerminateOnFirstHitEXT | kCutoutRayFlags, 0xff, origin, 0.0,
+                        direction, tMax);
   cutout_proceed(query, origin, direction);
   return rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
 }
@@ -170,12 +171,24 @@ PathState start_path(uvec2 pixel, uint sampleIndex) {
   return p;
 }
 
-// Traces one segment and scatters; returns true when the path has ended.
-bool path_step(inout PathState p, inout uint rays) {
+// Traces one segment and scatters; returns true when the path has ended. `backgroundTile`:
+// the camera ray cannot hit anything (see main), so it misses without a query.
+bool path_step(inout PathState p, bool backgroundTile, inout uint rays) {
+#if !HIPR_HAS_LIGHTS && !HIPR_DISCOVERY
+  // Nothing emits and nothing can be sampled: every sample is black, whatever its path.
+  // (Stage 2 still walks paths: discovery weighs throughput, not radiance.)
+  return true;
+#endif
+#if HIPR_FEATURE_EMISSION == 0 && HIPR_FEATURE_ENVIRONMENT == 0
+  // With nothing to find at the end of a segment but a surface, a segment toward the vertex
+  // where the depth limit stops the path cannot add anything: not traced.
+  if (p.depth >= u_frame.maxDepth) return true;
+#endif
   RayHit hit;
-  rays += 1u;
-  if (!trace_closest(p.origin, p.direction, hit)) {
-    if (u_frame.environmentLight != kInvalidIndex) {
+  const bool query = p.depth > 0u || !backgroundTile;
+  if (query) rays += 1u;
+  if (!query || !trace_closest(p.origin, p.direction, hit)) {
+    if (HIPR_FEATURE_ENVIRONMENT != 0 && u_frame.environmentLight != kInvalidIndex) {
       float weight = 1.0;
       if (!p.previousDelta)
         weight = bsdf_hit_weight(p.previousPdf, light_selection_pdf(u_frame.environmentLight) * env_pdf(p.direction));
@@ -191,14 +204,14 @@ bool path_step(inout PathState p, inout uint rays) {
   // A ray that hits a transmissive solid from inside crossed its medium: Beer-Lambert.
   // (Media are not nested: a segment inside one solid that ends on another is not absorbed.)
   if (!surface.frontFacing && max3(shading.absorption) > 0.0) p.throughput *= exp(-shading.absorption * hit.t);
-  if (max3(shading.emission) > 0.0) {
+  if (HIPR_FEATURE_EMISSION != 0 && max3(shading.emission) > 0.0) {
     const float weight = p.previousDelta ? 1.0 : emitter_hit_weight(surface, hit.t, p.direction, p.previousPdf);
     p.radiance += p.throughput * shading.emission * weight;
   }
   if (p.depth >= u_frame.maxDepth) return true;
 
   const BsdfPoint bsdf = bsdf_point(params, BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent), wo);
-  if (u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly)
+  if (HIPR_HAS_LIGHTS && u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly)
     p.radiance += p.throughput * direct_light(surface, bsdf, rng_uniform4(p.rng, p.depth, 1u), luminance(p.throughput), rays);
 
   const vec4 u = rng_uniform4(p.rng, p.depth, 0u);
@@ -240,6 +253,10 @@ void main() {
                   u_push.skipFlags, pixel))
     return;
   const uint pixelIndex = pixel.y * u_frame.width + pixel.x;
+  // No camera ray of this tile can reach any instance's bounds (src/render/background_tiles.cpp):
+  // its samples are what a miss gives, with the same random numbers, without a ray query.
+  const bool backgroundTile =
+      b_tile_background[(pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize] != 0u;
   PixelAccum accum = b_accum[pixelIndex];
   if ((accum.count & kPixelOwed) != 0u) accum = PixelAccum(vec3(0.0), 0u, vec3(0.0));  // first visit since an edit
   uint rays = 0u;
@@ -248,7 +265,7 @@ void main() {
   uint finished = 0u;
   PathState path = start_path(pixel, accum.count);
   while (finished < u_push.samplesPerPixel) {
-    if (!path_step(path, rays)) continue;
+    if (!path_step(path, backgroundTile, rays)) continue;
     const vec3 value = path.radiance;
     if (any(isnan(value)) || any(isinf(value))) nonFinite += 1u;  // dropped, and counted
     else {

@@ -23,7 +23,7 @@ void main() {
   const vec3 direction = normalize(u_frame.cameraForward + ndc.x * u_frame.tanHalfFovY * u_frame.aspect * u_frame.cameraRight -
                                    ndc.y * u_frame.tanHalfFovY * u_frame.cameraUp);
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsNoneEXT, 0xff, u_frame.cameraPosition, 0.0, direction, 3.0e38);
+  rayQueryInitializeEXT(query, u_tlas, kCutoutRayFlags, 0xff, u_frame.cameraPosition, 0.0, direction, 3.0e38);
   cutout_proceed(query, u_frame.cameraPosition, direction);
   GBufferTexel texel = GBufferTexel(kInvalidIndex, 3.0e38);
   if (rayQueryGetIntersectionTypeEXT(query, true) == gl_RayQueryCommittedIntersectionTriangleEXT) {

@@ -230,6 +230,34 @@ TEST_P(InfoOnShippedScene, PrintsTheTriangleCount) {
   EXPECT_NE(result.output.find(expected), std::string::npos) << "no '" << expected << "' in\n" << result.output;
 }
 
+// `hipr info` lists the kernel features the scene uses, every one it skips, and the rays left out.
+TEST(Info, ListsKernelFeaturesSkippedFeaturesAndRays) {
+  const auto line = [](const std::string& output, const std::string& key) {
+    for (const std::string& l : test::lines_of(output))
+      if (l.rfind(key, 0) == 0) return l;
+    return std::string();
+  };
+  const test::CommandResult box = test::run_hipr("info " + quoted(test::asset("cornell_box.gltf")));
+  ASSERT_EQ(box.exit_code, kExitOk) << box.output;
+  EXPECT_EQ(line(box.output, "bsdf"), "bsdf       diffuse");
+  EXPECT_EQ(line(box.output, "kernel"), "kernel     emissive triangles");
+  for (const char* skipped : {"specular", "coat", "textures", "normal maps", "punctual lights", "environment",
+                              "opacity cutout", "volume absorption"})
+    EXPECT_NE(line(box.output, "skipped").find(skipped), std::string::npos) << skipped << "\n" << box.output;
+  EXPECT_EQ(line(box.output, "rays"), "rays       every ray is needed");
+
+  // The unlit furnace sphere: nothing to sample, nothing emits, and the frame's corners are empty.
+  const test::CommandResult furnace =
+      test::run_hipr("info " + quoted(test::asset("furnace_sphere.gltf")) + " --width 128 --height 128 --tile 16");
+  ASSERT_EQ(furnace.exit_code, kExitOk) << furnace.output;
+  EXPECT_EQ(line(furnace.output, "kernel"), "kernel     no other feature");
+  const std::string rays = line(furnace.output, "rays");
+  EXPECT_NE(rays.find("all of them (nothing emits"), std::string::npos) << rays;
+  EXPECT_NE(rays.find(" of 64 tiles (background only at 128x128, tile 16)"), std::string::npos) << rays;
+  const std::string bad_tile = "info " + quoted(test::asset("furnace_sphere.gltf")) + " --tile 0";
+  EXPECT_EQ(test::run_hipr(bad_tile).exit_code, kExitBadInput);
+}
+
 std::string scene_test_name(const testing::TestParamInfo<std::string>& param_info) {
   std::string name = param_info.param;
   for (char& c : name)

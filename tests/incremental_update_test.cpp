@@ -7,6 +7,7 @@
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
+#include "render/kernel_features.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -65,24 +66,76 @@ TEST(IncrementalUpdate, FiftyRapidEditsEndInTheFinalScene) {
   EXPECT_EQ(renderer.image().rgb, fresh_render(scene, 2).rgb);
 }
 
-// The Lambert-only box compiles a kernel without coat or transmission; an edit that adds them
-// recompiles it, keeps what was accumulated elsewhere in the pipeline, and renders exactly what
-// a renderer made for the edited scene renders.
-TEST(IncrementalUpdate, AnEditThatAddsAMaterialFeatureRecompilesTheKernel) {
-  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+// An edit that brings in a kernel feature (render/kernel_features.h) recompiles the kernel: the
+// accumulated samples and the schedule stay as they were, the edited scene renders exactly what a
+// renderer made for it renders, and editing back compiles nothing (features only grow).
+struct FeatureEdit {
+  const char* name;
+  const char* scene;
+  MaterialEdit edit;
+  MaterialEdit undo;
+  std::vector<const char*> brings;  // HIPR_FEATURE_* the edit brings in
+};
+
+void PrintTo(const FeatureEdit& edit, std::ostream* out) { *out << edit.name; }
+
+class FeatureEdits : public ::testing::TestWithParam<FeatureEdit> {};
+
+TEST_P(FeatureEdits, RecompileTheKernelAndKeepAccumulationAndSchedule) {
+  const FeatureEdit& p = GetParam();
+  Scene scene = load_scene(test::asset(p.scene));
+  if (scene.environment) scene.environment.reset();
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(1);
+  std::vector<uint32_t> order(renderer.tile_count());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = uint32_t(order.size()) - 1 - i;
+  renderer.set_schedule(order);
   const uint32_t before_features = renderer.kernel_features();
+  const ImageRGB accumulated = renderer.image();
+  uint32_t brought = 0;
+  for (const char* define : p.brings) brought |= kernel_feature_bit(define);
+  ASSERT_EQ(before_features & brought, 0u) << "the scene must lack what the edit brings";
+
   const Scene before = scene;
-  apply_edit(scene, MaterialEdit{"white", {{"coat_weight", {1.0f}}, {"transmission_weight", {0.5f}}}});
+  apply_edit(scene, p.edit);
   renderer.update_scene(scene, diff_scenes(before, scene));
-  EXPECT_NE(renderer.kernel_features(), before_features);
-  EXPECT_EQ(renderer.kernel_features() & before_features, before_features) << "features are only added";
+  EXPECT_EQ(renderer.kernel_features(), before_features | brought);
+  EXPECT_EQ(renderer.image().rgb, accumulated.rgb) << "the accumulation survives the recompile";
+  EXPECT_EQ(renderer.sample_counts(), std::vector<uint32_t>(size_t(32) * 32, 1u));
+  EXPECT_EQ(renderer.schedule(), order) << "the schedule survives the recompile";
   renderer.reset();
   renderer.add_samples_full_frame(2);
   EXPECT_EQ(renderer.image().rgb, fresh_render(scene, 2).rgb);
   EXPECT_NE(renderer.image().rgb, fresh_render(before, 2).rgb);
+
+  // Back and forth: the kernel keeps what it has.
+  const Scene edited = scene;
+  apply_edit(scene, p.undo);
+  renderer.update_scene(scene, diff_scenes(edited, scene));
+  EXPECT_EQ(renderer.kernel_features(), before_features | brought);
+  renderer.reset();
+  renderer.add_samples_full_frame(2);
+  EXPECT_EQ(renderer.image().rgb, fresh_render(before, 2).rgb);
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    Edits, FeatureEdits,
+    ::testing::Values(
+        // The Lambert-only box has no coat or transmission.
+        FeatureEdit{"CoatAndTransmission", "cornell_box.gltf",
+                    MaterialEdit{"white", {{"coat_weight", {1.0f}}, {"transmission_weight", {0.5f}}}},
+                    MaterialEdit{"white", {{"coat_weight", {0.0f}}, {"transmission_weight", {0.0f}}}},
+                    {"HIPR_FEATURE_COAT", "HIPR_FEATURE_TRANSMISSION"}},
+        // A glowing sphere in the otherwise unlit furnace scene: emission at hits and light sampling.
+        FeatureEdit{"Emission", "furnace_sphere.gltf",
+                    MaterialEdit{"white_lambert",
+                                 {{"emission_luminance", {2.0f}}, {"emission_color", {1.0f, 0.9f, 0.8f}}}},
+                    MaterialEdit{"white_lambert", {{"emission_luminance", {0.0f}}}},
+                    {"HIPR_FEATURE_EMISSION"}},
+        // A half-transparent wall: the kernel's rays must stop treating everything as opaque.
+        FeatureEdit{"Cutout", "cornell_box.gltf", MaterialEdit{"red", {{"geometry_opacity", {0.5f}}}},
+                    MaterialEdit{"red", {{"geometry_opacity", {1.0f}}}}, {"HIPR_FEATURE_CUTOUT"}}),
+    [](const testing::TestParamInfo<FeatureEdit>& param_info) { return std::string(param_info.param.name); });
 
 TEST(EditEquivalence, MovedBlockScriptConvergesToTheMovedFile) {
   Scene edited = load_scene(test::asset("cornell_box.gltf"));

@@ -1,5 +1,6 @@
 // The real-world material test scenes of ../shared/scenes (skipped when absent), each rendered
-// small under a studio environment: every sample finite, and a picture, not a black frame.
+// small under a studio environment: every sample finite, and a picture, not a black frame; the
+// kernel specialized for the scene and the shortcut for background tiles change no pixel.
 // The full-size renders these stand for are looked at by hand (see the README's commands).
 #include <gtest/gtest.h>
 
@@ -19,17 +20,41 @@ void PrintTo(const MaterialScene& s, std::ostream* os) { *os << s.name; }
 
 class MaterialScenes : public ::testing::TestWithParam<MaterialScene> {};
 
-TEST_P(MaterialScenes, RenderWithoutNonFiniteSamples) {
-  if (!test::shared_scenes_available()) GTEST_SKIP() << "../shared/scenes is not available";
-  const MaterialScene& param = GetParam();
+Scene load(const MaterialScene& param) {
   SceneLoadOptions options;
   options.environment = test::shared_scene("EnvMaps/studio_small_03_1k.hdr");
-  const Scene scene = load_scene(test::shared_scene(std::string(param.name) + "/" + param.file), options);
+  return load_scene(test::shared_scene(std::string(param.name) + "/" + param.file), options);
+}
+
+RenderSettings settings() {
   RenderSettings s;
   s.width = s.height = 48;
   s.max_depth = 8;
   s.seed = 9;
-  EXPECT_GT(test::mean(test::render_finite(scene, s, 4)), 0.01) << "a black frame";
+  return s;
+}
+
+TEST_P(MaterialScenes, RenderWithoutNonFiniteSamples) {
+  if (!test::shared_scenes_available()) GTEST_SKIP() << "../shared/scenes is not available";
+  EXPECT_GT(test::mean(test::render_finite(load(GetParam()), settings(), 4)), 0.01) << "a black frame";
+}
+
+ImageRGB render(const Scene& scene, const RenderSettings& s) {
+  Renderer renderer(test::context(), scene, s);
+  renderer.add_samples_full_frame(2);
+  return renderer.image();
+}
+
+TEST_P(MaterialScenes, SkippingWhatTheSceneDoesNotNeedChangesNoPixel) {
+  if (!test::shared_scenes_available()) GTEST_SKIP() << "../shared/scenes is not available";
+  const Scene scene = load(GetParam());
+  const ImageRGB image = render(scene, settings());
+  RenderSettings uber = settings();
+  uber.specialize_kernel = false;
+  EXPECT_EQ(image.rgb, render(scene, uber).rgb) << "specialized kernel against the uber kernel";
+  RenderSettings trace = settings();
+  trace.skip_background_tiles = false;
+  EXPECT_EQ(image.rgb, render(scene, trace).rgb) << "background tiles with and without ray queries";
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -43,7 +68,8 @@ INSTANTIATE_TEST_SUITE_P(
                       MaterialScene{"SheenChair", "SheenChair.gltf"},
                       MaterialScene{"EmissiveStrengthTest", "EmissiveStrengthTest.glb"},
                       MaterialScene{"LightsPunctualLamp", "LightsPunctualLamp.gltf"},
-                      MaterialScene{"GlassVaseFlowers", "GlassVaseFlowers.glb"}),
+                      MaterialScene{"GlassVaseFlowers", "GlassVaseFlowers.glb"},
+                      MaterialScene{"DamagedHelmet", "DamagedHelmet.glb"}),
     [](const auto& test_info) { return std::string(test_info.param.name); });
 
 }  // namespace

@@ -38,9 +38,12 @@ struct RenderSettings {
   uint32_t max_depth = 32;  // scattering events; 0 = emitters seen directly only
   uint32_t tile_size = 16;
   LightSampling light_sampling = LightSampling::Mis;
-  // Compile the path-tracing kernel with only the material features the scene uses (false: the
-  // uber kernel with every feature, for comparison).
+  // Compile the path-tracing kernel with only the features the scene uses (render/kernel_features.h;
+  // false: the uber kernel with every feature, for comparison).
   bool specialize_kernel = true;
+  // Tiles whose camera rays cannot hit anything take their samples without ray queries (same
+  // values, bit for bit; render/background_tiles.h). false: every camera ray is traced.
+  bool skip_background_tiles = true;
   HiprParameters hipr;
 };
 
@@ -78,7 +81,7 @@ class Renderer {
   uint32_t tiles_y() const;
   uint32_t tile_count() const;
   const GpuSceneInfo& scene_info() const;
-  // The material features (render/material_features.h bits) the kernel is compiled with.
+  // The kernel features (render/kernel_features.h bits) the kernel is compiled with.
   uint32_t kernel_features() const;
 
   // Adds `samples_per_pixel` samples to every pixel of the listed tiles (ids = y * tiles_x + x)

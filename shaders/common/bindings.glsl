@@ -24,6 +24,7 @@ layout(scalar, binding = kBindingAccumulation) buffer Accumulation { PixelAccum 
 layout(scalar, binding = kBindingStats) buffer Stats { RenderStats b_stats; };
 layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
 layout(scalar, binding = kBindingTileFlags) buffer TileFlags { uint b_tile_flags[]; };
+layout(scalar, binding = kBindingTileBackground) readonly buffer TileBackground { uint b_tile_background[]; };
 layout(scalar, binding = kBindingBsdfTables) readonly buffer BsdfTables { float b_bsdf_tables[]; };
 
 #endif

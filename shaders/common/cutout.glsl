@@ -1,13 +1,19 @@
 // Opacity cutout (glTF alphaMode MASK / BLEND, OpenPBR geometry_opacity) inside ray queries.
 // Geometry whose material needs no test is VK_GEOMETRY_OPAQUE_BIT_KHR and never reaches the
 // candidate loop; the rest stops there and is confirmed only where the test passes. Every
-// query of the renderer (closest hit, shadow, discovery blocker, stage 1) runs this one loop.
+// query of the renderer (closest hit, shadow, discovery blocker, stage 1) starts with
+// kCutoutRayFlags and runs this one loop. A kernel without HIPR_FEATURE_CUTOUT (every
+// material opaque) has no candidate code at all and marks its rays opaque.
 // Needs bindings.glsl (scene buffers) and textures.glsl.
 #ifndef HIPR_CUTOUT_GLSL
 #define HIPR_CUTOUT_GLSL
 
+#include "features.glsl"
 #include "rng.glsl"
 #include "vertices.glsl"
+
+// Ray flags of every query: without cutout geometry, rays treat everything as opaque.
+const uint kCutoutRayFlags = HIPR_FEATURE_CUTOUT != 0 ? gl_RayFlagsNoneEXT : gl_RayFlagsOpaqueEXT;
 
 // A uniform number in [0,1) fixed by the ray and the triangle: the same ray makes the same
 // choice whatever tile order or dispatch size produced it, so renders stay deterministic.
@@ -21,7 +27,7 @@ float cutout_random(vec3 origin, vec3 direction, uint record, uint primitive) {
 float cutout_opacity(uint record, uint primitive, vec2 bary, out float cutoff) {
   const GeometryRecord g = b_geometries[record];
   float opacity = b_materials[g.materialIndex].geometry_opacity;
-  const uint texture = b_materials[g.materialIndex].base_color_texture;
+  const uint texture = hipr_texture_slot(b_materials[g.materialIndex].base_color_texture);
   if (texture != kInvalidIndex && (b_materials[g.materialIndex].flags & kMaterialIgnoreTextureAlpha) == 0u)
     opacity *= sample_texture(texture, interpolate_uv(triangle_vertices(g, primitive), bary)).a;
   cutoff = b_materials[g.materialIndex].alpha_cutoff;
@@ -40,6 +46,7 @@ bool cutout_hit(uint record, uint primitive, vec2 bary, vec3 origin, vec3 direct
 // The mean of cutout_hit over rays: what light sampling weights an emitter's radiance by, so
 // it agrees with BSDF sampling, whose rays find the emitter only where cutout_hit lets them.
 float cutout_coverage(uint record, uint primitive, vec2 bary) {
+  if (HIPR_FEATURE_CUTOUT == 0) return 1.0;
   float cutoff;
   const float opacity = cutout_opacity(record, primitive, bary, cutoff);
   return cutoff >= 0.0 ? (opacity >= cutoff ? 1.0 : 0.0) : opacity;
@@ -47,6 +54,10 @@ float cutout_coverage(uint record, uint primitive, vec2 bary) {
 
 // Runs an initialised query to its end, confirming the candidate triangles that pass the test.
 void cutout_proceed(rayQueryEXT query, vec3 origin, vec3 direction) {
+#if HIPR_FEATURE_CUTOUT == 0
+  // Only opaque triangles: the first call runs the traversal to its end (and returns false).
+  rayQueryProceedEXT(query);
+#else
   while (rayQueryProceedEXT(query)) {
     if (rayQueryGetIntersectionTypeEXT(query, false) != gl_RayQueryCandidateIntersectionTriangleEXT) continue;
     const uint record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false)) +
@@ -55,6 +66,7 @@ void cutout_proceed(rayQueryEXT query, vec3 origin, vec3 direction) {
                    rayQueryGetIntersectionBarycentricsEXT(query, false), origin, direction))
       rayQueryConfirmIntersectionEXT(query);
   }
+#endif
 }
 
 #endif

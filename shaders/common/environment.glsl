@@ -3,6 +3,8 @@
 #ifndef HIPR_ENVIRONMENT_GLSL
 #define HIPR_ENVIRONMENT_GLSL
 
+#include "features.glsl"
+
 uint env_texel_count() { return u_frame.environmentWidth * u_frame.environmentHeight; }
 uint env_marginal_offset() { return 3u * env_texel_count(); }
 uint env_conditional_offset(uint row) {
@@ -29,7 +31,7 @@ uvec2 env_texel(vec2 uv) {
 }
 
 vec3 env_radiance(vec3 direction) {
-  if (u_frame.environmentLight == kInvalidIndex) return vec3(0.0);
+  if (HIPR_FEATURE_ENVIRONMENT == 0 || u_frame.environmentLight == kInvalidIndex) return vec3(0.0);
   const uvec2 t = env_texel(env_direction_to_uv(direction));
   const uint i = 3u * (t.y * u_frame.environmentWidth + t.x);
   return vec3(b_env[i], b_env[i + 1u], b_env[i + 2u]) * u_frame.environmentIntensity;

@@ -1,8 +1,9 @@
-// Compile-time material features of the path-tracing kernel: "skip what a scene doesn't need".
-// The renderer defines each HIPR_FEATURE_* as 0 or 1 from what the scene's materials use
-// (src/render/material_features.cpp, which lists the same names) and recompiles when an edit
-// brings in a feature the kernel lacks. A feature left out makes shading_params() hand the
-// BSDF a constant (no coat, no transmission, ...), so the compiler drops that lobe's code.
+// Compile-time features of the path-tracing kernel: "skip what a scene doesn't need".
+// The renderer defines each HIPR_FEATURE_* as 0 or 1 from what the scene uses
+// (src/render/kernel_features.cpp, which lists the same names in the same order) and
+// recompiles when an edit brings in a feature the kernel lacks. A feature left out turns what
+// it would read into a constant (no coat, no texture, no emission, no light of that kind, every
+// triangle opaque, ...), so the compiler drops its code instead of branching over it.
 // Undefined means 1: the uber kernel, which the C++ tests and --uber-kernel use.
 #ifndef HIPR_FEATURES_GLSL
 #define HIPR_FEATURES_GLSL
@@ -34,5 +35,37 @@
 #ifndef HIPR_FEATURE_ANISOTROPY  // specular_roughness_anisotropy > 0
 #define HIPR_FEATURE_ANISOTROPY 1
 #endif
+
+// ---- what the scene holds besides BSDF lobes ----
+#ifndef HIPR_FEATURE_TEXTURES  // a material reads a texture (any slot)
+#define HIPR_FEATURE_TEXTURES 1
+#endif
+#ifndef HIPR_FEATURE_NORMAL_MAP  // a normal or coat normal texture (also the tangent frame it needs)
+#define HIPR_FEATURE_NORMAL_MAP 1
+#endif
+#ifndef HIPR_FEATURE_EMISSION  // an emissive material: emission at hits and emissive-triangle light samples
+#define HIPR_FEATURE_EMISSION 1
+#endif
+#ifndef HIPR_FEATURE_PUNCTUAL_LIGHTS  // point, spot or directional lights
+#define HIPR_FEATURE_PUNCTUAL_LIGHTS 1
+#endif
+#ifndef HIPR_FEATURE_ENVIRONMENT  // an environment map: radiance of escaping rays, environment light samples
+#define HIPR_FEATURE_ENVIRONMENT 1
+#endif
+#ifndef HIPR_FEATURE_CUTOUT  // a material that is not opaque (alpha MASK/BLEND, geometry_opacity < 1)
+#define HIPR_FEATURE_CUTOUT 1
+#endif
+#ifndef HIPR_FEATURE_VOLUME  // Beer-Lambert absorption inside transmissive solids
+#define HIPR_FEATURE_VOLUME 1
+#endif
+
+// Something to sample for next-event estimation: without it the light-sampling code is left out.
+#define HIPR_HAS_LIGHTS \
+  (HIPR_FEATURE_EMISSION != 0 || HIPR_FEATURE_PUNCTUAL_LIGHTS != 0 || HIPR_FEATURE_ENVIRONMENT != 0)
+
+// A material's texture slot as the kernel reads it: without the feature every slot is empty
+// (kInvalidIndex), which every lookup tests first, so the lookups fold away.
+#define hipr_texture_slot(slot) (HIPR_FEATURE_TEXTURES != 0 ? (slot) : kInvalidIndex)
+#define hipr_normal_map_slot(slot) (HIPR_FEATURE_NORMAL_MAP != 0 ? hipr_texture_slot(slot) : kInvalidIndex)
 
 #endif

@@ -4,6 +4,8 @@
 #ifndef HIPR_LIGHTS_GLSL
 #define HIPR_LIGHTS_GLSL
 
+#include "features.glsl"
+
 struct LightSample {
   vec3 direction;   // from the shading point toward the light, unit
   float distance;   // to the sampled point; kFloatMax for lights at infinity
@@ -52,7 +54,8 @@ LightSample sample_light(vec3 position, vec4 u) {
   if (selection <= 0.0) return s;
   const Light light = b_lights[index];
 
-  if (light.type == kLightTriangle) {
+  // Light kinds the kernel was compiled without are never in the table (features.glsl).
+  if (HIPR_FEATURE_EMISSION != 0 && light.type == kLightTriangle) {
     const vec2 b = sample_triangle(u.yz);
     const vec3 p = light.position + b.x * light.edge1 + b.y * light.edge2;
     vec3 n = cross(light.edge1, light.edge2);
@@ -73,17 +76,17 @@ LightSample sample_light(vec3 position, vec4 u) {
     s.radiance = material_emission(g.materialIndex, interpolate_uv(v, b), cosAtLight) *
                  cutout_coverage(light.geometryRecord, light.primitive, b);
     s.pdf = selection * triangle_light_pdf(light, s.distance, cosAtLight);
-  } else if (light.type == kLightEnvironment) {
+  } else if (HIPR_FEATURE_ENVIRONMENT != 0 && light.type == kLightEnvironment) {
     float pdf;
     s.direction = env_sample(u.yz, pdf);
     s.radiance = env_radiance(s.direction);
     s.pdf = selection * pdf;
-  } else if (light.type == kLightDirectional) {
+  } else if (HIPR_FEATURE_PUNCTUAL_LIGHTS != 0 && light.type == kLightDirectional) {
     s.direction = -light.direction;
     s.radiance = light.intensity;
     s.pdf = selection;
     s.isDelta = true;
-  } else {  // point or spot
+  } else if (HIPR_FEATURE_PUNCTUAL_LIGHTS != 0) {  // point or spot
     const vec3 toLight = light.position - position;
     const float d2 = dot(toLight, toLight);
     if (d2 <= 0.0) return s;

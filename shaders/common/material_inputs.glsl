@@ -7,10 +7,12 @@
 
 // factor x texture channel `channel` (0..3), or the factor alone without a texture.
 float material_scalar(float factor, uint texture, int channel, SurfaceHit hit) {
+  texture = hipr_texture_slot(texture);
   return texture == kInvalidIndex ? factor : factor * sample_material_texture(texture, hit)[channel];
 }
 
 vec3 material_color(vec3 factor, uint texture, SurfaceHit hit) {
+  texture = hipr_texture_slot(texture);
   return texture == kInvalidIndex ? factor : factor * sample_material_texture(texture, hit).rgb;
 }
 
@@ -32,7 +34,7 @@ float material_coat_roughness(SurfaceHit hit) {
 // The coat's shading normal: clearcoatNormalTexture on the interpolated normal (glTF: without
 // it the coat follows the geometry, not the base's normal map). Same side as hit.geometricNormal.
 vec3 material_coat_normal(SurfaceHit hit) {
-  const uint texture = b_materials[hit.material].clearcoat_normal_texture;
+  const uint texture = hipr_normal_map_slot(b_materials[hit.material].clearcoat_normal_texture);
   if (texture == kInvalidIndex) return hit.vertexNormal;
   const vec3 front = hit.frontFacing ? hit.vertexNormal : -hit.vertexNormal;
   const vec3 n = apply_normal_map(texture, b_materials[hit.material].coat_normal_scale, hit, front);
@@ -68,7 +70,7 @@ float material_thin_film_weight(SurfaceHit hit) {
 // iridescenceThicknessTexture.g), or thin_film_thickness without the texture.
 float material_thin_film_thickness(SurfaceHit hit) {
   const float thickest = b_materials[hit.material].thin_film_thickness;
-  const uint texture = b_materials[hit.material].iridescence_thickness_texture;
+  const uint texture = hipr_texture_slot(b_materials[hit.material].iridescence_thickness_texture);
   if (texture == kInvalidIndex) return thickest;
   return mix(b_materials[hit.material].thin_film_thickness_min, thickest, sample_material_texture(texture, hit).g);
 }
@@ -85,7 +87,7 @@ MaterialAnisotropy material_anisotropy(SurfaceHit hit) {
   MaterialAnisotropy a;
   a.strength = b_materials[hit.material].specular_anisotropy;
   vec2 d = vec2(1.0, 0.0);
-  const uint texture = b_materials[hit.material].anisotropy_texture;
+  const uint texture = hipr_texture_slot(b_materials[hit.material].anisotropy_texture);
   if (texture != kInvalidIndex) {
     const vec3 t = sample_material_texture(texture, hit).rgb;
     d = t.xy * 2.0 - 1.0;

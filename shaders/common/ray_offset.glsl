@@ -1,12 +1,17 @@
 // Robust ray origins: move a hit point off its surface by a few ULPs along the geometric
-// normal, scaled with the position's magnitude so it works at any scene scale (method of
-// Waechter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection", RT Gems 2019).
+// normal, scaled with the position's magnitude (method of Waechter & Binder, "A Fast and Robust
+// Method for Avoiding Self-Intersection", RT Gems 2019). Near zero, where ULPs vanish, their
+// fixed offset suits a scene about a unit across; here it follows the scene's size
+// (FrameParams::rayOffsetScale), so a scene a ten-thousandth of a unit across gets the offsets
+// a unit-sized one gets, relative to its size. (A fixed 1/65536 started the rays of a scene
+// 1e-4 across 15% of its size away from their surfaces.)
+// Needs bindings.glsl (u_frame).
 #ifndef HIPR_RAY_OFFSET_GLSL
 #define HIPR_RAY_OFFSET_GLSL
 
 vec3 offset_ray_origin(vec3 p, vec3 ng) {
-  const float kOrigin = 1.0 / 32.0;
-  const float kFloatScale = 1.0 / 65536.0;
+  const float kOrigin = u_frame.rayOffsetScale * (1.0 / 32.0);
+  const float kFloatScale = u_frame.rayOffsetScale * (1.0 / 65536.0);
   const float kIntScale = 256.0;
   const ivec3 of_i = ivec3(kIntScale * ng);
   const vec3 p_i = vec3(intBitsToFloat(floatBitsToInt(p.x) + (p.x < 0.0 ? -of_i.x : of_i.x)),

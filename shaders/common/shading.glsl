@@ -20,11 +20,11 @@ ShadingParams shading_params(SurfaceHit hit, vec3 wo) {
   const uint material = hit.material;
   ShadingParams s;
   vec3 baseColor = b_materials[material].base_color;
-  const uint baseTexture = b_materials[material].base_color_texture;
+  const uint baseTexture = hipr_texture_slot(b_materials[material].base_color_texture);
   if (baseTexture != kInvalidIndex) baseColor *= sample_material_texture(baseTexture, hit).rgb;
   float metalness = b_materials[material].base_metalness;
   float roughness = b_materials[material].specular_roughness;
-  const uint mrTexture = b_materials[material].metallic_roughness_texture;
+  const uint mrTexture = hipr_texture_slot(b_materials[material].metallic_roughness_texture);
   if (mrTexture != kInvalidIndex) {
     const vec4 mr = sample_material_texture(mrTexture, hit);  // glTF packing: G roughness, B metalness
     roughness *= mr.g;
@@ -52,7 +52,7 @@ ShadingParams shading_params(SurfaceHit hit, vec3 wo) {
   p.transmission = HIPR_FEATURE_TRANSMISSION != 0 ? clamp(material_transmission_weight(hit), 0.0, 1.0) : 0.0;
   const vec3 transmissionColor = b_materials[material].transmission_color;
   const float depth = b_materials[material].transmission_depth;
-  const bool volume = !thin && depth > 0.0 && p.transmission > 0.0;
+  const bool volume = HIPR_FEATURE_VOLUME != 0 && !thin && depth > 0.0 && p.transmission > 0.0;
   p.transmissionColor = volume ? vec3(1.0) : transmissionColor;
   s.absorption = volume ? -log(clamp(transmissionColor, vec3(1.0e-6), vec3(1.0))) / depth : vec3(0.0);
   p.thinWalled = thin;

@@ -58,8 +58,8 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   hit.uvs = interpolate_uv(v, bary);
   // Only normal maps and anisotropy need the tangent frame: other hits skip its three loads.
   hit.tangent = vec4(0.0, 0.0, 0.0, 1.0);
-  if (b_materials[hit.material].normal_texture != kInvalidIndex ||
-      b_materials[hit.material].clearcoat_normal_texture != kInvalidIndex ||
+  if (hipr_normal_map_slot(b_materials[hit.material].normal_texture) != kInvalidIndex ||
+      hipr_normal_map_slot(b_materials[hit.material].clearcoat_normal_texture) != kInvalidIndex ||
       (HIPR_FEATURE_ANISOTROPY != 0 && b_materials[hit.material].specular_anisotropy > 0.0)) {
     const vec4 t = b_tangents[v.x] * b0 + b_tangents[v.y] * bary.x + b_tangents[v.z] * bary.y;
     vec3 tangent = mat3(objectToWorld) * t.xyz;
@@ -68,7 +68,7 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   }
 
   // Materials are read field by field: copying the whole block costs loads on CPU devices.
-  const uint normalTexture = b_materials[hit.material].normal_texture;
+  const uint normalTexture = hipr_normal_map_slot(b_materials[hit.material].normal_texture);
   hit.vertexNormal = ns;
   if (normalTexture != kInvalidIndex) ns = apply_normal_map(normalTexture, b_materials[hit.material].normal_scale, hit, ns);
 
@@ -88,9 +88,10 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
 // Emitted radiance toward a direction at cosine mu_o from the normal, after the coat and fuzz.
 // uvSets as in SurfaceHit.uvs (light sampling has no SurfaceHit).
 vec3 material_emission(uint material, vec4 uvSets, float mu_o) {
+  if (HIPR_FEATURE_EMISSION == 0) return vec3(0.0);
   vec3 e = b_materials[material].emission_color * b_materials[material].emission_luminance;
   if (max3(e) <= 0.0) return vec3(0.0);
-  const uint texture = b_materials[material].emission_texture;
+  const uint texture = hipr_texture_slot(b_materials[material].emission_texture);
   if (texture != kInvalidIndex) e *= sample_texture(texture, uvSets).rgb;
   const float coat = HIPR_FEATURE_COAT != 0 ? b_materials[material].coat_weight : 0.0;
   const float fuzz = HIPR_FEATURE_FUZZ != 0 ? b_materials[material].fuzz_weight : 0.0;

@@ -38,6 +38,7 @@ HIPR_CONST uint kBindingStats = 15u;         // RenderStats
 HIPR_CONST uint kBindingFrame = 16u;         // FrameParams (one)
 HIPR_CONST uint kBindingBsdfTables = 28u;    // float: generated BSDF tables (bsdf/ggx_energy_table.glsl)
 HIPR_CONST uint kBindingMaterialProbe = 29u; // MaterialInputsProbe: material_probe.comp's output (inspection)
+HIPR_CONST uint kBindingTileBackground = 30u; // uint per tile: 1 = its camera rays cannot hit anything
 HIPR_CONST uint kBindingDisplay = 33u;       // DisplayTexel per pixel: what the screen shows
 HIPR_CONST uint kBindingTileChange = 34u;    // uint per tile: how much of it stage 1 saw change
 // HiPR scheduling (stages 1-3)
@@ -276,6 +277,7 @@ struct FrameParams {
   float depthEpsilon; // relative depth tolerance of the projection test
   uint tileCount;
   uint tilesY;
+  float rayOffsetScale;  // size of the scene (diagonal of its bounds): scales ray_offset.glsl's offsets
 };
 
 // Stage 1 output per pixel: what the pixel-centre ray hit.

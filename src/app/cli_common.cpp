@@ -27,7 +27,10 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
   app.add_option("--w-occlusion", o.render.hipr.w_occlusion, "HiPR occlusion priority")->capture_default_str();
   app.add_option("--eps", o.render.hipr.depth_epsilon, "HiPR relative depth tolerance")->capture_default_str();
   app.add_flag("--uber-kernel", o.uber_kernel,
-               "Compile every BSDF feature into the kernel instead of only those the scene uses");
+               "Compile every kernel feature (BSDF lobes, textures, light kinds, cutout...) instead of only those "
+               "the scene uses");
+  app.add_flag("--trace-background-tiles", o.trace_background_tiles,
+               "Trace the camera rays of tiles that can only see background too (for comparison)");
   app.add_flag("--validate", o.validate, "Enable Vulkan validation layers; any validation error fails the run");
   app.add_option("--device", o.device, "Use the Vulkan device whose name contains this text");
   app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors and warnings");
@@ -71,6 +74,7 @@ void apply_preset(const std::string& name, HiprParameters& h) {
 
 void validate_common_options(CommonOptions& o) {
   o.render.specialize_kernel = !o.uber_kernel;
+  o.render.skip_background_tiles = !o.trace_background_tiles;
   const auto require = [](bool ok, const std::string& message) {
     if (!ok) throw InputError(message);
   };

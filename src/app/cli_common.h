@@ -20,13 +20,14 @@ struct CommonOptions {
   uint32_t spp = 64;
   SceneLoadOptions load;
   bool validate = false;
-  bool uber_kernel = false;  // every BSDF feature compiled in (RenderSettings::specialize_kernel off)
+  bool uber_kernel = false;  // every kernel feature compiled in (RenderSettings::specialize_kernel off)
+  bool trace_background_tiles = false;  // RenderSettings::skip_background_tiles off
   bool quiet = false;
   std::string device;
 };
 
 // Adds --width --height --spp --seed --max-depth --tile --env --env-intensity --env-rotation
-// --uber-kernel --validate --device --quiet.
+// --uber-kernel --trace-background-tiles --validate --device --quiet.
 void add_common_options(CLI::App& app, CommonOptions& options);
 
 // Checks ranges CLI11 cannot express and applies the HiPR preset/weights; throws InputError.

@@ -7,7 +7,8 @@
 #include "app/commands.h"
 #include "core/error.h"
 #include "core/log.h"
-#include "render/material_features.h"
+#include "render/background_tiles.h"
+#include "render/kernel_features.h"
 
 namespace hipr::app {
 namespace {
@@ -15,7 +16,14 @@ namespace {
 struct InfoOptions {
   std::filesystem::path scene;
   SceneLoadOptions load;
+  RenderSettings render;  // image and tile size: which tiles see only background
 };
+
+std::string joined(const std::vector<std::string>& items, const char* none) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text.empty() ? none : text;
+}
 
 const char* light_type_name(LightType type) {
   switch (type) {
@@ -74,24 +82,30 @@ int run_info(const InfoOptions& o) {
   for (const std::string& e : scene.extensions_used) extensions += (extensions.empty() ? "" : ", ") + e;
   std::printf("extensions %s\n", extensions.empty() ? "none" : extensions.c_str());
 
-  // The kernel is compiled with the BSDF features the materials use and nothing else.
-  const uint32_t features = material_features(scene);
-  std::string used = "diffuse";
-  for (const std::string& name : material_feature_names(features)) used += ", " + name;
-  std::printf("bsdf       %s\n", used.c_str());
+  // The kernel is compiled with the features the scene needs and nothing else (kernel_features.h).
+  const uint32_t features = kernel_features(scene);
+  std::vector<std::string> lobes = {"diffuse"}, others, skipped;
+  for (const KernelFeature& f : kernel_feature_table())
+    ((features & f.bit) ? (f.bsdf_lobe ? lobes : others) : skipped).emplace_back(f.name);
+  std::printf("bsdf       %s\n", joined(lobes, "").c_str());
+  std::printf("kernel     %s\n", joined(others, "no other feature").c_str());
+  std::printf("skipped    %s\n", joined(skipped, "nothing").c_str());
 
-  // What the path tracer has nothing to do for in this scene.
-  std::string skipped;
-  const auto skip = [&](bool condition, const std::string& what) {
-    if (condition) skipped += (skipped.empty() ? "" : ", ") + what;
-  };
-  for (const std::string& name : material_feature_names(features, false)) skip(true, name);
-  skip(emissive_triangles == 0 && punctual == 0 && !scene.environment, "next-event estimation (no lights)");
-  skip(scene.textures.empty(), "texture sampling");
-  skip(std::all_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return material_is_opaque(m.params); }),
-       "opacity cutout (all geometry opaque)");
-  skip(!scene.environment, "environment lookups");
-  std::printf("skipped    %s\n", skipped.empty() ? "nothing" : skipped.c_str());
+  // Rays nobody needs (trace_tiles.comp).
+  const auto has = [&](const char* define) { return (features & kernel_feature_bit(define)) != 0; };
+  std::vector<std::string> rays;
+  if (!has("HIPR_FEATURE_EMISSION") && !has("HIPR_FEATURE_PUNCTUAL_LIGHTS") && !has("HIPR_FEATURE_ENVIRONMENT"))
+    rays.emplace_back("all of them (nothing emits, no light to sample: the image is black)");
+  else if (!has("HIPR_FEATURE_EMISSION") && !has("HIPR_FEATURE_ENVIRONMENT"))
+    rays.emplace_back("segments to the last vertex (nothing emits there)");
+  const RenderSettings& r = o.render;
+  const std::vector<uint32_t> background = BackgroundTiles(scene).mask(scene, r.width, r.height, r.tile_size);
+  const size_t empty = size_t(std::count(background.begin(), background.end(), 1u));
+  if (empty > 0)
+    rays.push_back("camera rays of " + std::to_string(empty) + " of " + std::to_string(background.size()) +
+                   " tiles (background only at " + std::to_string(r.width) + "x" + std::to_string(r.height) +
+                   ", tile " + std::to_string(r.tile_size) + ")");
+  std::printf("rays       %s\n", rays.empty() ? "every ray is needed" : ("skipped: " + joined(rays, "")).c_str());
   return kExitOk;
 }
 
@@ -102,6 +116,15 @@ Command add_info_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("info", "Print what a scene contains and what the renderer will use");
   cmd->add_option("scene", options->scene, "Scene file (.gltf or .glb)")->required();
   cmd->add_option("--env", options->load.environment, "Equirectangular environment map (.hdr or .exr)");
+  cmd->add_option("--width", options->render.width, "Image width in pixels (for background tiles)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 16384u));
+  cmd->add_option("--height", options->render.height, "Image height in pixels (for background tiles)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 16384u));
+  cmd->add_option("--tile", options->render.tile_size, "Tile size n (for background tiles)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 256u));
   return {cmd, [options] { return run_info(*options); }};
 }
 

@@ -60,6 +60,7 @@ int run_render(RenderOptions& o) {
 
   // Batches grow until one submission takes ~0.25 s: few submissions, steady progress.
   const Timer timer;
+  const CpuTimer cpu_timer;
   ProgressBar progress(o.common.spp, !o.common.quiet);
   uint32_t done = 0, batch = 1;
   while (done < o.common.spp) {
@@ -72,6 +73,7 @@ int run_render(RenderOptions& o) {
     if (seconds < 0.25) batch = std::min<uint32_t>(batch * 2, 256);
   }
   const double render_seconds = timer.seconds();
+  const double render_cpu_seconds = cpu_timer.seconds();
   progress.finish();
 
   const ImageRGB image = renderer.image();
@@ -95,6 +97,7 @@ int run_render(RenderOptions& o) {
   if (!o.stats_json.empty()) {
     nlohmann::json stats = {
         {"render_seconds", render_seconds},
+        {"render_cpu_seconds", render_cpu_seconds},  // all threads: robust to a busy machine
         {"load_seconds", load_seconds},
         {"setup_seconds", setup_seconds},
         {"samples_per_second", samples / render_seconds},

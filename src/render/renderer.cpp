@@ -6,9 +6,10 @@
 
 #include "core/error.h"
 #include "hipr/scene_diff.h"
+#include "render/background_tiles.h"
 #include "render/bsdf_tables.h"
 #include "render/gpu_scene.h"
-#include "render/material_features.h"
+#include "render/kernel_features.h"
 #include "render/radix_sorter.h"
 #include "scene/default_camera.h"
 #include "vk/compute_pipeline.h"
@@ -69,6 +70,7 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, cons
   f.wPath = glm::vec3(h.w_path[0], h.w_path[1], h.w_path[2]);
   f.wOcclusion = h.w_occlusion;
   f.depthEpsilon = h.depth_epsilon;
+  f.rayOffsetScale = 2.0f * gpu.info().scene_radius;
   return f;
 }
 
@@ -77,13 +79,14 @@ std::vector<vk::BindingSlot> trace_bindings(bool discovery) {
   for (uint32_t b = abi::kBindingPositions; b <= abi::kBindingFrame; ++b) slots.push_back({b});
   slots.push_back({abi::kBindingTileFlags});
   slots.push_back({abi::kBindingBsdfTables});
+  slots.push_back({abi::kBindingTileBackground});
   if (discovery)
     for (uint32_t b : {abi::kBindingGBuffer, abi::kBindingChangedRecords, abi::kBindingTileWeights}) slots.push_back({b});
   return slots;
 }
 
 vk::ShaderDefines trace_defines(const RenderSettings& s, bool discovery, uint32_t features) {
-  vk::ShaderDefines defines = material_feature_defines(features);
+  vk::ShaderDefines defines = kernel_feature_defines(features);
   defines.emplace_back("HIPR_LIGHT_SAMPLING", std::to_string(int(s.light_sampling)));
   defines.emplace_back("HIPR_DISCOVERY", discovery ? "1" : "0");
   return defines;
@@ -103,7 +106,7 @@ struct Renderer::Impl {
         tiles_x((s.width + s.tile_size - 1) / s.tile_size),
         tiles_y((s.height + s.tile_size - 1) / s.tile_size),
         pixels(s.width * s.height),
-        features(s.specialize_kernel ? material_features(scene) : all_material_features()),
+        features(s.specialize_kernel ? hipr::kernel_features(scene) : all_kernel_features()),
         trace(make_trace(false)),
         accumulation(storage(c, size_t(pixels) * sizeof(abi::PixelAccum))),
         stats(storage(c, sizeof(abi::RenderStats))),
@@ -111,6 +114,8 @@ struct Renderer::Impl {
         tile_list(storage(c, size_t(tiles_x) * tiles_y * sizeof(uint32_t))),
         tile_flags(storage(c, size_t(tiles_x) * tiles_y * sizeof(uint32_t))),
         bsdf_tables(vk::make_storage_buffer(c, bsdf_table_data())),
+        background(scene),
+        tile_background(storage(c, size_t(tiles_x) * tiles_y * sizeof(uint32_t))),
         display(storage(c, size_t(pixels) * sizeof(abi::DisplayTexel))),
         mark_owed(c, "mark_owed.comp", {},
                   {{abi::kBindingFrame}, {abi::kBindingAccumulation}, {abi::kBindingTileFlags}}, 0),
@@ -132,6 +137,7 @@ struct Renderer::Impl {
     resolve.bind_buffer(abi::kBindingAccumulation, accumulation);
     resolve.bind_buffer(abi::kBindingTileFlags, tile_flags);
     resolve.bind_buffer(abi::kBindingDisplay, display);
+    update_background(scene);
     bind_scene(scene);
   }
 
@@ -140,11 +146,13 @@ struct Renderer::Impl {
                                                  trace_bindings(discovery), sizeof(abi::TracePush));
   }
 
-  // An edit that gives a material a feature the kernels lack recompiles them with it (features
-  // are only ever added, so editing back and forth compiles once). Accumulation, schedule and
-  // G-buffers are buffers, untouched.
+  // An edit that brings in a feature the kernels lack (a material that becomes emissive,
+  // transmissive or cut out, a light...) recompiles them with it (features are only ever added,
+  // so editing back and forth compiles once). Accumulation, schedule and G-buffers are buffers,
+  // untouched.
   void ensure_features(const Scene& scene) {
-    const uint32_t needed = material_features(scene);
+    if (!settings.specialize_kernel) return;
+    const uint32_t needed = hipr::kernel_features(scene);
     if ((needed & ~features) == 0) return;
     features |= needed;
     trace = make_trace(false);
@@ -152,6 +160,14 @@ struct Renderer::Impl {
       discover = make_trace(true);
       bind_hipr();
     }
+  }
+
+  // Which tiles' camera rays cannot hit anything, for the scene's camera and instances.
+  void update_background(const Scene& scene) {
+    std::vector<uint32_t> mask(all_tiles.size(), 0u);
+    if (settings.skip_background_tiles)
+      mask = background.mask(scene, settings.width, settings.height, settings.tile_size);
+    tile_background.upload(mask.data(), mask.size() * sizeof(uint32_t));
   }
 
   // HiPR resources are made on first use: plain renders never pay for them.
@@ -210,6 +226,7 @@ struct Renderer::Impl {
         {abi::kBindingTileList, &tile_list},      {abi::kBindingAccumulation, &accumulation},
         {abi::kBindingStats, &stats},             {abi::kBindingFrame, &frame},
         {abi::kBindingTileFlags, &tile_flags},    {abi::kBindingBsdfTables, &bsdf_tables},
+        {abi::kBindingTileBackground, &tile_background},
     };
     for (const auto& [binding, buffer] : buffers) pipeline.bind_buffer(binding, *buffer);
   }
@@ -275,10 +292,12 @@ struct Renderer::Impl {
   RenderSettings settings;
   GpuScene gpu;
   uint32_t tiles_x, tiles_y, pixels;
-  uint32_t features;  // material features the trace kernels are compiled with
+  uint32_t features;  // kernel features (kernel_features.h) the trace kernels are compiled with
   std::unique_ptr<vk::ComputePipeline> trace;
   vk::Buffer accumulation, stats, frame, tile_list, tile_flags, bsdf_tables;
-  vk::Buffer display;  // DisplayTexel per pixel
+  BackgroundTiles background;
+  vk::Buffer tile_background;  // per tile: 1 = background only (BackgroundTiles)
+  vk::Buffer display;          // DisplayTexel per pixel
   vk::ComputePipeline mark_owed, resolve;
   float display_threshold = 2.0f;
   std::vector<uint32_t> all_tiles;
@@ -318,12 +337,11 @@ void Renderer::add_samples(std::span<const uint32_t> tiles, uint32_t samples_per
 void Renderer::add_samples_full_frame(uint32_t samples_per_pixel) { add_samples(m->all_tiles, samples_per_pixel); }
 
 void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
-  if (changes.materials) {
-    m->gpu.update_materials(scene);
-    if (m->settings.specialize_kernel) m->ensure_features(scene);
-  }
+  if (changes.materials) m->gpu.update_materials(scene);
+  m->ensure_features(scene);  // materials, lights: anything may bring in a feature
   if (changes.transforms) m->gpu.update_instances(scene);  // includes the light tables
   else if (changes.light_tables) m->gpu.update_lights(scene);
+  if (changes.transforms || changes.camera) m->update_background(scene);
   m->bind_scene(scene);
 }
 
