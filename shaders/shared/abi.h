@@ -50,6 +50,10 @@ HIPR_CONST uint kBindingSortValues = 24u;       // uint values (tile ids), ping
 HIPR_CONST uint kBindingSortKeysAlt = 25u;      // pong
 HIPR_CONST uint kBindingSortValuesAlt = 26u;    // pong
 HIPR_CONST uint kBindingSortHistogram = 27u;    // uint [digit][workgroup] counts, then offsets
+// The viewer's display pass (display.comp)
+HIPR_CONST uint kBindingDisplayRadiance = 30u;  // float RGB per rendered pixel: the displayed image
+HIPR_CONST uint kBindingDisplayOverlay = 31u;   // uint RGBA8 per rendered pixel (sRGB-encoded, A = coverage)
+HIPR_CONST uint kBindingDisplayOutput = 32u;    // uint RGBA8 per window pixel: what the window shows
 
 // ---- constants ----
 HIPR_CONST uint kPixelOwed = 0x80000000u;
@@ -271,6 +275,21 @@ struct TracePush {
   uint groupsPerTile;    // workgroups needed to cover one tile
   uint requireFlags;     // render only tiles whose flags have all of these bits
   uint skipFlags;        // skip tiles whose flags have any of these bits
+};
+
+// Per-dispatch parameters of display.comp: the rendered image is drawn into the window at
+// (viewX, viewY) scaled by viewScale (window pixels per rendered pixel, nearest texel).
+struct DisplayPush {
+  uint outputWidth;
+  uint outputHeight;
+  uint sourceWidth;
+  uint sourceHeight;
+  int viewX;
+  int viewY;
+  float viewScale;
+  float exposureScale;  // 2^EV, as tonemap_srgb8
+  uint background;      // RGBA8 outside the rendered image
+  uint overlayEnabled;  // 0: the overlay buffer is ignored
 };
 
 // Radix sort pass: keys/values move from one buffer pair to the other by one 8-bit digit.
