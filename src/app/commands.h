@@ -14,5 +14,6 @@ struct Command {
 Command add_render_command(CLI::App& app);
 Command add_info_command(CLI::App& app);
 Command add_replay_command(CLI::App& app);
+Command add_view_command(CLI::App& app);
 
 }  // namespace hipr::app

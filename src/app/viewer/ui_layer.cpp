@@ -1,0 +1,67 @@
+#include "app/viewer/ui_layer.h"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_vulkan.h>
+
+#include "core/error.h"
+#include "vk/check.h"
+
+namespace hipr::viewer {
+namespace {
+
+// The backend reports Vulkan results through this hook: every result goes through VK_CHECK.
+void check_vk_result(VkResult result) {
+  if (result != VK_SUCCESS) VK_CHECK(result);
+}
+
+}  // namespace
+
+UiLayer::UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass& pass, const vk::Swapchain& swapchain) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // the viewer writes nothing the user did not ask for
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
+
+  ImGui_ImplVulkan_InitInfo info{};
+  info.Instance = ctx.instance();
+  info.PhysicalDevice = ctx.physical_device();
+  info.Device = ctx.device();
+  info.QueueFamily = ctx.queue_family();
+  info.Queue = ctx.queue();
+  info.DescriptorPool = pass.descriptor_pool();
+  info.MinImageCount = std::max(2u, swapchain.min_image_count());
+  info.ImageCount = std::max(info.MinImageCount, swapchain.image_count());
+  info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+  info.CheckVkResultFn = check_vk_result;
+  if (!ImGui_ImplVulkan_Init(&info, pass.render_pass())) {
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    throw InternalError("cannot initialise the UI's Vulkan backend");
+  }
+  ctx.submit_and_wait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+  ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+UiLayer::~UiLayer() {
+  ImGui_ImplVulkan_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+void UiLayer::new_frame() {
+  ImGui_ImplVulkan_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void UiLayer::render(VkCommandBuffer cmd) {
+  ImGui::Render();
+  ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+}
+
+void UiLayer::set_min_image_count(uint32_t count) { ImGui_ImplVulkan_SetMinImageCount(std::max(2u, count)); }
+
+}  // namespace hipr::viewer
