@@ -43,7 +43,10 @@ void CameraController::pan(glm::vec2 delta, float viewport_height, float tan_hal
   m_pivot += (-delta.x * glm::vec3(frame[0]) + delta.y * glm::vec3(frame[1])) * scale;
 }
 
-void CameraController::zoom(float steps) { m_distance = std::max(m_distance * std::pow(0.85f, steps), 1e-6f); }
+void CameraController::zoom(float steps) {
+  // Bounded both ways: any number of wheel steps leaves a finite, positive distance.
+  m_distance = std::clamp(m_distance * std::pow(0.85f, steps), 1e-6f, 1e9f);
+}
 
 glm::mat4 CameraController::camera_to_world() const {
   const glm::vec3 eye = m_pivot + m_distance * eye_direction(m_yaw, m_pitch);
