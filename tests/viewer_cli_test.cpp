@@ -188,7 +188,9 @@ TEST_F(ViewerWindow, OwedOverlayTintsTheTilesStillOwed) {
 // view area (the panel takes the right side).
 TEST_F(ViewerWindow, PanelsDrawBesideTheRender) {
   const ImageRGB& plain = screenshot("plain", "--exit-after-frames 8");
-  const ImageRGB& ui = screenshot("ui", "--exit-after-frames 8", true);
+  // With the validation layer on: the swapchain, UI pass and display pass must be clean (exit
+  // code 1 otherwise).
+  const ImageRGB& ui = screenshot("ui", "--exit-after-frames 8 --validate", true);
   ASSERT_EQ(plain.width, kSize);
   ASSERT_GT(ui.width, kSize + 200);
   ASSERT_GE(ui.height, kSize);

@@ -379,6 +379,96 @@ TEST(Session, ASceneWithoutACameraGetsItsDefaultCamera) {
   EXPECT_FALSE(diff_scenes(before, session.scene()).camera);
 }
 
+// ---- Renderer methods the viewer added (headless GPU)
+
+RenderSettings tiny(uint32_t size = 32) {
+  RenderSettings s;
+  s.width = s.height = size;
+  s.tile_size = 8;
+  s.max_depth = 4;
+  return s;
+}
+
+TEST(RendererForViewer, WarmUpCompilesButRendersNothing) {
+  const Scene scene = cornell();
+  Renderer renderer(test::context(), scene, tiny());
+  const std::vector<uint32_t> schedule = renderer.schedule();
+  renderer.warm_up_kernels();
+  EXPECT_EQ(renderer.counters().samples, 0u);
+  EXPECT_EQ(renderer.counters().rays, 0u);
+  for (float v : renderer.image().rgb) ASSERT_EQ(v, 0.0f);
+  EXPECT_EQ(renderer.schedule(), schedule);
+  renderer.add_samples_full_frame(2);
+  Renderer fresh(test::context(), scene, tiny());
+  fresh.add_samples_full_frame(2);
+  EXPECT_EQ(renderer.image().rgb, fresh.image().rgb);
+}
+
+TEST(RendererForViewer, OwedTilesCountPixelsStillOwingARestart) {
+  Renderer renderer(test::context(), cornell(), tiny(20));  // 3 x 3 tiles, the last row and column 4 px wide
+  renderer.add_samples_full_frame(1);
+  for (uint32_t owed : renderer.owed_tiles()) EXPECT_EQ(owed, 0u);
+  renderer.mark_all_owed();
+  const std::vector<uint32_t> owed = renderer.owed_tiles();
+  ASSERT_EQ(owed.size(), 9u);
+  EXPECT_EQ(owed[0], 64u);
+  EXPECT_EQ(owed[2], 32u);
+  EXPECT_EQ(owed[8], 16u);
+  const uint32_t tile = 4;
+  renderer.add_samples(std::span<const uint32_t>(&tile, 1), 1);
+  EXPECT_EQ(renderer.owed_tiles()[4], 0u);
+  EXPECT_EQ(renderer.owed_tiles()[3], 64u);
+}
+
+TEST(RendererForViewer, GBufferHitsAgreeWithTheInstanceImage) {
+  Scene scene = cornell();
+  Renderer renderer(test::context(), scene, tiny());
+  renderer.stage1_visibility({});
+  const std::vector<uint32_t> ids = renderer.gbuffer_instances();
+  for (uint32_t y = 0; y < 32; y += 5)
+    for (uint32_t x = 0; x < 32; x += 3) {
+      const Renderer::PixelHit hit = renderer.gbuffer_at(x, y);
+      EXPECT_EQ(hit.instance, ids[y * 32 + x]);
+      if (hit.instance != UINT32_MAX) {
+        EXPECT_GT(hit.depth, 0.0f);
+      }
+    }
+  EXPECT_EQ(renderer.gbuffer_at(32, 0).instance, UINT32_MAX) << "outside the image";
+  // refresh_gbuffer follows an edit without touching the tile flags.
+  const Scene before = scene;
+  apply_edit(scene, VisibilityEdit{"tall_block", false});
+  renderer.update_scene(scene, diff_scenes(before, scene));
+  renderer.refresh_gbuffer();
+  const uint32_t block = instance_of(scene, "tall_block");
+  for (uint32_t id : renderer.gbuffer_instances()) EXPECT_NE(id, block);
+  for (uint32_t flags : renderer.tile_flags()) EXPECT_EQ(flags, 0u);
+}
+
+TEST(RendererForViewer, HiprParametersSteerTheNextStage2) {
+  const auto weights_after_move = [](const HiprParameters& h) {
+    Scene scene = cornell();
+    Renderer renderer(test::context(), scene, tiny());
+    renderer.stage1_visibility({});
+    renderer.set_hipr_parameters(h);
+    const Scene before = scene;
+    apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt});
+    const ChangeSet changes = diff_scenes(before, scene);
+    renderer.update_scene(scene, changes);
+    renderer.mark_all_owed();
+    renderer.stage1_visibility(changes);
+    renderer.stage2_discover(1);
+    EXPECT_EQ(renderer.settings().hipr.depth_epsilon, h.depth_epsilon);
+    return renderer.tile_weights();
+  };
+  HiprParameters direct, caustic;
+  direct.w_path[0] = 1.0f;
+  direct.w_path[1] = direct.w_path[2] = 0.0f;
+  caustic.w_path[2] = 1.0f;
+  caustic.w_path[0] = caustic.w_path[1] = 0.0f;
+  caustic.depth_epsilon = 0.02f;
+  EXPECT_NE(weights_after_move(direct), weights_after_move(caustic));
+}
+
 // ---- DisplayPass (headless GPU)
 
 TEST(DisplayPass, ToneMapsLikeTheCpuAndPlacesTheImage) {

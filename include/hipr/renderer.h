@@ -121,6 +121,12 @@ class Renderer {
   // Per tile: how many of its pixels still show radiance from before the last edit (they owe
   // a restart at their next visit).
   std::vector<uint32_t> owed_tiles() const;
+  // Lavapipe (llvmpipe) compiles a kernel when it is first dispatched, and the path-tracing
+  // kernels take seconds to a minute on a CPU: left to the first edit, that edit would freeze
+  // the viewer. This dispatches the trace kernels (plain and discovery) over every tile with a
+  // flag no tile carries, so they compile but render and count nothing, and the schedule sort
+  // on its own scratch buffers (the schedule itself is untouched).
+  void warm_up_kernels();
 
  private:
   struct Impl;

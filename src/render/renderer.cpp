@@ -462,4 +462,21 @@ std::vector<uint32_t> Renderer::owed_tiles() const {
   return owed;
 }
 
+void Renderer::warm_up_kernels() {
+  m->ensure_hipr();
+  // Bit 31 is no kTile* flag: every workgroup leaves at its first check.
+  abi::TracePush push = m->trace_push(0, tile_count(), 1);
+  push.requireFlags = 1u << 31;
+  const uint32_t tiles = tile_count();
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m->dispatch_trace(cmd, *m->trace, push);
+    m->dispatch_trace(cmd, *m->discover, push);
+    for (uint32_t pass = 0; pass < 2; ++pass) {
+      m->keys->dispatch(cmd, &pass, groups_for(tiles));
+      vk::compute_to_compute_barrier(cmd);
+    }
+    m->sorter->record(cmd, tiles);
+  });
+}
+
 }  // namespace hipr

@@ -54,6 +54,8 @@ void Session::rebuild() {
   auto renderer = std::make_unique<Renderer>(m_ctx, m_scene, m_settings.render);
   const uint32_t per_step = m_settings.tiles_per_step ? m_settings.tiles_per_step : default_tiles_per_step(renderer->tile_count());
   auto scheduler = std::make_unique<Scheduler>(*renderer, m_settings.policy, per_step, m_settings.visit_spp);
+  // Compile the kernels now (a longer start) rather than at the first edit (a frozen window).
+  renderer->warm_up_kernels();
   m_scheduler.reset();  // it refers to the renderer
   m_renderer = std::move(renderer);
   m_scheduler = std::move(scheduler);
@@ -67,8 +69,9 @@ void Session::changed(const Scene& before, const std::string& what) {
   const ChangeSet changes = diff_scenes(before, m_scene);
   if (changes.empty()) return;  // e.g. a slider released where it started
   m_shown_at_edit = displayed();
+  const Timer started;  // the latency includes on_edit itself (GPU update, stage 1)
   m_scheduler->on_edit(m_scene, changes);
-  m_since_edit = Timer();
+  m_since_edit = started;
   m_dirty_display = true;
   m_ids_stale = true;
   // HiPR's on_edit runs stage 1, which renders the G-buffer of the edited scene; the other
