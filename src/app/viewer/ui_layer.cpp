@@ -1,5 +1,7 @@
 #include "app/viewer/ui_layer.h"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
@@ -17,7 +19,8 @@ void check_vk_result(VkResult result) {
 
 }  // namespace
 
-UiLayer::UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass& pass, const vk::Swapchain& swapchain) {
+UiLayer::UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass& pass, const vk::Swapchain& swapchain)
+    : m_window(window) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
@@ -51,9 +54,17 @@ UiLayer::~UiLayer() {
   ImGui::DestroyContext();
 }
 
-void UiLayer::new_frame() {
+void UiLayer::new_frame(const std::vector<KeyPress>& presses) {
   ImGui_ImplVulkan_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  ImGuiIO& io = ImGui::GetIO();
+  for (int key : m_forced) io.KeysDown[key] = glfwGetKey(m_window.handle(), key) == GLFW_PRESS;
+  m_forced.clear();
+  for (const KeyPress& press : presses)
+    if (press.key >= 0 && press.key < int(IM_ARRAYSIZE(io.KeysDown)) && !io.KeysDown[press.key]) {
+      io.KeysDown[press.key] = true;
+      m_forced.push_back(press.key);
+    }
   ImGui::NewFrame();
 }
 

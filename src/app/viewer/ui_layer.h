@@ -4,6 +4,8 @@
 // renderer backend drawing into the UI pass.
 #include <vulkan/vulkan.h>
 
+#include <vector>
+
 #include "app/viewer/window.h"
 #include "vk/context.h"
 #include "vk/swapchain.h"
@@ -18,10 +20,18 @@ class UiLayer {
   UiLayer(const UiLayer&) = delete;
   UiLayer& operator=(const UiLayer&) = delete;
 
-  void new_frame();
+  // `presses`: the key presses since the last frame (Window::take_key_presses). A key tapped
+  // and released between two frames is shown to the UI as held for this frame: the UI library
+  // of Debian 12 (1.86) samples key state once per frame, and would miss such taps (Enter in a
+  // text field) at lavapipe's frame rates.
+  void new_frame(const std::vector<KeyPress>& presses);
   // Ends the ImGui frame and records its draw commands (inside the UI pass).
   void render(VkCommandBuffer cmd);
   void set_min_image_count(uint32_t count);
+
+ private:
+  const Window& m_window;
+  std::vector<int> m_forced;  // keys held down artificially during the last frame
 };
 
 }  // namespace hipr::viewer

@@ -101,7 +101,7 @@ class Viewer {
 
   void resize(VkExtent2D extent);
   void run_script(uint32_t frame);
-  void draw_ui(const ViewLayout& layout);
+  void draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys);
   void handle_requests();
   void render_steps();
   void update_overlay();
@@ -169,9 +169,9 @@ void Viewer::run_script(uint32_t frame) {
   ++m_script_next;
 }
 
-void Viewer::draw_ui(const ViewLayout& layout) {
+void Viewer::draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys) {
   const ImGuiIO& io = ImGui::GetIO();
-  m_input.update(*m_session, m_state, layout, m_window.pixel_ratio());
+  m_input.update(*m_session, m_state, layout, m_window.pixel_ratio(), keys);
   if (m_state.show_ui) {
     const float panel_x = io.DisplaySize.x - kPanelWidth;
     draw_side_panel(*m_session, m_state, panel_x, io.DisplaySize.y);
@@ -342,10 +342,11 @@ int Viewer::run() {
     if (size.width == 0 || size.height == 0) continue;  // minimised
     if (size.width != m_frame.extent().width || size.height != m_frame.extent().height) resize(size);
 
-    m_ui.new_frame();
+    const std::vector<KeyPress> keys = m_window.take_key_presses();
+    m_ui.new_frame(keys);
     run_script(frame_index);
     const ViewLayout view = layout();
-    draw_ui(view);
+    draw_ui(view, keys);
     handle_requests();
     render_steps();
     m_steps += m_state.steps_last_frame;

@@ -75,33 +75,35 @@ void ViewportInput::drag_object(Session& session, ViewerState& state, glm::vec2 
   try_edit(session, state, TransformEdit{node_reference(scene, m_node), std::nullopt, local});
 }
 
-void ViewportInput::keys(Session& session, ViewerState& state) {
-  const ImGuiIO& io = ImGui::GetIO();
-  const bool ctrl = io.KeyCtrl;
-  if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) io.KeyShift ? session.redo() : session.undo();
-  if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) session.redo();
-  if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_S, false)) state.request_save = true;
-  if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) state.request_screenshot = true;
-  if (ctrl) return;
-  if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) state.show_ui = !state.show_ui;
+void ViewportInput::key(Session& session, ViewerState& state, const KeyPress& press) {
+  const int k = press.key;
+  if (press.ctrl) {
+    if (k == GLFW_KEY_Z) press.shift ? session.redo() : session.undo();
+    if (k == GLFW_KEY_Y) session.redo();
+    if (k == GLFW_KEY_S && !press.repeat) state.request_save = true;
+    return;
+  }
+  if (k == GLFW_KEY_F12 && !press.repeat) state.request_screenshot = true;
+  if (press.repeat && k != GLFW_KEY_LEFT && k != GLFW_KEY_RIGHT && k != GLFW_KEY_UP && k != GLFW_KEY_DOWN &&
+      k != GLFW_KEY_PAGE_UP && k != GLFW_KEY_PAGE_DOWN)
+    return;  // only moves repeat while a key is held
+  if (k == GLFW_KEY_TAB) state.show_ui = !state.show_ui;
   const Overlay overlays[] = {Overlay::None, Overlay::Ids, Overlay::Weights, Overlay::Owed};
-  for (int i = 0; i < 4; ++i)
-    if (ImGui::IsKeyPressed(GLFW_KEY_0 + i, false)) state.overlay = overlays[i];
-  if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) state.selected_node = -1;
+  if (k >= GLFW_KEY_0 && k <= GLFW_KEY_3) state.overlay = overlays[k - GLFW_KEY_0];
+  if (k == GLFW_KEY_ESCAPE) state.selected_node = -1;
 
   const Scene& scene = session.scene();
   if (state.selected_node < 0 || size_t(state.selected_node) >= scene.nodes.size()) return;
   const uint32_t node = uint32_t(state.selected_node);
-  if (ImGui::IsKeyPressed(GLFW_KEY_H, false))
-    try_edit(session, state, VisibilityEdit{node_reference(scene, node), !scene.nodes[node].visible});
+  if (k == GLFW_KEY_H) try_edit(session, state, VisibilityEdit{node_reference(scene, node), !scene.nodes[node].visible});
   const struct {
     int key;
     glm::vec3 direction;
   } moves[] = {{GLFW_KEY_LEFT, {-1, 0, 0}}, {GLFW_KEY_RIGHT, {1, 0, 0}},    {GLFW_KEY_UP, {0, 0, -1}},
                {GLFW_KEY_DOWN, {0, 0, 1}},  {GLFW_KEY_PAGE_UP, {0, 1, 0}}, {GLFW_KEY_PAGE_DOWN, {0, -1, 0}}};
-  const float step = 0.01f * scene_radius(scene) * (io.KeyShift ? 10.0f : 1.0f);
   for (const auto& move : moves) {
-    if (!ImGui::IsKeyPressed(move.key)) continue;
+    if (k != move.key) continue;
+    const float step = 0.01f * scene_radius(scene) * (press.shift ? 10.0f : 1.0f);
     glm::mat4 local = scene.nodes[node].local;
     local[3] += glm::vec4(to_local_offset(scene, node, move.direction * step), 0.0f);
     try_edit(session, state, TransformEdit{node_reference(scene, node), std::nullopt, local});
@@ -114,10 +116,13 @@ void ViewportInput::finish_drag(Session& session) {
   m_drag = Drag::None;
 }
 
-void ViewportInput::update(Session& session, ViewerState& state, const ViewLayout& layout, float pixel_ratio) {
+void ViewportInput::update(Session& session, ViewerState& state, const ViewLayout& layout, float pixel_ratio,
+                           const std::vector<KeyPress>& keys) {
   const ImGuiIO& io = ImGui::GetIO();
   const glm::vec2 mouse(io.MousePos.x * pixel_ratio, io.MousePos.y * pixel_ratio);
-  if (!io.WantCaptureKeyboard) keys(session, state);
+  // Keys typed into a text field are the field's.
+  if (!io.WantCaptureKeyboard)
+    for (const KeyPress& press : keys) key(session, state, press);
   const float view_height = layout.scale * float(layout.render_height);
 
   if (m_drag == Drag::None && !io.WantCaptureMouse) {

@@ -16,21 +16,23 @@
 #include "app/viewer/session.h"
 #include "app/viewer/view_layout.h"
 #include "app/viewer/viewer_state.h"
+#include "app/viewer/window.h"
 
 namespace hipr::viewer {
 
 class ViewportInput {
  public:
   // `pixel_ratio`: framebuffer pixels per window coordinate (ImGui reports the mouse in the
-  // latter, the layout is in the former).
-  void update(Session& session, ViewerState& state, const ViewLayout& layout, float pixel_ratio);
+  // latter, the layout is in the former). `keys`: the presses since the last frame.
+  void update(Session& session, ViewerState& state, const ViewLayout& layout, float pixel_ratio,
+              const std::vector<KeyPress>& keys);
 
  private:
   enum class Drag { None, Pending, Move, Orbit, Pan };
   void start_camera_gesture(const Session& session);
   void apply_camera(Session& session, ViewerState& state);
   void drag_object(Session& session, ViewerState& state, glm::vec2 delta_render_pixels);
-  void keys(Session& session, ViewerState& state);
+  void key(Session& session, ViewerState& state, const KeyPress& press);
   void finish_drag(Session& session);
 
   Drag m_drag = Drag::None;

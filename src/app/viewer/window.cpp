@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "core/error.h"
 #include "vk/check.h"
@@ -32,7 +33,18 @@ Window::Window(const std::string& title, uint32_t width, uint32_t height) {
     glfwTerminate();
     throw InternalError("cannot create a window: " + g_last_error);
   }
+  glfwSetWindowUserPointer(m_window, this);
+  glfwSetKeyCallback(m_window, on_key);  // installed first: the UI library chains to it
 }
+
+void Window::on_key(GLFWwindow* window, int key, int, int action, int mods) {
+  auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+  if (!self || (action != GLFW_PRESS && action != GLFW_REPEAT)) return;
+  self->m_keys.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0,
+                          action == GLFW_REPEAT});
+}
+
+std::vector<KeyPress> Window::take_key_presses() { return std::exchange(m_keys, {}); }
 
 Window::~Window() {
   if (m_window) glfwDestroyWindow(m_window);
