@@ -1,7 +1,10 @@
 #version 460
 // HiPR stage 1, second half: a tile is active when a changed element is visible in it now or
 // was before the edit (pixels an object left changed too).
-// Reads: both G-buffers, the changed-record flags. Writes: kTileActive into the tile flags.
+// Reads: both G-buffers, the changed-record flags. Writes: kTileActive into the tile flags, and
+// per tile a change score that orders the active tiles: 1 per pixel showing a changed element,
+// 1 more where the pixel shows another surface than before (an object moved in or out: the
+// largest changes on screen, while a moved object's own inside often looks much as it did).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -15,13 +18,17 @@ layout(scalar, binding = kBindingGBuffer) readonly buffer GBuffer { GBufferTexel
 layout(scalar, binding = kBindingPreviousGBuffer) readonly buffer Previous { GBufferTexel b_previous[]; };
 layout(scalar, binding = kBindingChangedRecords) readonly buffer Changed { uint b_changed_records[]; };
 layout(scalar, binding = kBindingTileFlags) buffer TileFlags { uint b_tile_flags[]; };
+layout(scalar, binding = kBindingTileChange) buffer TileChange { uint b_tile_change[]; };
 
 bool changed(uint record) { return record != kInvalidIndex && b_changed_records[record] != 0u; }
 
 void main() {
   const uint index = gl_GlobalInvocationID.x;
   if (index >= u_frame.width * u_frame.height) return;
-  if (!changed(b_gbuffer[index].record) && !changed(b_previous[index].record)) return;
+  const uint now = b_gbuffer[index].record, before = b_previous[index].record;
+  if (!changed(now) && !changed(before)) return;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
-  atomicOr(b_tile_flags[(pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize], kTileActive);
+  const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
+  atomicOr(b_tile_flags[tile], kTileActive);
+  atomicAdd(b_tile_change[tile], now != before ? 2u : 1u);
 }

@@ -1,6 +1,7 @@
 #version 460
 // HiPR stage 3 sort keys: one 32-bit key per tile, so one ascending radix sort yields the
-// whole schedule: active tiles (class 0), then discovered tiles by descending weight W(T)
+// whole schedule: active tiles (class 0) by descending stage-1 change score, then discovered
+// tiles by descending weight W(T)
 // (class 1), then undiscovered tiles by distance from the active set (class 2). Ties keep
 // tile-id order because the sort is stable and values start in id order.
 // Pass 0 (u_pass == 0): per tile, columns to the nearest active tile in its row.
@@ -18,6 +19,7 @@ layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_fr
 layout(scalar, binding = kBindingTileFlags) readonly buffer TileFlags { uint b_tile_flags[]; };
 layout(scalar, binding = kBindingTileWeights) readonly buffer TileWeights { uint64_t b_tile_weights[]; };
 layout(scalar, binding = kBindingTileRowDistance) buffer RowDistance { uint b_row_distance[]; };
+layout(scalar, binding = kBindingTileChange) readonly buffer TileChange { uint b_tile_change[]; };
 layout(scalar, binding = kBindingSortKeys) writeonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kBindingSortValues) writeonly buffer Values { uint b_values[]; };
 
@@ -38,7 +40,7 @@ void main() {
   const uint flags = b_tile_flags[tile];
   uint key;
   if ((flags & kTileActive) != 0u) {
-    key = 0u;
+    key = 0x3fffffffu - min(b_tile_change[tile], 0x3fffffffu);
   } else if (b_tile_weights[tile] > 0ul) {
     // Positive float bits order like the numbers; drop one mantissa bit to fit 30 bits.
     const uint bits = floatBitsToUint(float(b_tile_weights[tile]) / kWeightScale) >> 1u;

@@ -241,7 +241,7 @@ void main() {
     return;
   const uint pixelIndex = pixel.y * u_frame.width + pixel.x;
   PixelAccum accum = b_accum[pixelIndex];
-  if ((accum.count & kPixelOwed) != 0u) accum = PixelAccum(vec3(0.0), 0u);  // first visit since an edit
+  if ((accum.count & kPixelOwed) != 0u) accum = PixelAccum(vec3(0.0), 0u, vec3(0.0));  // first visit since an edit
   uint rays = 0u;
   uint nonFinite = 0u;
   // Samples finish in index order, so the sum is the same whatever the dispatch size.
@@ -251,7 +251,10 @@ void main() {
     if (!path_step(path, rays)) continue;
     const vec3 value = path.radiance;
     if (any(isnan(value)) || any(isinf(value))) nonFinite += 1u;  // dropped, and counted
-    else accum.sum += value;
+    else {
+      accum.sum += value;
+      accum.sumSquares += value * value;
+    }
     finished += 1u;
     if (finished < u_push.samplesPerPixel) path = start_path(pixel, accum.count + finished);
   }

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/file_util.h"
 #include "core/hash.h"
+#include "core/process.h"
 #include "hipr/renderer.h"
 #include "scene/gltf_sandbox.h"
 #include "scene/mesh_processing.h"
@@ -338,6 +339,32 @@ TEST(ScatterStride, IsCoprimeToTheCount) {
     }
   }
   EXPECT_NEAR(double(scatter_stride(1000)) / 1000.0, 0.618, 0.01);
+}
+
+// ---- run_process --------------------------------------------------------------------------
+
+TEST(RunProcess, FeedsStdinAndCollectsOutputAndExitCode) {
+  // More input than a pipe buffer holds: feeding and draining must interleave.
+  const std::string input(200000, 'x');
+  const ProcessResult result = run_process({"sh", "-c", "wc -c; echo done >&2; exit 3"}, input);
+  EXPECT_EQ(result.exit_code, 3);
+  EXPECT_NE(result.output.find("200000"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("done"), std::string::npos) << result.output;
+}
+
+TEST(RunProcess, ArgumentsAreNotInterpretedByAShell) {
+  const ProcessResult result = run_process({"echo", "$HOME; rm -rf /"}, "");
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_EQ(result.output, "$HOME; rm -rf /\n");
+}
+
+TEST(RunProcess, AMissingProgramExits127) {
+  EXPECT_EQ(run_process({"hipr-no-such-program"}, "ignored").exit_code, 127);
+}
+
+TEST(RunProcess, AChildThatIgnoresItsInputDoesNotBlockOrKillUs) {
+  const ProcessResult result = run_process({"true"}, std::string(1 << 20, 'y'));
+  EXPECT_EQ(result.exit_code, 0);
 }
 
 }  // namespace

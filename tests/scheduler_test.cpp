@@ -10,6 +10,7 @@
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
+#include "image/error_metrics.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -25,38 +26,87 @@ RenderSettings settings() {
   return s;
 }
 
-// Steps until every pixel has `spp` samples since the last edit (one more for HiPR's stage 2).
-void run_to_convergence(Scheduler& scheduler, const Renderer& renderer, uint32_t spp, uint32_t per_step) {
-  const uint32_t steps = spp * ((renderer.tile_count() + per_step - 1) / per_step) + (scheduler.policy() == Policy::Hipr ? 1 : 0);
-  for (uint32_t s = 0; s < steps; ++s) scheduler.step();
+// Steps until every pixel has `spp` samples since the last edit.
+void run_to_convergence(Scheduler& scheduler, uint32_t spp) {
+  for (int s = 0; s < 10000 && scheduler.work_since_edit() < double(spp); ++s) scheduler.step();
 }
 
+// A full-frame render of `scene`, as a display shows it (the same GPU division of the same sums).
 ImageRGB fresh(const Scene& scene, uint32_t spp) {
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(spp);
-  return renderer.image();
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  return renderer.displayed_image();
 }
 
-class EveryPolicy : public ::testing::TestWithParam<Policy> {};
+struct PolicyCase {
+  Policy policy;
+  DisplayRule display;
+  uint32_t first_visit_spp;
+};
 
+class EveryPolicy : public ::testing::TestWithParam<PolicyCase> {};
+
+// Whatever the order, display rule and samples per visit, the display ends on exactly the
+// full-frame image of the edited scene with exactly --spp samples per pixel.
 TEST_P(EveryPolicy, ConvergesToTheFullFrameImageOfTheEditedScene) {
+  const PolicyCase c = GetParam();
+  const uint32_t spp = 3;
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
   Renderer renderer(test::context(), scene, settings());
-  Scheduler scheduler(renderer, GetParam(), 7);
-  renderer.add_samples_full_frame(2);
+  Scheduler scheduler(renderer, c.policy, 7);
+  scheduler.set_display_rule(c.display);
+  scheduler.set_first_visit_spp(c.first_visit_spp);
+  renderer.add_samples_full_frame(spp);
   for (const Edit& edit : load_edit_script(test::asset("cornell_box.edits.json"))) {
     const Scene before = scene;
     apply_edit(scene, edit);
+    const ImageRGB expected = fresh(scene, spp);
+    scheduler.set_reference(expected);
     scheduler.on_edit(scene, diff_scenes(before, scene));
-    run_to_convergence(scheduler, renderer, 2, 7);
-    EXPECT_EQ(scheduler.displayed_image().rgb, fresh(scene, 2).rgb) << describe(edit);
-    EXPECT_NEAR(scheduler.work_since_edit(), 2.0, 1e-9);
+    run_to_convergence(scheduler, spp);
+    EXPECT_EQ(scheduler.displayed_image().rgb, expected.rgb) << describe(edit);
+    EXPECT_NEAR(scheduler.work_since_edit(), double(spp), 1e-9);
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Policies, EveryPolicy,
-                         ::testing::Values(Policy::Hipr, Policy::Full, Policy::Scanline, Policy::Spiral, Policy::Random),
-                         [](const auto& test_info) { return policy_name(test_info.param); });
+INSTANTIATE_TEST_SUITE_P(
+    Policies, EveryPolicy,
+    ::testing::Values(PolicyCase{Policy::Hipr, DisplayRule::Blend, 2}, PolicyCase{Policy::Hipr, DisplayRule::Switch, 2},
+                      PolicyCase{Policy::Hipr, DisplayRule::Immediate, 1}, PolicyCase{Policy::Full, DisplayRule::Immediate, 1},
+                      PolicyCase{Policy::Scanline, DisplayRule::Immediate, 2},
+                      PolicyCase{Policy::Spiral, DisplayRule::Blend, 1}, PolicyCase{Policy::Random, DisplayRule::Immediate, 1},
+                      PolicyCase{Policy::Oracle, DisplayRule::Blend, 2}),
+    [](const auto& case_info) {
+      return policy_name(case_info.param.policy) + "_" + display_rule_name(case_info.param.display) + "_first" +
+             std::to_string(case_info.param.first_visit_spp);
+    });
+
+TEST(Scheduler, TheOracleNeedsAReference) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Oracle, 7);
+  EXPECT_THROW(scheduler.on_edit(scene, {}), InternalError);
+}
+
+// The oracle visits tiles by the true error of what they show: the recoloured wall's tiles come
+// before any tile the edit left alone.
+TEST(Scheduler, TheOracleVisitsTheMostWrongTilesFirst) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Oracle, 1);
+  renderer.add_samples_full_frame(4);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const ImageRGB stale = renderer.displayed_image();
+  const Scene before = scene;
+  apply_edit(scene, MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}});
+  const ImageRGB reference = fresh(scene, 4);
+  scheduler.set_reference(reference);
+  scheduler.on_edit(scene, diff_scenes(before, scene));
+  const std::vector<uint32_t> order = renderer.schedule();
+  const std::vector<double> error = relmse_tile_sums(stale, reference, settings().tile_size);
+  for (size_t i = 1; i < order.size(); ++i) EXPECT_GE(error[order[i - 1]], error[order[i]]) << i;
+}
 
 TEST(Scheduler, FiftyRapidEditsEndInExactlyTheFinalScene) {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
@@ -67,10 +117,9 @@ TEST(Scheduler, FiftyRapidEditsEndInExactlyTheFinalScene) {
     const Scene before = scene;
     apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.003f * float(i % 5) - 0.006f, 0.0f, 0.002f), std::nullopt});
     scheduler.on_edit(scene, diff_scenes(before, scene));
-    scheduler.step();  // one step per edit (stage 2): schedules are interrupted all the time
+    scheduler.step();  // one step per edit (part of stage 2): schedules are interrupted all the time
   }
-  // Stage 2 of the last edit is done; one round of stage 3 gives every pixel its sample.
-  for (uint32_t s = 0; s < (renderer.tile_count() + 4) / 5; ++s) scheduler.step();
+  run_to_convergence(scheduler, 1);
   EXPECT_EQ(scheduler.displayed_image().rgb, fresh(scene, 1).rgb);
 }
 
@@ -79,7 +128,8 @@ TEST(Scheduler, UntouchedTilesKeepShowingThePreviousImage) {
   Renderer renderer(test::context(), scene, settings());
   Scheduler scheduler(renderer, Policy::Scanline, 3);
   renderer.add_samples_full_frame(2);
-  const ImageRGB before_edit = renderer.image();
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const ImageRGB before_edit = renderer.displayed_image();
   const Scene before = scene;
   apply_edit(scene, MaterialEdit{"white", {{"base_color", {0.2f, 0.2f, 0.2f}}}});
   scheduler.on_edit(scene, diff_scenes(before, scene));

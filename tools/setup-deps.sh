@@ -33,17 +33,38 @@ have_all() {
   dpkg --compare-versions "$mesa" ge 23
 }
 
+# The Khronos glTF-Validator (npm package gltf-validator, pinned by tools/package-lock.json) for
+# the tests of saved scenes; they skip without it, so any failure here only warns. node and npm
+# come from Debian's packages when the machine has none (a node already installed is kept).
+install_gltf_validator() {
+  local tools
+  tools="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+  if [ -f "$tools/node_modules/gltf-validator/package.json" ]; then
+    echo "setup-deps: gltf-validator present"
+    return 0
+  fi
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    if ! { apt-get update -q && apt-get install -y -q --no-install-recommends nodejs npm; }; then
+      echo "setup-deps: warning: could not install nodejs/npm; the glTF validation test will skip" >&2
+      return 0
+    fi
+  fi
+  if ! (cd "$tools" && npm ci --no-audit --no-fund --loglevel=error); then
+    echo "setup-deps: warning: npm ci in tools/ failed; the glTF validation test will skip" >&2
+  fi
+}
+
 if have_all; then
   echo "setup-deps: all packages present"
-  exit 0
-fi
+else
+  if ! grep -rqs 'bookworm-backports' /etc/apt/sources.list /etc/apt/sources.list.d/; then
+    echo "deb http://deb.debian.org/debian bookworm-backports main" >"$backports"
+  fi
 
-if ! grep -rqs 'bookworm-backports' /etc/apt/sources.list /etc/apt/sources.list.d/; then
-  echo "deb http://deb.debian.org/debian bookworm-backports main" >"$backports"
+  apt-get update -q
+  apt-get install -y -q --no-install-recommends "${packages[@]}"
+  apt-get install -y -q --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
+  have_all || { echo "setup-deps: mesa-vulkan-drivers from bookworm-backports did not install" >&2; exit 1; }
+  echo "setup-deps: done"
 fi
-
-apt-get update -q
-apt-get install -y -q --no-install-recommends "${packages[@]}"
-apt-get install -y -q --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
-have_all || { echo "setup-deps: mesa-vulkan-drivers from bookworm-backports did not install" >&2; exit 1; }
-echo "setup-deps: done"
+install_gltf_validator || true

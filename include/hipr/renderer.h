@@ -4,7 +4,10 @@
 // that gives every pixel the same count yields bit-identical images.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "hipr/scene.h"
 #include "image/image_io.h"
@@ -49,6 +52,20 @@ struct RenderCounters {
 
 struct GpuSceneInfo;
 
+// How the display follows the accumulation after an edit (shaders/resolve_display.comp):
+// Immediate shows every re-rendered pixel at once; Switch keeps a tile's stale radiance until its
+// fresh estimate is expected to be closer to the truth; Blend shows the mix of the two with the
+// least expected error. All show the fresh estimate alone once it has caught up in samples.
+enum class DisplayRule { Immediate = 0, Switch = 1, Blend = 2 };
+DisplayRule parse_display_rule(const std::string& name);  // throws InputError
+std::string display_rule_name(DisplayRule rule);
+
+// The per-pixel state of a render (accumulation and display), to start several runs from one state.
+struct RenderSnapshot {
+  std::vector<abi::PixelAccum> accumulation;
+  std::vector<abi::DisplayTexel> display;
+};
+
 class Renderer {
  public:
   Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings);
@@ -76,12 +93,19 @@ class Renderer {
 
   // ---- HiPR stages (DESIGN.md). Each records GPU work and waits; none reads results back.
   // Stage 1: G-buffer of the edited scene (the previous one is kept), active tiles where an
-  // element of `changes` is visible now or was before. A camera change, a light edit or an
-  // environment edit makes every tile active. (Pixels owing a restart are marked separately: mark_all_owed.)
-  void stage1_visibility(const ChangeSet& changes);
-  // Stage 2: path-traces the active tiles (restarting them) with discovery on.
+  // element of `changes` is visible now or was before, each with a change score. A camera
+  // change, a light edit or an environment edit makes every tile active. Returns |A| (the one
+  // read-back: stage 2 is split into steps). (Pixels owing a restart are marked separately:
+  // mark_all_owed.)
+  uint32_t stage1_visibility(const ChangeSet& changes);
+  // Stage 2: path-traces the active tiles (restarting them) with discovery on: all of them
+  // (after ordering the schedule), or the active tiles among schedule entries [offset, offset + count).
   void stage2_discover(uint32_t samples_per_pixel);
-  // Stage 3 order on the GPU: active, then discovered by weight, then by distance to A.
+  // With `then_resolve`, the display of those tiles is resolved in the same submission.
+  void stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
+                       std::optional<DisplayRule> then_resolve = std::nullopt);
+  // Stage 3 order on the GPU: active tiles by change score, then discovered by weight, then by
+  // distance to A.
   void build_schedule();
   // A CPU-made order (scanline, spiral, random policies) replaces the schedule.
   void set_schedule(std::span<const uint32_t> order);
@@ -89,7 +113,24 @@ class Renderer {
   void mark_all_owed();
   // Renders entries [offset, offset + count) of the schedule; skip_active leaves out tiles
   // stage 2 already rendered.
-  void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active);
+  void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
+                       std::optional<DisplayRule> then_resolve = std::nullopt);
+
+  // ---- Display: what the screen shows. Pixels keep their previous radiance until a resolve
+  // lets their fresh estimate take over. Resolves entries [offset, offset + count) of the
+  // schedule whose tile flags have all of `require_flags` and none of `skip_flags`.
+  void resolve_display(uint32_t offset, uint32_t count, DisplayRule rule, uint32_t require_flags = 0,
+                       uint32_t skip_flags = 0);
+  // Every tile, in id order (the schedule is not read).
+  void resolve_display_all(DisplayRule rule);
+  // At an edit: what every pixel shows becomes the stale estimate fresh samples are weighed against.
+  void capture_stale_display();
+  // Switch rule: a tile switches when D > threshold * V (see resolve_display.comp).
+  void set_display_threshold(float threshold);
+  ImageRGB displayed_image() const;
+
+  RenderSnapshot snapshot() const;
+  void restore(const RenderSnapshot& snapshot);
 
   // Read-backs for inspection (debug images, tests); not used on the render path.
   std::vector<uint32_t> gbuffer_instances() const;  // per pixel: instance index or UINT32_MAX

@@ -38,6 +38,8 @@ HIPR_CONST uint kBindingStats = 15u;         // RenderStats
 HIPR_CONST uint kBindingFrame = 16u;         // FrameParams (one)
 HIPR_CONST uint kBindingBsdfTables = 28u;    // float: generated BSDF tables (bsdf/ggx_energy_table.glsl)
 HIPR_CONST uint kBindingMaterialProbe = 29u; // MaterialInputsProbe: material_probe.comp's output (inspection)
+HIPR_CONST uint kBindingDisplay = 33u;       // DisplayTexel per pixel: what the screen shows
+HIPR_CONST uint kBindingTileChange = 34u;    // uint per tile: how much of it stage 1 saw change
 // HiPR scheduling (stages 1-3)
 HIPR_CONST uint kBindingGBuffer = 17u;          // GBufferTexel per pixel, this scene state
 HIPR_CONST uint kBindingPreviousGBuffer = 18u;  // GBufferTexel per pixel, before the edit
@@ -60,6 +62,7 @@ HIPR_CONST uint kPixelOwed = 0x80000000u;
 HIPR_CONST uint kPixelCountMask = 0x7fffffffu;
 HIPR_CONST uint kTileActive = 1u;      // an element of E is visible in the tile (stage 1)
 HIPR_CONST uint kTileDiscovered = 2u;  // reached by a secondary vertex or occlusion (stage 2)
+HIPR_CONST uint kTileShown = 4u;       // the display shows this tile's estimate since the last edit
 HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
 HIPR_CONST uint kSortBlock = 256u;     // keys per workgroup in the radix sort
 HIPR_CONST uint kSortRadix = 256u;     // 8-bit digits
@@ -219,10 +222,28 @@ struct Light {
 
 // count's top bit (kPixelOwed) marks a pixel that still holds radiance from before the last
 // edit: its next visit restarts it. Until then it keeps showing the previous radiance.
+// sumSquares (per channel) gives the variance of the mean, which the display rule weighs
+// against how far the fresh estimate is from the stale one.
 struct PixelAccum {
   vec3 sum;
   uint count;
+  vec3 sumSquares;
 };
+
+// What the screen shows at a pixel (`shown`), and the stale estimate captured at the last edit
+// (`stale`, the mean of `staleSamples` samples) that the display rules weigh fresh samples against.
+struct DisplayTexel {
+  vec3 shown;
+  uint staleSamples;
+  vec3 stale;
+  uint shownSamples;  // samples behind `shown` (of the stale estimate while it has any weight)
+};
+
+// resolve_display.comp rules (ResolvePush::rule).
+HIPR_CONST uint kDisplayImmediate = 0u;  // a pixel shows its fresh estimate from its first sample
+HIPR_CONST uint kDisplaySwitch = 1u;     // a tile shows its fresh estimate once it is expected closer to the truth
+HIPR_CONST uint kDisplayBlend = 2u;      // a tile shows the blend of stale and fresh with the least expected error
+HIPR_CONST uint kDisplayCapture = 3u;    // at an edit: what is shown becomes the stale estimate
 
 // Counters the kernels add to. 64-bit so long renders never wrap.
 struct RenderStats {
@@ -275,6 +296,17 @@ struct TracePush {
   uint groupsPerTile;    // workgroups needed to cover one tile
   uint requireFlags;     // render only tiles whose flags have all of these bits
   uint skipFlags;        // skip tiles whose flags have any of these bits
+};
+
+// Per-dispatch parameters of resolve_display.comp: which schedule entries to resolve (as
+// TracePush) and how.
+struct ResolvePush {
+  uint listOffset;  // kInvalidIndex: tiles 0 .. tileCount - 1 in id order, without the list
+  uint tileCount;
+  uint requireFlags;
+  uint skipFlags;
+  uint rule;        // kDisplay*
+  float threshold;  // switch: show the fresh estimate when D > threshold * V (see the shader)
 };
 
 // Per-dispatch parameters of display.comp: the rendered image is drawn into the window at

@@ -29,6 +29,8 @@ struct ReplayOptions {
   uint32_t steps = 0;  // per edit; 0 = until every pixel has --spp samples again
   uint32_t tiles_per_step = 0;  // 0 = an eighth of the frame
   uint32_t visit_spp = 1;
+  uint32_t first_visit_spp = 0;  // 0 = visit_spp
+  std::string display;           // empty = the policy's own rule
 };
 
 std::string step_name(size_t edit, uint32_t step) {
@@ -54,7 +56,10 @@ int run_replay(ReplayOptions& o) {
   validate_common_options(o.common);
   log::set_quiet(o.common.quiet);
   const Policy policy = parse_policy(o.policy);
+  if (policy == Policy::Oracle) throw InputError("the oracle policy needs a reference image: use hipr bench");
   if (o.visit_spp < 1 || o.visit_spp > o.common.spp) throw InputError("--visit-spp must be between 1 and --spp");
+  if (o.first_visit_spp > o.common.spp) throw InputError("--first-visit-spp must be between 1 and --spp");
+  const DisplayRule display = o.display.empty() ? default_display_rule(policy) : parse_display_rule(o.display);
   Scene scene = load_scene(o.common.scene, o.common.load);
   const std::vector<Edit> edits = load_edit_script(o.edits);
   // Check every name before rendering or writing anything: a typo in edit 5 must not cost
@@ -72,17 +77,22 @@ int run_replay(ReplayOptions& o) {
   const uint32_t tiles = renderer.tile_count();
   const uint32_t per_step = o.tiles_per_step ? o.tiles_per_step : std::max(1u, (tiles + 7) / 8);
   Scheduler scheduler(renderer, policy, per_step, o.visit_spp);
+  scheduler.set_display_rule(display);
+  if (o.first_visit_spp) scheduler.set_first_visit_spp(o.first_visit_spp);
   // Converge the scene as loaded; the last 1-spp pass is timed: the unit of the overhead share.
   for (uint32_t done = 0; done + 1 < o.common.spp; done += 16) renderer.add_samples_full_frame(std::min(16u, o.common.spp - 1 - done));
   const Timer pass_timer;
   renderer.add_samples_full_frame(1);
   const double pass_seconds = pass_timer.seconds();
 
+  // Without --steps: until every pixel has --spp samples again (work counts samples since the
+  // edit). The bound only guards against a schedule that would never get there.
   const uint32_t rounds = (o.common.spp + o.visit_spp - 1) / o.visit_spp;
-  const uint32_t steps = o.steps ? o.steps : rounds * ((tiles + per_step - 1) / per_step) + (policy == Policy::Hipr ? 1 : 0);
+  const uint32_t max_steps = o.steps ? o.steps : 2 * (rounds + 1) * ((tiles + per_step - 1) / per_step) + 2;
   const std::set<uint32_t> dumps(o.dump_steps.begin(), o.dump_steps.end());
   nlohmann::json summary = {{"scene", o.common.scene.string()},
                             {"policy", o.policy},
+                            {"display", display_rule_name(display)},
                             {"full_frame_pass_seconds", pass_seconds},
                             {"edits", nlohmann::json::array()}};
   uint64_t non_finite = 0;  // the counters restart at every edit
@@ -93,10 +103,16 @@ int run_replay(ReplayOptions& o) {
     const Timer timer;
     scheduler.on_edit(scene, diff_scenes(before, scene));
     double work_after_first_step = 0.0;
-    for (uint32_t s = 1; s <= steps; ++s) {
+    bool debug_written = policy != Policy::Hipr;
+    uint32_t steps = 0;
+    for (uint32_t s = 1; s <= max_steps && (o.steps || scheduler.work_since_edit() < double(o.common.spp)); ++s) {
+      steps = s;
       scheduler.step();
       if (s == 1) work_after_first_step = scheduler.work_since_edit();
-      if (s == 1 && policy == Policy::Hipr) write_debug_images(o.output, e, renderer);
+      if (!debug_written && !scheduler.in_stage2()) {  // stage 2's weights are all in
+        write_debug_images(o.output, e, renderer);
+        debug_written = true;
+      }
       if (dumps.count(s)) write_pair(o.output, step_name(e, s), scheduler.displayed_image());
     }
     summary["edits"].push_back({{"edit", describe(edits[e])},
@@ -133,6 +149,11 @@ Command add_replay_command(CLI::App& app) {
   cmd->add_option("--steps", options->steps, "Scheduling steps per edit (default: until converged)");
   cmd->add_option("--tiles-per-step", options->tiles_per_step, "Tiles rendered per step (default: 1/8 of the frame)");
   cmd->add_option("--visit-spp", options->visit_spp, "Samples per pixel a tile gets per visit")->capture_default_str();
+  cmd->add_option("--first-visit-spp", options->first_visit_spp,
+                  "Samples per pixel of a tile's first visit after an edit (default: --visit-spp)");
+  cmd->add_option("--display", options->display,
+                  "How re-rendered tiles are shown: immediate, switch or blend (default: blend for hipr, immediate "
+                  "for the others)");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_replay(*options); }};
 }

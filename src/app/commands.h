@@ -14,6 +14,7 @@ struct Command {
 Command add_render_command(CLI::App& app);
 Command add_info_command(CLI::App& app);
 Command add_replay_command(CLI::App& app);
+Command add_bench_command(CLI::App& app);
 Command add_view_command(CLI::App& app);
 
 }  // namespace hipr::app

@@ -1,5 +1,6 @@
 #include "hipr/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -13,6 +14,21 @@
 #include "vk/compute_pipeline.h"
 
 namespace hipr {
+
+DisplayRule parse_display_rule(const std::string& name) {
+  for (DisplayRule rule : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend})
+    if (display_rule_name(rule) == name) return rule;
+  throw InputError("unknown display rule '" + name + "' (immediate, switch, blend)");
+}
+
+std::string display_rule_name(DisplayRule rule) {
+  switch (rule) {
+    case DisplayRule::Immediate: return "immediate";
+    case DisplayRule::Switch: return "switch";
+    case DisplayRule::Blend: return "blend";
+  }
+  return "?";
+}
 
 uint32_t scatter_stride(uint32_t count) {
   if (count <= 2) return 1;
@@ -95,14 +111,27 @@ struct Renderer::Impl {
         tile_list(storage(c, size_t(tiles_x) * tiles_y * sizeof(uint32_t))),
         tile_flags(storage(c, size_t(tiles_x) * tiles_y * sizeof(uint32_t))),
         bsdf_tables(vk::make_storage_buffer(c, bsdf_table_data())),
-        mark_owed(c, "mark_owed.comp", {}, {{abi::kBindingFrame}, {abi::kBindingAccumulation}}, 0) {
+        display(storage(c, size_t(pixels) * sizeof(abi::DisplayTexel))),
+        mark_owed(c, "mark_owed.comp", {},
+                  {{abi::kBindingFrame}, {abi::kBindingAccumulation}, {abi::kBindingTileFlags}}, 0),
+        resolve(c, "resolve_display.comp", {},
+                {{abi::kBindingFrame}, {abi::kBindingTileList}, {abi::kBindingAccumulation}, {abi::kBindingTileFlags},
+                 {abi::kBindingDisplay}},
+                sizeof(abi::ResolvePush)) {
     all_tiles.resize(size_t(tiles_x) * tiles_y);
     std::iota(all_tiles.begin(), all_tiles.end(), 0u);
     accumulation.clear();
     stats.clear();
     tile_flags.clear();
+    display.clear();
     mark_owed.bind_buffer(abi::kBindingFrame, frame);
     mark_owed.bind_buffer(abi::kBindingAccumulation, accumulation);
+    mark_owed.bind_buffer(abi::kBindingTileFlags, tile_flags);
+    resolve.bind_buffer(abi::kBindingFrame, frame);
+    resolve.bind_buffer(abi::kBindingTileList, tile_list);
+    resolve.bind_buffer(abi::kBindingAccumulation, accumulation);
+    resolve.bind_buffer(abi::kBindingTileFlags, tile_flags);
+    resolve.bind_buffer(abi::kBindingDisplay, display);
     bind_scene(scene);
   }
 
@@ -134,6 +163,7 @@ struct Renderer::Impl {
     changed_records = storage(ctx, std::max<size_t>(gpu.record_count(), 1) * 4);
     tile_weights = storage(ctx, tiles * 8);
     row_distance = storage(ctx, tiles * 4);
+    tile_change = storage(ctx, tiles * 4);
     sorter = std::make_unique<RadixSorter>(ctx, uint32_t(tiles));
     discover = make_trace(true);
     // Stage 1 declares the path tracer's scene bindings too: its opacity cutout reads them.
@@ -143,12 +173,13 @@ struct Renderer::Impl {
     mark_active = std::make_unique<vk::ComputePipeline>(
         ctx, "mark_active.comp", vk::ShaderDefines{},
         std::vector<vk::BindingSlot>{{abi::kBindingFrame}, {abi::kBindingGBuffer}, {abi::kBindingPreviousGBuffer},
-                                     {abi::kBindingChangedRecords}, {abi::kBindingTileFlags}},
+                                     {abi::kBindingChangedRecords}, {abi::kBindingTileFlags}, {abi::kBindingTileChange}},
         0);
     keys = std::make_unique<vk::ComputePipeline>(
         ctx, "schedule_keys.comp", vk::ShaderDefines{},
         std::vector<vk::BindingSlot>{{abi::kBindingFrame}, {abi::kBindingTileFlags}, {abi::kBindingTileWeights},
-                                     {abi::kBindingTileRowDistance}, {abi::kBindingSortKeys}, {abi::kBindingSortValues}},
+                                     {abi::kBindingTileRowDistance}, {abi::kBindingTileChange}, {abi::kBindingSortKeys},
+                                     {abi::kBindingSortValues}},
         sizeof(uint32_t));
     bind_hipr();
     bind_scene_buffers(*discover);
@@ -205,10 +236,12 @@ struct Renderer::Impl {
     mark_active->bind_buffer(abi::kBindingPreviousGBuffer, previous_gbuffer);
     mark_active->bind_buffer(abi::kBindingChangedRecords, changed_records);
     mark_active->bind_buffer(abi::kBindingTileFlags, tile_flags);
+    mark_active->bind_buffer(abi::kBindingTileChange, tile_change);
     keys->bind_buffer(abi::kBindingFrame, frame);
     keys->bind_buffer(abi::kBindingTileFlags, tile_flags);
     keys->bind_buffer(abi::kBindingTileWeights, tile_weights);
     keys->bind_buffer(abi::kBindingTileRowDistance, row_distance);
+    keys->bind_buffer(abi::kBindingTileChange, tile_change);
     keys->bind_buffer(abi::kBindingSortKeys, sorter->keys);
     keys->bind_buffer(abi::kBindingSortValues, sorter->values);
   }
@@ -225,6 +258,15 @@ struct Renderer::Impl {
     return push;
   }
 
+  // The display pass over schedule entries [offset, offset + count) (offset kInvalidIndex: tile ids
+  // 0 .. count - 1), after whatever the command buffer wrote before.
+  void record_resolve(VkCommandBuffer cmd, uint32_t offset, uint32_t count, uint32_t rule, uint32_t require_flags,
+                      uint32_t skip_flags) const {
+    const abi::ResolvePush push{offset, count, require_flags, skip_flags, rule, display_threshold};
+    vk::compute_to_compute_barrier(cmd);
+    resolve.dispatch(cmd, &push, count);
+  }
+
   void dispatch_trace(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, const abi::TracePush& push) const {
     pipeline.dispatch(cmd, &push, push.tileCount * push.groupsPerTile);
   }
@@ -236,10 +278,12 @@ struct Renderer::Impl {
   uint32_t features;  // material features the trace kernels are compiled with
   std::unique_ptr<vk::ComputePipeline> trace;
   vk::Buffer accumulation, stats, frame, tile_list, tile_flags, bsdf_tables;
-  vk::ComputePipeline mark_owed;
+  vk::Buffer display;  // DisplayTexel per pixel
+  vk::ComputePipeline mark_owed, resolve;
+  float display_threshold = 2.0f;
   std::vector<uint32_t> all_tiles;
   // HiPR (made by ensure_hipr)
-  vk::Buffer gbuffer, previous_gbuffer, changed_records, tile_weights, row_distance;
+  vk::Buffer gbuffer, previous_gbuffer, changed_records, tile_weights, row_distance, tile_change;
   std::unique_ptr<RadixSorter> sorter;
   std::unique_ptr<vk::ComputePipeline> discover, visibility, mark_active, keys;
   std::unique_ptr<vk::ComputePipeline> probe;  // material_inputs_at
@@ -283,7 +327,7 @@ void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
   m->bind_scene(scene);
 }
 
-void Renderer::stage1_visibility(const ChangeSet& changes) {
+uint32_t Renderer::stage1_visibility(const ChangeSet& changes) {
   m->ensure_hipr();
   // One pass over the records: a flag per instance, then each record looks up its own.
   const std::vector<uint32_t>& record_instance = m->gpu.record_instance();
@@ -304,6 +348,7 @@ void Renderer::stage1_visibility(const ChangeSet& changes) {
     vkCmdCopyBuffer(cmd, m->gbuffer.handle(), m->previous_gbuffer.handle(), 1, &copy);
     vkCmdFillBuffer(cmd, m->tile_flags.handle(), 0, VK_WHOLE_SIZE, everything ? abi::kTileActive : 0u);
     vkCmdFillBuffer(cmd, m->tile_weights.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, m->tile_change.handle(), 0, VK_WHOLE_SIZE, 0);
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT;
     barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
@@ -313,6 +358,9 @@ void Renderer::stage1_visibility(const ChangeSet& changes) {
     vk::compute_to_compute_barrier(cmd);
     m->mark_active->dispatch(cmd, nullptr, groups_for(m->pixels));
   });
+  // The one number the CPU needs: stage 2 is split into steps of equal work over |A| tiles.
+  const std::vector<uint32_t> flags = m->tile_flags.download_all<uint32_t>();
+  return uint32_t(std::count_if(flags.begin(), flags.end(), [](uint32_t f) { return (f & abi::kTileActive) != 0; }));
 }
 
 void Renderer::mark_all_owed() {
@@ -320,13 +368,22 @@ void Renderer::mark_all_owed() {
 }
 
 void Renderer::stage2_discover(uint32_t samples_per_pixel) {
-  m->ensure_hipr();
   // The dispatch covers the whole schedule (which the sort guarantees to list every tile, active
-  // ones first); tiles without kTileActive leave at once, so |A| never has to be read back.
+  // ones first); tiles without kTileActive leave at once.
   build_schedule();
-  abi::TracePush push = m->trace_push(0, tile_count(), samples_per_pixel);
+  stage2_discover(0, tile_count(), samples_per_pixel, std::nullopt);
+}
+
+void Renderer::stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
+                               std::optional<DisplayRule> then_resolve) {
+  m->ensure_hipr();
+  if (offset >= tile_count() || count == 0) return;
+  abi::TracePush push = m->trace_push(offset, std::min(count, tile_count() - offset), samples_per_pixel);
   push.requireFlags = abi::kTileActive;
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, *m->discover, push); });
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m->dispatch_trace(cmd, *m->discover, push);
+    if (then_resolve) m->record_resolve(cmd, push.listOffset, push.tileCount, uint32_t(*then_resolve), push.requireFlags, 0);
+  });
 }
 
 void Renderer::build_schedule() {
@@ -353,12 +410,56 @@ void Renderer::set_schedule(std::span<const uint32_t> order) {
   m->tile_list.upload(order.data(), order.size_bytes());
 }
 
-void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active) {
+void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
+                               std::optional<DisplayRule> then_resolve) {
   if (offset >= tile_count() || count == 0) return;
   count = std::min(count, tile_count() - offset);
   abi::TracePush push = m->trace_push(offset, count, samples_per_pixel);
   push.skipFlags = skip_active ? abi::kTileActive : 0u;
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->dispatch_trace(cmd, *m->trace, push); });
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m->dispatch_trace(cmd, *m->trace, push);
+    if (then_resolve) m->record_resolve(cmd, offset, count, uint32_t(*then_resolve), 0, push.skipFlags);
+  });
+}
+
+void Renderer::resolve_display(uint32_t offset, uint32_t count, DisplayRule rule, uint32_t require_flags,
+                               uint32_t skip_flags) {
+  if (offset >= tile_count() || count == 0) return;
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m->record_resolve(cmd, offset, std::min(count, tile_count() - offset), uint32_t(rule), require_flags, skip_flags);
+  });
+}
+
+void Renderer::resolve_display_all(DisplayRule rule) {
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->record_resolve(cmd, abi::kInvalidIndex, tile_count(), uint32_t(rule), 0, 0); });
+}
+
+void Renderer::capture_stale_display() {
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->record_resolve(cmd, abi::kInvalidIndex, tile_count(), abi::kDisplayCapture, 0, 0); });
+}
+
+void Renderer::set_display_threshold(float threshold) { m->display_threshold = threshold; }
+
+ImageRGB Renderer::displayed_image() const {
+  const auto texels = m->display.download_all<abi::DisplayTexel>();
+  ImageRGB image;
+  image.width = m->settings.width;
+  image.height = m->settings.height;
+  image.rgb.resize(texels.size() * 3);
+  for (size_t i = 0; i < texels.size(); ++i)
+    for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = texels[i].shown[c];
+  return image;
+}
+
+RenderSnapshot Renderer::snapshot() const {
+  return {m->accumulation.download_all<abi::PixelAccum>(), m->display.download_all<abi::DisplayTexel>()};
+}
+
+void Renderer::restore(const RenderSnapshot& snapshot) {
+  if (snapshot.accumulation.size() != m->pixels || snapshot.display.size() != m->pixels)
+    throw InternalError("a snapshot of another image size");
+  m->accumulation.upload(snapshot.accumulation.data(), snapshot.accumulation.size() * sizeof(abi::PixelAccum));
+  m->display.upload(snapshot.display.data(), snapshot.display.size() * sizeof(abi::DisplayTexel));
 }
 
 std::vector<uint32_t> Renderer::gbuffer_instances() const {
@@ -424,6 +525,7 @@ void Renderer::reset_counters() { m->stats.clear(); }
 
 void Renderer::reset() {
   m->accumulation.clear();
+  m->display.clear();
   m->stats.clear();
 }
 

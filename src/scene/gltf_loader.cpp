@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.h"
@@ -17,7 +16,9 @@
 #include "scene/default_camera.h"
 #include "scene/glb_container.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_node_transform.h"
 #include "scene/gltf_sandbox.h"
 #include "scene/mesh_processing.h"
 
@@ -30,6 +31,7 @@ const std::vector<std::string>& supported_gltf_extensions() {
       "KHR_materials_ior",         "KHR_materials_transmission",      "KHR_materials_volume",
       "KHR_materials_clearcoat",   "KHR_materials_sheen",             "KHR_materials_iridescence",
       "KHR_materials_anisotropy",  "KHR_materials_diffuse_transmission", "KHR_texture_transform",
+      "KHR_node_visibility",
   };
   return list;
 }
@@ -110,22 +112,9 @@ bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* 
 }
 
 glm::mat4 node_transform(const tinygltf::Node& node, const std::string& what) {
-  glm::mat4 m(1.0f);
   if (!node.matrix.empty() && node.matrix.size() != 16)
     throw InputError(what + " has a matrix of " + std::to_string(node.matrix.size()) + " numbers (expected 16)");
-  if (node.matrix.size() == 16) {
-    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(node.matrix[size_t(i)]);
-  } else {
-    glm::vec3 t(0.0f), s(1.0f);
-    glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
-    if (node.translation.size() == 3) t = {node.translation[0], node.translation[1], node.translation[2]};
-    if (node.scale.size() == 3) s = {node.scale[0], node.scale[1], node.scale[2]};
-    if (node.rotation.size() == 4)
-      r = glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2]));
-    const float len = glm::length(r);
-    if (std::isfinite(len) && len > 0.0f) r /= len;
-    m = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
-  }
+  const glm::mat4 m = gltf::local_transform(node.matrix, node.translation, node.rotation, node.scale);
   for (int i = 0; i < 16; ++i)
     if (!std::isfinite(glm::value_ptr(m)[i])) throw InputError(what + " has a non-finite transform");
   return m;
@@ -154,12 +143,11 @@ class Converter {
   void convert_materials() {
     for (size_t i = 0; i < m_model.materials.size(); ++i)
       m_scene.materials.push_back(gltf::convert_material(m_model.materials[i], i, m_textures, m_name));
-    // glTF's default material, for primitives without one: white-ish, fully rough dielectric.
+    // glTF's default material, for primitives without one (edited and saved: document extras).
     Material fallback;
     fallback.name = "default";
-    fallback.params = default_material_params();
-    fallback.params.base_color = glm::vec3(1.0f);
-    fallback.params.specular_roughness = 1.0f;
+    fallback.params = gltf::default_gltf_material_params();
+    gltf::apply_openpbr_extras(m_model.extras, gltf::kDefaultMaterialExtras, fallback.params, m_name);
     m_default_material = uint32_t(m_scene.materials.size());
     m_scene.materials.push_back(fallback);
   }
@@ -247,6 +235,7 @@ class Converter {
       else throw InputError(object("light", i, source.name) + " has unknown type '" + source.type + "'");
       light.inner_cone = float(source.spot.innerConeAngle);
       light.outer_cone = float(source.spot.outerConeAngle);
+      gltf::apply_light_extras(source.extras, light, object("light", i, source.name));
       if (!std::isfinite(light.intensity) || light.intensity < 0 || !std::isfinite(light.color.x + light.color.y + light.color.z))
         throw InputError(object("light", i, source.name) + " has an invalid intensity or colour");
       m_scene.lights.push_back(light);
@@ -265,6 +254,7 @@ class Converter {
       node.local = node_transform(source, what);
       node.mesh = checked(source.mesh, m_model.meshes.size(), what, "mesh");
       node.camera = checked(source.camera, m_model.cameras.size(), what, "camera");
+      node.visible = visibility(source, what);
       if (const auto it = source.extensions.find("KHR_lights_punctual"); it != source.extensions.end() && it->second.Has("light")) {
         const tinygltf::Value& light = it->second.Get("light");
         if (!light.IsInt()) throw InputError(what + ": KHR_lights_punctual.light is not an index");
@@ -302,6 +292,17 @@ class Converter {
       for (size_t i = 0; i < count; ++i)
         if (m_scene.nodes[i].parent < 0) m_scene.root_nodes.push_back(uint32_t(i));
     }
+  }
+
+  // KHR_node_visibility: "visible": false hides the node and its subtree (Scene::instances).
+  static bool visibility(const tinygltf::Node& source, const std::string& what) {
+    const auto it = source.extensions.find("KHR_node_visibility");
+    if (it == source.extensions.end()) return true;
+    if (!it->second.IsObject()) throw InputError(what + ": KHR_node_visibility is not an object");
+    if (!it->second.Has("visible")) return true;
+    const tinygltf::Value& visible = it->second.Get("visible");
+    if (!visible.IsBool()) throw InputError(what + ": KHR_node_visibility.visible is not a boolean");
+    return visible.Get<bool>();
   }
 
   // An optional reference: -1 means none.

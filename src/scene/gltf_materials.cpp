@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_material_table.h"
 
 namespace hipr::gltf {
@@ -39,8 +40,7 @@ glm::vec3 factor(const tinygltf::Value& ext, const FactorRow& row) {
   return glm::clamp(v, glm::vec3(row.lo), glm::vec3(row.hi));
 }
 
-void apply_extension_rows(const tinygltf::Material& m, abi::MaterialBlock& p, TextureTable& textures,
-                          const std::string& what) {
+void apply_factor_rows(const tinygltf::Material& m, abi::MaterialBlock& p) {
   auto* bytes = reinterpret_cast<unsigned char*>(&p);
   for (const FactorRow& row : factor_rows()) {
     const tinygltf::Value* ext = extension(m, row.extension);
@@ -48,6 +48,11 @@ void apply_extension_rows(const tinygltf::Material& m, abi::MaterialBlock& p, Te
     const glm::vec3 v = factor(*ext, row);
     std::memcpy(bytes + row.field, &v, sizeof(float) * size_t(row.components));
   }
+}
+
+void apply_texture_rows(const tinygltf::Material& m, abi::MaterialBlock& p, TextureTable& textures,
+                        const std::string& what) {
+  auto* bytes = reinterpret_cast<unsigned char*>(&p);
   for (const TextureRow& row : texture_rows()) {
     const tinygltf::Value* ext = extension(m, row.extension);
     if (!ext) continue;
@@ -97,37 +102,57 @@ void apply_extension_rules(const tinygltf::Material& m, abi::MaterialBlock& p) {
       if (std::isfinite(scale)) p.coat_normal_scale = float(scale);
     }
   }
-  if (extension(m, "KHR_materials_sheen"))
-    p.fuzz_weight = (glm::length(p.fuzz_color) > 0.0f || p.sheen_color_texture != abi::kInvalidIndex) ? 1.0f : 0.0f;
+  // A sheen colour texture reference either names a texture or fails the load (TextureTable::get),
+  // so its index alone says whether the material has one.
+  if (const tinygltf::Value* sheen = extension(m, "KHR_materials_sheen")) {
+    const bool textured = texture_reference(*sheen, "sheenColorTexture").index >= 0;
+    p.fuzz_weight = (glm::length(p.fuzz_color) > 0.0f || textured) ? 1.0f : 0.0f;
+  }
 }
 
 }  // namespace
 
-Material convert_material(const tinygltf::Material& m, size_t index, TextureTable& textures,
-                          const std::string& file) {
-  Material out;
-  out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
-  abi::MaterialBlock& p = out.params;
-  p = default_material_params();
-  const std::string what = file + ": material " + std::to_string(index) + " ('" + out.name + "')";
-
+abi::MaterialBlock map_material_factors(const tinygltf::Material& m, const std::string& what) {
+  abi::MaterialBlock p = default_material_params();
   const auto& pbr = m.pbrMetallicRoughness;
   p.base_color = color(pbr.baseColorFactor, glm::vec3(1.0f));
   p.base_weight = 1.0f;
   p.base_metalness = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
   p.specular_roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
-  p.base_color_texture = textures.get(texture_reference(pbr.baseColorTexture), true, what);
-  p.metallic_roughness_texture = textures.get(texture_reference(pbr.metallicRoughnessTexture), false, what);
-  p.normal_texture = textures.get(texture_reference(m.normalTexture), false, what);
   p.normal_scale = float(m.normalTexture.scale);
-  p.emission_texture = textures.get(texture_reference(m.emissiveTexture), true, what);
   // Emission in nits: emissiveFactor (colour) x KHR_materials_emissive_strength (luminance).
   p.emission_color = color(m.emissiveFactor, glm::vec3(0.0f));
   p.emission_luminance = 1.0f;
   apply_alpha_mode(m, p, what);
-  apply_extension_rows(m, p, textures, what);
+  apply_factor_rows(m, p);
   apply_extension_rules(m, p);
   if (m.doubleSided) p.flags |= abi::kMaterialDoubleSided;
+  return p;
+}
+
+abi::MaterialBlock default_gltf_material_params() {
+  // glTF's default material: white-ish, fully rough dielectric.
+  abi::MaterialBlock p = default_material_params();
+  p.base_color = glm::vec3(1.0f);
+  p.specular_roughness = 1.0f;
+  return p;
+}
+
+Material convert_material(const tinygltf::Material& m, size_t index, TextureTable& textures,
+                          const std::string& file) {
+  Material out;
+  out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
+  const std::string what = file + ": material " + std::to_string(index) + " ('" + out.name + "')";
+  abi::MaterialBlock& p = out.params;
+  p = map_material_factors(m, what);
+  const auto& pbr = m.pbrMetallicRoughness;
+  p.base_color_texture = textures.get(texture_reference(pbr.baseColorTexture), true, what);
+  p.metallic_roughness_texture = textures.get(texture_reference(pbr.metallicRoughnessTexture), false, what);
+  p.normal_texture = textures.get(texture_reference(m.normalTexture), false, what);
+  p.emission_texture = textures.get(texture_reference(m.emissiveTexture), true, what);
+  apply_texture_rows(m, p, textures, what);
+  // What glTF cannot say, saved by save_scene (gltf_hipr_extras.h), overrides the mapping.
+  apply_openpbr_extras(m.extras, kOpenPbrExtras, p, what);
   return out;
 }
 

@@ -1,0 +1,44 @@
+#pragma once
+// The outputs of `hipr bench`: curves.csv, summary.json, plot.png and per-edit images.
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bench/policy_run.h"
+
+namespace hipr::app {
+
+struct BenchEdit {
+  std::string name;
+  ImageRGB reference;
+  size_t changed_tiles = 0;
+  uint32_t tiles = 0;
+  std::vector<std::pair<std::string, bench::PolicyRun>> runs;  // in the order run
+
+  void add_run(const std::string& policy, bench::PolicyRun run) { runs.emplace_back(policy, std::move(run)); }
+};
+
+class BenchReport {
+ public:
+  // `settings`: what the runs were made with, recorded in summary.json.
+  BenchReport(std::string scene, nlohmann::json settings, std::filesystem::path folder)
+      : m_scene(std::move(scene)), m_settings(std::move(settings)), m_folder(std::move(folder)) {}
+  BenchEdit& add_edit(const std::string& name, ImageRGB reference, size_t changed_tiles, uint32_t tiles);
+  // Writes everything (each file atomically). A missing python3/matplotlib only skips plot.png,
+  // with a warning.
+  void write() const;
+
+ private:
+  nlohmann::json summary() const;
+  void write_curves(const std::filesystem::path& path) const;
+  void write_images() const;
+
+  std::string m_scene;
+  nlohmann::json m_settings;
+  std::filesystem::path m_folder;
+  std::vector<BenchEdit> m_edits;
+};
+
+}  // namespace hipr::app

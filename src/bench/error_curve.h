@@ -1,0 +1,28 @@
+#pragma once
+// Error of the displayed image after each scheduling step, and what the benchmark summarises
+// from it (DESIGN.md "Measuring run time against error").
+#include <cstdint>
+#include <vector>
+
+namespace hipr::bench {
+
+struct CurvePoint {
+  uint32_t step = 0;    // 0: the moment of the edit (the stale image)
+  double work = 0.0;    // full-frame 1-spp passes since the edit
+  double wall_ms = 0.0; // scheduling and rendering time since the edit (evaluation excluded)
+  double relmse = 0.0;
+  double flip = 0.0;
+};
+
+using ErrorCurve = std::vector<CurvePoint>;
+
+// Which error a summary reads.
+enum class Metric { RelMse, Flip };
+double metric_of(const CurvePoint& point, Metric metric);
+
+// Mean error over the first `horizon` work units after the edit. The image shown after point i
+// stays on screen until point i + 1 (a step function of work); past the last point its error
+// holds. Points must be in increasing work, starting at work 0.
+double error_auc(const ErrorCurve& curve, Metric metric, double horizon);
+
+}  // namespace hipr::bench

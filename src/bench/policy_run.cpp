@@ -1,0 +1,72 @@
+#include "bench/policy_run.h"
+
+#include "core/timer.h"
+
+namespace hipr::bench {
+namespace {
+
+bool all_shown(const std::vector<uint32_t>& flags, const std::vector<uint32_t>& tiles) {
+  for (uint32_t t : tiles)
+    if ((flags[t] & abi::kTileShown) == 0) return false;
+  return true;
+}
+
+}  // namespace
+
+PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes, const RenderSnapshot& start,
+                     const ImageRGB& reference, const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options) {
+  renderer.restore(start);
+  Scheduler scheduler(renderer, options.policy, options.tiles_per_step, options.visit_spp);
+  scheduler.set_display_rule(options.display);
+  scheduler.set_first_visit_spp(options.first_visit_spp);
+  if (options.policy == Policy::Oracle) scheduler.set_reference(reference);
+
+  PolicyRun run;
+  const ImageRGB stale = scheduler.displayed_image();
+  const auto evaluate = [&](uint32_t step, double wall_seconds) {
+    ImageRGB shown = scheduler.displayed_image();
+    const double work = step == 0 ? 0.0 : scheduler.work_since_edit();
+    run.curve.push_back({step, work, wall_seconds * 1e3, relmse(shown, reference), flip_mean(shown, reference, options.flip)});
+    while (run.captures.size() < options.capture_work.size() && work >= options.capture_work[run.captures.size()])
+      run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
+    return shown;
+  };
+  evaluate(0, 0.0);
+
+  double wall = 0.0;  // only scheduling and rendering: evaluation and read-backs are left out
+  {
+    const Timer timer;
+    scheduler.on_edit(after, changes);
+    wall += timer.seconds();
+  }
+  for (uint32_t step = 1; options.max_steps == 0 || step <= options.max_steps; ++step) {
+    const Timer timer;
+    scheduler.step();
+    wall += timer.seconds();
+    const double work = scheduler.work_since_edit();
+    run.converged = work >= double(options.target_spp);
+    const bool tracking = run.first_feedback_work < 0.0 || run.changed_tiles_shown_work < 0.0;
+    const bool dense = work <= options.dense_until;
+    if (!dense && !tracking && !run.converged && step % options.sparse_every != 0) continue;
+    const ImageRGB shown = dense || run.converged || step % options.sparse_every == 0 ? evaluate(step, wall)
+                                                                                     : scheduler.displayed_image();
+    if (run.first_feedback_work < 0.0 && shown.rgb != stale.rgb) {
+      run.first_feedback_work = work;
+      run.first_feedback_ms = wall * 1e3;
+    }
+    if (run.changed_tiles_shown_work < 0.0 && all_shown(renderer.tile_flags(), changed_tiles)) {
+      run.changed_tiles_shown_work = work;
+      run.changed_tiles_shown_ms = wall * 1e3;
+    }
+    if (run.converged) break;
+  }
+  run.overhead_seconds = scheduler.overhead_seconds();
+  run.wall_seconds = wall;
+  run.non_finite_samples = renderer.counters().non_finite_samples;
+  run.final_image = scheduler.displayed_image();
+  while (run.captures.size() < options.capture_work.size())
+    run.captures.emplace_back(options.capture_work[run.captures.size()], run.final_image);
+  return run;
+}
+
+}  // namespace hipr::bench

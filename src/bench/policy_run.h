@@ -1,0 +1,47 @@
+#pragma once
+// One policy's re-render after one edit, measured step by step against a reference: the core
+// of `hipr bench`.
+#include <cstdint>
+#include <vector>
+
+#include "bench/error_curve.h"
+#include "hipr/scheduler.h"
+#include "image/error_metrics.h"
+
+namespace hipr::bench {
+
+struct PolicyRunOptions {
+  Policy policy = Policy::Hipr;
+  DisplayRule display = DisplayRule::Blend;
+  uint32_t tiles_per_step = 1;
+  uint32_t visit_spp = 1;
+  uint32_t first_visit_spp = 1;  // samples of a tile's first visit after the edit (not for `full`)
+  uint32_t target_spp = 1;     // converged: every pixel has this many samples since the edit
+  uint32_t max_steps = 0;      // 0: until converged
+  double dense_until = 16.0;   // evaluate after every step until this much work, then sparser
+  uint32_t sparse_every = 8;   // steps between evaluations after that
+  FlipOptions flip;
+  std::vector<double> capture_work = {0.25, 1.0};  // keep the displayed image at these amounts of work
+};
+
+struct PolicyRun {
+  ErrorCurve curve;
+  // Work and time when the display first changed anywhere, and when every changed tile
+  // (stage 1's active set) showed its fresh estimate; -1 when it never happened.
+  double first_feedback_work = -1.0, first_feedback_ms = -1.0;
+  double changed_tiles_shown_work = -1.0, changed_tiles_shown_ms = -1.0;
+  double overhead_seconds = 0.0;  // scheduling (stage 1, sort, display resolves) since the edit
+  double wall_seconds = 0.0;      // scheduling + rendering until converged (or the last step)
+  bool converged = false;
+  uint32_t non_finite_samples = 0;
+  ImageRGB final_image;
+  // Per capture_work entry: (that work, the first image shown with at least that much work).
+  std::vector<std::pair<double, ImageRGB>> captures;
+};
+
+// `renderer` holds the scene `before` the edit; `start` is the state every policy starts from.
+// Applies the edit (`after`) and runs the policy, leaving the renderer on `after`.
+PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes, const RenderSnapshot& start,
+                     const ImageRGB& reference, const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options);
+
+}  // namespace hipr::bench

@@ -1,0 +1,37 @@
+#pragma once
+// Converged references of edited scene states, cached on disk: a reference costs hundreds of
+// full-frame passes, and a benchmark is rerun far more often than its scene or edits change.
+#include <filesystem>
+#include <string>
+
+#include "hipr/renderer.h"
+#include "hipr/scene.h"
+#include "image/image_io.h"
+
+namespace hipr::vk {
+class Context;
+}
+
+namespace hipr::bench {
+
+// Everything that decides a reference's pixels: the scene as loaded (content hash, environment
+// settings), the edits applied so far (`state` = their canonical text), the render settings
+// that change the image, the sample count and the renderer's own shader sources.
+std::string reference_key(const Scene& scene, const std::string& state, const RenderSettings& settings, uint32_t spp);
+
+// $HIPR_CACHE_DIR/references (or beside the shader cache); empty when there is no cache folder.
+std::filesystem::path default_reference_cache();
+
+struct Reference {
+  ImageRGB image;
+  bool from_cache = false;
+  double render_seconds = 0.0;  // 0 when read from the cache
+};
+
+// The reference of `scene` at `spp` samples per pixel, rendered with a seed unrelated to
+// `settings.seed` (its noise must not correlate with the runs it judges). Read from
+// `cache_dir`/KEY.exr when present, else rendered and stored there (when cache_dir is set).
+Reference converged_reference(const vk::Context& ctx, const Scene& scene, const std::string& key,
+                              const RenderSettings& settings, uint32_t spp, const std::filesystem::path& cache_dir);
+
+}  // namespace hipr::bench

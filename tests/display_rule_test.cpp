@@ -1,0 +1,168 @@
+// What the screen shows after an edit (shaders/resolve_display.comp): stale radiance until a
+// tile's fresh estimate is worth showing, and always exactly the fresh image once it has caught up.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "hipr/edits.h"
+#include "hipr/scene_diff.h"
+#include "hipr/scene_loader.h"
+#include "hipr/scheduler.h"
+#include "image/error_metrics.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+
+constexpr uint32_t kStaleSpp = 16;
+
+RenderSettings settings() {
+  RenderSettings s;
+  s.width = 32;
+  s.height = 32;
+  s.tile_size = 8;
+  s.max_depth = 4;
+  s.seed = 5;
+  return s;
+}
+
+// A converged Cornell box with a scanline scheduler that visits every tile in one step with
+// `first_visit` samples, so one step is one whole round.
+struct EditedBox {
+  explicit EditedBox(DisplayRule rule, uint32_t first_visit = 4)
+      : scene(load_scene(test::asset("cornell_box.gltf"))),
+        renderer(test::context(), scene, settings()),
+        scheduler(renderer, Policy::Scanline, renderer.tile_count()) {
+    scheduler.set_display_rule(rule);
+    scheduler.set_first_visit_spp(first_visit);
+    renderer.add_samples_full_frame(kStaleSpp);
+    renderer.resolve_display_all(DisplayRule::Immediate);
+    stale = renderer.displayed_image();
+  }
+  void edit(const Edit& e) {
+    const Scene before = scene;
+    apply_edit(scene, e);
+    scheduler.on_edit(scene, diff_scenes(before, scene));
+  }
+  Scene scene;
+  Renderer renderer;
+  Scheduler scheduler;
+  ImageRGB stale;
+};
+
+// An edit that sets a value the material already has: every pixel restarts, and its fresh
+// samples repeat the stale ones (same pixel, sample index and seed).
+const Edit kNoOpEdit = MaterialEdit{"white", {{"base_color", {0.73f, 0.73f, 0.73f}}}};
+const Edit kRecolourRedWall = MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}};
+
+class StatisticalRules : public ::testing::TestWithParam<DisplayRule> {};
+
+TEST_P(StatisticalRules, AnUnchangedImageKeepsItsStaleRadianceUntilTheFreshOneCatchesUp) {
+  EditedBox box(GetParam());
+  ASSERT_EQ(box.scene.materials[0].name, "white");
+  box.edit(kNoOpEdit);
+  box.scheduler.step();  // every tile: 4 fresh samples, a quarter of the stale estimate's
+  const ImageRGB fresh = box.renderer.image();
+  const double fresh_error = relmse(fresh, box.stale);
+  ASSERT_GT(fresh_error, 0.0);
+  EXPECT_LT(relmse(box.scheduler.displayed_image(), box.stale), 0.1 * fresh_error)
+      << "four samples must not replace sixteen when nothing changed";
+  for (int round = 0; round < 12; ++round) box.scheduler.step();
+  EXPECT_EQ(box.scheduler.displayed_image().rgb, box.stale.rgb) << "caught up: the very same samples";
+}
+
+// The converged image of `scene` (no noise to speak of next to the edit's change).
+ImageRGB converged(const Scene& scene) {
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(256);
+  return renderer.image();
+}
+
+TEST_P(StatisticalRules, AMajorChangeIsShownAtOnce) {
+  EditedBox box(GetParam());
+  const ImageRGB truth_before = converged(box.scene);
+  box.edit(kRecolourRedWall);
+  box.scheduler.step();
+  const ImageRGB fresh = box.renderer.image(), shown = box.scheduler.displayed_image();
+  // The tile the edit changed most (on the wall) shows its fresh estimate, or nearly.
+  const ImageRGB truth = converged(box.scene);
+  const uint32_t tiles_x = box.renderer.tiles_x(), size = settings().tile_size;
+  std::vector<double> change(box.renderer.tile_count(), 0.0);
+  for (size_t i = 0; i < truth.rgb.size(); ++i) {
+    const size_t pixel = i / 3, x = pixel % settings().width, y = pixel / settings().width;
+    change[(y / size) * tiles_x + x / size] += std::abs(truth.rgb[i] - truth_before.rgb[i]);
+  }
+  const uint32_t tile = uint32_t(std::max_element(change.begin(), change.end()) - change.begin());
+  double to_fresh = 0.0, to_stale = 0.0;
+  for (uint32_t y = (tile / tiles_x) * size; y < (tile / tiles_x + 1) * size; ++y)
+    for (uint32_t x = (tile % tiles_x) * size; x < (tile % tiles_x + 1) * size; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const size_t i = (size_t(y) * settings().width + x) * 3 + size_t(c);
+        to_fresh += std::abs(shown.rgb[i] - fresh.rgb[i]);
+        to_stale += std::abs(shown.rgb[i] - box.stale.rgb[i]);
+      }
+  EXPECT_LT(to_fresh, 0.1 * to_stale) << "tile " << tile;
+  if (GetParam() == DisplayRule::Switch) {
+    EXPECT_LT(to_fresh, 1e-4 * to_stale) << "the fresh means, as the GPU divides them";
+    EXPECT_NE(box.renderer.tile_flags()[tile] & abi::kTileShown, 0u);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Rules, StatisticalRules, ::testing::Values(DisplayRule::Switch, DisplayRule::Blend),
+                         [](const auto& case_info) { return display_rule_name(case_info.param); });
+
+TEST(DisplayRules, ImmediateShowsEveryReRenderedPixel) {
+  EditedBox box(DisplayRule::Immediate);
+  box.edit(kNoOpEdit);
+  box.scheduler.step();
+  const ImageRGB shown = box.scheduler.displayed_image(), fresh = box.renderer.image();
+  for (size_t i = 0; i < shown.rgb.size(); ++i) ASSERT_NEAR(shown.rgb[i], fresh.rgb[i], 1e-6f * fresh.rgb[i]) << i;
+  for (uint32_t flags : box.renderer.tile_flags()) EXPECT_NE(flags & abi::kTileShown, 0u);
+}
+
+TEST(DisplayRules, TheFullPolicyShowsNothingNewUntilItsPassCompletes) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Full, 5);  // 16 tiles: a pass takes 4 steps
+  renderer.add_samples_full_frame(2);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const ImageRGB stale = renderer.displayed_image();
+  const Scene before = scene;
+  apply_edit(scene, kRecolourRedWall);
+  scheduler.on_edit(scene, diff_scenes(before, scene));
+  for (int s = 0; s < 3; ++s) {
+    scheduler.step();
+    EXPECT_EQ(scheduler.displayed_image().rgb, stale.rgb) << "step " << s + 1;
+  }
+  scheduler.step();  // the pass completes: the display shows every fresh pixel
+  const ImageRGB shown = scheduler.displayed_image();
+  EXPECT_NE(shown.rgb, stale.rgb);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  EXPECT_EQ(shown.rgb, renderer.displayed_image().rgb);
+}
+
+// A second edit before the first one's tiles were shown: the display keeps what it showed (the
+// stale image of the first edit), and the new fresh samples are weighed against that.
+TEST(DisplayRules, AnEditDuringAnEditKeepsWhatTheScreenShows) {
+  EditedBox box(DisplayRule::Switch);
+  box.edit(kNoOpEdit);
+  box.scheduler.step();
+  const ImageRGB shown = box.scheduler.displayed_image();
+  box.edit(kNoOpEdit);
+  EXPECT_EQ(box.scheduler.displayed_image().rgb, shown.rgb);
+}
+
+TEST(RenderSnapshot, RestoresAccumulationAndDisplay) {
+  EditedBox box(DisplayRule::Blend);
+  const RenderSnapshot snapshot = box.renderer.snapshot();
+  box.edit(kRecolourRedWall);
+  box.scheduler.step();
+  ASSERT_NE(box.renderer.image().rgb, box.stale.rgb);
+  box.renderer.restore(snapshot);
+  EXPECT_EQ(box.renderer.image().rgb, box.stale.rgb);
+  EXPECT_EQ(box.renderer.sample_counts(), std::vector<uint32_t>(32 * 32, kStaleSpp));
+}
+
+}  // namespace
+}  // namespace hipr

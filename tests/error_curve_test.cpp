@@ -1,0 +1,36 @@
+// The benchmark's summaries of an error curve: the displayed image is a step function of work.
+#include <gtest/gtest.h>
+
+#include "bench/error_curve.h"
+#include "core/error.h"
+
+namespace hipr::bench {
+namespace {
+
+CurvePoint point(double work, double relmse, double flip = 0.0) { return {0, work, 0.0, relmse, flip}; }
+
+TEST(ErrorAuc, IsTheMeanOfAStepFunctionOverTheHorizon) {
+  // 0.4 on [0, 0.25), 0.2 on [0.25, 0.75), 0.1 from 0.75 on.
+  const ErrorCurve curve = {point(0.0, 0.4, 1.0), point(0.25, 0.2, 0.5), point(0.75, 0.1, 0.25)};
+  EXPECT_DOUBLE_EQ(error_auc(curve, Metric::RelMse, 1.0), 0.4 * 0.25 + 0.2 * 0.5 + 0.1 * 0.25);
+  EXPECT_DOUBLE_EQ(error_auc(curve, Metric::Flip, 1.0), 1.0 * 0.25 + 0.5 * 0.5 + 0.25 * 0.25);
+  EXPECT_DOUBLE_EQ(error_auc(curve, Metric::RelMse, 0.5), (0.4 * 0.25 + 0.2 * 0.25) / 0.5);
+  // Past the last point its error holds.
+  EXPECT_DOUBLE_EQ(error_auc(curve, Metric::RelMse, 4.0), (0.4 * 0.25 + 0.2 * 0.5 + 0.1 * 3.25) / 4.0);
+}
+
+TEST(ErrorAuc, AStaleImageUntilTheHorizonScoresItsOwnError) {
+  // `full` shows the stale image until its pass ends at exactly one work unit.
+  const ErrorCurve curve = {point(0.0, 0.3), point(0.5, 0.3), point(1.0, 5.0)};
+  EXPECT_DOUBLE_EQ(error_auc(curve, Metric::RelMse, 1.0), 0.3);
+}
+
+TEST(ErrorAuc, RefusesCurvesThatDoNotStartAtTheEditOrGoBack) {
+  EXPECT_THROW(error_auc({}, Metric::RelMse, 1.0), InternalError);
+  EXPECT_THROW(error_auc({point(0.1, 1.0)}, Metric::RelMse, 1.0), InternalError);
+  EXPECT_THROW(error_auc({point(0.0, 1.0), point(0.5, 1.0), point(0.25, 1.0)}, Metric::RelMse, 1.0), InternalError);
+  EXPECT_THROW(error_auc({point(0.0, 1.0)}, Metric::RelMse, 0.0), InternalError);
+}
+
+}  // namespace
+}  // namespace hipr::bench
