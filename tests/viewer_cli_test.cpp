@@ -7,6 +7,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
+
+#include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "hipr/edits.h"
@@ -213,6 +216,64 @@ TEST_F(ViewerWindow, PanelsDrawBesideTheRender) {
   EXPECT_GT(colours.size(), 20u);
 }
 
+// Errors and warnings the Khronos glTF-Validator reports for `files` (tools/validate_gltf.js,
+// one JSON line per file), or nothing when node or the validator package is absent.
+struct ValidatorReport {
+  int errors = 0;
+  std::map<std::string, int> codes;
+};
+
+std::optional<std::vector<ValidatorReport>> validate_gltf(const std::vector<fs::path>& files) {
+  const fs::path tools = HIPR_TOOLS_DIR;
+  if (std::system("command -v node >/dev/null 2>&1") != 0 ||
+      !fs::exists(tools / "node_modules" / "gltf-validator" / "package.json"))
+    return std::nullopt;
+  std::string command = "node " + quoted(tools / "validate_gltf.js");
+  for (const fs::path& file : files) command += " " + quoted(file);
+  const test::CommandResult result = test::run_command(command);
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  std::vector<ValidatorReport> reports;
+  for (const std::string& line : test::lines_of(result.output)) {
+    const nlohmann::json summary = nlohmann::json::parse(line);
+    ValidatorReport report;
+    report.errors = summary["errors"];
+    for (const auto& [code, count] : summary["error_codes"].items()) report.codes[code] = count;
+    reports.push_back(report);
+  }
+  return reports;
+}
+
+// Edits typed into the viewer (here: a script), saved at exit: the file reloads to the edited
+// scene, and the glTF validator finds no error the original did not have.
+TEST_F(ViewerWindow, SavedSceneReloadsToTheEditedScene) {
+  const char* edits = R"({"edits": [
+    {"op": "transform", "node": "tall_block", "translate": [0.12, 0.0, -0.05]},
+    {"op": "material", "material": "red", "set": {"base_color": [0.05, 0.1, 0.65], "specular_roughness": 0.2}},
+    {"op": "visibility", "node": "short_block", "visible": false},
+    {"op": "camera", "translate": [0.0, 0.02, -0.1]}]})";
+  const fs::path saved = s_dir / "edited.gltf";
+  const test::CommandResult result = run_in_xvfb(view_arguments(
+      "--exit-after-frames 17 --save " + quoted(saved) + " --script " + quoted(script("save.json", edits))));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  Scene expected = load_scene(test::asset("cornell_box.gltf"));
+  for (const Edit& edit : parse_edit_script(edits, "save.json")) apply_edit(expected, edit);
+  const Scene reloaded = load_scene(saved);
+  EXPECT_TRUE(diff_scenes(expected, reloaded).empty()) << "the saved file loads as the edited scene";
+  for (size_t n = 0; n < expected.nodes.size(); ++n) {
+    EXPECT_EQ(reloaded.nodes[n].visible, expected.nodes[n].visible) << n;
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) EXPECT_NEAR(reloaded.nodes[n].local[c][r], expected.nodes[n].local[c][r], 1e-6f) << n;
+  }
+  EXPECT_FLOAT_EQ(reloaded.materials[1].params.specular_roughness, 0.2f);
+  const auto reports = validate_gltf({test::asset("cornell_box.gltf"), saved});
+  if (!reports) GTEST_SKIP() << "node or the gltf-validator package is absent (tools/setup-deps.sh installs it)";
+  ASSERT_EQ(reports->size(), 2u);
+  EXPECT_LE((*reports)[1].errors, (*reports)[0].errors);
+  const auto& original = (*reports)[0].codes;
+  for (const auto& [code, count] : (*reports)[1].codes)
+    EXPECT_LE(count, original.count(code) ? original.at(code) : 0) << "new validator error " << code;
+}
+
 // Bad input is refused before a window opens: no display is needed to see the error.
 TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {
   const fs::path dir = test::temp_dir("viewer-bad");
@@ -224,7 +285,8 @@ TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {
         base + " --script " + quoted(bad_script), base + " --script " + quoted(dir / "missing.json"),
         quoted(test::asset("cornell_box.gltf")) + " --screenshot " + quoted(dir / "shot.jpg"),
         quoted(test::asset("cornell_box.gltf")) + " --screenshot " + quoted(dir / "no/such/folder/shot.png"),
-        quoted(dir / "missing.gltf"), base + " --visit-spp 0"}) {
+        quoted(dir / "missing.gltf"), base + " --visit-spp 0", base + " --policy oracle", base + " --display fast",
+        base + " --save " + quoted(dir / "scene.obj"), base + " --save " + quoted(dir / "no/such/folder/a.gltf")}) {
     const test::CommandResult result =
         test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " view " + arguments);
     EXPECT_EQ(result.exit_code, kExitBadInput) << arguments << "\n" << result.output;

@@ -20,6 +20,7 @@ struct ViewCommandOptions {
   fs::path script;
   std::string overlay = "none";
   std::string policy = "hipr";
+  std::string display;
   bool no_ui = false;
 };
 
@@ -39,12 +40,21 @@ int run_view(ViewCommandOptions& o) {
   log::set_quiet(v.common.quiet);
   v.overlay = viewer::parse_overlay(o.overlay);
   v.policy = parse_policy(o.policy);
+  if (v.policy == Policy::Oracle) throw InputError("the oracle policy needs a reference image: use hipr bench");
+  if (!o.display.empty()) v.display_rule = parse_display_rule(o.display);
+  if (v.first_visit_spp > v.common.spp) throw InputError("--first-visit-spp must be between 1 and --spp");
   v.show_ui = !o.no_ui;
   if (v.script_every < 1) throw InputError("--script-every must be at least 1");
   if (v.visit_spp < 1 || v.visit_spp > v.common.spp) throw InputError("--visit-spp must be between 1 and --spp");
   if (!(v.frame_budget_ms > 0.0) || v.frame_budget_ms > 10000.0) throw InputError("--frame-budget-ms must be in (0, 10000]");
   if (!std::isfinite(v.exposure_ev)) throw InputError("--exposure must be finite");
   if (!v.screenshot.empty()) viewer::check_screenshot_path(v.screenshot);
+  if (!v.save.empty()) {
+    const std::string ext = v.save.extension().string();
+    if (ext != ".gltf" && ext != ".glb") throw InputError("--save must name a .gltf or .glb file: " + v.save.string());
+    const fs::path dir = v.save.has_parent_path() ? v.save.parent_path() : fs::path(".");
+    if (!fs::is_directory(dir)) throw InputError("--save folder does not exist: " + dir.string());
+  }
   if (!v.stats_json.empty()) {
     const fs::path dir = v.stats_json.has_parent_path() ? v.stats_json.parent_path() : fs::path(".");
     if (!fs::is_directory(dir)) throw InputError("--stats-json folder does not exist: " + dir.string());
@@ -76,11 +86,17 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--policy", options->policy, "hipr, full, scanline, spiral or random")->capture_default_str();
   cmd->add_option("--tiles-per-step", v.tiles_per_step, "Tiles per scheduling step (default: 1/64 of the frame)");
   cmd->add_option("--visit-spp", v.visit_spp, "Samples per pixel a tile gets per visit")->capture_default_str();
+  cmd->add_option("--first-visit-spp", v.first_visit_spp,
+                  "Samples per pixel of a tile's first visit after an edit (default: --visit-spp)");
+  cmd->add_option("--display", options->display,
+                  "How re-rendered tiles are shown: immediate, switch or blend (default: blend for hipr, immediate "
+                  "for the others)");
   cmd->add_option("--frame-budget-ms", v.frame_budget_ms, "Time spent on scheduling steps per frame")->capture_default_str();
   cmd->add_option("--steps-per-frame", v.steps_per_frame, "Exactly N scheduling steps per frame instead of a time budget");
   cmd->add_option("--exposure", v.exposure_ev, "Display exposure in stops")->capture_default_str();
   cmd->add_flag("--no-ui", options->no_ui, "No panels or status line: the window shows the render alone");
   cmd->add_option("--stats-json", v.stats_json, "At exit, write fps and per-edit feedback latency (JSON)");
+  cmd->add_option("--save", v.save, "At exit, save the edited scene as glTF (.gltf or .glb)");
   add_common_options(*cmd, v.common);
   return {cmd, [options] { return run_view(*options); }};
 }

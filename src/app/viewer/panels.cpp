@@ -14,6 +14,7 @@
 namespace hipr::viewer {
 namespace {
 
+// The oracle needs a reference render of every edit: a benchmark's policy, not a viewer's.
 const Policy kPolicies[] = {Policy::Hipr, Policy::Full, Policy::Scanline, Policy::Spiral, Policy::Random};
 
 // Weights as the renderer takes them: each group scaled to sum 1 (left alone when all zero).
@@ -88,6 +89,15 @@ void hipr_section(Session& session, ViewerState& state) {
   if (ImGui::BeginCombo("policy", current.c_str())) {
     for (Policy p : kPolicies)
       if (ImGui::Selectable(policy_name(p).c_str(), p == settings.policy)) state.request_policy = p;
+    ImGui::EndCombo();
+  }
+  const std::optional<DisplayRule> rule = settings.display;
+  const std::string rule_label =
+      rule ? display_rule_name(*rule) : "default (" + display_rule_name(default_display_rule(settings.policy)) + ")";
+  if (ImGui::BeginCombo("display rule", rule_label.c_str())) {
+    if (ImGui::Selectable("default", !rule)) state.request_display_rule = std::optional<DisplayRule>();
+    for (DisplayRule r : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend})
+      if (ImGui::Selectable(display_rule_name(r).c_str(), rule == r)) state.request_display_rule = std::optional<DisplayRule>(r);
     ImGui::EndCombo();
   }
   ImGui::InputInt("n (tile px)", &state.tile_size_input);

@@ -49,11 +49,21 @@ Session::Session(const vk::Context& ctx, Scene scene, const SessionSettings& set
   rebuild();
 }
 
+std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy policy) const {
+  // The oracle ranks tiles against a converged render of each edited scene: a benchmark's
+  // tool (hipr bench), not something a viewer can have before the user edits.
+  if (policy == Policy::Oracle) throw InputError("the oracle policy needs a reference image: use hipr bench");
+  const uint32_t per_step = m_settings.tiles_per_step ? m_settings.tiles_per_step : default_tiles_per_step(renderer.tile_count());
+  auto scheduler = std::make_unique<Scheduler>(renderer, policy, per_step, m_settings.visit_spp);
+  scheduler->set_display_rule(m_settings.display.value_or(default_display_rule(policy)));
+  scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp : m_settings.visit_spp);
+  return scheduler;
+}
+
 void Session::rebuild() {
   // The new renderer is complete before the old one goes: a failure leaves the session as it was.
   auto renderer = std::make_unique<Renderer>(m_ctx, m_scene, m_settings.render);
-  const uint32_t per_step = m_settings.tiles_per_step ? m_settings.tiles_per_step : default_tiles_per_step(renderer->tile_count());
-  auto scheduler = std::make_unique<Scheduler>(*renderer, m_settings.policy, per_step, m_settings.visit_spp);
+  auto scheduler = make_scheduler(*renderer, m_settings.policy);
   // Compile the kernels now (a longer start) rather than at the first edit (a frozen window).
   renderer->warm_up_kernels();
   m_scheduler.reset();  // it refers to the renderer
@@ -163,15 +173,17 @@ Renderer::PixelHit Session::pick(uint32_t x, uint32_t y) {
 
 void Session::set_policy(Policy policy) {
   if (policy == m_settings.policy) return;
-  const uint32_t per_step =
-      m_settings.tiles_per_step ? m_settings.tiles_per_step : default_tiles_per_step(m_renderer->tile_count());
-  auto scheduler = std::make_unique<Scheduler>(*m_renderer, policy, per_step, m_settings.visit_spp);
-  m_scheduler = std::move(scheduler);
+  m_scheduler = make_scheduler(*m_renderer, policy);
   m_settings.policy = policy;
   // A HiPR scheduler starts with stage 1 of the scene as it is now.
   if (policy == Policy::Hipr) m_gbuffer_stale = false;
   m_ids_stale = true;
   m_dirty_display = true;
+}
+
+void Session::set_display_rule(std::optional<DisplayRule> rule) {
+  m_settings.display = rule;
+  m_scheduler->set_display_rule(rule.value_or(default_display_rule(m_settings.policy)));
 }
 
 void Session::set_tile_size(uint32_t tile_size) {

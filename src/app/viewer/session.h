@@ -21,6 +21,8 @@ struct SessionSettings {
   Policy policy = Policy::Hipr;
   uint32_t tiles_per_step = 0;  // 0: 1/64 of the frame, so a frame's time budget is spent finely
   uint32_t visit_spp = 1;
+  uint32_t first_visit_spp = 0;  // a tile's first visit after an edit; 0: visit_spp
+  std::optional<DisplayRule> display;  // how re-rendered tiles are shown; none: the policy's default
   uint32_t spp = 64;  // samples per pixel to converge to; rendering pauses there
 };
 
@@ -78,12 +80,14 @@ class Session {
   // Viewer settings, not edits (no undo): a new policy applies from the next edit on; a new
   // tile size rebuilds the renderer (the image restarts); HiPR weights apply from the next
   // stage 2.
-  void set_policy(Policy policy);
+  void set_policy(Policy policy);  // throws InputError for the oracle (it needs a reference)
+  void set_display_rule(std::optional<DisplayRule> rule);
   void set_tile_size(uint32_t tile_size);
   void set_hipr_parameters(const HiprParameters& parameters);
 
  private:
   void rebuild();
+  std::unique_ptr<Scheduler> make_scheduler(Renderer& renderer, Policy policy) const;
   void changed(const Scene& before, const std::string& what);
 
   const vk::Context& m_ctx;

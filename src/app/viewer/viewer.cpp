@@ -7,6 +7,8 @@
 #include <fstream>
 #include <memory>
 
+#include <glm/trigonometric.hpp>
+
 #include "app/viewer/panels.h"
 #include "app/viewer/screenshot.h"
 #include "app/viewer/session.h"
@@ -20,17 +22,12 @@
 #include "core/log.h"
 #include "core/timer.h"
 #include "hipr/scene_loader.h"
+#include "hipr/scene_writer.h"
 #include "render/display_pass.h"
 #include "vk/image.h"
 #include "vk/swapchain.h"
 #include "vk/ui_pass.h"
 
-#if __has_include("hipr/scene_writer.h")
-#include "hipr/scene_writer.h"
-#define HIPR_VIEWER_CAN_SAVE 1
-#else
-#define HIPR_VIEWER_CAN_SAVE 0
-#endif
 
 namespace hipr::viewer {
 namespace {
@@ -73,6 +70,8 @@ class Viewer {
     settings.policy = options.policy;
     settings.tiles_per_step = options.tiles_per_step;
     settings.visit_spp = options.visit_spp;
+    settings.first_visit_spp = options.first_visit_spp;
+    settings.display = options.display_rule;
     settings.spp = options.common.spp;
     m_state.open_path = scene.source.string();
     m_state.save_path = default_save_path(scene.source);
@@ -202,19 +201,22 @@ void Viewer::open_scene() {
 void Viewer::save_scene_file() {
   m_state.request_save = false;
   const fs::path path = m_state.save_path;
-#if HIPR_VIEWER_CAN_SAVE
   // save_scene writes atomically (temp file + rename): a failure leaves any old file intact,
   // and the scene and its edits stay in the session either way.
   try {
     save_scene(m_session->scene(), path);
     m_session->mark_saved();
     m_state.info("saved " + path.string());
+    // The environment map comes from --env, not from glTF: say how to get its edits back.
+    const auto& env = m_session->scene().environment;
+    const SceneLoadOptions& loaded = m_options.common.load;
+    if (env && (env->intensity != loaded.environment_intensity ||
+                env->rotation != glm::radians(loaded.environment_rotation_degrees)))
+      m_state.info("glTF has no environment: reopen with --env-intensity " + std::to_string(env->intensity) +
+                   " --env-rotation " + std::to_string(glm::degrees(env->rotation)));
   } catch (const std::exception& e) {
     m_state.error("cannot save " + path.string() + ": " + e.what());
   }
-#else
-  m_state.error("cannot save " + path.string() + ": this build has no glTF writer (hipr::save_scene)");
-#endif
 }
 
 void Viewer::take_screenshot(const fs::path& path) {
@@ -231,8 +233,16 @@ void Viewer::handle_requests() {
   if (m_state.request_open && m_state.open_confirmed) open_scene();
   if (m_state.request_save) save_scene_file();
   if (m_state.request_policy) {
-    m_session->set_policy(*m_state.request_policy);
+    try {
+      m_session->set_policy(*m_state.request_policy);
+    } catch (const InputError& e) {
+      m_state.error(e.what());
+    }
     m_state.request_policy.reset();
+  }
+  if (m_state.request_display_rule) {
+    m_session->set_display_rule(*m_state.request_display_rule);
+    m_state.request_display_rule.reset();
   }
   if (m_state.request_tile_size) {
     try {
@@ -375,6 +385,7 @@ int Viewer::run() {
   m_swapchain.wait_idle();
   if (!m_options.screenshot.empty()) save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed());
   if (!m_options.stats_json.empty()) write_stats(seconds);
+  if (!m_options.save.empty()) save_scene(m_session->scene(), m_options.save);  // a failure: exit code 2
   app::check_validation(m_ctx);
   return kExitOk;
 }

@@ -3,6 +3,7 @@
 // to the session), the scheduler's steps for a time budget (or a fixed count in scripts), the
 // display pass + UI into the frame image, then the swapchain.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,11 +24,14 @@ struct ViewerOptions {
   Policy policy = Policy::Hipr;
   uint32_t tiles_per_step = 0;   // 0: 1/64 of the frame
   uint32_t visit_spp = 1;
+  uint32_t first_visit_spp = 0;              // 0: visit_spp
+  std::optional<DisplayRule> display_rule;  // none: the policy's default
   uint32_t steps_per_frame = 0;  // > 0: exactly this many steps per frame (reproducible scripts)
   double frame_budget_ms = 30.0;
   float exposure_ev = 0.0f;
   bool show_ui = true;
   std::filesystem::path stats_json;  // fps and per-edit latency, written at exit
+  std::filesystem::path save;        // the edited scene, saved as glTF at exit
 };
 
 // Runs the viewer on a loaded scene until the window closes or the frame count is reached.

@@ -35,6 +35,7 @@ struct ViewerState {
   bool request_quit = false;
   bool open_confirmed = false;  // discard unsaved edits when opening
   std::optional<Policy> request_policy;
+  std::optional<std::optional<DisplayRule>> request_display_rule;  // inner none: the policy's default
   std::optional<uint32_t> request_tile_size;
   int tile_size_input = 16;
   std::string preset = "default";
