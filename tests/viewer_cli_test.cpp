@@ -286,7 +286,8 @@ TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {
         quoted(test::asset("cornell_box.gltf")) + " --screenshot " + quoted(dir / "shot.jpg"),
         quoted(test::asset("cornell_box.gltf")) + " --screenshot " + quoted(dir / "no/such/folder/shot.png"),
         quoted(dir / "missing.gltf"), base + " --visit-spp 0", base + " --policy oracle", base + " --display fast",
-        base + " --save " + quoted(dir / "scene.obj"), base + " --save " + quoted(dir / "no/such/folder/a.gltf")}) {
+        base + " --save " + quoted(dir / "scene.obj"), base + " --save " + quoted(dir / "no/such/folder/a.gltf"),
+        base + " --select teapot"}) {
     const test::CommandResult result =
         test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " view " + arguments);
     EXPECT_EQ(result.exit_code, kExitBadInput) << arguments << "\n" << result.output;

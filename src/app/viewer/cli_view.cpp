@@ -21,6 +21,7 @@ struct ViewCommandOptions {
   std::string overlay = "none";
   std::string policy = "hipr";
   std::string display;
+  std::string select;
   bool no_ui = false;
 };
 
@@ -31,6 +32,16 @@ void apply_size(const std::string& size, RenderSettings& render) {
   if (!std::regex_match(size, match, pattern)) throw InputError("--size must be WxH, e.g. 512x512 (got '" + size + "')");
   render.width = uint32_t(std::stoul(match[1]));
   render.height = uint32_t(std::stoul(match[2]));
+}
+
+// A node by glTF name or "#index", as edit scripts name them.
+int find_node(const Scene& scene, const std::string& name) {
+  if (name.size() > 1 && name[0] == '#' && name.find_first_not_of("0123456789", 1) == std::string::npos &&
+      name.size() < 10 && std::stoul(name.substr(1)) < scene.nodes.size())
+    return int(std::stoul(name.substr(1)));
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    if (scene.nodes[n].name == name) return int(n);
+  throw InputError("--select: no node named '" + name + "' in the scene");
 }
 
 int run_view(ViewCommandOptions& o) {
@@ -60,6 +71,7 @@ int run_view(ViewCommandOptions& o) {
     if (!fs::is_directory(dir)) throw InputError("--stats-json folder does not exist: " + dir.string());
   }
   Scene scene = load_scene(v.common.scene, v.common.load);
+  if (!o.select.empty()) v.select = find_node(scene, o.select);
   if (!o.script.empty()) {
     v.script = load_edit_script(o.script);
     // Every name in the script must resolve before the window opens.
@@ -87,7 +99,7 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--tiles-per-step", v.tiles_per_step, "Tiles per scheduling step (default: 1/64 of the frame)");
   cmd->add_option("--visit-spp", v.visit_spp, "Samples per pixel a tile gets per visit")->capture_default_str();
   cmd->add_option("--first-visit-spp", v.first_visit_spp,
-                  "Samples per pixel of a tile's first visit after an edit (default: --visit-spp)");
+                  "Samples per pixel of a tile's first visit after an edit (default: 4, within [--visit-spp, --spp])");
   cmd->add_option("--display", options->display,
                   "How re-rendered tiles are shown: immediate, switch or blend (default: blend for hipr, immediate "
                   "for the others)");
@@ -97,6 +109,7 @@ Command add_view_command(CLI::App& app) {
   cmd->add_flag("--no-ui", options->no_ui, "No panels or status line: the window shows the render alone");
   cmd->add_option("--stats-json", v.stats_json, "At exit, write fps and per-edit feedback latency (JSON)");
   cmd->add_option("--save", v.save, "At exit, save the edited scene as glTF (.gltf or .glb)");
+  cmd->add_option("--select", options->select, "Node selected at start (glTF name or #index)");
   add_common_options(*cmd, v.common);
   return {cmd, [options] { return run_view(*options); }};
 }

@@ -124,10 +124,11 @@ void hipr_section(Session& session, ViewerState& state) {
   for (int i = 0; i < 3; ++i) changed |= ImGui::SliderFloat(paths[i], &h.w_path[i], 0.0f, 1.0f);
   changed |= ImGui::SliderFloat("w_occlusion", &h.w_occlusion, 0.0f, 2.0f);
   if (changed) session.set_hipr_parameters(normalised(h));
-  ImGui::TextDisabled("%u tiles of %u px, %u per step, %u spp per visit, target %u spp", session.renderer().tile_count(),
-                      settings.render.tile_size,
-                      settings.tiles_per_step ? settings.tiles_per_step : default_tiles_per_step(session.renderer().tile_count()),
-                      settings.visit_spp, settings.spp);
+  ImGui::TextWrapped("%u tiles of %u px, %u per step; %u spp per visit (first visit %u), target %u spp",
+                     session.renderer().tile_count(), settings.render.tile_size,
+                     settings.tiles_per_step ? settings.tiles_per_step : default_tiles_per_step(session.renderer().tile_count()),
+                     settings.visit_spp,
+                     settings.first_visit_spp ? settings.first_visit_spp : default_first_visit_spp(settings), settings.spp);
 }
 
 void display_section(ViewerState& state) {

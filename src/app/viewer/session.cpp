@@ -10,6 +10,8 @@ namespace hipr::viewer {
 
 uint32_t default_tiles_per_step(uint32_t tile_count) { return std::max(1u, (tile_count + 63) / 64); }
 
+uint32_t default_first_visit_spp(const SessionSettings& s) { return std::max(s.visit_spp, std::min(4u, s.spp)); }
+
 Scene diff_snapshot(const Scene& scene) {
   Scene s;
   s.source = scene.source;
@@ -56,7 +58,7 @@ std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy po
   const uint32_t per_step = m_settings.tiles_per_step ? m_settings.tiles_per_step : default_tiles_per_step(renderer.tile_count());
   auto scheduler = std::make_unique<Scheduler>(renderer, policy, per_step, m_settings.visit_spp);
   scheduler->set_display_rule(m_settings.display.value_or(default_display_rule(policy)));
-  scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp : m_settings.visit_spp);
+  scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp : default_first_visit_spp(m_settings));
   return scheduler;
 }
 

@@ -21,7 +21,7 @@ struct SessionSettings {
   Policy policy = Policy::Hipr;
   uint32_t tiles_per_step = 0;  // 0: 1/64 of the frame, so a frame's time budget is spent finely
   uint32_t visit_spp = 1;
-  uint32_t first_visit_spp = 0;  // a tile's first visit after an edit; 0: visit_spp
+  uint32_t first_visit_spp = 0;  // a tile's first visit after an edit; 0: default_first_visit_spp
   std::optional<DisplayRule> display;  // how re-rendered tiles are shown; none: the policy's default
   uint32_t spp = 64;  // samples per pixel to converge to; rendering pauses there
 };
@@ -115,5 +115,10 @@ Scene diff_snapshot(const Scene& scene);
 
 // The default tiles per step: 1/64 of the frame, at least one tile.
 uint32_t default_tiles_per_step(uint32_t tile_count);
+
+// Samples of a tile's first visit after an edit unless set: 4 (as hipr bench), at least
+// visit_spp, at most spp. The blend and switch display rules need two samples per pixel to
+// judge a fresh estimate, so one sample would keep an edit off the screen for a whole pass.
+uint32_t default_first_visit_spp(const SessionSettings& settings);
 
 }  // namespace hipr::viewer

@@ -84,6 +84,7 @@ class Viewer {
     m_state.hipr_sliders = options.common.render.hipr;
     m_state.tile_size_input = int(options.common.render.tile_size);
     m_state.preset = options.common.preset.empty() ? "default" : options.common.preset;
+    m_state.selected_node = options.select;
     m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
     log::info("viewer on " + m_ctx.device_name() + ", present mode " + std::to_string(int(m_swapchain.present_mode())));
   }

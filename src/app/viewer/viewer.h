@@ -24,7 +24,7 @@ struct ViewerOptions {
   Policy policy = Policy::Hipr;
   uint32_t tiles_per_step = 0;   // 0: 1/64 of the frame
   uint32_t visit_spp = 1;
-  uint32_t first_visit_spp = 0;              // 0: visit_spp
+  uint32_t first_visit_spp = 0;              // 0: default_first_visit_spp
   std::optional<DisplayRule> display_rule;  // none: the policy's default
   uint32_t steps_per_frame = 0;  // > 0: exactly this many steps per frame (reproducible scripts)
   double frame_budget_ms = 30.0;
@@ -32,6 +32,7 @@ struct ViewerOptions {
   bool show_ui = true;
   std::filesystem::path stats_json;  // fps and per-edit latency, written at exit
   std::filesystem::path save;        // the edited scene, saved as glTF at exit
+  int select = -1;                   // node selected at start (-1: none)
 };
 
 // Runs the viewer on a loaded scene until the window closes or the frame count is reached.
