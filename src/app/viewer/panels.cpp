@@ -51,14 +51,17 @@ void file_section(Session& session, ViewerState& state) {
   ImGui::InputText("##shot", &state.screenshot_path);
   ImGui::SameLine();
   if (ImGui::Button("Screenshot")) state.request_screenshot = true;
-  // The last few messages, newest last; errors in red.
-  const size_t first = state.messages.size() > 4 ? state.messages.size() - 4 : 0;
-  for (size_t i = first; i < state.messages.size(); ++i) {
-    const Message& m = state.messages[i];
+  // Messages, newest last (errors in red), in a box of fixed height: a new message must not
+  // move the widgets below it under the user's mouse.
+  ImGui::BeginChild("messages", ImVec2(0.0f, 3.0f * ImGui::GetTextLineHeightWithSpacing() + 6.0f), true);
+  for (const Message& m : state.messages) {
     if (m.error) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.35f, 1.0f));
     ImGui::TextWrapped("%s", m.text.c_str());
     if (m.error) ImGui::PopStyleColor();
   }
+  if (state.message_count != state.messages_shown) ImGui::SetScrollHereY(1.0f);  // follow the newest
+  state.messages_shown = state.message_count;
+  ImGui::EndChild();
 }
 
 void history_section(Session& session, ViewerState& state) {

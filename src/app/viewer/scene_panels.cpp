@@ -165,8 +165,12 @@ void lights_section(Session& session, ViewerState& state) {
     ImGui::Separator();
     ImGui::PopID();
   }
-  for (uint32_t m = 0; m < scene.materials.size(); ++m)
-    if (scene.materials[m].params.emission_luminance > 0.0f) state.emitters.insert(m);
+  // Emissive as the light tables see it: luminance and colour both non-zero (glTF gives every
+  // material luminance 1 and a black colour, which an emission texture only multiplies).
+  for (uint32_t m = 0; m < scene.materials.size(); ++m) {
+    const abi::MaterialBlock& p = scene.materials[m].params;
+    if (p.emission_luminance > 0.0f && glm::any(glm::greaterThan(p.emission_color, glm::vec3(0.0f)))) state.emitters.insert(m);
+  }
   for (uint32_t m : state.emitters) {
     any = true;
     const abi::MaterialBlock& block = scene.materials[m].params;

@@ -60,6 +60,8 @@ void UiLayer::new_frame(const std::vector<KeyPress>& presses) {
   ImGuiIO& io = ImGui::GetIO();
   for (int key : m_forced) io.KeysDown[key] = glfwGetKey(m_window.handle(), key) == GLFW_PRESS;
   m_forced.clear();
+  // Modifiers are not forced: a person holds Ctrl across frames, and a forced Ctrl would also
+  // swallow the characters typed in the same frame.
   for (const KeyPress& press : presses)
     if (press.key >= 0 && press.key < int(IM_ARRAYSIZE(io.KeysDown)) && !io.KeysDown[press.key]) {
       io.KeysDown[press.key] = true;

@@ -85,6 +85,9 @@ class Viewer {
     m_state.tile_size_input = int(options.common.render.tile_size);
     m_state.preset = options.common.preset.empty() ? "default" : options.common.preset;
     m_state.selected_node = options.select;
+    // The session compiles the kernels (lavapipe: up to minutes on a first start): say so.
+    show_message("Preparing " + scene.source.filename().string() +
+                 ":\ncompiling the path tracer (the first start with a scene can take a minute or two on a CPU)");
     m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
     log::info("viewer on " + m_ctx.device_name() + ", present mode " + std::to_string(int(m_swapchain.present_mode())));
   }
@@ -100,6 +103,8 @@ class Viewer {
   }
 
   void resize(VkExtent2D extent);
+  void show_message(const std::string& text);
+  void show_message_frame(const std::string& text);
   void run_script(uint32_t frame);
   void draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys);
   void handle_requests();
@@ -155,6 +160,37 @@ void Viewer::resize(VkExtent2D extent) {
   m_ui.set_min_image_count(m_swapchain.min_image_count());
   m_frame = vk::Image(m_ctx, m_swapchain.extent(), kFrameFormat, kFrameUsage);
   m_ui_pass.set_target(m_frame);
+}
+
+// A centred text on the background (before there is an image). Two frames: ImGui sizes a new
+// auto-sized window in its first frame and draws it from the second.
+void Viewer::show_message(const std::string& text) {
+  for (int i = 0; i < 2; ++i) show_message_frame(text);
+}
+
+void Viewer::show_message_frame(const std::string& text) {
+  m_ui.new_frame({});
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("message", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+  ImGui::TextUnformatted(text.c_str());
+  ImGui::End();
+  const auto frame = m_swapchain.begin_frame();
+  if (!frame) {
+    ImGui::EndFrame();
+    return;
+  }
+  DisplayView view;
+  view.output_width = m_frame.extent().width;
+  view.output_height = m_frame.extent().height;
+  view.x = int(view.output_width);  // no image yet: the background everywhere
+  m_display.record(frame->cmd, view);
+  vk::record_buffer_to_image(frame->cmd, m_display.output(), m_frame);
+  m_ui_pass.begin(frame->cmd);
+  m_ui.render(frame->cmd);
+  m_ui_pass.end(frame->cmd);
+  m_swapchain.blit_to_swapchain(*frame, m_frame);
+  m_swapchain.end_frame(*frame);
 }
 
 void Viewer::run_script(uint32_t frame) {

@@ -53,6 +53,8 @@ struct ViewerState {
   double mean_spp = 0.0;
 
   std::vector<Message> messages;  // newest last; the panel shows the last few
+  uint64_t message_count = 0;     // messages ever posted
+  uint64_t messages_shown = 0;    // message_count when the panel last drew (it scrolls to a new one)
   void info(const std::string& text);
   void error(const std::string& text);  // also printed on stderr as a warning
 };
