@@ -30,13 +30,15 @@ void main() {
   if (index >= u_push.outputWidth * u_push.outputHeight) return;
   const vec2 window = vec2(index % u_push.outputWidth, index / u_push.outputWidth) + 0.5;
   const vec2 source = floor((window - vec2(u_push.viewX, u_push.viewY)) / u_push.viewScale);
-  if (any(lessThan(source, vec2(0.0))) || source.x >= float(u_push.sourceWidth) || source.y >= float(u_push.sourceHeight)) {
+  if (any(lessThan(source, vec2(0.0))) || source.x >= float(u_push.sourceWidth) ||
+      source.y >= float(u_push.sourceHeight)) {
     b_output[index] = u_push.background;
     return;
   }
   const uint pixel = uint(source.y) * u_push.sourceWidth + uint(source.x);
   const vec3 radiance = b_radiance[pixel] * u_push.exposureScale;
-  uvec3 rgb = uvec3(display_byte(display_srgb_encode(radiance.r)), display_byte(display_srgb_encode(radiance.g)),
+  uvec3 rgb = uvec3(display_byte(display_srgb_encode(radiance.r)),
+                    display_byte(display_srgb_encode(radiance.g)),
                     display_byte(display_srgb_encode(radiance.b)));
   if (u_push.overlayEnabled != 0u) {
     const uint overlay = b_overlay[pixel];

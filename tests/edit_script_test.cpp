@@ -1,9 +1,9 @@
 // Edit scripts, applying edits and the scene diff (no GPU).
 #include <gtest/gtest.h>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
 #include "hipr/edits.h"
@@ -147,7 +147,8 @@ TEST(SceneDiff, PunctualLightEdit) {
 Scene sky_scene() { return test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f); }
 
 TEST(EditScript, EnvironmentOpSetsIntensityAndRotationInDegrees) {
-  const auto edits = parse_edit_script(R"({"edits": [{"op": "environment", "set": {"intensity": 2.5, "rotation": 90}}]})", "e");
+  const auto edits = parse_edit_script(
+      R"({"edits": [{"op": "environment", "set": {"intensity": 2.5, "rotation": 90}}]})", "e");
   ASSERT_EQ(edits.size(), 1u);
   const auto* e = std::get_if<EnvironmentEdit>(&edits[0]);
   ASSERT_NE(e, nullptr);
@@ -159,20 +160,25 @@ TEST(EditScript, EnvironmentOpSetsIntensityAndRotationInDegrees) {
   EXPECT_FLOAT_EQ(scene.environment->rotation, glm::radians(90.0f));
   EXPECT_EQ(describe(edits[0]), "environment");
   // One key alone leaves the other as it was.
-  apply_edit(scene, parse_edit_script(R"({"edits": [{"op": "environment", "set": {"intensity": 0}}]})", "e")[0]);
+  apply_edit(scene, parse_edit_script(
+                        R"({"edits": [{"op": "environment", "set": {"intensity": 0}}]})", "e")[0]);
   EXPECT_EQ(scene.environment->intensity, 0.0f);
   EXPECT_FLOAT_EQ(scene.environment->rotation, glm::radians(90.0f));
 }
 
 TEST(EditScript, BadEnvironmentEditsNameTheProblem) {
-  expect_input_error(R"({"edits": [{"op": "environment", "set": {"intensity": -1}}]})", "intensity");
-  expect_input_error(R"({"edits": [{"op": "environment", "set": {"rotation": [1, 2]}}]})", "rotation");
+  expect_input_error(R"({"edits": [{"op": "environment", "set": {"intensity": -1}}]})",
+                     "intensity");
+  expect_input_error(R"({"edits": [{"op": "environment", "set": {"rotation": [1, 2]}}]})",
+                     "rotation");
   expect_input_error(R"({"edits": [{"op": "environment", "set": {"exposure": 1}}]})", "exposure");
   expect_input_error(R"({"edits": [{"op": "environment", "set": {}}]})", "set");
-  expect_input_error(R"({"edits": [{"op": "environment", "node": "sky", "set": {"intensity": 1}}]})", "node");
+  expect_input_error(
+      R"({"edits": [{"op": "environment", "node": "sky", "set": {"intensity": 1}}]})", "node");
   // A scene without an environment map cannot be given one's intensity.
   Scene scene = cornell();
-  const auto edits = parse_edit_script(R"({"edits": [{"op": "environment", "set": {"intensity": 2}}]})", "e");
+  const auto edits =
+      parse_edit_script(R"({"edits": [{"op": "environment", "set": {"intensity": 2}}]})", "e");
   EXPECT_THROW(apply_edit(scene, edits[0]), InputError);
 }
 
@@ -218,7 +224,9 @@ TEST(Edits, InverseRestoresTheSceneExactly) {
       EXPECT_EQ(scene.nodes[n].visible, with_sky.nodes[n].visible) << describe(edit);
     }
     for (size_t m = 0; m < with_sky.materials.size(); ++m)
-      EXPECT_EQ(std::memcmp(&scene.materials[m].params, &with_sky.materials[m].params, sizeof(abi::MaterialBlock)), 0)
+      EXPECT_EQ(std::memcmp(&scene.materials[m].params, &with_sky.materials[m].params,
+                            sizeof(abi::MaterialBlock)),
+                0)
           << describe(edit);
     for (size_t l = 0; l < with_sky.lights.size(); ++l) {
       EXPECT_EQ(scene.lights[l].intensity, with_sky.lights[l].intensity);
@@ -232,10 +240,13 @@ TEST(Edits, InverseRestoresTheSceneExactly) {
 
 TEST(Edits, InverseRefusesWhatApplyRefuses) {
   const Scene scene = cornell();
-  EXPECT_THROW(inverse_edit(scene, TransformEdit{"teapot", glm::vec3(0.0f), std::nullopt}), InputError);
+  EXPECT_THROW(inverse_edit(scene, TransformEdit{"teapot", glm::vec3(0.0f), std::nullopt}),
+               InputError);
   EXPECT_THROW(inverse_edit(scene, MaterialEdit{"red", {{"base_color", {1.0f}}}}), InputError);
-  EXPECT_THROW(inverse_edit(scene, MaterialEdit{"red", {{"colour", {1.0f, 0.0f, 0.0f}}}}), InputError);
-  EXPECT_THROW(inverse_edit(scene, LightEdit{"tall_block", 1.0f, std::nullopt, std::nullopt}), InputError);
+  EXPECT_THROW(inverse_edit(scene, MaterialEdit{"red", {{"colour", {1.0f, 0.0f, 0.0f}}}}),
+               InputError);
+  EXPECT_THROW(inverse_edit(scene, LightEdit{"tall_block", 1.0f, std::nullopt, std::nullopt}),
+               InputError);
   EXPECT_THROW(inverse_edit(scene, EnvironmentEdit{1.0f, std::nullopt}), InputError);
 }
 

@@ -103,7 +103,8 @@ TEST(IncrementalUpdate, EnvironmentEditMatchesAFreshUpload) {
   scene.environment = banded_environment();
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(1);
-  for (const Edit& edit : {Edit{EnvironmentEdit{std::nullopt, 2.0f}}, Edit{EnvironmentEdit{3.0f, std::nullopt}}}) {
+  for (const Edit& edit :
+       {Edit{EnvironmentEdit{std::nullopt, 2.0f}}, Edit{EnvironmentEdit{3.0f, std::nullopt}}}) {
     const Scene before = scene;
     apply_edit(scene, edit);
     renderer.update_scene(scene, diff_scenes(before, scene));
@@ -111,7 +112,8 @@ TEST(IncrementalUpdate, EnvironmentEditMatchesAFreshUpload) {
     renderer.add_samples_full_frame(2);
     const ImageRGB fresh = fresh_render(scene, 2);
     EXPECT_EQ(renderer.image().rgb, fresh.rgb);
-    EXPECT_NE(fresh_render(before, 2).rgb, fresh.rgb) << "the environment edit changed nothing visible";
+    EXPECT_NE(fresh_render(before, 2).rgb, fresh.rgb)
+        << "the environment edit changed nothing visible";
   }
 }
 

@@ -70,7 +70,9 @@ const vk::Context& context() {
   return *ctx;
 }
 
-CommandResult run_hipr(const std::string& arguments) { return run_command(std::string("'") + HIPR_BINARY + "' " + arguments); }
+CommandResult run_hipr(const std::string& arguments) {
+  return run_command(std::string("'") + HIPR_BINARY + "' " + arguments);
+}
 
 fs::path hipr_binary() { return HIPR_BINARY; }
 

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/viewer/camera_controller.h"
@@ -38,7 +37,8 @@ uint32_t instance_of(const Scene& scene, const std::string& name) {
 }
 
 bool same_material(const Scene& a, const Scene& b, size_t m) {
-  return std::memcmp(&a.materials[m].params, &b.materials[m].params, sizeof(abi::MaterialBlock)) == 0;
+  return std::memcmp(&a.materials[m].params, &b.materials[m].params, sizeof(abi::MaterialBlock)) ==
+         0;
 }
 
 // ---- EditHistory (no GPU)
@@ -64,7 +64,8 @@ TEST(EditHistory, UndoAndRedoRestoreEachStateExactly) {
   ASSERT_TRUE(history.redo(scene));
   EXPECT_FALSE(history.redo(scene));
   EXPECT_TRUE(diff_scenes(edited, scene).empty());
-  EXPECT_EQ(scene.nodes[node_index(scene, "tall_block")].local, edited.nodes[node_index(edited, "tall_block")].local);
+  EXPECT_EQ(scene.nodes[node_index(scene, "tall_block")].local,
+            edited.nodes[node_index(edited, "tall_block")].local);
 }
 
 TEST(EditHistory, AGroupIsOneStepAndANewEditDropsTheRedoList) {
@@ -93,9 +94,12 @@ TEST(EditHistory, ARefusedEditChangesNothingAndRecordsNothing) {
   Scene scene = original;
   EditHistory history;
   // The second key is unknown: the first must not be applied half-way.
-  EXPECT_THROW(history.apply(scene, MaterialEdit{"red", {{"base_color", {0.0f, 0.0f, 1.0f}}, {"colour", {1.0f}}}}),
+  EXPECT_THROW(
+      history.apply(scene,
+                    MaterialEdit{"red", {{"base_color", {0.0f, 0.0f, 1.0f}}, {"colour", {1.0f}}}}),
+      InputError);
+  EXPECT_THROW(history.apply(scene, TransformEdit{"teapot", glm::vec3(1.0f), std::nullopt}),
                InputError);
-  EXPECT_THROW(history.apply(scene, TransformEdit{"teapot", glm::vec3(1.0f), std::nullopt}), InputError);
   EXPECT_TRUE(same_material(scene, original, 1));
   EXPECT_FALSE(history.can_undo());
 }
@@ -135,12 +139,14 @@ TEST(CameraController, TakesOverARollFreeCameraWithoutAJump) {
 }
 
 TEST(CameraController, OrbitKeepsThePivotPanMovesItZoomApproaches) {
-  const glm::mat4 camera = glm::inverse(glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0)));
+  const glm::mat4 camera =
+      glm::inverse(glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0)));
   CameraController controller;
   controller.reset(camera, 4.0f);
   controller.orbit(glm::vec2(50.0f, -30.0f), 512.0f);
   const glm::mat4 orbited = controller.camera_to_world();
-  EXPECT_NEAR(glm::length(glm::vec3(orbited[3])), 4.0f, 1e-4f) << "the eye stays at the pivot distance";
+  EXPECT_NEAR(glm::length(glm::vec3(orbited[3])), 4.0f, 1e-4f)
+      << "the eye stays at the pivot distance";
   EXPECT_NEAR(glm::dot(-glm::vec3(orbited[2]), glm::normalize(-glm::vec3(orbited[3]))), 1.0f, 1e-5f)
       << "still looking at the pivot";
   EXPECT_GT(std::abs(orbited[3].x), 0.1f) << "a horizontal drag turns the view";
@@ -208,7 +214,8 @@ TEST(Overlays, OwedTintsOnlyOwedTilesAndOutlinesFollowTheObject) {
   const OverlayGrid grid{4, 4, 2, 2};
   const std::vector<uint32_t> owed = owed_overlay({0, 3, 0, 0}, grid);  // tile 1: top right
   for (uint32_t y = 0; y < 4; ++y)
-    for (uint32_t x = 0; x < 4; ++x) EXPECT_EQ(owed[y * 4 + x] != 0u, x >= 2 && y < 2) << x << "," << y;
+    for (uint32_t x = 0; x < 4; ++x)
+      EXPECT_EQ(owed[y * 4 + x] != 0u, x >= 2 && y < 2) << x << "," << y;
 
   // A 3x3 object in a 4x4 image: its 8 border pixels are outlined, its centre is not.
   std::vector<uint32_t> ids(16, UINT32_MAX);
@@ -335,7 +342,8 @@ TEST(Session, TheFirstStepShowsTheEditAndRecordsItsLatency) {
   session.on_presented();
   EXPECT_GE(session.edit_records().back().latency_seconds, 0.0);
   EXPECT_GT(session.edit_records().back().work_at_first_change, 0.0);
-  EXPECT_LE(session.edit_records().back().work_at_first_change, 0.25) << "one step: 4 of the 16 tiles";
+  EXPECT_LE(session.edit_records().back().work_at_first_change, 0.25)
+      << "one step: 4 of the 16 tiles";
 }
 
 // Picking reads the G-buffer of the scene as it is now, also under policies without stage 1.
@@ -351,7 +359,8 @@ TEST(Session, PickingFollowsAMovedObjectUnderEveryPolicy) {
     EXPECT_EQ(session.pick(pixel % 32, pixel / 32).instance, block);
     session.edit(TransformEdit{"tall_block", glm::vec3(0.0f, 5.0f, 0.0f), std::nullopt});
     EXPECT_NE(session.pick(pixel % 32, pixel / 32).instance, block) << policy_name(policy);
-    EXPECT_EQ(std::count(session.instance_ids().begin(), session.instance_ids().end(), block), 0) << policy_name(policy);
+    EXPECT_EQ(std::count(session.instance_ids().begin(), session.instance_ids().end(), block), 0)
+        << policy_name(policy);
   }
 }
 
@@ -366,7 +375,8 @@ TEST(Session, ViewerSettingsKeepTheScene) {
   EXPECT_EQ(session.settings().render.tile_size, 4u);
   session.set_policy(Policy::Full);
   EXPECT_EQ(session.scheduler().policy(), Policy::Full);
-  EXPECT_THROW(session.set_policy(Policy::Oracle), InputError) << "the oracle needs a reference render";
+  EXPECT_THROW(session.set_policy(Policy::Oracle), InputError)
+      << "the oracle needs a reference render";
   EXPECT_EQ(session.scheduler().policy(), Policy::Full);
   session.set_display_rule(DisplayRule::Switch);
   EXPECT_EQ(session.scheduler().display_rule(), DisplayRule::Switch);
@@ -382,7 +392,8 @@ TEST(Session, ViewerSettingsKeepTheScene) {
 
 // A scene without a camera gets one, so moving an object does not move the framing camera.
 TEST(Session, ASceneWithoutACameraGetsItsDefaultCamera) {
-  Session session(test::context(), test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f), small_settings());
+  Session session(test::context(), test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f),
+                  small_settings());
   ASSERT_GE(session.scene().camera_node(), 0);
   Scene before = session.scene();
   session.edit(TransformEdit{"#0", glm::vec3(0.3f, 0.0f, 0.0f), std::nullopt});
@@ -415,7 +426,8 @@ TEST(RendererForViewer, WarmUpCompilesButRendersNothing) {
 }
 
 TEST(RendererForViewer, OwedTilesCountPixelsStillOwingARestart) {
-  Renderer renderer(test::context(), cornell(), tiny(20));  // 3 x 3 tiles, the last row and column 4 px wide
+  Renderer renderer(test::context(), cornell(),
+                    tiny(20));  // 3 x 3 tiles, the last row and column 4 px wide
   renderer.add_samples_full_frame(1);
   for (uint32_t owed : renderer.owed_tiles()) EXPECT_EQ(owed, 0u);
   renderer.mark_all_owed();
@@ -484,7 +496,8 @@ TEST(RendererForViewer, HiprParametersSteerTheNextStage2) {
 TEST(DisplayPass, ToneMapsLikeTheCpuAndPlacesTheImage) {
   ImageRGB image{4, 2, {}};
   const float values[] = {0.0f, 0.002f, 0.01f, 0.2f, 0.5f, 0.99f, 1.5f, 40.0f};
-  for (size_t i = 0; i < 8; ++i) image.rgb.insert(image.rgb.end(), {values[i], values[7 - i], 0.3f * values[i]});
+  for (size_t i = 0; i < 8; ++i)
+    image.rgb.insert(image.rgb.end(), {values[i], values[7 - i], 0.3f * values[i]});
   DisplayPass pass(test::context(), 4, 2);
   pass.set_image(image);
   DisplayView view;
@@ -497,7 +510,8 @@ TEST(DisplayPass, ToneMapsLikeTheCpuAndPlacesTheImage) {
     ASSERT_EQ(out.size(), 8u);
     for (size_t i = 0; i < 8; ++i)
       for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(int((out[i] >> (8 * c)) & 0xff), int(expected[3 * i + size_t(c)]), 1) << i << " " << c << " ev " << ev;
+        EXPECT_NEAR(int((out[i] >> (8 * c)) & 0xff), int(expected[3 * i + size_t(c)]), 1)
+            << i << " " << c << " ev " << ev;
   }
 
   // Scaled 2x at (1, 1) in a 10 x 6 window: nearest texels, background around.
@@ -519,7 +533,8 @@ TEST(DisplayPass, ToneMapsLikeTheCpuAndPlacesTheImage) {
   EXPECT_EQ(out[9], 0xff123456u);
   EXPECT_EQ(out[5 * 10 + 4], 0xff123456u);
   for (uint32_t y = 0; y < 4; ++y)
-    for (uint32_t x = 0; x < 8; ++x) EXPECT_EQ(out[(y + 1) * 10 + x + 1], one[(y / 2) * 4 + x / 2]) << x << "," << y;
+    for (uint32_t x = 0; x < 8; ++x)
+      EXPECT_EQ(out[(y + 1) * 10 + x + 1], one[(y / 2) * 4 + x / 2]) << x << "," << y;
 }
 
 TEST(DisplayPass, BlendsTheOverlayByItsCoverage) {
@@ -533,7 +548,8 @@ TEST(DisplayPass, BlendsTheOverlayByItsCoverage) {
   view.overlay = true;
   const std::vector<uint32_t> out = pass.run(view);
   EXPECT_EQ(out[0], pack_rgba8(1.0f, 0.5f, 0.0f, 1.0f)) << "full coverage replaces the image";
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(int((out[1] >> (8 * c)) & 0xff), 128, 1) << "half coverage mixes";
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(int((out[1] >> (8 * c)) & 0xff), 128, 1) << "half coverage mixes";
   view.overlay = false;
   EXPECT_EQ(pass.run(view)[0], 0xff000000u) << "off: the image alone";
 }

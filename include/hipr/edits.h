@@ -57,7 +57,8 @@ struct EnvironmentEdit {
 };
 
 // "emission" edits are material edits restricted to emission keys.
-using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit, CameraEdit, EnvironmentEdit>;
+using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit, CameraEdit,
+                          EnvironmentEdit>;
 
 // Parses an edit script; throws InputError (naming the file and the edit) on any problem.
 std::vector<Edit> load_edit_script(const std::filesystem::path& path);

@@ -21,7 +21,8 @@ struct ChangeSet {
   bool environment = false;
 
   bool empty() const {
-    return instances.empty() && lights.empty() && !materials && !transforms && !light_tables && !camera && !environment;
+    return instances.empty() && lights.empty() && !materials && !transforms && !light_tables &&
+           !camera && !environment;
   }
 };
 

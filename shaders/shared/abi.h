@@ -53,9 +53,9 @@ HIPR_CONST uint kBindingSortKeysAlt = 25u;      // pong
 HIPR_CONST uint kBindingSortValuesAlt = 26u;    // pong
 HIPR_CONST uint kBindingSortHistogram = 27u;    // uint [digit][workgroup] counts, then offsets
 // The viewer's display pass (display.comp)
-HIPR_CONST uint kBindingDisplayRadiance = 30u;  // float RGB per rendered pixel: the displayed image
-HIPR_CONST uint kBindingDisplayOverlay = 31u;   // uint RGBA8 per rendered pixel (sRGB-encoded, A = coverage)
-HIPR_CONST uint kBindingDisplayOutput = 32u;    // uint RGBA8 per window pixel: what the window shows
+HIPR_CONST uint kBindingDisplayRadiance = 30u;  // float RGB per rendered pixel (displayed image)
+HIPR_CONST uint kBindingDisplayOverlay = 31u;   // uint RGBA8 per rendered pixel (sRGB, A = coverage)
+HIPR_CONST uint kBindingDisplayOutput = 32u;    // uint RGBA8 per window pixel (what the window shows)
 
 // ---- constants ----
 HIPR_CONST uint kPixelOwed = 0x80000000u;

@@ -56,9 +56,11 @@ void write_png8(const fs::path& path, uint32_t width, uint32_t height, uint32_t 
     auto out = OIIO::ImageOutput::create("png");
     if (!out) throw InternalError("OpenImageIO has no .png writer");
     const OIIO::ImageSpec spec(int(width), int(height), int(channels), OIIO::TypeDesc::UINT8);
-    if (!out->open(temp.string(), spec)) throw InputError("cannot write " + path.string() + ": " + out->geterror());
+    if (!out->open(temp.string(), spec))
+      throw InputError("cannot write " + path.string() + ": " + out->geterror());
     const bool ok = out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
-    if (!out->close() || !ok) throw InputError("cannot write " + path.string() + ": " + out->geterror());
+    if (!out->close() || !ok)
+      throw InputError("cannot write " + path.string() + ": " + out->geterror());
   });
 }
 

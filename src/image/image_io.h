@@ -21,8 +21,8 @@ void write_image(const std::filesystem::path& path, const ImageRGB& image, const
                  float exposure_ev = 0.0f);
 // Writes 8-bit pixels as they are (already sRGB-encoded: no tone mapping) to a PNG, atomically.
 // `channels`: 3 (RGB) or 4 (RGBA) bytes per pixel, rows top first.
-void write_png8(const std::filesystem::path& path, uint32_t width, uint32_t height, uint32_t channels,
-                const std::vector<uint8_t>& pixels);
+void write_png8(const std::filesystem::path& path, uint32_t width, uint32_t height,
+                uint32_t channels, const std::vector<uint8_t>& pixels);
 ImageRGB read_image(const std::filesystem::path& path);
 // Reads one metadata attribute as text ("" when absent).
 std::string read_image_attribute(const std::filesystem::path& path, const std::string& name);

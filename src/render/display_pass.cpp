@@ -8,7 +8,9 @@
 namespace hipr {
 namespace {
 
-vk::Buffer storage(const vk::Context& ctx, size_t bytes) { return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT); }
+vk::Buffer storage(const vk::Context& ctx, size_t bytes) {
+  return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
 
 }  // namespace
 
@@ -19,7 +21,9 @@ DisplayPass::DisplayPass(const vk::Context& ctx, uint32_t width, uint32_t height
       m_radiance(storage(ctx, size_t(width) * height * 3 * sizeof(float))),
       m_overlay(storage(ctx, size_t(width) * height * 4)),
       m_pipeline(ctx, "display.comp", {},
-                 {{abi::kBindingDisplayRadiance}, {abi::kBindingDisplayOverlay}, {abi::kBindingDisplayOutput}},
+                 {{abi::kBindingDisplayRadiance},
+                  {abi::kBindingDisplayOverlay},
+                  {abi::kBindingDisplayOutput}},
                  sizeof(abi::DisplayPush)) {
   m_radiance.clear();
   m_overlay.clear();
@@ -28,13 +32,15 @@ DisplayPass::DisplayPass(const vk::Context& ctx, uint32_t width, uint32_t height
 }
 
 void DisplayPass::set_image(const ImageRGB& image) {
-  if (image.width != m_width || image.height != m_height || image.rgb.size() != size_t(m_width) * m_height * 3)
+  if (image.width != m_width || image.height != m_height ||
+      image.rgb.size() != size_t(m_width) * m_height * 3)
     throw InternalError("the displayed image does not have the rendered size");
   m_radiance.upload(image.rgb.data(), image.rgb.size() * sizeof(float));
 }
 
 void DisplayPass::set_overlay(const std::vector<uint32_t>& rgba8) {
-  if (rgba8.size() != size_t(m_width) * m_height) throw InternalError("the overlay does not have the rendered size");
+  if (rgba8.size() != size_t(m_width) * m_height)
+    throw InternalError("the overlay does not have the rendered size");
   m_overlay.upload(rgba8.data(), rgba8.size() * 4);
 }
 
@@ -56,7 +62,8 @@ void DisplayPass::record(VkCommandBuffer cmd, const DisplayView& view) {
   push.exposureScale = std::exp2(view.exposure_ev);
   push.background = view.background;
   push.overlayEnabled = view.overlay ? 1u : 0u;
-  m_pipeline.dispatch(cmd, &push, uint32_t((pixels + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize));
+  m_pipeline.dispatch(cmd, &push,
+                      uint32_t((pixels + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize));
 }
 
 std::vector<uint32_t> DisplayPass::run(const DisplayView& view) {

@@ -534,7 +534,8 @@ void Renderer::set_hipr_parameters(const HiprParameters& parameters) {
   // Patch the uploaded frame parameters instead of rebuilding them: that needs the scene.
   abi::FrameParams f{};
   m->frame.download(&f, sizeof f);
-  f.wLobe = glm::vec4(parameters.w_lobe[0], parameters.w_lobe[1], parameters.w_lobe[2], parameters.w_lobe[3]);
+  f.wLobe = glm::vec4(parameters.w_lobe[0], parameters.w_lobe[1], parameters.w_lobe[2],
+                      parameters.w_lobe[3]);
   f.wPath = glm::vec3(parameters.w_path[0], parameters.w_path[1], parameters.w_path[2]);
   f.wOcclusion = parameters.w_occlusion;
   f.depthEpsilon = parameters.depth_epsilon;
@@ -543,14 +544,16 @@ void Renderer::set_hipr_parameters(const HiprParameters& parameters) {
 
 void Renderer::refresh_gbuffer() {
   m->ensure_hipr();
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->visibility->dispatch(cmd, nullptr, groups_for(m->pixels)); });
+  m->ctx.submit_and_wait(
+      [&](VkCommandBuffer cmd) { m->visibility->dispatch(cmd, nullptr, groups_for(m->pixels)); });
 }
 
 Renderer::PixelHit Renderer::gbuffer_at(uint32_t x, uint32_t y) const {
   if (x >= m->settings.width || y >= m->settings.height) return {};
   m->ensure_hipr();
   abi::GBufferTexel texel{};
-  m->gbuffer.download(&texel, sizeof texel, (VkDeviceSize(y) * m->settings.width + x) * sizeof texel);
+  m->gbuffer.download(&texel, sizeof texel,
+                      (VkDeviceSize(y) * m->settings.width + x) * sizeof texel);
   if (texel.record == abi::kInvalidIndex) return {};
   return {m->gpu.record_instance()[texel.record], texel.depth};
 }
@@ -560,7 +563,8 @@ std::vector<uint32_t> Renderer::owed_tiles() const {
   const uint32_t width = m->settings.width, tile = m->settings.tile_size;
   std::vector<uint32_t> owed(tile_count(), 0);
   for (size_t i = 0; i < accum.size(); ++i)
-    if (accum[i].count & abi::kPixelOwed) ++owed[(i / width / tile) * m->tiles_x + (i % width) / tile];
+    if (accum[i].count & abi::kPixelOwed)
+      ++owed[(i / width / tile) * m->tiles_x + (i % width) / tile];
   return owed;
 }
 

@@ -86,7 +86,8 @@ struct Applier {
   }
 
   void operator()(const EnvironmentEdit& e) const {
-    if (!scene.environment) throw InputError("the scene has no environment map to edit (load one with --env)");
+    if (!scene.environment)
+      throw InputError("the scene has no environment map to edit (load one with --env)");
     if (e.intensity) scene.environment->intensity = *e.intensity;
     if (e.rotation) scene.environment->rotation = *e.rotation;
   }
@@ -108,7 +109,8 @@ struct Inverter {
       if (!parameter || int(p.values.size()) != parameter->components)
         throw InputError("invalid material parameter '" + p.key + "'");
       std::vector<float> old(size_t(parameter->components));
-      std::memcpy(old.data(), reinterpret_cast<const char*>(&block) + parameter->offset, old.size() * sizeof(float));
+      std::memcpy(old.data(), reinterpret_cast<const char*>(&block) + parameter->offset,
+                  old.size() * sizeof(float));
       inverse.set.push_back({p.key, std::move(old)});
     }
     // Restoring in reverse order undoes an edit that sets the same key twice.
@@ -123,24 +125,30 @@ struct Inverter {
     return LightEdit{e.node, light.intensity, light.color, light.range};
   }
 
-  Edit operator()(const VisibilityEdit& e) const { return VisibilityEdit{e.node, scene.nodes[find_node(scene, e.node)].visible}; }
+  Edit operator()(const VisibilityEdit& e) const {
+    return VisibilityEdit{e.node, scene.nodes[find_node(scene, e.node)].visible};
+  }
 
   Edit operator()(const CameraEdit&) const {
     // Without a camera node the edit creates one holding the default camera: restoring that
     // matrix renders the same view.
     const int node = scene.camera_node();
-    return CameraEdit{std::nullopt, node >= 0 ? scene.nodes[size_t(node)].local : resolve_camera(scene).camera_to_world};
+    return CameraEdit{std::nullopt, node >= 0 ? scene.nodes[size_t(node)].local
+                                              : resolve_camera(scene).camera_to_world};
   }
 
   Edit operator()(const EnvironmentEdit&) const {
-    if (!scene.environment) throw InputError("the scene has no environment map to edit (load one with --env)");
+    if (!scene.environment)
+      throw InputError("the scene has no environment map to edit (load one with --env)");
     return EnvironmentEdit{scene.environment->intensity, scene.environment->rotation};
   }
 };
 
 }  // namespace
 
-Edit inverse_edit(const Scene& scene, const Edit& edit) { return std::visit(Inverter{scene}, edit); }
+Edit inverse_edit(const Scene& scene, const Edit& edit) {
+  return std::visit(Inverter{scene}, edit);
+}
 
 void apply_edit(Scene& scene, const Edit& edit) { std::visit(Applier{scene}, edit); }
 

@@ -160,8 +160,9 @@ void Context::create_instance(const ContextOptions& options) {
       throw InternalError("validation requested but VK_LAYER_KHRONOS_validation is not installed "
                           "(package vulkan-validationlayers)");
     layers.push_back(kValidationLayer);
-    if (std::none_of(extensions.begin(), extensions.end(),
-                     [](const char* e) { return std::strcmp(e, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0; }))
+    if (std::none_of(extensions.begin(), extensions.end(), [](const char* e) {
+          return std::strcmp(e, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0;
+        }))
       extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     messenger.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
                                 VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
@@ -266,7 +267,8 @@ void Context::create_device() {
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &enabled.core};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
-  std::vector<const char*> extensions(std::begin(kRequiredDeviceExtensions), std::end(kRequiredDeviceExtensions));
+  std::vector<const char*> extensions(std::begin(kRequiredDeviceExtensions),
+                                      std::end(kRequiredDeviceExtensions));
   if (m_surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   info.enabledExtensionCount = uint32_t(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();

@@ -11,14 +11,16 @@ namespace {
 uint32_t device_local_memory_type(const Context& ctx, uint32_t allowed) {
   VkPhysicalDeviceMemoryProperties props;
   vkGetPhysicalDeviceMemoryProperties(ctx.physical_device(), &props);
-  for (VkMemoryPropertyFlags wanted : {VkMemoryPropertyFlags(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT), VkMemoryPropertyFlags(0)})
+  for (VkMemoryPropertyFlags wanted :
+       {VkMemoryPropertyFlags(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT), VkMemoryPropertyFlags(0)})
     for (uint32_t i = 0; i < props.memoryTypeCount; ++i)
-      if ((allowed & (1u << i)) && (props.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
+      if ((allowed & (1u << i)) && (props.memoryTypes[i].propertyFlags & wanted) == wanted)
+        return i;
   throw InternalError("no Vulkan memory type for an image");
 }
 
-VkImageMemoryBarrier image_barrier(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags src,
-                                   VkAccessFlags dst) {
+VkImageMemoryBarrier image_barrier(VkImage image, VkImageLayout from, VkImageLayout to,
+                                   VkAccessFlags src, VkAccessFlags dst) {
   VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   barrier.srcAccessMask = src;
   barrier.dstAccessMask = dst;
@@ -35,7 +37,8 @@ VkImageMemoryBarrier image_barrier(VkImage image, VkImageLayout from, VkImageLay
 
 Image::Image(const Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage)
     : m_ctx(&ctx), m_extent(extent), m_format(format) {
-  if (extent.width == 0 || extent.height == 0) throw InternalError("an image needs a non-zero size");
+  if (extent.width == 0 || extent.height == 0)
+    throw InternalError("an image needs a non-zero size");
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
@@ -105,14 +108,16 @@ void record_buffer_to_image(VkCommandBuffer cmd, const Buffer& source, const Ima
   written.size = VK_WHOLE_SIZE;
   // The previous frame's content is not needed: UNDEFINED lets the driver drop it. The source
   // stage includes transfer so the last frame's copy out of the image is ordered before.
-  const VkImageMemoryBarrier to_dst = image_barrier(image.handle(), VK_IMAGE_LAYOUT_UNDEFINED,
-                                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT);
+  const VkImageMemoryBarrier to_dst =
+      image_barrier(image.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    0, VK_ACCESS_TRANSFER_WRITE_BIT);
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 1, &written, 1, &to_dst);
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {image.extent().width, image.extent().height, 1};
-  vkCmdCopyBufferToImage(cmd, source.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  vkCmdCopyBufferToImage(cmd, source.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         1, &region);
 }
 
 std::vector<uint8_t> read_image_rgba8(const Context& ctx, const Image& image) {
@@ -123,7 +128,8 @@ std::vector<uint8_t> read_image_rgba8(const Context& ctx, const Image& image) {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {e.width, e.height, 1};
-    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
+    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           staging.handle(), 1, &region);
   });
   std::vector<uint8_t> pixels(bytes);
   staging.download(pixels.data(), bytes);

@@ -96,7 +96,8 @@ void Swapchain::create(VkExtent2D extent) {
   info.preTransform = caps.currentTransform;
   info.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
                             ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
-                            : VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha & -caps.supportedCompositeAlpha);
+                            : VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha &
+                                                          -caps.supportedCompositeAlpha);
   info.presentMode = m_present_mode;
   info.clipped = VK_TRUE;
   VK_CHECK(vkCreateSwapchainKHR(m_ctx.device(), &info, nullptr, &m_swapchain));
@@ -111,7 +112,8 @@ void Swapchain::create_sync() {
   VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
   VK_CHECK(vkCreateSemaphore(m_ctx.device(), &semaphore, nullptr, &m_acquired));
   m_ready_to_present.assign(m_images.size(), VK_NULL_HANDLE);
-  for (VkSemaphore& s : m_ready_to_present) VK_CHECK(vkCreateSemaphore(m_ctx.device(), &semaphore, nullptr, &s));
+  for (VkSemaphore& s : m_ready_to_present)
+    VK_CHECK(vkCreateSemaphore(m_ctx.device(), &semaphore, nullptr, &s));
   VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // the first begin_frame has nothing to wait for
   VK_CHECK(vkCreateFence(m_ctx.device(), &fence, nullptr, &m_frame_done));
@@ -145,7 +147,8 @@ void Swapchain::recreate(VkExtent2D extent) {
 std::optional<Swapchain::Frame> Swapchain::begin_frame() {
   wait_idle();
   uint32_t index = 0;
-  const VkResult result = vkAcquireNextImageKHR(m_ctx.device(), m_swapchain, UINT64_MAX, m_acquired, VK_NULL_HANDLE, &index);
+  const VkResult result = vkAcquireNextImageKHR(m_ctx.device(), m_swapchain, UINT64_MAX, m_acquired,
+                                                VK_NULL_HANDLE, &index);
   // SUBOPTIMAL still acquired an image (and signals the semaphore): present it, then recreate.
   if (result == VK_ERROR_OUT_OF_DATE_KHR) return std::nullopt;
   if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);
@@ -167,8 +170,8 @@ void Swapchain::blit_to_swapchain(const Frame& frame, const Image& source) const
   barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-  vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
-                       nullptr, 1, &barrier);
+  vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                       0, nullptr, 0, nullptr, 1, &barrier);
   // A blit rather than a copy: it converts RGBA to the swapchain's (often BGRA) order.
   VkImageBlit region{};
   region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
@@ -181,13 +184,15 @@ void Swapchain::blit_to_swapchain(const Frame& frame, const Image& source) const
   barrier.dstAccessMask = 0;
   barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
   barrier.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-  vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr,
-                       0, nullptr, 1, &barrier);
+  vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr, 0, nullptr, 1,
+                       &barrier);
 }
 
 bool Swapchain::end_frame(const Frame& frame) {
   VK_CHECK(vkEndCommandBuffer(frame.cmd));
-  const VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_TRANSFER_BIT;  // the blit writes the image
+  const VkPipelineStageFlags wait_stage =
+      VK_PIPELINE_STAGE_TRANSFER_BIT;  // the blit writes the image
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = 1;
   submit.pWaitSemaphores = &m_acquired;
@@ -211,6 +216,8 @@ bool Swapchain::end_frame(const Frame& frame) {
   return true;
 }
 
-void Swapchain::wait_idle() const { VK_CHECK(vkWaitForFences(m_ctx.device(), 1, &m_frame_done, VK_TRUE, UINT64_MAX)); }
+void Swapchain::wait_idle() const {
+  VK_CHECK(vkWaitForFences(m_ctx.device(), 1, &m_frame_done, VK_TRUE, UINT64_MAX));
+}
 
 }  // namespace hipr::vk

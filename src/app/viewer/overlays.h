@@ -29,13 +29,13 @@ struct OverlayGrid {
 // `ids`: instance per pixel (UINT32_MAX: background).
 std::vector<uint32_t> id_overlay(const std::vector<uint32_t>& ids, const OverlayGrid& grid);
 // `weights`, `flags`: per tile (Renderer::tile_weights, tile_flags).
-std::vector<uint32_t> weight_overlay(const std::vector<double>& weights, const std::vector<uint32_t>& flags,
-                                     const OverlayGrid& grid);
+std::vector<uint32_t> weight_overlay(const std::vector<double>& weights,
+                                     const std::vector<uint32_t>& flags, const OverlayGrid& grid);
 // `owed`: per tile, pixels still owing a restart (Renderer::owed_tiles).
 std::vector<uint32_t> owed_overlay(const std::vector<uint32_t>& owed, const OverlayGrid& grid);
 // Draws the outline of `instance` (its pixels next to any other) over `overlay`.
-void outline_instance(std::vector<uint32_t>& overlay, const std::vector<uint32_t>& ids, uint32_t instance,
-                      const OverlayGrid& grid);
+void outline_instance(std::vector<uint32_t>& overlay, const std::vector<uint32_t>& ids,
+                      uint32_t instance, const OverlayGrid& grid);
 
 // Packs an sRGB-encoded colour in [0, 1] and a coverage in [0, 1] (R in the low byte).
 uint32_t pack_rgba8(float r, float g, float b, float a);

@@ -15,7 +15,8 @@ namespace hipr::viewer {
 constexpr float kPanelWidth = 360.0f;
 
 void draw_side_panel(Session& session, ViewerState& state, float x, float height);
-void draw_status_line(const Session& session, const ViewerState& state, float x, float y, float width);
+void draw_status_line(const Session& session, const ViewerState& state, float x, float y,
+                      float width);
 
 // An edit from a widget. While any widget stays active (a slider or colour being dragged) its
 // edits form one undo step. Returns false when the scene refused it (shown as a message).

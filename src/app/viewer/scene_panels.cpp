@@ -5,7 +5,6 @@
 #include <cfloat>
 #include <cmath>
 #include <cstring>
-
 #include <glm/trigonometric.hpp>
 
 #include "app/viewer/panels.h"
@@ -45,7 +44,8 @@ void tree_node(Session& session, ViewerState& state, uint32_t node) {
   if (n.mesh >= 0 || !leaf) {
     ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::GetFrameHeight());
     bool visible = n.visible;
-    if (ImGui::Checkbox("##visible", &visible)) ui_edit(session, state, VisibilityEdit{node_reference(scene, node), visible});
+    if (ImGui::Checkbox("##visible", &visible))
+      ui_edit(session, state, VisibilityEdit{node_reference(scene, node), visible});
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("visible");
   }
   if (open && !leaf) {
@@ -61,7 +61,8 @@ void material_editor(Session& session, ViewerState& state, uint32_t material) {
   const std::string name = material_reference(scene, material);
   for (const MaterialParameter& p : material_parameters()) {
     float values[3] = {0.0f, 0.0f, 0.0f};
-    std::memcpy(values, reinterpret_cast<const char*>(&block) + p.offset, size_t(p.components) * sizeof(float));
+    std::memcpy(values, reinterpret_cast<const char*>(&block) + p.offset,
+                size_t(p.components) * sizeof(float));
     bool changed = false;
     if (p.components == 3) {
       ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float;
@@ -70,7 +71,8 @@ void material_editor(Session& session, ViewerState& state, uint32_t material) {
     } else if (std::isfinite(p.min) && std::isfinite(p.max)) {
       changed = ImGui::SliderFloat(p.name, values, p.min, p.max);
     } else {
-      const float lo = std::isfinite(p.min) ? p.min : -FLT_MAX, hi = std::isfinite(p.max) ? p.max : FLT_MAX;
+      const float lo = std::isfinite(p.min) ? p.min : -FLT_MAX,
+                  hi = std::isfinite(p.max) ? p.max : FLT_MAX;
       changed = ImGui::DragFloat(p.name, values, drag_speed(values[0], 0.01f), lo, hi, "%.3f",
                                  ImGuiSliderFlags_AlwaysClamp);
     }
@@ -88,7 +90,8 @@ std::string node_reference(const Scene& scene, uint32_t node) {
 }
 
 std::string material_reference(const Scene& scene, uint32_t material) {
-  return reference(scene.materials, material, [](const Material& m) -> const std::string& { return m.name; });
+  return reference(scene.materials, material,
+                   [](const Material& m) -> const std::string& { return m.name; });
 }
 
 std::string node_label(const Scene& scene, uint32_t node) {
@@ -115,22 +118,28 @@ void selection_section(Session& session, ViewerState& state) {
   const std::string reference = node_reference(scene, node);
   float translation[3] = {n.local[3].x, n.local[3].y, n.local[3].z};
   const auto [lo, hi] = scene.bounds();
-  if (ImGui::DragFloat3("translation", translation, std::max(glm::length(hi - lo) * 0.002f, 1e-4f))) {
+  if (ImGui::DragFloat3("translation", translation,
+                        std::max(glm::length(hi - lo) * 0.002f, 1e-4f))) {
     glm::mat4 local = n.local;
     local[3] = glm::vec4(translation[0], translation[1], translation[2], 1.0f);
     ui_edit(session, state, TransformEdit{reference, std::nullopt, local});
   }
   bool visible = n.visible;
-  if (ImGui::Checkbox("visible", &visible)) ui_edit(session, state, VisibilityEdit{reference, visible});
+  if (ImGui::Checkbox("visible", &visible))
+    ui_edit(session, state, VisibilityEdit{reference, visible});
   if (n.mesh < 0) return;
   // Each material of the mesh once, in primitive order.
   std::vector<uint32_t> materials;
   for (const MeshPrimitive& p : scene.meshes[size_t(n.mesh)].primitives)
-    if (std::find(materials.begin(), materials.end(), p.material) == materials.end()) materials.push_back(p.material);
+    if (std::find(materials.begin(), materials.end(), p.material) == materials.end())
+      materials.push_back(p.material);
   for (uint32_t m : materials) {
     ImGui::PushID(int(m));
-    const std::string title = "material " + (scene.materials[m].name.empty() ? "#" + std::to_string(m) : scene.materials[m].name);
-    if (ImGui::TreeNodeEx("material", materials.size() == 1 ? ImGuiTreeNodeFlags_DefaultOpen : 0, "%s", title.c_str())) {
+    const std::string title =
+        "material " +
+        (scene.materials[m].name.empty() ? "#" + std::to_string(m) : scene.materials[m].name);
+    if (ImGui::TreeNodeEx("material", materials.size() == 1 ? ImGuiTreeNodeFlags_DefaultOpen : 0,
+                          "%s", title.c_str())) {
       material_editor(session, state, m);
       ImGui::TreePop();
     }
@@ -150,18 +159,21 @@ void lights_section(Session& session, ViewerState& state) {
     ImGui::PushID(int(node));
     ImGui::Text("%s", node_label(scene, node).c_str());
     float intensity = light.intensity;
-    if (ImGui::DragFloat("intensity", &intensity, drag_speed(intensity, 0.01f), 0.0f, FLT_MAX, "%.3f",
-                         ImGuiSliderFlags_AlwaysClamp))
-      ui_edit(session, state, LightEdit{reference, std::max(intensity, 0.0f), std::nullopt, std::nullopt});
+    if (ImGui::DragFloat("intensity", &intensity, drag_speed(intensity, 0.01f), 0.0f, FLT_MAX,
+                         "%.3f", ImGuiSliderFlags_AlwaysClamp))
+      ui_edit(session, state,
+              LightEdit{reference, std::max(intensity, 0.0f), std::nullopt, std::nullopt});
     float colour[3] = {light.color.r, light.color.g, light.color.b};
     if (ImGui::ColorEdit3("colour", colour, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
       ui_edit(session, state,
               LightEdit{reference, std::nullopt,
-                        glm::max(glm::vec3(colour[0], colour[1], colour[2]), glm::vec3(0.0f)), std::nullopt});
+                        glm::max(glm::vec3(colour[0], colour[1], colour[2]), glm::vec3(0.0f)),
+                        std::nullopt});
     float range = light.range;
-    if (ImGui::DragFloat("range (0: infinite)", &range, drag_speed(range, 0.01f), 0.0f, FLT_MAX, "%.3f",
-                         ImGuiSliderFlags_AlwaysClamp))
-      ui_edit(session, state, LightEdit{reference, std::nullopt, std::nullopt, std::max(range, 0.0f)});
+    if (ImGui::DragFloat("range (0: infinite)", &range, drag_speed(range, 0.01f), 0.0f, FLT_MAX,
+                         "%.3f", ImGuiSliderFlags_AlwaysClamp))
+      ui_edit(session, state,
+              LightEdit{reference, std::nullopt, std::nullopt, std::max(range, 0.0f)});
     ImGui::Separator();
     ImGui::PopID();
   }
@@ -169,23 +181,31 @@ void lights_section(Session& session, ViewerState& state) {
   // material luminance 1 and a black colour, which an emission texture only multiplies).
   for (uint32_t m = 0; m < scene.materials.size(); ++m) {
     const abi::MaterialBlock& p = scene.materials[m].params;
-    if (p.emission_luminance > 0.0f && glm::any(glm::greaterThan(p.emission_color, glm::vec3(0.0f)))) state.emitters.insert(m);
+    if (p.emission_luminance > 0.0f &&
+        glm::any(glm::greaterThan(p.emission_color, glm::vec3(0.0f))))
+      state.emitters.insert(m);
   }
   for (uint32_t m : state.emitters) {
     any = true;
     const abi::MaterialBlock& block = scene.materials[m].params;
     const std::string reference = material_reference(scene, m);
     ImGui::PushID(int(1000000 + m));
-    ImGui::Text("emitter: material %s", scene.materials[m].name.empty() ? reference.c_str() : scene.materials[m].name.c_str());
+    ImGui::Text("emitter: material %s", scene.materials[m].name.empty()
+                                            ? reference.c_str()
+                                            : scene.materials[m].name.c_str());
     float luminance = block.emission_luminance;
-    if (ImGui::DragFloat("emission (nits)", &luminance, drag_speed(luminance, 0.01f), 0.0f, FLT_MAX, "%.3f",
-                         ImGuiSliderFlags_AlwaysClamp))
-      ui_edit(session, state, MaterialEdit{reference, {{"emission_luminance", {std::max(luminance, 0.0f)}}}});
-    float colour[3] = {block.emission_color.r, block.emission_color.g, block.emission_color.b};
-    if (ImGui::ColorEdit3("emission colour", colour, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
+    if (ImGui::DragFloat("emission (nits)", &luminance, drag_speed(luminance, 0.01f), 0.0f, FLT_MAX,
+                         "%.3f", ImGuiSliderFlags_AlwaysClamp))
       ui_edit(session, state,
-              MaterialEdit{reference, {{"emission_color", {std::max(colour[0], 0.0f), std::max(colour[1], 0.0f),
-                                                          std::max(colour[2], 0.0f)}}}});
+              MaterialEdit{reference, {{"emission_luminance", {std::max(luminance, 0.0f)}}}});
+    float colour[3] = {block.emission_color.r, block.emission_color.g, block.emission_color.b};
+    if (ImGui::ColorEdit3("emission colour", colour,
+                          ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
+      ui_edit(session, state,
+              MaterialEdit{reference,
+                           {{"emission_color",
+                             {std::max(colour[0], 0.0f), std::max(colour[1], 0.0f),
+                              std::max(colour[2], 0.0f)}}}});
     ImGui::Separator();
     ImGui::PopID();
   }
@@ -201,8 +221,8 @@ void environment_section(Session& session, ViewerState& state) {
   }
   ImGui::TextWrapped("%s", scene.environment->path.filename().string().c_str());
   float intensity = scene.environment->intensity;
-  if (ImGui::DragFloat("intensity##env", &intensity, drag_speed(intensity, 0.01f), 0.0f, FLT_MAX, "%.3f",
-                       ImGuiSliderFlags_AlwaysClamp))
+  if (ImGui::DragFloat("intensity##env", &intensity, drag_speed(intensity, 0.01f), 0.0f, FLT_MAX,
+                       "%.3f", ImGuiSliderFlags_AlwaysClamp))
     ui_edit(session, state, EnvironmentEdit{std::max(intensity, 0.0f), std::nullopt});
   float degrees = glm::degrees(scene.environment->rotation);
   if (ImGui::SliderFloat("rotation (deg)", &degrees, -180.0f, 180.0f))

@@ -16,7 +16,7 @@ namespace hipr::viewer {
 void check_screenshot_path(const std::filesystem::path& path);
 
 // `frame`: RGBA8 in TRANSFER_SRC_OPTIMAL layout, no GPU work pending on it.
-void save_screenshot(const std::filesystem::path& path, const vk::Context& ctx, const vk::Image& frame,
-                     const ImageRGB& displayed);
+void save_screenshot(const std::filesystem::path& path, const vk::Context& ctx,
+                     const vk::Image& frame, const ImageRGB& displayed);
 
 }  // namespace hipr::viewer

@@ -8,9 +8,13 @@
 
 namespace hipr::viewer {
 
-uint32_t default_tiles_per_step(uint32_t tile_count) { return std::max(1u, (tile_count + 63) / 64); }
+uint32_t default_tiles_per_step(uint32_t tile_count) {
+  return std::max(1u, (tile_count + 63) / 64);
+}
 
-uint32_t default_first_visit_spp(const SessionSettings& s) { return std::max(s.visit_spp, std::min(4u, s.spp)); }
+uint32_t default_first_visit_spp(const SessionSettings& s) {
+  return std::max(s.visit_spp, std::min(4u, s.spp));
+}
 
 Scene diff_snapshot(const Scene& scene) {
   Scene s;
@@ -47,18 +51,23 @@ Scene diff_snapshot(const Scene& scene) {
 
 Session::Session(const vk::Context& ctx, Scene scene, const SessionSettings& settings)
     : m_ctx(ctx), m_settings(settings), m_scene(std::move(scene)) {
-  if (m_scene.camera_node() < 0) apply_edit(m_scene, CameraEdit{std::nullopt, resolve_camera(m_scene).camera_to_world});
+  if (m_scene.camera_node() < 0)
+    apply_edit(m_scene, CameraEdit{std::nullopt, resolve_camera(m_scene).camera_to_world});
   rebuild();
 }
 
 std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy policy) const {
   // The oracle ranks tiles against a converged render of each edited scene: a benchmark's
   // tool (hipr bench), not something a viewer can have before the user edits.
-  if (policy == Policy::Oracle) throw InputError("the oracle policy needs a reference image: use hipr bench");
-  const uint32_t per_step = m_settings.tiles_per_step ? m_settings.tiles_per_step : default_tiles_per_step(renderer.tile_count());
+  if (policy == Policy::Oracle)
+    throw InputError("the oracle policy needs a reference image: use hipr bench");
+  const uint32_t per_step = m_settings.tiles_per_step
+                                ? m_settings.tiles_per_step
+                                : default_tiles_per_step(renderer.tile_count());
   auto scheduler = std::make_unique<Scheduler>(renderer, policy, per_step, m_settings.visit_spp);
   scheduler->set_display_rule(m_settings.display.value_or(default_display_rule(policy)));
-  scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp : default_first_visit_spp(m_settings));
+  scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp
+                                                            : default_first_visit_spp(m_settings));
   return scheduler;
 }
 
@@ -130,7 +139,8 @@ uint32_t Session::render(double budget_seconds, uint32_t max_steps) {
 
 double Session::samples_per_second() const {
   const double seconds = m_since_edit.seconds();
-  const double samples = m_scheduler->work_since_edit() * m_settings.render.width * m_settings.render.height;
+  const double samples =
+      m_scheduler->work_since_edit() * m_settings.render.width * m_settings.render.height;
   return seconds > 0.0 ? samples / seconds : 0.0;
 }
 

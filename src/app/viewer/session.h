@@ -22,14 +22,15 @@ struct SessionSettings {
   uint32_t tiles_per_step = 0;  // 0: 1/64 of the frame, so a frame's time budget is spent finely
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp = 0;  // a tile's first visit after an edit; 0: default_first_visit_spp
-  std::optional<DisplayRule> display;  // how re-rendered tiles are shown; none: the policy's default
+  std::optional<DisplayRule>
+      display;        // how re-rendered tiles are shown; none: the policy's default
   uint32_t spp = 64;  // samples per pixel to converge to; rendering pauses there
 };
 
 // How one change reached the screen: the feedback latency of the measurements.
 struct EditRecord {
   std::string what;
-  double latency_seconds = -1.0;  // edit -> first presented frame that differs; -1: none yet
+  double latency_seconds = -1.0;      // edit -> first presented frame that differs; -1: none yet
   double work_at_first_change = 0.0;  // in full-frame 1-spp passes
 };
 

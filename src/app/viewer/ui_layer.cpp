@@ -19,7 +19,8 @@ void check_vk_result(VkResult result) {
 
 }  // namespace
 
-UiLayer::UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass& pass, const vk::Swapchain& swapchain)
+UiLayer::UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass& pass,
+                 const vk::Swapchain& swapchain)
     : m_window(window) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -75,6 +76,8 @@ void UiLayer::render(VkCommandBuffer cmd) {
   ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
 }
 
-void UiLayer::set_min_image_count(uint32_t count) { ImGui_ImplVulkan_SetMinImageCount(std::max(2u, count)); }
+void UiLayer::set_min_image_count(uint32_t count) {
+  ImGui_ImplVulkan_SetMinImageCount(std::max(2u, count));
+}
 
 }  // namespace hipr::viewer

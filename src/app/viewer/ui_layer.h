@@ -15,7 +15,8 @@ namespace hipr::viewer {
 
 class UiLayer {
  public:
-  UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass& pass, const vk::Swapchain& swapchain);
+  UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass& pass,
+          const vk::Swapchain& swapchain);
   ~UiLayer();
   UiLayer(const UiLayer&) = delete;
   UiLayer& operator=(const UiLayer&) = delete;

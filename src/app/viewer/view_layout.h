@@ -3,9 +3,8 @@
 // side panel), at an integer zoom when it fits (crisp pixels), else scaled down to fit. The
 // display pass draws with it and picking maps the mouse back through it.
 #include <cstdint>
-#include <optional>
-
 #include <glm/glm.hpp>
+#include <optional>
 
 namespace hipr::viewer {
 
@@ -21,6 +20,7 @@ struct ViewLayout {
 };
 
 // `area_width` x `area_height`: the view area, starting at the window's left edge.
-ViewLayout fit_view(uint32_t render_width, uint32_t render_height, uint32_t area_width, uint32_t area_height);
+ViewLayout fit_view(uint32_t render_width, uint32_t render_height, uint32_t area_width,
+                    uint32_t area_height);
 
 }  // namespace hipr::viewer

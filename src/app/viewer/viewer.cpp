@@ -1,13 +1,12 @@
 #include "app/viewer/viewer.h"
 
 #include <imgui.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <fstream>
-#include <memory>
-
 #include <glm/trigonometric.hpp>
+#include <memory>
+#include <nlohmann/json.hpp>
 
 #include "app/viewer/panels.h"
 #include "app/viewer/screenshot.h"
@@ -28,7 +27,6 @@
 #include "vk/swapchain.h"
 #include "vk/ui_pass.h"
 
-
 namespace hipr::viewer {
 namespace {
 namespace fs = std::filesystem;
@@ -37,18 +35,22 @@ namespace fs = std::filesystem;
 constexpr uint32_t kMinUiHeight = 640;
 // The frame image: what the display pass writes, the UI draws on and screenshots read.
 constexpr VkFormat kFrameFormat = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkImageUsageFlags kFrameUsage =
-    VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+constexpr VkImageUsageFlags kFrameUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                          VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
 
 std::string default_save_path(const fs::path& source) {
   const fs::path dir = source.has_parent_path() ? source.parent_path() : fs::path(".");
   return (dir / (source.stem().string() + "_edited" + source.extension().string())).string();
 }
 
-vk::ContextOptions presenting_context_options(const app::CommonOptions& common, const Window& window) {
+vk::ContextOptions presenting_context_options(const app::CommonOptions& common,
+                                              const Window& window) {
   vk::ContextOptions options = app::context_options(common);
   options.instance_extensions = window.required_instance_extensions();
-  options.create_surface = [&window](VkInstance instance) { return window.create_surface(instance); };
+  options.create_surface = [&window](VkInstance instance) {
+    return window.create_surface(instance);
+  };
   return options;
 }
 
@@ -57,7 +59,8 @@ class Viewer {
   Viewer(const ViewerOptions& options, Scene scene)
       : m_started(),
         m_options(options),
-        m_window("hipr view - " + scene.source.filename().string(), window_width(options), window_height(options)),
+        m_window("hipr view - " + scene.source.filename().string(), window_width(options),
+                 window_height(options)),
         m_ctx(presenting_context_options(options.common, m_window)),
         m_swapchain(m_ctx, m_window.framebuffer_size()),
         m_ui_pass(m_ctx, kFrameFormat),
@@ -75,7 +78,8 @@ class Viewer {
     settings.spp = options.common.spp;
     m_state.open_path = scene.source.string();
     m_state.save_path = default_save_path(scene.source);
-    m_state.screenshot_path = options.screenshot.empty() ? "hipr_screenshot.png" : options.screenshot.string();
+    m_state.screenshot_path =
+        options.screenshot.empty() ? "hipr_screenshot.png" : options.screenshot.string();
     m_state.overlay = options.overlay;
     m_state.exposure_ev = options.exposure_ev;
     m_state.show_ui = options.show_ui;
@@ -87,9 +91,11 @@ class Viewer {
     m_state.selected_node = options.select;
     // The session compiles the kernels (lavapipe: up to minutes on a first start): say so.
     show_message("Preparing " + scene.source.filename().string() +
-                 ":\ncompiling the path tracer (the first start with a scene can take a minute or two on a CPU)");
+                 ":\ncompiling the path tracer (the first start with a scene can take a minute or "
+                 "two on a CPU)");
     m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
-    log::info("viewer on " + m_ctx.device_name() + ", present mode " + std::to_string(int(m_swapchain.present_mode())));
+    log::info("viewer on " + m_ctx.device_name() + ", present mode " +
+              std::to_string(int(m_swapchain.present_mode())));
   }
 
   int run();
@@ -152,7 +158,8 @@ ViewLayout Viewer::layout() const {
   const VkExtent2D extent = m_frame.extent();
   const uint32_t panel = m_state.show_ui ? uint32_t(kPanelWidth * m_window.pixel_ratio()) : 0u;
   const uint32_t area = extent.width > panel ? extent.width - panel : extent.width;
-  return fit_view(m_options.common.render.width, m_options.common.render.height, area, extent.height);
+  return fit_view(m_options.common.render.width, m_options.common.render.height, area,
+                  extent.height);
 }
 
 void Viewer::resize(VkExtent2D extent) {
@@ -171,8 +178,11 @@ void Viewer::show_message(const std::string& text) {
 void Viewer::show_message_frame(const std::string& text) {
   m_ui.new_frame({});
   const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::Begin("message", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
+                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("message", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoInputs);
   ImGui::TextUnformatted(text.c_str());
   ImGui::End();
   const auto frame = m_swapchain.begin_frame();
@@ -195,7 +205,8 @@ void Viewer::show_message_frame(const std::string& text) {
 
 void Viewer::run_script(uint32_t frame) {
   const auto& script = m_options.script;
-  if (m_script_next >= script.size() || frame != (m_script_next + 1) * m_options.script_every) return;
+  if (m_script_next >= script.size() || frame != (m_script_next + 1) * m_options.script_every)
+    return;
   // As if typed: the same path as a panel edit (undoable, one on_edit).
   try {
     m_session->edit(script[m_script_next]);
@@ -211,7 +222,8 @@ void Viewer::draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys
   if (m_state.show_ui) {
     const float panel_x = io.DisplaySize.x - kPanelWidth;
     draw_side_panel(*m_session, m_state, panel_x, io.DisplaySize.y);
-    if (m_state.show_status) draw_status_line(*m_session, m_state, 0.0f, io.DisplaySize.y, std::max(panel_x, 0.0f));
+    if (m_state.show_status)
+      draw_status_line(*m_session, m_state, 0.0f, io.DisplaySize.y, std::max(panel_x, 0.0f));
   }
   end_ui_edit_group(*m_session, m_state);
 }
@@ -249,8 +261,9 @@ void Viewer::save_scene_file() {
     const SceneLoadOptions& loaded = m_options.common.load;
     if (env && (env->intensity != loaded.environment_intensity ||
                 env->rotation != glm::radians(loaded.environment_rotation_degrees)))
-      m_state.info("glTF has no environment: reopen with --env-intensity " + std::to_string(env->intensity) +
-                   " --env-rotation " + std::to_string(glm::degrees(env->rotation)));
+      m_state.info("glTF has no environment: reopen with --env-intensity " +
+                   std::to_string(env->intensity) + " --env-rotation " +
+                   std::to_string(glm::degrees(env->rotation)));
   } catch (const std::exception& e) {
     m_state.error("cannot save " + path.string() + ": " + e.what());
   }
@@ -299,7 +312,8 @@ void Viewer::render_steps() {
 }
 
 void Viewer::update_overlay() {
-  const OverlayKey key{m_state.overlay, m_state.selected_node, m_session->display_version(), m_session.get()};
+  const OverlayKey key{m_state.overlay, m_state.selected_node, m_session->display_version(),
+                       m_session.get()};
   if (key == m_overlay_key) return;
   m_overlay_key = key;
   const Renderer& renderer = m_session->renderer();
@@ -307,17 +321,25 @@ void Viewer::update_overlay() {
   const OverlayGrid grid{s.width, s.height, s.tile_size, renderer.tiles_x()};
   std::vector<uint32_t> overlay;
   switch (m_state.overlay) {
-    case Overlay::Ids: overlay = id_overlay(m_session->instance_ids(), grid); break;
-    case Overlay::Weights: overlay = weight_overlay(renderer.tile_weights(), renderer.tile_flags(), grid); break;
-    case Overlay::Owed: overlay = owed_overlay(renderer.owed_tiles(), grid); break;
-    case Overlay::None: break;
+    case Overlay::Ids:
+      overlay = id_overlay(m_session->instance_ids(), grid);
+      break;
+    case Overlay::Weights:
+      overlay = weight_overlay(renderer.tile_weights(), renderer.tile_flags(), grid);
+      break;
+    case Overlay::Owed:
+      overlay = owed_overlay(renderer.owed_tiles(), grid);
+      break;
+    case Overlay::None:
+      break;
   }
   const Scene& scene = m_session->scene();
   if (m_state.selected_node >= 0) {
     if (overlay.empty()) overlay.assign(size_t(s.width) * s.height, 0u);
     const auto instances = scene.instances();
     for (uint32_t i = 0; i < instances.size(); ++i)
-      if (int(instances[i].node) == m_state.selected_node) outline_instance(overlay, m_session->instance_ids(), i, grid);
+      if (int(instances[i].node) == m_state.selected_node)
+        outline_instance(overlay, m_session->instance_ids(), i, grid);
   }
   m_overlay_on = !overlay.empty();
   if (m_overlay_on) m_display.set_overlay(overlay);
@@ -361,7 +383,9 @@ void Viewer::write_stats(double seconds) const {
   // Written atomically like every other output.
   nlohmann::json edits = nlohmann::json::array();
   for (const EditRecord& r : m_session->edit_records())
-    edits.push_back({{"edit", r.what}, {"latency_seconds", r.latency_seconds}, {"work_at_first_change", r.work_at_first_change}});
+    edits.push_back({{"edit", r.what},
+                     {"latency_seconds", r.latency_seconds},
+                     {"work_at_first_change", r.work_at_first_change}});
   const RenderSettings& s = m_options.common.render;
   const nlohmann::json stats = {{"device", m_ctx.device_name()},
                                 {"width", s.width},
@@ -373,7 +397,8 @@ void Viewer::write_stats(double seconds) const {
                                 {"fps", seconds > 0.0 ? double(m_frames) / seconds : 0.0},
                                 {"steps", m_steps},
                                 {"edits", edits}};
-  write_atomically(m_options.stats_json, [&](const fs::path& temp) { std::ofstream(temp) << stats.dump(2) << "\n"; });
+  write_atomically(m_options.stats_json,
+                   [&](const fs::path& temp) { std::ofstream(temp) << stats.dump(2) << "\n"; });
 }
 
 int Viewer::run() {
@@ -381,13 +406,17 @@ int Viewer::run() {
   Timer frame_timer;
   uint32_t frame_index = 0;
   while (!m_window.should_close() && !m_state.request_quit) {
-    const bool scripted = m_options.exit_after_frames > 0 || m_script_next < m_options.script.size();
+    const bool scripted =
+        m_options.exit_after_frames > 0 || m_script_next < m_options.script.size();
     // Nothing to render and nobody in a hurry: sleep until an event instead of spinning.
-    if (m_session->converged() && !scripted) m_window.wait_events(0.1);
-    else m_window.poll_events();
+    if (m_session->converged() && !scripted)
+      m_window.wait_events(0.1);
+    else
+      m_window.poll_events();
     const VkExtent2D size = m_window.framebuffer_size();
     if (size.width == 0 || size.height == 0) continue;  // minimised
-    if (size.width != m_frame.extent().width || size.height != m_frame.extent().height) resize(size);
+    if (size.width != m_frame.extent().width || size.height != m_frame.extent().height)
+      resize(size);
 
     const std::vector<KeyPress> keys = m_window.take_key_presses();
     m_ui.new_frame(keys);
@@ -420,9 +449,11 @@ int Viewer::run() {
   }
   const double seconds = run_timer.seconds();
   m_swapchain.wait_idle();
-  if (!m_options.screenshot.empty()) save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed());
+  if (!m_options.screenshot.empty())
+    save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed());
   if (!m_options.stats_json.empty()) write_stats(seconds);
-  if (!m_options.save.empty()) save_scene(m_session->scene(), m_options.save);  // a failure: exit code 2
+  if (!m_options.save.empty())
+    save_scene(m_session->scene(), m_options.save);  // a failure: exit code 2
   app::check_validation(m_ctx);
   return kExitOk;
 }

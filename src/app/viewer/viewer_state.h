@@ -35,7 +35,8 @@ struct ViewerState {
   bool request_quit = false;
   bool open_confirmed = false;  // discard unsaved edits when opening
   std::optional<Policy> request_policy;
-  std::optional<std::optional<DisplayRule>> request_display_rule;  // inner none: the policy's default
+  std::optional<std::optional<DisplayRule>>
+      request_display_rule;  // inner none: the policy's default
   std::optional<uint32_t> request_tile_size;
   int tile_size_input = 16;
   std::string preset = "default";
@@ -54,7 +55,7 @@ struct ViewerState {
 
   std::vector<Message> messages;  // newest last; the panel shows the last few
   uint64_t message_count = 0;     // messages ever posted
-  uint64_t messages_shown = 0;    // message_count when the panel last drew (it scrolls to a new one)
+  uint64_t messages_shown = 0;  // message_count when the panel last drew (it scrolls to a new one)
   void info(const std::string& text);
   void error(const std::string& text);  // also printed on stderr as a warning
 };

@@ -59,7 +59,8 @@ void ViewportInput::apply_camera(Session& session, ViewerState& state) {
   const Scene& scene = session.scene();
   const int node = scene.camera_node();  // the session gives every scene a camera node
   if (node < 0) return;
-  const glm::mat4 local = glm::inverse(parent_world(scene, uint32_t(node))) * m_camera.camera_to_world();
+  const glm::mat4 local =
+      glm::inverse(parent_world(scene, uint32_t(node))) * m_camera.camera_to_world();
   try_edit(session, state, CameraEdit{std::nullopt, local});
 }
 
@@ -67,9 +68,11 @@ void ViewportInput::drag_object(Session& session, ViewerState& state, glm::vec2 
   const Scene& scene = session.scene();
   const Camera camera = resolve_camera(scene);
   // World units per rendered pixel at the grabbed point's depth: the point follows the mouse.
-  const float per_pixel = 2.0f * m_depth * std::tan(0.5f * camera.yfov) / float(session.settings().render.height);
-  const glm::vec3 offset =
-      (delta.x * glm::vec3(camera.camera_to_world[0]) - delta.y * glm::vec3(camera.camera_to_world[1])) * per_pixel;
+  const float per_pixel =
+      2.0f * m_depth * std::tan(0.5f * camera.yfov) / float(session.settings().render.height);
+  const glm::vec3 offset = (delta.x * glm::vec3(camera.camera_to_world[0]) -
+                            delta.y * glm::vec3(camera.camera_to_world[1])) *
+                           per_pixel;
   glm::mat4 local = m_start_local;
   local[3] += glm::vec4(to_local_offset(scene, m_node, offset), 0.0f);
   try_edit(session, state, TransformEdit{node_reference(scene, m_node), std::nullopt, local});
@@ -84,8 +87,8 @@ void ViewportInput::key(Session& session, ViewerState& state, const KeyPress& pr
     return;
   }
   if (k == GLFW_KEY_F12 && !press.repeat) state.request_screenshot = true;
-  if (press.repeat && k != GLFW_KEY_LEFT && k != GLFW_KEY_RIGHT && k != GLFW_KEY_UP && k != GLFW_KEY_DOWN &&
-      k != GLFW_KEY_PAGE_UP && k != GLFW_KEY_PAGE_DOWN)
+  if (press.repeat && k != GLFW_KEY_LEFT && k != GLFW_KEY_RIGHT && k != GLFW_KEY_UP &&
+      k != GLFW_KEY_DOWN && k != GLFW_KEY_PAGE_UP && k != GLFW_KEY_PAGE_DOWN)
     return;  // only moves repeat while a key is held
   if (k == GLFW_KEY_TAB) state.show_ui = !state.show_ui;
   const Overlay overlays[] = {Overlay::None, Overlay::Ids, Overlay::Weights, Overlay::Owed};
@@ -95,12 +98,15 @@ void ViewportInput::key(Session& session, ViewerState& state, const KeyPress& pr
   const Scene& scene = session.scene();
   if (state.selected_node < 0 || size_t(state.selected_node) >= scene.nodes.size()) return;
   const uint32_t node = uint32_t(state.selected_node);
-  if (k == GLFW_KEY_H) try_edit(session, state, VisibilityEdit{node_reference(scene, node), !scene.nodes[node].visible});
+  if (k == GLFW_KEY_H)
+    try_edit(session, state,
+             VisibilityEdit{node_reference(scene, node), !scene.nodes[node].visible});
   const struct {
     int key;
     glm::vec3 direction;
-  } moves[] = {{GLFW_KEY_LEFT, {-1, 0, 0}}, {GLFW_KEY_RIGHT, {1, 0, 0}},    {GLFW_KEY_UP, {0, 0, -1}},
-               {GLFW_KEY_DOWN, {0, 0, 1}},  {GLFW_KEY_PAGE_UP, {0, 1, 0}}, {GLFW_KEY_PAGE_DOWN, {0, -1, 0}}};
+  } moves[] = {{GLFW_KEY_LEFT, {-1, 0, 0}},   {GLFW_KEY_RIGHT, {1, 0, 0}},
+               {GLFW_KEY_UP, {0, 0, -1}},     {GLFW_KEY_DOWN, {0, 0, 1}},
+               {GLFW_KEY_PAGE_UP, {0, 1, 0}}, {GLFW_KEY_PAGE_DOWN, {0, -1, 0}}};
   for (const auto& move : moves) {
     if (k != move.key) continue;
     const float step = 0.01f * scene_radius(scene) * (press.shift ? 10.0f : 1.0f);
@@ -116,8 +122,8 @@ void ViewportInput::finish_drag(Session& session) {
   m_drag = Drag::None;
 }
 
-void ViewportInput::update(Session& session, ViewerState& state, const ViewLayout& layout, float pixel_ratio,
-                           const std::vector<KeyPress>& keys) {
+void ViewportInput::update(Session& session, ViewerState& state, const ViewLayout& layout,
+                           float pixel_ratio, const std::vector<KeyPress>& keys) {
   const ImGuiIO& io = ImGui::GetIO();
   const glm::vec2 mouse(io.MousePos.x * pixel_ratio, io.MousePos.y * pixel_ratio);
   // Keys typed into a text field are the field's.
@@ -126,7 +132,8 @@ void ViewportInput::update(Session& session, ViewerState& state, const ViewLayou
   const float view_height = layout.scale * float(layout.render_height);
 
   if (m_drag == Drag::None && !io.WantCaptureMouse) {
-    const bool left = ImGui::IsMouseClicked(ImGuiMouseButton_Left), right = ImGui::IsMouseClicked(ImGuiMouseButton_Right),
+    const bool left = ImGui::IsMouseClicked(ImGuiMouseButton_Left),
+               right = ImGui::IsMouseClicked(ImGuiMouseButton_Right),
                middle = ImGui::IsMouseClicked(ImGuiMouseButton_Middle);
     if (left && !io.KeyAlt) {
       if (const auto pixel = layout.to_render(mouse)) {
@@ -182,7 +189,8 @@ void ViewportInput::update(Session& session, ViewerState& state, const ViewLayou
         apply_camera(session, state);
       }
       break;
-    case Drag::None: break;
+    case Drag::None:
+      break;
   }
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left) && !ImGui::IsMouseDown(ImGuiMouseButton_Right) &&
       !ImGui::IsMouseDown(ImGuiMouseButton_Middle))

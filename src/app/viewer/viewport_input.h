@@ -38,7 +38,7 @@ class ViewportInput {
   Drag m_drag = Drag::None;
   glm::vec2 m_press{0.0f};  // window pixels where the button went down
   glm::vec2 m_last{0.0f};
-  bool m_grouped = false;   // this drag opened an undo group
+  bool m_grouped = false;  // this drag opened an undo group
   // Object moves: the node, its local transform at the press, and the depth of the point grabbed.
   uint32_t m_node = 0;
   glm::mat4 m_start_local{1.0f};

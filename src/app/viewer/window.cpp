@@ -15,14 +15,17 @@ namespace {
 // GLFW reports errors through a callback; keep the last one for the exception's text.
 std::string g_last_error;
 
-void on_glfw_error(int, const char* description) { g_last_error = description ? description : "unknown GLFW error"; }
+void on_glfw_error(int, const char* description) {
+  g_last_error = description ? description : "unknown GLFW error";
+}
 
 }  // namespace
 
 Window::Window(const std::string& title, uint32_t width, uint32_t height) {
   glfwSetErrorCallback(on_glfw_error);
   if (!glfwInit())
-    throw InternalError("cannot open a window (" + g_last_error + "); without a display, run under xvfb-run");
+    throw InternalError("cannot open a window (" + g_last_error +
+                        "); without a display, run under xvfb-run");
   if (!glfwVulkanSupported()) {
     glfwTerminate();
     throw InternalError("the window system offers no Vulkan presentation (GLFW: no Vulkan loader)");
@@ -40,8 +43,8 @@ Window::Window(const std::string& title, uint32_t width, uint32_t height) {
 void Window::on_key(GLFWwindow* window, int key, int, int action, int mods) {
   auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
   if (!self || (action != GLFW_PRESS && action != GLFW_REPEAT)) return;
-  self->m_keys.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0,
-                          action == GLFW_REPEAT});
+  self->m_keys.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0,
+                          (mods & GLFW_MOD_ALT) != 0, action == GLFW_REPEAT});
 }
 
 std::vector<KeyPress> Window::take_key_presses() { return std::exchange(m_keys, {}); }
@@ -54,7 +57,9 @@ Window::~Window() {
 std::vector<std::string> Window::required_instance_extensions() const {
   uint32_t count = 0;
   const char** names = glfwGetRequiredInstanceExtensions(&count);
-  if (!names) throw InternalError("the window system needs Vulkan extensions this loader lacks: " + g_last_error);
+  if (!names)
+    throw InternalError("the window system needs Vulkan extensions this loader lacks: " +
+                        g_last_error);
   return std::vector<std::string>(names, names + count);
 }
 
@@ -80,6 +85,8 @@ float Window::pixel_ratio() const {
 bool Window::should_close() const { return glfwWindowShouldClose(m_window); }
 void Window::poll_events() const { glfwPollEvents(); }
 void Window::wait_events(double seconds) const { glfwWaitEventsTimeout(seconds); }
-void Window::set_title(const std::string& title) const { glfwSetWindowTitle(m_window, title.c_str()); }
+void Window::set_title(const std::string& title) const {
+  glfwSetWindowTitle(m_window, title.c_str());
+}
 
 }  // namespace hipr::viewer
