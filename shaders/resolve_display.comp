@@ -3,8 +3,8 @@
 // Reads:  the tile list entries [listOffset, listOffset + tileCount) (filtered by tile flags;
 //         listOffset kInvalidIndex: tiles 0 .. tileCount - 1 without the list), per-pixel
 //         accumulation (sum, sum of squares, count + owed bit), FrameParams.
-// Writes: the display texels of those tiles' pixels, and kTileShown in their tile flags once a
-//         tile shows its fresh estimate alone.
+// Writes: the display texels of those tiles' pixels; in their tile flags kTileShown once a tile
+//         shows its fresh estimate at weight 1/2 or more, kTileSettled once it shows it alone.
 // Rules (ResolvePush::rule):
 //  - capture (at an edit): what each pixel shows becomes its stale estimate.
 //  - immediate: a pixel shows its fresh mean as soon as it has a sample since the last edit.
@@ -19,6 +19,7 @@
 //    A tile whose pixels all have as many fresh samples as their stale estimate shows f alone
 //    under every rule: f is then at least as good, and this is what makes every schedule end on
 //    the unbiased image. A tile that shows f alone stays so until the next edit (no flicker).
+//    (Before the first edit there is no stale estimate: the scheduler resolves with immediate.)
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -62,7 +63,7 @@ void capture(uvec2 origin, uint tilePixels) {
 
 // The fresh estimate's weight for the tile (lane 0 decides after the reduction).
 float tile_alpha(uint tile, uint flags) {
-  if (u_push.rule == kDisplayImmediate || (flags & kTileShown) != 0u) return 1.0;
+  if (u_push.rule == kDisplayImmediate || (flags & kTileSettled) != 0u) return 1.0;
   if (s_unrendered[0] != 0u) return 0.0;
   if (s_short[0] == 0u) return 1.0;
   if (s_single[0] != 0u) return 0.0;
@@ -128,8 +129,9 @@ void main() {
   }
   if (lane == 0u) {
     const float alpha = tile_alpha(tile, flags);
-    // Immediate shows pixel by pixel; the tile counts as shown once all its pixels are fresh.
-    if (alpha == 1.0 && s_unrendered[0] == 0u) b_tile_flags[tile] = flags | kTileShown;
+    // Immediate shows pixel by pixel: the tile counts once all its pixels are fresh.
+    if (s_unrendered[0] == 0u && alpha >= 0.5)
+      b_tile_flags[tile] = flags | kTileShown | (alpha == 1.0 ? kTileSettled : 0u);
     s_alpha = alpha;
   }
   barrier();

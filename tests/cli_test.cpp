@@ -60,7 +60,9 @@ std::ostream& operator<<(std::ostream& out, const BadCommand& command) { return 
 
 std::string expand(std::string arguments, const fs::path& out_dir) {
   const std::pair<std::string, std::string> substitutions[] = {
-      {"@", out_dir.string()}, {"$cornell", quoted(test::asset("cornell_box.gltf"))}};
+      {"@", out_dir.string()},
+      {"$cornell", quoted(test::asset("cornell_box.gltf"))},
+      {"$edits", quoted(test::asset("cornell_box.edits.json"))}};
   for (const auto& [from, to] : substitutions)
     for (size_t at; (at = arguments.find(from)) != std::string::npos;) arguments.replace(at, from.size(), to);
   return arguments;
@@ -90,7 +92,15 @@ INSTANTIATE_TEST_SUITE_P(
                     BadCommand{"missing_scene", "render @/missing.gltf -o @/out.exr --spp 1"},
                     BadCommand{"scene_not_gltf", "render @/ -o @/out.exr --spp 1"},
                     BadCommand{"invalid_scene", "render @/invalid.gltf -o @/out.png --width 8 --height 8 --spp 1"},
-                    BadCommand{"invalid_scene_info", "info @/invalid.gltf"}),
+                    BadCommand{"invalid_scene_info", "info @/invalid.gltf"},
+                    BadCommand{"bench_unknown_policy", "bench $cornell $edits -o @/b --policies hipr,zigzag"},
+                    BadCommand{"bench_no_policy", "bench $cornell $edits -o @/b --policies ,"},
+                    BadCommand{"bench_bad_display", "bench $cornell $edits -o @/b --display sometimes"},
+                    BadCommand{"bench_ref_spp_zero", "bench $cornell $edits -o @/b --ref-spp 0"},
+                    BadCommand{"bench_first_visit_over_spp", "bench $cornell $edits -o @/b --spp 2 --first-visit-spp 3"},
+                    BadCommand{"bench_edits_not_json", "bench $cornell $cornell -o @/b"},
+                    BadCommand{"bench_invalid_scene", "bench @/invalid.gltf $edits -o @/b"},
+                    BadCommand{"replay_oracle", "replay $cornell $edits -o @/b --policy oracle"}),
     bad_command_name);
 
 TEST(Cli, MissingOutputFolderIsABadInput) {
@@ -281,6 +291,59 @@ TEST(Replay, HiprParametersAreValidated) {
     EXPECT_EQ(result.exit_code, kExitBadInput) << bad << "\n" << result.output;
     EXPECT_FALSE(fs::exists(dir / "bad")) << bad;
   }
+}
+
+// `hipr bench`: the three outputs, every policy ending on the same image, `full` showing the stale
+// image for exactly its first pass, references cached, and results that do not depend on the run.
+TEST(Bench, WritesCurvesSummaryAndPlot) {
+  const fs::path dir = test::temp_dir("bench");
+  const std::string command = "bench " + quoted(test::asset("cornell_box.gltf")) + " " +
+                              quoted(test::asset("cornell_box.edits.json")) +
+                              " --width 24 --height 24 --tile 8 --spp 2 --ref-spp 8 --max-depth 3 -q --ref-cache " +
+                              quoted(dir / "cache") + " -o ";
+  const test::CommandResult result = test::run_hipr(command + quoted(dir / "a"));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  for (const char* file : {"curves.csv", "summary.json", "plot.png", "edit1_reference.png", "edit2_hipr_work1.png"})
+    EXPECT_TRUE(fs::exists(dir / "a" / file)) << file;
+  EXPECT_EQ(files_in(dir / "cache").size(), 2u) << "one reference per edited scene state";
+
+  std::ifstream summary_file(dir / "a" / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(summary_file);
+  ASSERT_EQ(summary.at("edits").size(), 2u);
+  for (const auto& edit : summary.at("edits")) {
+    const auto& policies = edit.at("policies");
+    ASSERT_EQ(policies.size(), 6u);
+    const double final_relmse = policies.at("hipr").at("final_relmse");
+    for (const auto& [name, p] : policies.items()) {
+      for (const char* key : {"auc_relmse", "auc_flip", "first_feedback_work", "changed_tiles_shown_work", "overhead_share"})
+        EXPECT_TRUE(p.contains(key)) << name << " " << key;
+      EXPECT_TRUE(p.at("converged").get<bool>()) << name;
+      EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse) << name << ": every policy ends on the same image";
+      EXPECT_EQ(p.at("nonfinite_samples").get<int>(), 0) << name;
+    }
+    const auto& full = policies.at("full");
+    EXPECT_DOUBLE_EQ(full.at("auc_relmse").get<double>(), full.at("stale_relmse").get<double>())
+        << "full shows the stale image until its first pass ends, at one work unit";
+    EXPECT_DOUBLE_EQ(full.at("first_feedback_work").get<double>(), 1.0);
+  }
+  for (const char* key : {"hipr_vs_full_auc_relmse", "hipr_vs_oracle_auc_relmse", "hipr_vs_full_auc_flip",
+                          "hipr_vs_oracle_auc_flip"})
+    EXPECT_GT(summary.at("ratios").at(key).get<double>(), 0.0) << key;
+
+  std::ifstream curves_file(dir / "a" / "curves.csv");
+  std::string header;
+  std::getline(curves_file, header);
+  EXPECT_EQ(header, "edit,policy,step,work,wall_ms,relmse,flip");
+
+  // Again, with the references from the cache: the same errors (wall times aside).
+  ASSERT_EQ(test::run_hipr(command + quoted(dir / "b")).exit_code, kExitOk);
+  EXPECT_EQ(files_in(dir / "cache").size(), 2u);
+  std::ifstream again_file(dir / "b" / "summary.json");
+  const nlohmann::json again = nlohmann::json::parse(again_file);
+  for (size_t e = 0; e < 2; ++e)
+    for (const auto& [name, p] : summary["edits"][e]["policies"].items())
+      for (const char* key : {"auc_relmse", "auc_flip", "auc_relmse_16", "final_relmse"})
+        EXPECT_EQ(p.at(key), again["edits"][e]["policies"][name].at(key)) << name << " " << key;
 }
 
 }  // namespace

@@ -69,7 +69,8 @@ TEST_P(StatisticalRules, AnUnchangedImageKeepsItsStaleRadianceUntilTheFreshOneCa
   EXPECT_LT(relmse(box.scheduler.displayed_image(), box.stale), 0.1 * fresh_error)
       << "four samples must not replace sixteen when nothing changed";
   for (int round = 0; round < 12; ++round) box.scheduler.step();
-  EXPECT_EQ(box.scheduler.displayed_image().rgb, box.stale.rgb) << "caught up: the very same samples";
+  EXPECT_EQ(box.scheduler.displayed_image().rgb, box.stale.rgb)
+      << "caught up: the very same samples";
 }
 
 // The converged image of `scene` (no noise to speak of next to the edit's change).
@@ -103,13 +104,15 @@ TEST_P(StatisticalRules, AMajorChangeIsShownAtOnce) {
         to_stale += std::abs(shown.rgb[i] - box.stale.rgb[i]);
       }
   EXPECT_LT(to_fresh, 0.1 * to_stale) << "tile " << tile;
+  EXPECT_NE(box.renderer.tile_flags()[tile] & abi::kTileShown, 0u);
   if (GetParam() == DisplayRule::Switch) {
     EXPECT_LT(to_fresh, 1e-4 * to_stale) << "the fresh means, as the GPU divides them";
-    EXPECT_NE(box.renderer.tile_flags()[tile] & abi::kTileShown, 0u);
+    EXPECT_NE(box.renderer.tile_flags()[tile] & abi::kTileSettled, 0u);
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Rules, StatisticalRules, ::testing::Values(DisplayRule::Switch, DisplayRule::Blend),
+INSTANTIATE_TEST_SUITE_P(Rules, StatisticalRules,
+                         ::testing::Values(DisplayRule::Switch, DisplayRule::Blend),
                          [](const auto& case_info) { return display_rule_name(case_info.param); });
 
 TEST(DisplayRules, ImmediateShowsEveryReRenderedPixel) {
@@ -117,8 +120,10 @@ TEST(DisplayRules, ImmediateShowsEveryReRenderedPixel) {
   box.edit(kNoOpEdit);
   box.scheduler.step();
   const ImageRGB shown = box.scheduler.displayed_image(), fresh = box.renderer.image();
-  for (size_t i = 0; i < shown.rgb.size(); ++i) ASSERT_NEAR(shown.rgb[i], fresh.rgb[i], 1e-6f * fresh.rgb[i]) << i;
-  for (uint32_t flags : box.renderer.tile_flags()) EXPECT_NE(flags & abi::kTileShown, 0u);
+  for (size_t i = 0; i < shown.rgb.size(); ++i)
+    ASSERT_NEAR(shown.rgb[i], fresh.rgb[i], 1e-6f * fresh.rgb[i]) << i;
+  for (uint32_t flags : box.renderer.tile_flags())
+    EXPECT_EQ(flags & (abi::kTileShown | abi::kTileSettled), abi::kTileShown | abi::kTileSettled);
 }
 
 TEST(DisplayRules, TheFullPolicyShowsNothingNewUntilItsPassCompletes) {

@@ -1,13 +1,16 @@
 // The benchmark's summaries of an error curve: the displayed image is a step function of work.
+#include "bench/error_curve.h"
+
 #include <gtest/gtest.h>
 
-#include "bench/error_curve.h"
 #include "core/error.h"
 
 namespace hipr::bench {
 namespace {
 
-CurvePoint point(double work, double relmse, double flip = 0.0) { return {0, work, 0.0, relmse, flip}; }
+CurvePoint point(double work, double relmse, double flip = 0.0) {
+  return {0, work, 0.0, relmse, flip};
+}
 
 TEST(ErrorAuc, IsTheMeanOfAStepFunctionOverTheHorizon) {
   // 0.4 on [0, 0.25), 0.2 on [0.25, 0.75), 0.1 from 0.75 on.
@@ -16,7 +19,8 @@ TEST(ErrorAuc, IsTheMeanOfAStepFunctionOverTheHorizon) {
   EXPECT_DOUBLE_EQ(error_auc(curve, Metric::Flip, 1.0), 1.0 * 0.25 + 0.5 * 0.5 + 0.25 * 0.25);
   EXPECT_DOUBLE_EQ(error_auc(curve, Metric::RelMse, 0.5), (0.4 * 0.25 + 0.2 * 0.25) / 0.5);
   // Past the last point its error holds.
-  EXPECT_DOUBLE_EQ(error_auc(curve, Metric::RelMse, 4.0), (0.4 * 0.25 + 0.2 * 0.5 + 0.1 * 3.25) / 4.0);
+  EXPECT_DOUBLE_EQ(error_auc(curve, Metric::RelMse, 4.0),
+                   (0.4 * 0.25 + 0.2 * 0.5 + 0.1 * 3.25) / 4.0);
 }
 
 TEST(ErrorAuc, AStaleImageUntilTheHorizonScoresItsOwnError) {
@@ -28,7 +32,8 @@ TEST(ErrorAuc, AStaleImageUntilTheHorizonScoresItsOwnError) {
 TEST(ErrorAuc, RefusesCurvesThatDoNotStartAtTheEditOrGoBack) {
   EXPECT_THROW(error_auc({}, Metric::RelMse, 1.0), InternalError);
   EXPECT_THROW(error_auc({point(0.1, 1.0)}, Metric::RelMse, 1.0), InternalError);
-  EXPECT_THROW(error_auc({point(0.0, 1.0), point(0.5, 1.0), point(0.25, 1.0)}, Metric::RelMse, 1.0), InternalError);
+  EXPECT_THROW(error_auc({point(0.0, 1.0), point(0.5, 1.0), point(0.25, 1.0)}, Metric::RelMse, 1.0),
+               InternalError);
   EXPECT_THROW(error_auc({point(0.0, 1.0)}, Metric::RelMse, 0.0), InternalError);
 }
 

@@ -67,7 +67,9 @@ class Scheduler {
   double overhead_seconds() const { return m_overhead_seconds; }
   Policy policy() const { return m_policy; }
   // HiPR: stage 2 of the last edit still has active tiles to render (its weights are partial).
-  bool in_stage2() const { return m_policy == Policy::Hipr && m_edited && m_stage2_cursor < m_active_tiles; }
+  bool in_stage2() const {
+    return m_policy == Policy::Hipr && m_edited && m_stage2_cursor < m_active_tiles;
+  }
 
  private:
   // How the tiles a step renders are shown (resolved in the step's own submission); none for
@@ -83,7 +85,8 @@ class Scheduler {
   uint32_t m_cursor = 0;       // next schedule entry
   bool m_edited = false;       // an edit happened: the display rule applies
   bool m_first_round = false;  // still in the first pass over the schedule since the edit
-  uint32_t m_active_tiles = 0;   // HiPR: |A| of the last edit; schedule entries [0, |A|) are stage 2's
+  uint32_t m_active_tiles =
+      0;  // HiPR: |A| of the last edit; schedule entries [0, |A|) are stage 2's
   uint32_t m_stage2_cursor = 0;  // next stage-2 entry
   double m_overhead_seconds = 0.0;
   std::optional<ImageRGB> m_reference;

@@ -62,7 +62,8 @@ HIPR_CONST uint kPixelOwed = 0x80000000u;
 HIPR_CONST uint kPixelCountMask = 0x7fffffffu;
 HIPR_CONST uint kTileActive = 1u;      // an element of E is visible in the tile (stage 1)
 HIPR_CONST uint kTileDiscovered = 2u;  // reached by a secondary vertex or occlusion (stage 2)
-HIPR_CONST uint kTileShown = 4u;       // the display shows this tile's estimate since the last edit
+HIPR_CONST uint kTileShown = 4u;       // since the last edit, the display has shown this tile's fresh estimate (weight >= 1/2)
+HIPR_CONST uint kTileSettled = 8u;     // the display shows the fresh estimate alone, until the next edit
 HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
 HIPR_CONST uint kSortBlock = 256u;     // keys per workgroup in the radix sort
 HIPR_CONST uint kSortRadix = 256u;     // 8-bit digits

@@ -26,7 +26,8 @@ std::string python_for_plots() {
 }
 
 std::string auc_key(const char* metric, double horizon) {
-  return horizon == 1.0 ? std::string("auc_") + metric : "auc_" + std::string(metric) + "_" + std::to_string(int(horizon));
+  return horizon == 1.0 ? std::string("auc_") + metric
+                        : "auc_" + std::string(metric) + "_" + std::to_string(int(horizon));
 }
 
 nlohmann::json policy_summary(const bench::PolicyRun& run) {
@@ -35,7 +36,9 @@ nlohmann::json policy_summary(const bench::PolicyRun& run) {
     j[auc_key("relmse", h)] = bench::error_auc(run.curve, bench::Metric::RelMse, h);
     j[auc_key("flip", h)] = bench::error_auc(run.curve, bench::Metric::Flip, h);
   }
-  const auto or_null = [](double v) { return v < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(v); };
+  const auto or_null = [](double v) {
+    return v < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(v);
+  };
   j["first_feedback_work"] = or_null(run.first_feedback_work);
   j["first_feedback_ms"] = or_null(run.first_feedback_ms);
   j["changed_tiles_shown_work"] = or_null(run.changed_tiles_shown_work);
@@ -54,7 +57,8 @@ nlohmann::json policy_summary(const bench::PolicyRun& run) {
 }
 
 // Geometric mean over edits of a / b for one summary key; null when a policy is missing.
-nlohmann::json ratio(const nlohmann::json& edits, const std::string& a, const std::string& b, const std::string& key) {
+nlohmann::json ratio(const nlohmann::json& edits, const std::string& a, const std::string& b,
+                     const std::string& key) {
   double log_sum = 0.0;
   int count = 0;
   for (const auto& edit : edits) {
@@ -78,7 +82,8 @@ void write_text(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
-BenchEdit& BenchReport::add_edit(const std::string& name, ImageRGB reference, size_t changed_tiles, uint32_t tiles) {
+BenchEdit& BenchReport::add_edit(const std::string& name, ImageRGB reference, size_t changed_tiles,
+                                 uint32_t tiles) {
   m_edits.push_back({name, std::move(reference), changed_tiles, tiles, {}});
   return m_edits.back();
 }
@@ -88,14 +93,19 @@ nlohmann::json BenchReport::summary() const {
   for (const BenchEdit& edit : m_edits) {
     nlohmann::json policies = nlohmann::json::object();
     for (const auto& [name, run] : edit.runs) policies[name] = policy_summary(run);
-    edits.push_back({{"name", edit.name}, {"changed_tiles", edit.changed_tiles}, {"tiles", edit.tiles}, {"policies", policies}});
+    edits.push_back({{"name", edit.name},
+                     {"changed_tiles", edit.changed_tiles},
+                     {"tiles", edit.tiles},
+                     {"policies", policies}});
   }
   nlohmann::json ratios = nlohmann::json::object();
   for (const char* metric : {"relmse", "flip"})
     for (const char* other : {"full", "oracle"}) {
-      ratios[std::string("hipr_vs_") + other + "_auc_" + metric] = ratio(edits, "hipr", other, auc_key(metric, 1.0));
+      ratios[std::string("hipr_vs_") + other + "_auc_" + metric] =
+          ratio(edits, "hipr", other, auc_key(metric, 1.0));
       for (double h : {4.0, 16.0})
-        ratios[std::string("hipr_vs_") + other + "_" + auc_key(metric, h)] = ratio(edits, "hipr", other, auc_key(metric, h));
+        ratios[std::string("hipr_vs_") + other + "_" + auc_key(metric, h)] =
+            ratio(edits, "hipr", other, auc_key(metric, h));
     }
   return {{"scene", m_scene}, {"settings", m_settings}, {"edits", edits}, {"ratios", ratios}};
 }
@@ -106,8 +116,8 @@ void BenchReport::write_curves(const fs::path& path) const {
   for (size_t e = 0; e < m_edits.size(); ++e)
     for (const auto& [name, run] : m_edits[e].runs)
       for (const bench::CurvePoint& p : run.curve) {
-        std::snprintf(line, sizeof line, "%zu,%s,%u,%.6f,%.3f,%.8g,%.8g\n", e + 1, name.c_str(), p.step, p.work, p.wall_ms,
-                      p.relmse, p.flip);
+        std::snprintf(line, sizeof line, "%zu,%s,%u,%.6f,%.3f,%.8g,%.8g\n", e + 1, name.c_str(),
+                      p.step, p.work, p.wall_ms, p.relmse, p.flip);
         csv += line;
       }
   write_text(path, csv);
@@ -132,13 +142,17 @@ void BenchReport::write() const {
   write_images();
   const fs::path plot = m_folder / "plot.png";
   write_atomically(plot, [&](const fs::path& temp) {
-    const ProcessResult result = run_process({python_for_plots(), "-", (m_folder / "curves.csv").string(),
-                                              (m_folder / "summary.json").string(), temp.string()},
-                                             plot_bench_script());
+    const ProcessResult result =
+        run_process({python_for_plots(), "-", (m_folder / "curves.csv").string(),
+                     (m_folder / "summary.json").string(), temp.string()},
+                    plot_bench_script());
     if (result.exit_code != 0) {
-      std::string why = result.output.empty() ? "exit code " + std::to_string(result.exit_code) : result.output;
-      if (const size_t end = why.find_last_not_of("\n"); end != std::string::npos) why.resize(end + 1);
-      if (const size_t last = why.rfind('\n'); last != std::string::npos) why = why.substr(last + 1);
+      std::string why =
+          result.output.empty() ? "exit code " + std::to_string(result.exit_code) : result.output;
+      if (const size_t end = why.find_last_not_of("\n"); end != std::string::npos)
+        why.resize(end + 1);
+      if (const size_t last = why.rfind('\n'); last != std::string::npos)
+        why = why.substr(last + 1);
       throw InternalError("plotting failed (tools/plot_bench.py needs python3-matplotlib): " + why);
     }
   });

@@ -1,8 +1,7 @@
 #pragma once
 // The outputs of `hipr bench`: curves.csv, summary.json, plot.png and per-edit images.
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -17,7 +16,9 @@ struct BenchEdit {
   uint32_t tiles = 0;
   std::vector<std::pair<std::string, bench::PolicyRun>> runs;  // in the order run
 
-  void add_run(const std::string& policy, bench::PolicyRun run) { runs.emplace_back(policy, std::move(run)); }
+  void add_run(const std::string& policy, bench::PolicyRun run) {
+    runs.emplace_back(policy, std::move(run));
+  }
 };
 
 class BenchReport {
@@ -25,7 +26,8 @@ class BenchReport {
   // `settings`: what the runs were made with, recorded in summary.json.
   BenchReport(std::string scene, nlohmann::json settings, std::filesystem::path folder)
       : m_scene(std::move(scene)), m_settings(std::move(settings)), m_folder(std::move(folder)) {}
-  BenchEdit& add_edit(const std::string& name, ImageRGB reference, size_t changed_tiles, uint32_t tiles);
+  BenchEdit& add_edit(const std::string& name, ImageRGB reference, size_t changed_tiles,
+                      uint32_t tiles);
   // Writes everything (each file atomically). A missing python3/matplotlib only skips plot.png,
   // with a warning.
   void write() const;

@@ -3,10 +3,9 @@
 // pre-edit state at equal work per step, with the error of the displayed image after each step.
 // Writes DIR/curves.csv, DIR/summary.json, DIR/plot.png (DESIGN.md "Measuring run time against
 // error") and, per edit, the reference and what each policy shows after 0.25 and 1 work units.
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "app/bench_report.h"
@@ -39,8 +38,9 @@ struct BenchOptions {
   uint32_t steps = 0;           // per edit and policy; 0 = until converged
   uint32_t tiles_per_step = 0;  // 0 = a sixteenth of the frame
   uint32_t visit_spp = 1;
-  uint32_t first_visit_spp = 4;
-  std::string display;          // hipr and oracle: blend (default), switch or immediate
+  uint32_t first_visit_spp =
+      0;                // 0 = 2 (measured best with blend on the Cornell edits), at most --spp
+  std::string display;  // hipr and oracle: blend (default), switch or immediate
   fs::path ref_cache;
   bool no_ref_cache = false;
 };
@@ -56,14 +56,15 @@ std::vector<std::string> edit_texts(const fs::path& path) {
 
 void converge(Renderer& renderer, uint32_t spp) {
   renderer.reset();
-  for (uint32_t done = 0; done < spp; done += 16) renderer.add_samples_full_frame(std::min(16u, spp - done));
+  for (uint32_t done = 0; done < spp; done += 16)
+    renderer.add_samples_full_frame(std::min(16u, spp - done));
 }
 
 // Stage 1's active set for this edit (the tiles where a changed element is visible now or
 // before). Running one HiPR step also compiles every kernel the timed runs use, so no run pays
 // for JIT compilation.
-std::vector<uint32_t> changed_tiles_and_warm_up(Renderer& renderer, const RenderSnapshot& start, const Scene& after,
-                                                const ChangeSet& changes) {
+std::vector<uint32_t> changed_tiles_and_warm_up(Renderer& renderer, const RenderSnapshot& start,
+                                                const Scene& after, const ChangeSet& changes) {
   renderer.restore(start);
   Scheduler probe(renderer, Policy::Hipr, 1);
   probe.on_edit(after, changes);
@@ -82,12 +83,16 @@ int run_bench(BenchOptions& o) {
   std::vector<Policy> policies;
   for (const std::string& name : o.policies) policies.push_back(parse_policy(name));
   if (policies.empty()) throw InputError("--policies names no policy");
-  if (o.ref_spp < 1 || o.ref_spp > (1u << 20)) throw InputError("--ref-spp must be between 1 and 1048576");
-  if (o.visit_spp < 1 || o.visit_spp > o.common.spp) throw InputError("--visit-spp must be between 1 and --spp");
-  if (o.first_visit_spp < 1 || o.first_visit_spp > o.common.spp)
+  if (o.ref_spp < 1 || o.ref_spp > (1u << 20))
+    throw InputError("--ref-spp must be between 1 and 1048576");
+  if (o.visit_spp < 1 || o.visit_spp > o.common.spp)
+    throw InputError("--visit-spp must be between 1 and --spp");
+  if (o.first_visit_spp > o.common.spp)
     throw InputError("--first-visit-spp must be between 1 and --spp");
+  if (o.first_visit_spp == 0) o.first_visit_spp = std::min(2u, o.common.spp);
   // hipr and the oracle share a display rule: the comparison is of orders, not of displays.
-  const DisplayRule ordered_display = o.display.empty() ? default_display_rule(Policy::Hipr) : parse_display_rule(o.display);
+  const DisplayRule ordered_display =
+      o.display.empty() ? default_display_rule(Policy::Hipr) : parse_display_rule(o.display);
 
   Scene scene = load_scene(o.common.scene, o.common.load);
   const std::vector<Edit> edits = load_edit_script(o.edits);
@@ -99,14 +104,18 @@ int run_bench(BenchOptions& o) {
   const std::vector<std::string> texts = edit_texts(o.edits);
   std::error_code ec;
   fs::create_directories(o.output, ec);
-  if (!fs::is_directory(o.output)) throw InputError("cannot create output folder " + o.output.string());
-  const fs::path cache = o.no_ref_cache ? fs::path() : o.ref_cache.empty() ? bench::default_reference_cache() : o.ref_cache;
+  if (!fs::is_directory(o.output))
+    throw InputError("cannot create output folder " + o.output.string());
+  const fs::path cache = o.no_ref_cache        ? fs::path()
+                         : o.ref_cache.empty() ? bench::default_reference_cache()
+                                               : o.ref_cache;
 
   const vk::Context ctx(context_options(o.common));
   const RenderSettings& settings = o.common.render;
   Renderer renderer(ctx, scene, settings);
   bench::PolicyRunOptions run_options;
-  run_options.tiles_per_step = o.tiles_per_step ? o.tiles_per_step : std::max(1u, (renderer.tile_count() + 15) / 16);
+  run_options.tiles_per_step =
+      o.tiles_per_step ? o.tiles_per_step : std::max(1u, (renderer.tile_count() + 15) / 16);
   run_options.visit_spp = o.visit_spp;
   run_options.first_visit_spp = o.first_visit_spp;
   run_options.target_spp = o.common.spp;
@@ -132,27 +141,35 @@ int run_bench(BenchOptions& o) {
     const ChangeSet changes = diff_scenes(before, scene);
     const ChangeSet undo = diff_scenes(scene, before);
     const std::string name = describe(edits[e]);
-    log::info("edit " + std::to_string(e + 1) + " (" + name + "): reference at " + std::to_string(o.ref_spp) + " spp");
+    log::info("edit " + std::to_string(e + 1) + " (" + name + "): reference at " +
+              std::to_string(o.ref_spp) + " spp");
     const bench::Reference reference = bench::converged_reference(
-        ctx, scene, bench::reference_key(scene, state, settings, o.ref_spp), settings, o.ref_spp, cache);
-    log::info(reference.from_cache ? "  reference read from the cache"
-                                   : "  reference rendered in " + std::to_string(reference.render_seconds) + " s");
+        ctx, scene, bench::reference_key(scene, state, settings, o.ref_spp), settings, o.ref_spp,
+        cache);
+    log::info(reference.from_cache
+                  ? "  reference read from the cache"
+                  : "  reference rendered in " + std::to_string(reference.render_seconds) + " s");
 
     converge(renderer, o.common.spp);  // the renderer holds `before`
     renderer.resolve_display_all(DisplayRule::Immediate);
     const RenderSnapshot start = renderer.snapshot();
-    const std::vector<uint32_t> changed = changed_tiles_and_warm_up(renderer, start, scene, changes);
-    BenchEdit& edit_report = report.add_edit(name, reference.image, changed.size(), renderer.tile_count());
+    const std::vector<uint32_t> changed =
+        changed_tiles_and_warm_up(renderer, start, scene, changes);
+    BenchEdit& edit_report =
+        report.add_edit(name, reference.image, changed.size(), renderer.tile_count());
     for (Policy policy : policies) {
       renderer.update_scene(before, undo);
       run_options.policy = policy;
-      run_options.display =
-          policy == Policy::Hipr || policy == Policy::Oracle ? ordered_display : default_display_rule(policy);
-      const bench::PolicyRun run = bench::run_policy(renderer, scene, changes, start, reference.image, changed, run_options);
+      run_options.display = policy == Policy::Hipr || policy == Policy::Oracle
+                                ? ordered_display
+                                : default_display_rule(policy);
+      const bench::PolicyRun run =
+          bench::run_policy(renderer, scene, changes, start, reference.image, changed, run_options);
       edit_report.add_run(policy_name(policy), run);
-      log::info("  " + policy_name(policy) + ": relMSE AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::RelMse, 1.0)) +
-                ", FLIP AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::Flip, 1.0)) + ", " +
-                std::to_string(run.wall_seconds) + " s");
+      log::info("  " + policy_name(policy) + ": relMSE AUC(1) " +
+                std::to_string(error_auc(run.curve, bench::Metric::RelMse, 1.0)) +
+                ", FLIP AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::Flip, 1.0)) +
+                ", " + std::to_string(run.wall_seconds) + " s");
     }
   }
   check_validation(ctx);
@@ -164,24 +181,33 @@ int run_bench(BenchOptions& o) {
 
 Command add_bench_command(CLI::App& app) {
   auto options = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench", "Measure error against time and work after edits, for each re-render policy");
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "Measure error against time and work after edits, for each re-render policy");
   cmd->add_option("scene", options->common.scene, "Scene file (.gltf or .glb)")->required();
   cmd->add_option("edits", options->edits, "Edit script (.json)")->required();
   cmd->add_option("-o,--output", options->output, "Output folder")->required();
-  cmd->add_option("--policies", options->policies, "Policies to compare: hipr, full, scanline, spiral, random, oracle")
+  cmd->add_option("--policies", options->policies,
+                  "Policies to compare: hipr, full, scanline, spiral, random, oracle")
       ->delimiter(',')
       ->capture_default_str();
-  cmd->add_option("--ref-spp", options->ref_spp, "Samples per pixel of the converged references")->capture_default_str();
-  cmd->add_option("--steps", options->steps, "Scheduling steps per edit and policy (default: until converged)");
-  cmd->add_option("--tiles-per-step", options->tiles_per_step, "Tiles rendered per step (default: 1/16 of the frame)");
-  cmd->add_option("--visit-spp", options->visit_spp, "Samples per pixel a tile gets per visit")->capture_default_str();
-  cmd->add_option("--first-visit-spp", options->first_visit_spp,
-                  "Samples per pixel of a tile's first visit after an edit (all policies but full)")
+  cmd->add_option("--ref-spp", options->ref_spp, "Samples per pixel of the converged references")
       ->capture_default_str();
-  cmd->add_option("--display", options->display,
-                  "How hipr and oracle show re-rendered tiles: blend (default), switch or immediate");
-  cmd->add_option("--ref-cache", options->ref_cache, "Folder of cached references (default: beside the shader cache)");
-  cmd->add_flag("--no-ref-cache", options->no_ref_cache, "Render references without reading or writing the cache");
+  cmd->add_option("--steps", options->steps,
+                  "Scheduling steps per edit and policy (default: until converged)");
+  cmd->add_option("--tiles-per-step", options->tiles_per_step,
+                  "Tiles rendered per step (default: 1/16 of the frame)");
+  cmd->add_option("--visit-spp", options->visit_spp, "Samples per pixel a tile gets per visit")
+      ->capture_default_str();
+  cmd->add_option(
+      "--first-visit-spp", options->first_visit_spp,
+      "Samples per pixel of a tile's first visit after an edit, all policies but full (default 2)");
+  cmd->add_option(
+      "--display", options->display,
+      "How hipr and oracle show re-rendered tiles: blend (default), switch or immediate");
+  cmd->add_option("--ref-cache", options->ref_cache,
+                  "Folder of cached references (default: beside the shader cache)");
+  cmd->add_flag("--no-ref-cache", options->no_ref_cache,
+                "Render references without reading or writing the cache");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_bench(*options); }};
 }

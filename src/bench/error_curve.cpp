@@ -6,10 +6,13 @@
 
 namespace hipr::bench {
 
-double metric_of(const CurvePoint& point, Metric metric) { return metric == Metric::RelMse ? point.relmse : point.flip; }
+double metric_of(const CurvePoint& point, Metric metric) {
+  return metric == Metric::RelMse ? point.relmse : point.flip;
+}
 
 double error_auc(const ErrorCurve& curve, Metric metric, double horizon) {
-  if (curve.empty() || curve.front().work != 0.0) throw InternalError("an error curve starts at the edit (work 0)");
+  if (curve.empty() || curve.front().work != 0.0)
+    throw InternalError("an error curve starts at the edit (work 0)");
   if (!(horizon > 0.0)) throw InternalError("an error AUC needs a positive horizon");
   double area = 0.0;
   for (size_t i = 0; i < curve.size(); ++i) {

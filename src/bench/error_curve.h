@@ -7,9 +7,9 @@
 namespace hipr::bench {
 
 struct CurvePoint {
-  uint32_t step = 0;    // 0: the moment of the edit (the stale image)
-  double work = 0.0;    // full-frame 1-spp passes since the edit
-  double wall_ms = 0.0; // scheduling and rendering time since the edit (evaluation excluded)
+  uint32_t step = 0;     // 0: the moment of the edit (the stale image)
+  double work = 0.0;     // full-frame 1-spp passes since the edit
+  double wall_ms = 0.0;  // scheduling and rendering time since the edit (evaluation excluded)
   double relmse = 0.0;
   double flip = 0.0;
 };

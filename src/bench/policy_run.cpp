@@ -13,8 +13,9 @@ bool all_shown(const std::vector<uint32_t>& flags, const std::vector<uint32_t>& 
 
 }  // namespace
 
-PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes, const RenderSnapshot& start,
-                     const ImageRGB& reference, const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options) {
+PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes,
+                     const RenderSnapshot& start, const ImageRGB& reference,
+                     const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options) {
   renderer.restore(start);
   Scheduler scheduler(renderer, options.policy, options.tiles_per_step, options.visit_spp);
   scheduler.set_display_rule(options.display);
@@ -26,8 +27,10 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
   const auto evaluate = [&](uint32_t step, double wall_seconds) {
     ImageRGB shown = scheduler.displayed_image();
     const double work = step == 0 ? 0.0 : scheduler.work_since_edit();
-    run.curve.push_back({step, work, wall_seconds * 1e3, relmse(shown, reference), flip_mean(shown, reference, options.flip)});
-    while (run.captures.size() < options.capture_work.size() && work >= options.capture_work[run.captures.size()])
+    run.curve.push_back({step, work, wall_seconds * 1e3, relmse(shown, reference),
+                         flip_mean(shown, reference, options.flip)});
+    while (run.captures.size() < options.capture_work.size() &&
+           work >= options.capture_work[run.captures.size()])
       run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
     return shown;
   };
@@ -48,8 +51,9 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
     const bool tracking = run.first_feedback_work < 0.0 || run.changed_tiles_shown_work < 0.0;
     const bool dense = work <= options.dense_until;
     if (!dense && !tracking && !run.converged && step % options.sparse_every != 0) continue;
-    const ImageRGB shown = dense || run.converged || step % options.sparse_every == 0 ? evaluate(step, wall)
-                                                                                     : scheduler.displayed_image();
+    const ImageRGB shown = dense || run.converged || step % options.sparse_every == 0
+                               ? evaluate(step, wall)
+                               : scheduler.displayed_image();
     if (run.first_feedback_work < 0.0 && shown.rgb != stale.rgb) {
       run.first_feedback_work = work;
       run.first_feedback_ms = wall * 1e3;

@@ -16,18 +16,20 @@ struct PolicyRunOptions {
   uint32_t tiles_per_step = 1;
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp = 1;  // samples of a tile's first visit after the edit (not for `full`)
-  uint32_t target_spp = 1;     // converged: every pixel has this many samples since the edit
-  uint32_t max_steps = 0;      // 0: until converged
-  double dense_until = 16.0;   // evaluate after every step until this much work, then sparser
-  uint32_t sparse_every = 8;   // steps between evaluations after that
+  uint32_t target_spp = 1;       // converged: every pixel has this many samples since the edit
+  uint32_t max_steps = 0;        // 0: until converged
+  double dense_until = 16.0;     // evaluate after every step until this much work, then sparser
+  uint32_t sparse_every = 8;     // steps between evaluations after that
   FlipOptions flip;
-  std::vector<double> capture_work = {0.25, 1.0};  // keep the displayed image at these amounts of work
+  std::vector<double> capture_work = {0.25,
+                                      1.0};  // keep the displayed image at these amounts of work
 };
 
 struct PolicyRun {
   ErrorCurve curve;
   // Work and time when the display first changed anywhere, and when every changed tile
-  // (stage 1's active set) showed its fresh estimate; -1 when it never happened.
+  // (stage 1's active set) had shown its fresh estimate (at weight 1/2 or more: kTileShown);
+  // -1 when it never happened.
   double first_feedback_work = -1.0, first_feedback_ms = -1.0;
   double changed_tiles_shown_work = -1.0, changed_tiles_shown_ms = -1.0;
   double overhead_seconds = 0.0;  // scheduling (stage 1, sort, display resolves) since the edit
@@ -41,7 +43,8 @@ struct PolicyRun {
 
 // `renderer` holds the scene `before` the edit; `start` is the state every policy starts from.
 // Applies the edit (`after`) and runs the policy, leaving the renderer on `after`.
-PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes, const RenderSnapshot& start,
-                     const ImageRGB& reference, const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options);
+PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes,
+                     const RenderSnapshot& start, const ImageRGB& reference,
+                     const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options);
 
 }  // namespace hipr::bench

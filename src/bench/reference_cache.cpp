@@ -18,17 +18,23 @@ constexpr uint32_t kReferenceSeedOffset = 0x68e31da5u;
 
 }  // namespace
 
-std::string reference_key(const Scene& scene, const std::string& state, const RenderSettings& settings, uint32_t spp) {
+std::string reference_key(const Scene& scene, const std::string& state,
+                          const RenderSettings& settings, uint32_t spp) {
   Hasher hasher;
   hasher.add("hipr-reference-v1").add(scene.content_hash).add(state);
   if (scene.environment) {
     hasher.add(&scene.environment->intensity, sizeof(float));
     hasher.add(&scene.environment->rotation, sizeof(float));
   }
-  const uint32_t numbers[] = {settings.width, settings.height, settings.seed, settings.max_depth,
-                              uint32_t(settings.light_sampling), spp};
+  const uint32_t numbers[] = {settings.width,
+                              settings.height,
+                              settings.seed,
+                              settings.max_depth,
+                              uint32_t(settings.light_sampling),
+                              spp};
   hasher.add(numbers, sizeof numbers);
-  for (const vk::EmbeddedShaderFile& file : vk::embedded_shader_files()) hasher.add(file.path).add(file.text);
+  for (const vk::EmbeddedShaderFile& file : vk::embedded_shader_files())
+    hasher.add(file.path).add(file.text);
   return hasher.hex();
 }
 
@@ -38,13 +44,15 @@ fs::path default_reference_cache() {
 }
 
 Reference converged_reference(const vk::Context& ctx, const Scene& scene, const std::string& key,
-                              const RenderSettings& settings, uint32_t spp, const fs::path& cache_dir) {
+                              const RenderSettings& settings, uint32_t spp,
+                              const fs::path& cache_dir) {
   const fs::path file = cache_dir.empty() ? fs::path() : cache_dir / (key + ".exr");
   std::error_code ec;
   if (!file.empty() && fs::is_regular_file(file, ec)) {
     try {
       ImageRGB image = read_image(file);
-      if (image.width == settings.width && image.height == settings.height) return {std::move(image), true, 0.0};
+      if (image.width == settings.width && image.height == settings.height)
+        return {std::move(image), true, 0.0};
     } catch (const std::exception&) {
       // A damaged cache entry is rendered again and replaced.
     }
@@ -63,7 +71,8 @@ Reference converged_reference(const vk::Context& ctx, const Scene& scene, const 
   if (!file.empty()) {
     fs::create_directories(cache_dir, ec);
     try {
-      write_image(file, reference.image, {{"hipr:spp", std::to_string(spp)}, {"hipr:reference_key", key}});
+      write_image(file, reference.image,
+                  {{"hipr:spp", std::to_string(spp)}, {"hipr:reference_key", key}});
     } catch (const std::exception& e) {
       log::warn(std::string("could not cache the reference: ") + e.what());
     }

@@ -17,7 +17,8 @@ namespace hipr::bench {
 // Everything that decides a reference's pixels: the scene as loaded (content hash, environment
 // settings), the edits applied so far (`state` = their canonical text), the render settings
 // that change the image, the sample count and the renderer's own shader sources.
-std::string reference_key(const Scene& scene, const std::string& state, const RenderSettings& settings, uint32_t spp);
+std::string reference_key(const Scene& scene, const std::string& state,
+                          const RenderSettings& settings, uint32_t spp);
 
 // $HIPR_CACHE_DIR/references (or beside the shader cache); empty when there is no cache folder.
 std::filesystem::path default_reference_cache();
@@ -32,6 +33,7 @@ struct Reference {
 // `settings.seed` (its noise must not correlate with the runs it judges). Read from
 // `cache_dir`/KEY.exr when present, else rendered and stored there (when cache_dir is set).
 Reference converged_reference(const vk::Context& ctx, const Scene& scene, const std::string& key,
-                              const RenderSettings& settings, uint32_t spp, const std::filesystem::path& cache_dir);
+                              const RenderSettings& settings, uint32_t spp,
+                              const std::filesystem::path& cache_dir);
 
 }  // namespace hipr::bench

@@ -53,7 +53,8 @@ ProcessResult run_process(const std::vector<std::string>& argv, std::string_view
   size_t written = 0;
   fcntl(in.fd[1], F_SETFL, O_NONBLOCK);
   if (input.empty()) in.close_end(1);
-  const sighandler_t previous = signal(SIGPIPE, SIG_IGN);  // a child that exits early must not kill us
+  const sighandler_t previous =
+      signal(SIGPIPE, SIG_IGN);  // a child that exits early must not kill us
   while (out.fd[0] >= 0) {
     pollfd fds[2] = {{out.fd[0], POLLIN, 0}, {in.fd[1], POLLOUT, 0}};
     const int n = poll(fds, in.fd[1] >= 0 ? 2 : 1, -1);
@@ -68,8 +69,10 @@ ProcessResult run_process(const std::vector<std::string>& argv, std::string_view
     if (fds[0].revents & (POLLIN | POLLHUP | POLLERR)) {
       char buffer[4096];
       const ssize_t r = read(out.fd[0], buffer, sizeof buffer);
-      if (r > 0) result.output.append(buffer, size_t(r));
-      else if (r == 0 || errno != EINTR) out.close_end(0);
+      if (r > 0)
+        result.output.append(buffer, size_t(r));
+      else if (r == 0 || errno != EINTR)
+        out.close_end(0);
     }
   }
   signal(SIGPIPE, previous);
@@ -77,7 +80,8 @@ ProcessResult run_process(const std::vector<std::string>& argv, std::string_view
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  result.exit_code =
+      WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   return result;
 }
 

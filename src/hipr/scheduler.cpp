@@ -25,18 +25,25 @@ Policy parse_policy(const std::string& name) {
 
 std::string policy_name(Policy policy) {
   switch (policy) {
-    case Policy::Hipr: return "hipr";
-    case Policy::Full: return "full";
-    case Policy::Scanline: return "scanline";
-    case Policy::Spiral: return "spiral";
-    case Policy::Random: return "random";
-    case Policy::Oracle: return "oracle";
+    case Policy::Hipr:
+      return "hipr";
+    case Policy::Full:
+      return "full";
+    case Policy::Scanline:
+      return "scanline";
+    case Policy::Spiral:
+      return "spiral";
+    case Policy::Random:
+      return "random";
+    case Policy::Oracle:
+      return "oracle";
   }
   return "?";
 }
 
 DisplayRule default_display_rule(Policy policy) {
-  return policy == Policy::Hipr || policy == Policy::Oracle ? DisplayRule::Blend : DisplayRule::Immediate;
+  return policy == Policy::Hipr || policy == Policy::Oracle ? DisplayRule::Blend
+                                                            : DisplayRule::Immediate;
 }
 
 std::vector<uint32_t> tile_order(Policy policy, uint32_t tiles_x, uint32_t tiles_y, uint32_t seed) {
@@ -52,7 +59,8 @@ std::vector<uint32_t> tile_order(Policy policy, uint32_t tiles_x, uint32_t tiles
       const double dx = double(t % tiles_x) - cx, dy = double(t / tiles_x) - cy;
       return std::make_pair(std::max(std::abs(dx), std::abs(dy)), std::atan2(dy, dx));
     };
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
   }
   return order;
 }
@@ -60,11 +68,13 @@ std::vector<uint32_t> tile_order(Policy policy, uint32_t tiles_x, uint32_t tiles
 namespace {
 
 // Tiles by descending error of what they show against the reference (ties in id order).
-std::vector<uint32_t> oracle_order(const ImageRGB& shown, const ImageRGB& reference, uint32_t tile_size) {
+std::vector<uint32_t> oracle_order(const ImageRGB& shown, const ImageRGB& reference,
+                                   uint32_t tile_size) {
   const std::vector<double> error = relmse_tile_sums(shown, reference, tile_size);
   std::vector<uint32_t> order(error.size());
   std::iota(order.begin(), order.end(), 0u);
-  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return error[a] > error[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](uint32_t a, uint32_t b) { return error[a] > error[b]; });
   return order;
 }
 
@@ -77,14 +87,16 @@ Scheduler::Scheduler(Renderer& renderer, Policy policy, uint32_t tiles_per_step,
       m_tiles_per_step(std::max(tiles_per_step, 1u)),
       m_visit_spp(std::max(visit_spp, 1u)),
       m_first_visit_spp(m_visit_spp) {
-  const std::vector<uint32_t> order = tile_order(Policy::Scanline, renderer.tiles_x(), renderer.tiles_y(), 0);
+  const std::vector<uint32_t> order =
+      tile_order(Policy::Scanline, renderer.tiles_x(), renderer.tiles_y(), 0);
   renderer.set_schedule(order);
   renderer.resolve_display_all(DisplayRule::Immediate);
   if (policy == Policy::Hipr) renderer.stage1_visibility({});  // the G-buffer before any edit
 }
 
 void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
-  if (m_policy == Policy::Oracle && !m_reference) throw InternalError("the oracle policy needs a reference image");
+  if (m_policy == Policy::Oracle && !m_reference)
+    throw InternalError("the oracle policy needs a reference image");
   // Restarting the counters (a GPU fill) instead of reading them keeps read-backs off the
   // edit path: work is only read when someone asks for it.
   m_renderer.reset_counters();
@@ -92,8 +104,10 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   const Timer timer;
   // What the screen shows at the moment of the edit becomes the stale image. `full` keeps
   // showing its last completed pass (before the first edit: whatever was rendered).
-  if (!m_edited) m_renderer.resolve_display_all(DisplayRule::Immediate);
-  else if (m_policy != Policy::Full) m_renderer.resolve_display_all(m_display);
+  if (!m_edited)
+    m_renderer.resolve_display_all(DisplayRule::Immediate);
+  else if (m_policy != Policy::Full)
+    m_renderer.resolve_display_all(m_display);
   m_renderer.capture_stale_display();
   m_overhead_seconds += timer.seconds();
   m_renderer.update_scene(scene, changes);
@@ -109,9 +123,11 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
     m_stage2_cursor = 0;
     if (m_active_tiles == 0) m_cursor = 0;  // nothing visible changed: stage 3 at once
   } else if (m_policy == Policy::Oracle) {
-    m_renderer.set_schedule(oracle_order(m_renderer.displayed_image(), *m_reference, m_renderer.settings().tile_size));
+    m_renderer.set_schedule(
+        oracle_order(m_renderer.displayed_image(), *m_reference, m_renderer.settings().tile_size));
   } else {
-    m_renderer.set_schedule(tile_order(m_policy, m_renderer.tiles_x(), m_renderer.tiles_y(), m_renderer.settings().seed));
+    m_renderer.set_schedule(tile_order(m_policy, m_renderer.tiles_x(), m_renderer.tiles_y(),
+                                       m_renderer.settings().seed));
   }
   m_overhead_seconds += schedule_timer.seconds();
 }

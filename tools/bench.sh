@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# The benchmark suite (BENCHMARKS.md): `hipr bench` on the shipped scenes and, when
+# ../shared/scenes is beside the repository, on real scenes; then render throughput and the
+# specialized-vs-uber kernel comparison. Writes OUTDIR/<scene>/{curves.csv,summary.json,plot.png},
+# OUTDIR/throughput/*.json and OUTDIR/tables.md (the tables BENCHMARKS.md shows).
+# usage: bash tools/bench.sh [OUTDIR]        (default: bench-results)
+# Environment: HIPR_BENCH_SIZE (default 128), HIPR_BENCH_SPP (default 64).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/build.sh >/dev/null
+out=${1:-bench-results}
+mkdir -p "$out/throughput"
+size=${HIPR_BENCH_SIZE:-128}
+spp=${HIPR_BENCH_SPP:-64}
+export VK_DRIVER_FILES=${VK_DRIVER_FILES:-/usr/share/vulkan/icd.d/lvp_icd.json}
+shared=../shared/scenes
+studio="$shared/EnvMaps/studio_small_03_1k.hdr"
+
+bench() {
+  local name=$1
+  shift
+  echo "== bench $name"
+  build/hipr bench "$@" -o "$out/$name" --width "$size" --height "$size" --spp "$spp"
+}
+
+bench cornell_box assets/scenes/cornell_box.gltf assets/scenes/cornell_box.edits.json
+bench cornell_sphere assets/scenes/cornell_sphere.glb assets/scenes/cornell_sphere.edits.json
+if [ -d "$shared" ]; then
+  bench CornellBox "$shared/CornellBox/cornellBox.gltf" tools/bench/CornellBox.edits.json
+  bench GlassVaseFlowers "$shared/GlassVaseFlowers/GlassVaseFlowers.glb" tools/bench/GlassVaseFlowers.edits.json --env "$studio"
+  bench SheenChair "$shared/SheenChair/SheenChair.gltf" tools/bench/SheenChair.edits.json --env "$studio"
+  bench LightsPunctualLamp "$shared/LightsPunctualLamp/LightsPunctualLamp.gltf" tools/bench/LightsPunctualLamp.edits.json
+else
+  echo "(no $shared: the real-scene benchmarks are skipped)"
+fi
+
+# Throughput: three interleaved rounds, so a noisy neighbour hits every configuration alike.
+render() {
+  local name=$1 scene=$2
+  shift 2
+  build/hipr render "$scene" -o "$out/throughput/$name.exr" --stats-json "$out/throughput/$name.json" -q "$@"
+}
+for round in 1 2 3; do
+  echo "== throughput round $round"
+  render "cornell_box_r$round" assets/scenes/cornell_box.gltf --width 256 --height 256 --spp 64
+  render "cornell_box_uber_r$round" assets/scenes/cornell_box.gltf --width 256 --height 256 --spp 64 --uber-kernel
+  if [ -d "$shared" ]; then
+    render "MetalRoughSpheres_r$round" "$shared/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb" \
+      --width 256 --height 256 --spp 16 --env "$studio"
+  fi
+done
+/usr/bin/python3 tools/bench_tables.py "$out" >"$out/tables.md"
+echo "wrote $out/tables.md"

@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+"""Turns the outputs of tools/bench.sh into the Markdown tables of BENCHMARKS.md.
+
+usage: bench_tables.py OUTDIR
+"""
+import glob
+import json
+import math
+import os
+import sys
+
+POLICIES = ["hipr", "oracle", "full", "scanline", "spiral", "random"]
+
+
+def geomean(values):
+    values = [v for v in values if v and v > 0]
+    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
+
+
+def auc_table(summaries, key, title):
+    lines = [f"#### {title}", "",
+             "| scene | edit | " + " | ".join(POLICIES) + " | hipr / full | hipr / oracle |",
+             "|---|---|" + "---:|" * (len(POLICIES) + 2)]
+    for scene, summary in summaries:
+        for edit in summary["edits"]:
+            p = edit["policies"]
+            cells = [f"{p[name][key]:.4g}" if name in p else "" for name in POLICIES]
+            full = p["hipr"][key] / p["full"][key] if "full" in p and p["full"][key] else float("nan")
+            oracle = p["hipr"][key] / p["oracle"][key] if "oracle" in p and p["oracle"][key] else float("nan")
+            lines.append(f"| {scene} | {edit['name']} | " + " | ".join(cells) + f" | {full:.2f} | {oracle:.2f} |")
+    return lines
+
+
+def feedback_table(summaries):
+    lines = ["#### Feedback and overhead (hipr)", "",
+             "| scene | edit | changed tiles | first feedback (work / ms) | changed tiles shown (work / ms) "
+             "| same for full (work) | scheduler overhead share |",
+             "|---|---|---:|---:|---:|---:|---:|"]
+    for scene, summary in summaries:
+        for edit in summary["edits"]:
+            h = edit["policies"]["hipr"]
+            full = edit["policies"].get("full", {})
+
+            def pair(work, ms):
+                return "never" if work is None else f"{work:.3f} / {ms:.0f}"
+            lines.append(
+                f"| {scene} | {edit['name']} | {edit['changed_tiles']}/{edit['tiles']} "
+                f"| {pair(h['first_feedback_work'], h['first_feedback_ms'])} "
+                f"| {pair(h['changed_tiles_shown_work'], h['changed_tiles_shown_ms'])} "
+                f"| {full.get('changed_tiles_shown_work', float('nan')):.3f} | {100 * h['overhead_share']:.1f} % |")
+    return lines
+
+
+def ratio_lines(summaries):
+    lines = ["#### Geometric means over all edits", "", "| ratio | horizon 1 | horizon 4 | horizon 16 |",
+             "|---|---:|---:|---:|"]
+    for other in ["full", "oracle"]:
+        for metric in ["relmse", "flip"]:
+            row = []
+            for suffix in ["", "_4", "_16"]:
+                key = f"auc_{metric}{suffix}"
+                row.append(geomean([e["policies"]["hipr"][key] / e["policies"][other][key]
+                                    for _, s in summaries for e in s["edits"]
+                                    if other in e["policies"] and e["policies"][other][key]]))
+            lines.append(f"| hipr / {other}, {metric} AUC | " + " | ".join(f"{v:.3f}" for v in row) + " |")
+    return lines
+
+
+def throughput_lines(folder):
+    runs = {}
+    for path in sorted(glob.glob(os.path.join(folder, "throughput", "*.json"))):
+        name = os.path.basename(path)[:-5]
+        base, _, round_name = name.rpartition("_r")
+        with open(path) as f:
+            runs.setdefault(base, {})[round_name] = json.load(f)
+    if not runs:
+        return []
+    lines = ["#### Render throughput (`hipr render --stats-json`)", "",
+             "| run | size, spp | M samples/s (rounds) | M rays/s (rounds) | rays/sample |", "|---|---|---|---|---:|"]
+    for base, rounds in runs.items():
+        stats = [rounds[k] for k in sorted(rounds)]
+        s0 = stats[0]
+        samples = ", ".join("%.3f" % (s["samples_per_second"] / 1e6) for s in stats)
+        rays = ", ".join("%.2f" % (s["rays_per_second"] / 1e6) for s in stats)
+        lines.append(f"| {base} | {s0['width']}x{s0['height']}, {s0['spp']} | {samples} | {rays} "
+                     f"| {s0['rays_per_sample']:.2f} |")
+    if "cornell_box" in runs and "cornell_box_uber" in runs:
+        ratios = [runs["cornell_box"][k]["samples_per_second"] / runs["cornell_box_uber"][k]["samples_per_second"]
+                  for k in sorted(runs["cornell_box"]) if k in runs["cornell_box_uber"]]
+        lines += ["", "Specialized / uber kernel on the Cornell box, per round: " +
+                  ", ".join(f"{r:.2f}x" for r in ratios)]
+    return lines
+
+
+def main(argv):
+    if len(argv) != 2:
+        sys.exit(__doc__)
+    summaries = []
+    for path in sorted(glob.glob(os.path.join(argv[1], "*", "summary.json"))):
+        with open(path) as f:
+            summaries.append((os.path.basename(os.path.dirname(path)), json.load(f)))
+    out = []
+    if summaries:
+        out += auc_table(summaries, "auc_relmse", "relMSE AUC over the first work unit (lower is better)") + [""]
+        out += auc_table(summaries, "auc_flip", "FLIP AUC over the first work unit") + [""]
+        out += auc_table(summaries, "auc_relmse_4", "relMSE AUC over the first 4 work units") + [""]
+        out += ratio_lines(summaries) + [""]
+        out += feedback_table(summaries) + [""]
+    out += throughput_lines(argv[1])
+    print("\n".join(out))
+
+
+if __name__ == "__main__":
+    main(sys.argv)
