@@ -117,7 +117,7 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--visit-spp", v.visit_spp, "Samples per pixel a tile gets per visit")
       ->capture_default_str();
   cmd->add_option("--first-visit-spp", v.first_visit_spp,
-                  "Samples per pixel of a tile's first visit after an edit (default: 4, within "
+                  "Samples per pixel of a tile's first visit after an edit (default: 2, within "
                   "[--visit-spp, --spp])");
   cmd->add_option("--display", options->display,
                   "How re-rendered tiles are shown: immediate, switch or blend (default: blend for "

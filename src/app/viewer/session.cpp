@@ -13,7 +13,7 @@ uint32_t default_tiles_per_step(uint32_t tile_count) {
 }
 
 uint32_t default_first_visit_spp(const SessionSettings& s) {
-  return std::max(s.visit_spp, std::min(4u, s.spp));
+  return std::max(s.visit_spp, std::min(2u, s.spp));
 }
 
 Scene diff_snapshot(const Scene& scene) {

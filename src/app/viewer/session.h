@@ -117,7 +117,7 @@ Scene diff_snapshot(const Scene& scene);
 // The default tiles per step: 1/64 of the frame, at least one tile.
 uint32_t default_tiles_per_step(uint32_t tile_count);
 
-// Samples of a tile's first visit after an edit unless set: 4 (as hipr bench), at least
+// Samples of a tile's first visit after an edit unless set: 2 (as hipr bench), at least
 // visit_spp, at most spp. The blend and switch display rules need two samples per pixel to
 // judge a fresh estimate, so one sample would keep an edit off the screen for a whole pass.
 uint32_t default_first_visit_spp(const SessionSettings& settings);
