@@ -163,6 +163,8 @@ ViewLayout Viewer::layout() const {
 }
 
 void Viewer::resize(VkExtent2D extent) {
+  // Minimised: nothing to present to; the loop resizes again once the window has a size.
+  if (extent.width == 0 || extent.height == 0) return;
   m_swapchain.recreate(extent);
   m_ui.set_min_image_count(m_swapchain.min_image_count());
   m_frame = vk::Image(m_ctx, m_swapchain.extent(), kFrameFormat, kFrameUsage);
