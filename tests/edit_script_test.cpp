@@ -1,6 +1,8 @@
 // Edit scripts, applying edits and the scene diff (no GPU).
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
@@ -139,6 +141,113 @@ TEST(SceneDiff, PunctualLightEdit) {
   EXPECT_TRUE(c.light_tables);
   EXPECT_EQ(c.lights.size(), 1u);
   EXPECT_TRUE(c.instances.empty());
+}
+
+// A scene with an environment: the furnace sphere under a uniform sky.
+Scene sky_scene() { return test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f); }
+
+TEST(EditScript, EnvironmentOpSetsIntensityAndRotationInDegrees) {
+  const auto edits = parse_edit_script(
+      R"({"edits": [{"op": "environment", "set": {"intensity": 2.5, "rotation": 90}}]})", "e");
+  ASSERT_EQ(edits.size(), 1u);
+  const auto* e = std::get_if<EnvironmentEdit>(&edits[0]);
+  ASSERT_NE(e, nullptr);
+  EXPECT_EQ(e->intensity, 2.5f);
+  EXPECT_FLOAT_EQ(*e->rotation, glm::radians(90.0f));
+  Scene scene = sky_scene();
+  apply_edit(scene, edits[0]);
+  EXPECT_EQ(scene.environment->intensity, 2.5f);
+  EXPECT_FLOAT_EQ(scene.environment->rotation, glm::radians(90.0f));
+  EXPECT_EQ(describe(edits[0]), "environment");
+  // One key alone leaves the other as it was.
+  apply_edit(scene, parse_edit_script(
+                        R"({"edits": [{"op": "environment", "set": {"intensity": 0}}]})", "e")[0]);
+  EXPECT_EQ(scene.environment->intensity, 0.0f);
+  EXPECT_FLOAT_EQ(scene.environment->rotation, glm::radians(90.0f));
+}
+
+TEST(EditScript, BadEnvironmentEditsNameTheProblem) {
+  expect_input_error(R"({"edits": [{"op": "environment", "set": {"intensity": -1}}]})",
+                     "intensity");
+  expect_input_error(R"({"edits": [{"op": "environment", "set": {"rotation": [1, 2]}}]})",
+                     "rotation");
+  expect_input_error(R"({"edits": [{"op": "environment", "set": {"exposure": 1}}]})", "exposure");
+  expect_input_error(R"({"edits": [{"op": "environment", "set": {}}]})", "set");
+  expect_input_error(
+      R"({"edits": [{"op": "environment", "node": "sky", "set": {"intensity": 1}}]})", "node");
+  // A scene without an environment map cannot be given one's intensity.
+  Scene scene = cornell();
+  const auto edits =
+      parse_edit_script(R"({"edits": [{"op": "environment", "set": {"intensity": 2}}]})", "e");
+  EXPECT_THROW(apply_edit(scene, edits[0]), InputError);
+}
+
+TEST(SceneDiff, EnvironmentEditRestartsEverythingAndRebuildsLightTables) {
+  const Scene base = sky_scene();
+  Scene s = base;
+  apply_edit(s, EnvironmentEdit{std::nullopt, 0.5f});
+  ChangeSet c = diff_scenes(base, s);
+  EXPECT_TRUE(c.environment);
+  EXPECT_TRUE(c.light_tables);  // the environment's share of light selection follows its power
+  EXPECT_TRUE(c.instances.empty());
+  EXPECT_FALSE(c.empty());
+  s = base;
+  apply_edit(s, EnvironmentEdit{3.0f, std::nullopt});
+  EXPECT_TRUE(diff_scenes(base, s).environment);
+  EXPECT_FALSE(diff_scenes(base, base).environment);
+}
+
+// Every kind of edit followed by its inverse leaves the scene exactly as it was.
+TEST(Edits, InverseRestoresTheSceneExactly) {
+  const Scene base = load_scene(test::asset("cornell_sphere.glb"));
+  Scene with_sky = base;
+  with_sky.environment = test::uniform_environment(1.0f);
+  const Edit edits[] = {
+      TransformEdit{"sphere", glm::vec3(0.1f, -0.02f, 0.3f), std::nullopt},
+      TransformEdit{"sphere", std::nullopt, glm::scale(glm::mat4(1.0f), glm::vec3(2.0f))},
+      MaterialEdit{"white", {{"specular_roughness", {0.3f}}, {"base_color", {0.1f, 0.2f, 0.3f}}}},
+      MaterialEdit{"white", {{"specular_roughness", {0.3f}}, {"specular_roughness", {0.7f}}}},
+      LightEdit{"lamp", 7.0f, glm::vec3(0.1f, 0.2f, 0.3f), 4.0f},
+      VisibilityEdit{"sphere", false},
+      CameraEdit{glm::vec3(0.0f, 0.1f, -0.2f), std::nullopt},
+      EnvironmentEdit{0.25f, 1.5f},
+  };
+  for (const Edit& edit : edits) {
+    Scene scene = with_sky;
+    const Edit inverse = inverse_edit(scene, edit);
+    apply_edit(scene, edit);
+    EXPECT_FALSE(diff_scenes(with_sky, scene).empty()) << describe(edit);
+    apply_edit(scene, inverse);
+    EXPECT_TRUE(diff_scenes(with_sky, scene).empty()) << describe(edit);
+    for (size_t n = 0; n < with_sky.nodes.size(); ++n) {
+      EXPECT_EQ(scene.nodes[n].local, with_sky.nodes[n].local) << describe(edit);
+      EXPECT_EQ(scene.nodes[n].visible, with_sky.nodes[n].visible) << describe(edit);
+    }
+    for (size_t m = 0; m < with_sky.materials.size(); ++m)
+      EXPECT_EQ(std::memcmp(&scene.materials[m].params, &with_sky.materials[m].params,
+                            sizeof(abi::MaterialBlock)),
+                0)
+          << describe(edit);
+    for (size_t l = 0; l < with_sky.lights.size(); ++l) {
+      EXPECT_EQ(scene.lights[l].intensity, with_sky.lights[l].intensity);
+      EXPECT_EQ(scene.lights[l].color, with_sky.lights[l].color);
+      EXPECT_EQ(scene.lights[l].range, with_sky.lights[l].range);
+    }
+    EXPECT_EQ(scene.environment->intensity, with_sky.environment->intensity);
+    EXPECT_EQ(scene.environment->rotation, with_sky.environment->rotation);
+  }
+}
+
+TEST(Edits, InverseRefusesWhatApplyRefuses) {
+  const Scene scene = cornell();
+  EXPECT_THROW(inverse_edit(scene, TransformEdit{"teapot", glm::vec3(0.0f), std::nullopt}),
+               InputError);
+  EXPECT_THROW(inverse_edit(scene, MaterialEdit{"red", {{"base_color", {1.0f}}}}), InputError);
+  EXPECT_THROW(inverse_edit(scene, MaterialEdit{"red", {{"colour", {1.0f, 0.0f, 0.0f}}}}),
+               InputError);
+  EXPECT_THROW(inverse_edit(scene, LightEdit{"tall_block", 1.0f, std::nullopt, std::nullopt}),
+               InputError);
+  EXPECT_THROW(inverse_edit(scene, EnvironmentEdit{1.0f, std::nullopt}), InputError);
 }
 
 }  // namespace

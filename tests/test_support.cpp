@@ -71,7 +71,13 @@ const vk::Context& context() {
 }
 
 CommandResult run_hipr(const std::string& arguments) {
-  const std::string command = std::string("'") + HIPR_BINARY + "' " + arguments + " 2>&1";
+  return run_command(std::string("'") + HIPR_BINARY + "' " + arguments);
+}
+
+fs::path hipr_binary() { return HIPR_BINARY; }
+
+CommandResult run_command(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;

@@ -29,6 +29,9 @@ struct CommandResult {
 };
 // Runs build/hipr with the given arguments (already shell-quoted where needed).
 CommandResult run_hipr(const std::string& arguments);
+// Runs a shell command line (stdout + stderr captured), e.g. hipr under xvfb-run.
+CommandResult run_command(const std::string& command_line);
+std::filesystem::path hipr_binary();  // build/hipr
 
 std::string quoted(const std::filesystem::path& path);  // for run_hipr arguments
 std::vector<std::string> lines_of(const std::string& text);

@@ -49,8 +49,16 @@ struct CameraEdit {
   std::optional<glm::mat4> matrix;
 };
 
+// The environment map's radiance multiplier and rotation. Scripts give the rotation in
+// degrees; it is kept in radians here, as in Environment, so an undo restores it exactly.
+struct EnvironmentEdit {
+  std::optional<float> intensity;
+  std::optional<float> rotation;  // radians about +Y
+};
+
 // "emission" edits are material edits restricted to emission keys.
-using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit, CameraEdit>;
+using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit, CameraEdit,
+                          EnvironmentEdit>;
 
 // Parses an edit script; throws InputError (naming the file and the edit) on any problem.
 std::vector<Edit> load_edit_script(const std::filesystem::path& path);
@@ -58,6 +66,12 @@ std::vector<Edit> parse_edit_script(const std::string& json_text, const std::str
 
 // Applies one edit to the scene; throws InputError for an unknown node, material or key.
 void apply_edit(Scene& scene, const Edit& edit);
+
+// The edit that, applied after `edit`, restores `scene` as it is now (before `edit`): the
+// previous matrix, parameter values, light settings, visibility or environment. It looks up
+// every name and key as apply_edit does, so it throws the same InputError for an edit that
+// apply_edit would refuse (and computing it first keeps a refused edit from half-applying).
+Edit inverse_edit(const Scene& scene, const Edit& edit);
 
 // A short human-readable description ("transform tall_block").
 std::string describe(const Edit& edit);

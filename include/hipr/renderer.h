@@ -97,8 +97,9 @@ class Renderer {
   // ---- HiPR stages (DESIGN.md). Each records GPU work and waits; none reads results back.
   // Stage 1: G-buffer of the edited scene (the previous one is kept), active tiles where an
   // element of `changes` is visible now or was before, each with a change score. A camera
-  // change or a light edit makes every tile active. Returns |A| (the one read-back: stage 2 is
-  // split into steps). (Pixels owing a restart are marked separately: mark_all_owed.)
+  // change, a light edit or an environment edit makes every tile active. Returns |A| (the one
+  // read-back: stage 2 is split into steps). (Pixels owing a restart are marked separately:
+  // mark_all_owed.)
   uint32_t stage1_visibility(const ChangeSet& changes);
   // Stage 2: path-traces the active tiles (restarting them) with discovery on: all of them
   // (after ordering the schedule), or the active tiles among schedule entries [offset, offset + count).
@@ -148,6 +149,28 @@ class Renderer {
   RenderCounters counters() const;
   void reset_counters();  // on the GPU, no read-back
   void reset();
+
+  // ---- For the interactive viewer (src/app/viewer).
+  // New discovery weights and depth tolerance; they take effect from the next stage 2 on.
+  void set_hipr_parameters(const HiprParameters& parameters);
+  // Runs the stage-1 visibility pass for the scene as it is now, leaving the previous
+  // G-buffer and the tile flags alone: picking after edits under policies that skip stage 1.
+  void refresh_gbuffer();
+  // What the G-buffer holds at one pixel (read-back of one texel).
+  struct PixelHit {
+    uint32_t instance = UINT32_MAX;  // index into Scene::instances(), UINT32_MAX for background
+    float depth = 0.0f;              // camera-space depth along the view axis
+  };
+  PixelHit gbuffer_at(uint32_t x, uint32_t y) const;
+  // Per tile: how many of its pixels still show radiance from before the last edit (they owe
+  // a restart at their next visit).
+  std::vector<uint32_t> owed_tiles() const;
+  // Lavapipe (llvmpipe) compiles a kernel when it is first dispatched, and the path-tracing
+  // kernels take seconds to a minute on a CPU: left to the first edit, that edit would freeze
+  // the viewer. This dispatches the trace kernels (plain and discovery) over every tile with a
+  // flag no tile carries, so they compile but render and count nothing, and the schedule sort
+  // on its own scratch buffers (the schedule itself is untouched).
+  void warm_up_kernels();
 
  private:
   struct Impl;

@@ -16,8 +16,14 @@ struct ChangeSet {
   bool transforms = false;          // an instance moved, appeared or disappeared: rebuild the TLAS
   bool light_tables = false;        // emitters or punctual lights changed: rebuild light tables
   bool camera = false;              // the view changed: everything restarts
+  // The environment's intensity or rotation changed. Like a punctual light it reaches every
+  // tile without being visible in a G-buffer, so everything restarts.
+  bool environment = false;
 
-  bool empty() const { return instances.empty() && lights.empty() && !materials && !transforms && !light_tables && !camera; }
+  bool empty() const {
+    return instances.empty() && lights.empty() && !materials && !transforms && !light_tables &&
+           !camera && !environment;
+  }
 };
 
 // Both states must come from the same loaded scene (same meshes and instances), as edits keep.

@@ -53,6 +53,10 @@ HIPR_CONST uint kBindingSortValues = 24u;       // uint values (tile ids), ping
 HIPR_CONST uint kBindingSortKeysAlt = 25u;      // pong
 HIPR_CONST uint kBindingSortValuesAlt = 26u;    // pong
 HIPR_CONST uint kBindingSortHistogram = 27u;    // uint [digit][workgroup] counts, then offsets
+// The viewer's display pass (display.comp)
+HIPR_CONST uint kBindingDisplayRadiance = 30u;  // float RGB per rendered pixel (displayed image)
+HIPR_CONST uint kBindingDisplayOverlay = 31u;   // uint RGBA8 per rendered pixel (sRGB, A = coverage)
+HIPR_CONST uint kBindingDisplayOutput = 32u;    // uint RGBA8 per window pixel (what the window shows)
 
 // ---- constants ----
 HIPR_CONST uint kPixelOwed = 0x80000000u;
@@ -306,6 +310,21 @@ struct ResolvePush {
   uint skipFlags;
   uint rule;        // kDisplay*
   float threshold;  // switch: show the fresh estimate when D > threshold * V (see the shader)
+};
+
+// Per-dispatch parameters of display.comp: the rendered image is drawn into the window at
+// (viewX, viewY) scaled by viewScale (window pixels per rendered pixel, nearest texel).
+struct DisplayPush {
+  uint outputWidth;
+  uint outputHeight;
+  uint sourceWidth;
+  uint sourceHeight;
+  int viewX;
+  int viewY;
+  float viewScale;
+  float exposureScale;  // 2^EV, as tonemap_srgb8
+  uint background;      // RGBA8 outside the rendered image
+  uint overlayEnabled;  // 0: the overlay buffer is ignored
 };
 
 // Radix sort pass: keys/values move from one buffer pair to the other by one 8-bit digit.

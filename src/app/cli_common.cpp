@@ -49,9 +49,16 @@ void set_weights(const std::vector<float>& values, float* out, const char* flag)
   for (size_t i = 0; i < values.size(); ++i) out[i] = values[i] / sum;
 }
 
+}  // namespace
+
+const std::vector<std::string>& hipr_preset_names() {
+  static const std::vector<std::string> names = {"default", "lookdev", "glass", "mirror"};
+  return names;
+}
+
 // The paper's use cases: look development favours diffuse + direct response, a glass
 // interior caustics + transmission, a mirror-heavy set the specular lobe.
-void apply_preset(const std::string& name, HiprParameters& h) {
+void apply_hipr_preset(const std::string& name, HiprParameters& h) {
   const HiprParameters defaults;
   if (name.empty() || name == "default") {
     std::copy(std::begin(defaults.w_lobe), std::end(defaults.w_lobe), h.w_lobe);
@@ -69,8 +76,6 @@ void apply_preset(const std::string& name, HiprParameters& h) {
     throw InputError("unknown --preset '" + name + "' (default, lookdev, glass, mirror)");
   }
 }
-
-}  // namespace
 
 void validate_common_options(CommonOptions& o) {
   o.render.specialize_kernel = !o.uber_kernel;
@@ -90,7 +95,7 @@ void validate_common_options(CommonOptions& o) {
   require(std::isfinite(h.w_occlusion) && h.w_occlusion >= 0.0f, "--w-occlusion must be finite and non-negative");
   require(std::isfinite(h.depth_epsilon) && h.depth_epsilon > 0.0f && h.depth_epsilon < 1.0f,
           "--eps must be between 0 and 1 (relative depth)");
-  apply_preset(o.preset, h);
+  apply_hipr_preset(o.preset, h);
   if (!o.w_lobe.empty()) set_weights(o.w_lobe, h.w_lobe, "--w-lobe");
   if (!o.w_path.empty()) set_weights(o.w_path, h.w_path, "--w-path");
 }

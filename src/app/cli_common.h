@@ -33,6 +33,11 @@ void add_common_options(CLI::App& app, CommonOptions& options);
 // Checks ranges CLI11 cannot express and applies the HiPR preset/weights; throws InputError.
 void validate_common_options(CommonOptions& options);
 
+// The HiPR weight presets (--preset): names, and setting w_lobe / w_path from one (throws
+// InputError for an unknown name). The viewer offers the same presets.
+const std::vector<std::string>& hipr_preset_names();
+void apply_hipr_preset(const std::string& name, HiprParameters& parameters);
+
 vk::ContextOptions context_options(const CommonOptions& options);
 
 // Throws InternalError when the validation layer reported errors (tests rely on it).

@@ -47,6 +47,23 @@ void write_image(const fs::path& path, const ImageRGB& image, const ImageMetadat
   });
 }
 
+void write_png8(const fs::path& path, uint32_t width, uint32_t height, uint32_t channels,
+                const std::vector<uint8_t>& pixels) {
+  if (lower_extension(path) != ".png") throw InputError("not a .png path: " + path.string());
+  if ((channels != 3 && channels != 4) || pixels.size() != size_t(width) * height * channels)
+    throw InternalError("write_png8: pixel count does not match the size");
+  write_atomically(path, [&](const fs::path& temp) {
+    auto out = OIIO::ImageOutput::create("png");
+    if (!out) throw InternalError("OpenImageIO has no .png writer");
+    const OIIO::ImageSpec spec(int(width), int(height), int(channels), OIIO::TypeDesc::UINT8);
+    if (!out->open(temp.string(), spec))
+      throw InputError("cannot write " + path.string() + ": " + out->geterror());
+    const bool ok = out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
+    if (!out->close() || !ok)
+      throw InputError("cannot write " + path.string() + ": " + out->geterror());
+  });
+}
+
 ImageRGB read_image(const fs::path& path) {
   auto input = OIIO::ImageInput::open(path.string());
   if (!input) throw InputError("cannot read image " + path.string() + ": " + OIIO::geterror());

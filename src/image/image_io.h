@@ -19,6 +19,10 @@ using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 // Throws InputError for an unsupported extension (only .exr and .png) or a failed write.
 void write_image(const std::filesystem::path& path, const ImageRGB& image, const ImageMetadata& metadata = {},
                  float exposure_ev = 0.0f);
+// Writes 8-bit pixels as they are (already sRGB-encoded: no tone mapping) to a PNG, atomically.
+// `channels`: 3 (RGB) or 4 (RGBA) bytes per pixel, rows top first.
+void write_png8(const std::filesystem::path& path, uint32_t width, uint32_t height,
+                uint32_t channels, const std::vector<uint8_t>& pixels);
 ImageRGB read_image(const std::filesystem::path& path);
 // Reads one metadata attribute as text ("" when absent).
 std::string read_image_attribute(const std::filesystem::path& path, const std::string& name);

@@ -358,8 +358,9 @@ uint32_t Renderer::stage1_visibility(const ChangeSet& changes) {
   for (size_t r = 0; r < record_instance.size(); ++r)
     changed[r] = record_instance[r] < instance_changed.size() && instance_changed[record_instance[r]] ? 1 : 0;
   m->changed_records.upload(changed.data(), changed.size() * 4);
-  // What no G-buffer shows (a moved camera, a punctual light's reach) makes every tile active.
-  const bool everything = changes.camera || !changes.lights.empty();
+  // What no G-buffer shows (a moved camera, a punctual light's or the environment's reach) makes
+  // every tile active.
+  const bool everything = changes.camera || !changes.lights.empty() || changes.environment;
   m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     const VkBufferCopy copy{0, 0, m->gbuffer.size()};
     vkCmdCopyBuffer(cmd, m->gbuffer.handle(), m->previous_gbuffer.handle(), 1, &copy);
@@ -544,6 +545,62 @@ void Renderer::reset() {
   m->accumulation.clear();
   m->display.clear();
   m->stats.clear();
+}
+
+void Renderer::set_hipr_parameters(const HiprParameters& parameters) {
+  m->settings.hipr = parameters;
+  // Patch the uploaded frame parameters instead of rebuilding them: that needs the scene.
+  abi::FrameParams f{};
+  m->frame.download(&f, sizeof f);
+  f.wLobe = glm::vec4(parameters.w_lobe[0], parameters.w_lobe[1], parameters.w_lobe[2],
+                      parameters.w_lobe[3]);
+  f.wPath = glm::vec3(parameters.w_path[0], parameters.w_path[1], parameters.w_path[2]);
+  f.wOcclusion = parameters.w_occlusion;
+  f.depthEpsilon = parameters.depth_epsilon;
+  m->frame.upload(&f, sizeof f);
+}
+
+void Renderer::refresh_gbuffer() {
+  m->ensure_hipr();
+  m->ctx.submit_and_wait(
+      [&](VkCommandBuffer cmd) { m->visibility->dispatch(cmd, nullptr, groups_for(m->pixels)); });
+}
+
+Renderer::PixelHit Renderer::gbuffer_at(uint32_t x, uint32_t y) const {
+  if (x >= m->settings.width || y >= m->settings.height) return {};
+  m->ensure_hipr();
+  abi::GBufferTexel texel{};
+  m->gbuffer.download(&texel, sizeof texel,
+                      (VkDeviceSize(y) * m->settings.width + x) * sizeof texel);
+  if (texel.record == abi::kInvalidIndex) return {};
+  return {m->gpu.record_instance()[texel.record], texel.depth};
+}
+
+std::vector<uint32_t> Renderer::owed_tiles() const {
+  const auto accum = m->accumulation.download_all<abi::PixelAccum>();
+  const uint32_t width = m->settings.width, tile = m->settings.tile_size;
+  std::vector<uint32_t> owed(tile_count(), 0);
+  for (size_t i = 0; i < accum.size(); ++i)
+    if (accum[i].count & abi::kPixelOwed)
+      ++owed[(i / width / tile) * m->tiles_x + (i % width) / tile];
+  return owed;
+}
+
+void Renderer::warm_up_kernels() {
+  m->ensure_hipr();
+  // Bit 31 is no kTile* flag: every workgroup leaves at its first check.
+  abi::TracePush push = m->trace_push(0, tile_count(), 1);
+  push.requireFlags = 1u << 31;
+  const uint32_t tiles = tile_count();
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m->dispatch_trace(cmd, *m->trace, push);
+    m->dispatch_trace(cmd, *m->discover, push);
+    for (uint32_t pass = 0; pass < 2; ++pass) {
+      m->keys->dispatch(cmd, &pass, groups_for(tiles));
+      vk::compute_to_compute_barrier(cmd);
+    }
+    m->sorter->record(cmd, tiles);
+  });
 }
 
 }  // namespace hipr

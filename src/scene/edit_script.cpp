@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <glm/trigonometric.hpp>
+
 #include "core/error.h"
 #include "hipr/edits.h"
 #include "scene/material_parameters.h"
@@ -134,7 +136,19 @@ Edit read_edit(const EditReader& r) {
     if (e.translate.has_value() == e.matrix.has_value()) r.fail("a camera edit needs exactly one of \"translate\", \"matrix\"");
     return e;
   }
-  r.fail("unknown op \"" + op + "\" (transform, material, light, emission, visibility, camera)");
+  if (op == "environment") {
+    r.only_keys({"op", "set"});
+    EnvironmentEdit e;
+    for (const auto& [key, value] : r.set_object().items()) {
+      const auto v = r.numbers(value, key);
+      if (key == "intensity" && v.size() == 1 && v[0] >= 0) e.intensity = v[0];
+      else if (key == "rotation" && v.size() == 1) e.rotation = glm::radians(v[0]);  // as --env-rotation
+      else if (key != "intensity" && key != "rotation") r.fail("unknown environment parameter \"" + key + "\"");
+      else r.fail("invalid value for environment parameter \"" + key + "\"");
+    }
+    return e;
+  }
+  r.fail("unknown op \"" + op + "\" (transform, material, light, emission, visibility, camera, environment)");
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// Applying edits to the scene model.
+// Applying edits to the scene model, and their inverses (undo).
+#include <algorithm>
 #include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -83,9 +84,71 @@ struct Applier {
     }
     move_node(scene.nodes[size_t(node)].local, e.translate, e.matrix);
   }
+
+  void operator()(const EnvironmentEdit& e) const {
+    if (!scene.environment)
+      throw InputError("the scene has no environment map to edit (load one with --env)");
+    if (e.intensity) scene.environment->intensity = *e.intensity;
+    if (e.rotation) scene.environment->rotation = *e.rotation;
+  }
+};
+
+// Builds the inverse of an edit from the scene before it (see inverse_edit).
+struct Inverter {
+  const Scene& scene;
+
+  Edit operator()(const TransformEdit& e) const {
+    return TransformEdit{e.node, std::nullopt, scene.nodes[find_node(scene, e.node)].local};
+  }
+
+  Edit operator()(const MaterialEdit& e) const {
+    const abi::MaterialBlock& block = scene.materials[find_material(scene, e.material)].params;
+    MaterialEdit inverse{e.material, {}};
+    for (const ParameterValue& p : e.set) {
+      const MaterialParameter* parameter = find_material_parameter(p.key);
+      if (!parameter || int(p.values.size()) != parameter->components)
+        throw InputError("invalid material parameter '" + p.key + "'");
+      std::vector<float> old(size_t(parameter->components));
+      std::memcpy(old.data(), reinterpret_cast<const char*>(&block) + parameter->offset,
+                  old.size() * sizeof(float));
+      inverse.set.push_back({p.key, std::move(old)});
+    }
+    // Restoring in reverse order undoes an edit that sets the same key twice.
+    std::reverse(inverse.set.begin(), inverse.set.end());
+    return inverse;
+  }
+
+  Edit operator()(const LightEdit& e) const {
+    const Node& node = scene.nodes[find_node(scene, e.node)];
+    if (node.light < 0) throw InputError("node '" + e.node + "' has no light");
+    const PunctualLight& light = scene.lights[size_t(node.light)];
+    return LightEdit{e.node, light.intensity, light.color, light.range};
+  }
+
+  Edit operator()(const VisibilityEdit& e) const {
+    return VisibilityEdit{e.node, scene.nodes[find_node(scene, e.node)].visible};
+  }
+
+  Edit operator()(const CameraEdit&) const {
+    // Without a camera node the edit creates one holding the default camera: restoring that
+    // matrix renders the same view.
+    const int node = scene.camera_node();
+    return CameraEdit{std::nullopt, node >= 0 ? scene.nodes[size_t(node)].local
+                                              : resolve_camera(scene).camera_to_world};
+  }
+
+  Edit operator()(const EnvironmentEdit&) const {
+    if (!scene.environment)
+      throw InputError("the scene has no environment map to edit (load one with --env)");
+    return EnvironmentEdit{scene.environment->intensity, scene.environment->rotation};
+  }
 };
 
 }  // namespace
+
+Edit inverse_edit(const Scene& scene, const Edit& edit) {
+  return std::visit(Inverter{scene}, edit);
+}
 
 void apply_edit(Scene& scene, const Edit& edit) { std::visit(Applier{scene}, edit); }
 
@@ -96,6 +159,7 @@ std::string describe(const Edit& edit) {
     std::string operator()(const LightEdit& e) const { return "light " + e.node; }
     std::string operator()(const VisibilityEdit& e) const { return std::string(e.visible ? "show " : "hide ") + e.node; }
     std::string operator()(const CameraEdit&) const { return "camera"; }
+    std::string operator()(const EnvironmentEdit&) const { return "environment"; }
   };
   return std::visit(Describer{}, edit);
 }

@@ -64,6 +64,15 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
   const Camera old_camera = resolve_camera(before);
   const Camera new_camera = resolve_camera(after);
   changes.camera = old_camera.camera_to_world != new_camera.camera_to_world || old_camera.yfov != new_camera.yfov;
+
+  if (before.environment.has_value() != after.environment.has_value())
+    throw InternalError("scene diff between different scenes");
+  if (after.environment && (before.environment->intensity != after.environment->intensity ||
+                            before.environment->rotation != after.environment->rotation)) {
+    changes.environment = true;
+    // The light-selection CDF weighs the environment by its mean radiance x intensity.
+    changes.light_tables = true;
+  }
   return changes;
 }
 

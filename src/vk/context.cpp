@@ -50,6 +50,28 @@ struct FeatureChain {
   }
 };
 
+// The queue family to use: compute, preferably with graphics (the viewer draws its UI on the
+// same queue); with a surface, it must have graphics and present to the surface. -1: none.
+int pick_queue_family(VkPhysicalDevice device, VkSurfaceKHR surface) {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+  int chosen = -1;
+  for (uint32_t i = 0; i < count; ++i) {
+    const VkQueueFlags flags = families[i].queueFlags;
+    if (!(flags & VK_QUEUE_COMPUTE_BIT)) continue;
+    if (surface) {
+      VkBool32 present = VK_FALSE;
+      VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(device, i, surface, &present));
+      if (!present || !(flags & VK_QUEUE_GRAPHICS_BIT)) continue;
+    }
+    if (chosen < 0 || (flags & VK_QUEUE_GRAPHICS_BIT)) chosen = int(i);
+    if (flags & VK_QUEUE_GRAPHICS_BIT) break;
+  }
+  return chosen;
+}
+
 int device_rank(const VkPhysicalDeviceProperties& props) {
   switch (props.deviceType) {
     case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
@@ -65,6 +87,10 @@ int device_rank(const VkPhysicalDeviceProperties& props) {
 Context::Context(const ContextOptions& options) {
   try {
     create_instance(options);
+    if (options.create_surface) {
+      m_surface = options.create_surface(m_instance);
+      if (!m_surface) throw InternalError("the window system made no Vulkan surface");
+    }
     pick_physical_device(options);
     create_device();
   } catch (...) {
@@ -82,6 +108,10 @@ void Context::release() {
     if (m_command_pool) vkDestroyCommandPool(m_device, m_command_pool, nullptr);
     vkDestroyDevice(m_device, nullptr);
     m_device = VK_NULL_HANDLE;
+  }
+  if (m_surface) {
+    vkDestroySurfaceKHR(m_instance, m_surface, nullptr);
+    m_surface = VK_NULL_HANDLE;
   }
   if (m_messenger) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
@@ -116,6 +146,7 @@ void Context::create_instance(const ContextOptions& options) {
 
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
+  for (const std::string& name : options.instance_extensions) extensions.push_back(name.c_str());
   VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   if (options.validation) {
     uint32_t count = 0;
@@ -129,7 +160,10 @@ void Context::create_instance(const ContextOptions& options) {
       throw InternalError("validation requested but VK_LAYER_KHRONOS_validation is not installed "
                           "(package vulkan-validationlayers)");
     layers.push_back(kValidationLayer);
-    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    if (std::none_of(extensions.begin(), extensions.end(), [](const char* e) {
+          return std::strcmp(e, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0;
+        }))
+      extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     messenger.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
                                 VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
@@ -176,10 +210,12 @@ void Context::pick_physical_device(const ContextOptions& options) {
     const auto extensions = device_extensions(device);
     FeatureChain features;
     vkGetPhysicalDeviceFeatures2(device, &features.core);
-    const bool has_all_extensions = std::all_of(
-        std::begin(kRequiredDeviceExtensions), std::end(kRequiredDeviceExtensions),
-        [&](const char* ext) { return has_extension(extensions, ext); });
-    if (props.apiVersion < VK_API_VERSION_1_2 || !has_all_extensions || !features.supports_all()) {
+    const bool has_all_extensions =
+        std::all_of(std::begin(kRequiredDeviceExtensions), std::end(kRequiredDeviceExtensions),
+                    [&](const char* ext) { return has_extension(extensions, ext); }) &&
+        (!m_surface || has_extension(extensions, VK_KHR_SWAPCHAIN_EXTENSION_NAME));
+    if (props.apiVersion < VK_API_VERSION_1_2 || !has_all_extensions || !features.supports_all() ||
+        pick_queue_family(device, m_surface) < 0) {
       rejected += (rejected.empty() ? "" : ", ") + name;
       continue;
     }
@@ -193,6 +229,7 @@ void Context::pick_physical_device(const ContextOptions& options) {
   }
   if (!m_physical) {
     std::string message = "no Vulkan device supports acceleration structures + ray queries";
+    if (m_surface) message += " and presents to the window";
     if (!options.preferred_device.empty()) message += " matching '" + options.preferred_device + "'";
     if (!rejected.empty()) message += " (rejected: " + rejected + ")";
     message += "; install Mesa >= 23 lavapipe from bookworm-backports (tools/setup-deps.sh)";
@@ -208,18 +245,7 @@ void Context::pick_physical_device(const ContextOptions& options) {
 }
 
 void Context::create_device() {
-  uint32_t count = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(m_physical, &count, nullptr);
-  std::vector<VkQueueFamilyProperties> families(count);
-  vkGetPhysicalDeviceQueueFamilyProperties(m_physical, &count, families.data());
-  // Prefer a graphics+compute family: the viewer presents from the same queue.
-  int chosen = -1;
-  for (uint32_t i = 0; i < count; ++i) {
-    const VkQueueFlags flags = families[i].queueFlags;
-    if (!(flags & VK_QUEUE_COMPUTE_BIT)) continue;
-    if (chosen < 0 || (flags & VK_QUEUE_GRAPHICS_BIT)) chosen = int(i);
-    if (flags & VK_QUEUE_GRAPHICS_BIT) break;
-  }
+  const int chosen = pick_queue_family(m_physical, m_surface);
   if (chosen < 0) throw InternalError("device " + m_device_name + " has no compute queue");
   m_queue_family = uint32_t(chosen);
 
@@ -241,8 +267,11 @@ void Context::create_device() {
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &enabled.core};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
-  info.enabledExtensionCount = uint32_t(std::size(kRequiredDeviceExtensions));
-  info.ppEnabledExtensionNames = kRequiredDeviceExtensions;
+  std::vector<const char*> extensions(std::begin(kRequiredDeviceExtensions),
+                                      std::end(kRequiredDeviceExtensions));
+  if (m_surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  info.enabledExtensionCount = uint32_t(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   VK_CHECK(vkCreateDevice(m_physical, &info, nullptr, &m_device));
   vkGetDeviceQueue(m_device, m_queue_family, 0, &m_queue);
 

@@ -6,12 +6,19 @@
 #include <atomic>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace hipr::vk {
 
 struct ContextOptions {
   bool validation = false;  // enable VK_LAYER_KHRONOS_validation and count its errors
   std::string preferred_device;  // substring of the device name; empty = best available
+  // Presentation (the viewer). The window system's instance extensions, and a function that
+  // makes the window's surface once the instance exists (the Context then owns the surface).
+  // With a surface, only devices whose queue can present to it qualify, and the device gets
+  // VK_KHR_swapchain. Without one (the default) the context is headless, as before.
+  std::vector<std::string> instance_extensions;
+  std::function<VkSurfaceKHR(VkInstance)> create_surface;
 };
 
 struct DeviceFunctions {
@@ -33,6 +40,7 @@ class Context {
   VkPhysicalDevice physical_device() const { return m_physical; }
   VkDevice device() const { return m_device; }
   VkQueue queue() const { return m_queue; }
+  VkSurfaceKHR surface() const { return m_surface; }  // VK_NULL_HANDLE when headless
   uint32_t queue_family() const { return m_queue_family; }
   const DeviceFunctions& fn() const { return m_fn; }
   const std::string& device_name() const { return m_device_name; }
@@ -58,6 +66,7 @@ class Context {
       const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
   VkInstance m_instance = VK_NULL_HANDLE;
+  VkSurfaceKHR m_surface = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;
   VkPhysicalDevice m_physical = VK_NULL_HANDLE;
   VkDevice m_device = VK_NULL_HANDLE;

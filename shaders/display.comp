@@ -1,0 +1,50 @@
+#version 460
+// The viewer's display pass: what the window shows under the UI. Each window pixel takes the
+// nearest rendered pixel of the displayed image (placed and scaled by the push constants),
+// tone-maps it exactly as tonemap_srgb8 does (exposure, clamp, sRGB curve, 8 bits) and blends
+// the overlay on top in display space; pixels outside the image get the background colour.
+// Reads: the displayed radiance, the overlay. Writes: one RGBA8 word per window pixel.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+
+layout(local_size_x = 64) in;
+
+#include "shared/abi.h"
+
+layout(scalar, binding = kBindingDisplayRadiance) readonly buffer Radiance { vec3 b_radiance[]; };
+layout(scalar, binding = kBindingDisplayOverlay) readonly buffer Overlay { uint b_overlay[]; };
+layout(scalar, binding = kBindingDisplayOutput) writeonly buffer Output { uint b_output[]; };
+layout(push_constant, scalar) uniform Push { DisplayPush u_push; };
+
+// image/tonemap.cpp's srgb_encode: non-finite -> 0, clamp to [0, 1], sRGB transfer curve.
+float display_srgb_encode(float x) {
+  x = (isnan(x) || isinf(x)) ? 0.0 : clamp(x, 0.0, 1.0);
+  return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
+}
+
+uint display_byte(float encoded) { return uint(floor(encoded * 255.0 + 0.5)); }
+
+void main() {
+  const uint index = gl_GlobalInvocationID.x;
+  if (index >= u_push.outputWidth * u_push.outputHeight) return;
+  const vec2 window = vec2(index % u_push.outputWidth, index / u_push.outputWidth) + 0.5;
+  const vec2 source = floor((window - vec2(u_push.viewX, u_push.viewY)) / u_push.viewScale);
+  if (any(lessThan(source, vec2(0.0))) || source.x >= float(u_push.sourceWidth) ||
+      source.y >= float(u_push.sourceHeight)) {
+    b_output[index] = u_push.background;
+    return;
+  }
+  const uint pixel = uint(source.y) * u_push.sourceWidth + uint(source.x);
+  const vec3 radiance = b_radiance[pixel] * u_push.exposureScale;
+  uvec3 rgb = uvec3(display_byte(display_srgb_encode(radiance.r)),
+                    display_byte(display_srgb_encode(radiance.g)),
+                    display_byte(display_srgb_encode(radiance.b)));
+  if (u_push.overlayEnabled != 0u) {
+    const uint overlay = b_overlay[pixel];
+    const float alpha = float(overlay >> 24u) / 255.0;
+    const vec3 colour = vec3(overlay & 0xffu, (overlay >> 8u) & 0xffu, (overlay >> 16u) & 0xffu);
+    rgb = uvec3(floor(mix(vec3(rgb), colour, alpha) + 0.5));
+  }
+  b_output[index] = rgb.r | (rgb.g << 8u) | (rgb.b << 16u) | (255u << 24u);
+}

@@ -1,0 +1,142 @@
+// `hipr view SCENE [--script EDITS.json] [--screenshot FILE] [--exit-after-frames N] [--size WxH]`:
+// the interactive viewer. Every flag, the scene and the script are checked before a window
+// opens, so bad input is one line and exit code 2 even without a display.
+#include <regex>
+
+#include "app/commands.h"
+#include "app/viewer/screenshot.h"
+#include "app/viewer/viewer.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "hipr/scene_loader.h"
+
+namespace hipr::app {
+namespace {
+namespace fs = std::filesystem;
+
+struct ViewCommandOptions {
+  viewer::ViewerOptions viewer;
+  std::string size;
+  fs::path script;
+  std::string overlay = "none";
+  std::string policy = "hipr";
+  std::string display;
+  std::string select;
+  bool no_ui = false;
+};
+
+void apply_size(const std::string& size, RenderSettings& render) {
+  if (size.empty()) return;
+  std::smatch match;
+  static const std::regex pattern("([0-9]{1,5})x([0-9]{1,5})");
+  if (!std::regex_match(size, match, pattern))
+    throw InputError("--size must be WxH, e.g. 512x512 (got '" + size + "')");
+  render.width = uint32_t(std::stoul(match[1]));
+  render.height = uint32_t(std::stoul(match[2]));
+}
+
+// A node by glTF name or "#index", as edit scripts name them.
+int find_node(const Scene& scene, const std::string& name) {
+  if (name.size() > 1 && name[0] == '#' &&
+      name.find_first_not_of("0123456789", 1) == std::string::npos && name.size() < 10 &&
+      std::stoul(name.substr(1)) < scene.nodes.size())
+    return int(std::stoul(name.substr(1)));
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    if (scene.nodes[n].name == name) return int(n);
+  throw InputError("--select: no node named '" + name + "' in the scene");
+}
+
+int run_view(ViewCommandOptions& o) {
+  viewer::ViewerOptions& v = o.viewer;
+  apply_size(o.size, v.common.render);
+  validate_common_options(v.common);
+  log::set_quiet(v.common.quiet);
+  v.overlay = viewer::parse_overlay(o.overlay);
+  v.policy = parse_policy(o.policy);
+  if (v.policy == Policy::Oracle)
+    throw InputError("the oracle policy needs a reference image: use hipr bench");
+  if (!o.display.empty()) v.display_rule = parse_display_rule(o.display);
+  if (v.first_visit_spp > v.common.spp)
+    throw InputError("--first-visit-spp must be between 1 and --spp");
+  v.show_ui = !o.no_ui;
+  if (v.script_every < 1) throw InputError("--script-every must be at least 1");
+  if (v.visit_spp < 1 || v.visit_spp > v.common.spp)
+    throw InputError("--visit-spp must be between 1 and --spp");
+  if (!(v.frame_budget_ms > 0.0) || v.frame_budget_ms > 10000.0)
+    throw InputError("--frame-budget-ms must be in (0, 10000]");
+  if (!std::isfinite(v.exposure_ev)) throw InputError("--exposure must be finite");
+  if (!v.screenshot.empty()) viewer::check_screenshot_path(v.screenshot);
+  if (!v.save.empty()) {
+    const std::string ext = v.save.extension().string();
+    if (ext != ".gltf" && ext != ".glb")
+      throw InputError("--save must name a .gltf or .glb file: " + v.save.string());
+    const fs::path dir = v.save.has_parent_path() ? v.save.parent_path() : fs::path(".");
+    if (!fs::is_directory(dir)) throw InputError("--save folder does not exist: " + dir.string());
+  }
+  if (!v.stats_json.empty()) {
+    const fs::path dir =
+        v.stats_json.has_parent_path() ? v.stats_json.parent_path() : fs::path(".");
+    if (!fs::is_directory(dir))
+      throw InputError("--stats-json folder does not exist: " + dir.string());
+  }
+  Scene scene = load_scene(v.common.scene, v.common.load);
+  if (!o.select.empty()) v.select = find_node(scene, o.select);
+  if (!o.script.empty()) {
+    v.script = load_edit_script(o.script);
+    // Every name in the script must resolve before the window opens.
+    Scene probe = scene;
+    for (const Edit& edit : v.script) apply_edit(probe, edit);
+  }
+  return viewer::run_viewer(v, std::move(scene));
+}
+
+}  // namespace
+
+Command add_view_command(CLI::App& app) {
+  auto options = std::make_shared<ViewCommandOptions>();
+  viewer::ViewerOptions& v = options->viewer;
+  CLI::App* cmd =
+      app.add_subcommand("view", "Open a scene in the interactive viewer (edit, pick, undo, save)");
+  cmd->add_option("scene", v.common.scene, "Scene file (.gltf or .glb)")->required();
+  cmd->add_option("--script", options->script,
+                  "Edit script (.json) applied as if typed, one edit every --script-every frames");
+  cmd->add_option("--script-every", v.script_every,
+                  "Frames between script edits (edit k at frame (k+1) x N)")
+      ->capture_default_str();
+  cmd->add_option("--screenshot", v.screenshot,
+                  "At exit, write what the window shows (.png) or the displayed radiance (.exr)");
+  cmd->add_option("--exit-after-frames", v.exit_after_frames,
+                  "Close after N frames (0: when the window closes)");
+  cmd->add_option("--size", options->size, "Rendered image size WxH (overrides --width/--height)");
+  cmd->add_option("--overlay", options->overlay, "Initial overlay: none, ids, weights, owed")
+      ->capture_default_str();
+  cmd->add_option("--policy", options->policy, "hipr, full, scanline, spiral or random")
+      ->capture_default_str();
+  cmd->add_option("--tiles-per-step", v.tiles_per_step,
+                  "Tiles per scheduling step (default: 1/64 of the frame)");
+  cmd->add_option("--visit-spp", v.visit_spp, "Samples per pixel a tile gets per visit")
+      ->capture_default_str();
+  cmd->add_option("--first-visit-spp", v.first_visit_spp,
+                  "Samples per pixel of a tile's first visit after an edit (default: 2, within "
+                  "[--visit-spp, --spp])");
+  cmd->add_option("--display", options->display,
+                  "How re-rendered tiles are shown: immediate, switch or blend (default: blend for "
+                  "hipr, immediate "
+                  "for the others)");
+  cmd->add_option("--frame-budget-ms", v.frame_budget_ms,
+                  "Time spent on scheduling steps per frame")
+      ->capture_default_str();
+  cmd->add_option("--steps-per-frame", v.steps_per_frame,
+                  "Exactly N scheduling steps per frame instead of a time budget");
+  cmd->add_option("--exposure", v.exposure_ev, "Display exposure in stops")->capture_default_str();
+  cmd->add_flag("--no-ui", options->no_ui,
+                "No panels or status line: the window shows the render alone");
+  cmd->add_option("--stats-json", v.stats_json,
+                  "At exit, write fps and per-edit feedback latency (JSON)");
+  cmd->add_option("--save", v.save, "At exit, save the edited scene as glTF (.gltf or .glb)");
+  cmd->add_option("--select", options->select, "Node selected at start (glTF name or #index)");
+  add_common_options(*cmd, v.common);
+  return {cmd, [options] { return run_view(*options); }};
+}
+
+}  // namespace hipr::app

@@ -1,0 +1,255 @@
+// The side panel's frame and its viewer sections (file, history, HiPR, display), the status
+// line, and how widget edits reach the session.
+#include "app/viewer/panels.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "app/cli_common.h"
+#include "core/error.h"
+
+namespace hipr::viewer {
+namespace {
+
+// The oracle needs a reference render of every edit: a benchmark's policy, not a viewer's.
+const Policy kPolicies[] = {Policy::Hipr, Policy::Full, Policy::Scanline, Policy::Spiral,
+                            Policy::Random};
+
+// Weights as the renderer takes them: each group scaled to sum 1 (left alone when all zero).
+HiprParameters normalised(HiprParameters h) {
+  const auto normalise = [](float* w, int n) {
+    float sum = 0.0f;
+    for (int i = 0; i < n; ++i) sum += w[i];
+    if (sum > 0.0f)
+      for (int i = 0; i < n; ++i) w[i] /= sum;
+  };
+  normalise(h.w_lobe, 4);
+  normalise(h.w_path, 3);
+  return h;
+}
+
+void file_section(Session& session, ViewerState& state) {
+  if (!ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const EditHistory& history = session.history();
+  ImGui::InputText("##open", &state.open_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Open")) {
+    state.request_open = true;
+    state.open_confirmed = !history.unsaved();
+  }
+  if (state.request_open && !state.open_confirmed) {
+    ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%zu unsaved edit(s) will be lost.",
+                       history.undo_count());
+    if (ImGui::Button("Open anyway")) state.open_confirmed = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) state.request_open = false;
+  }
+  ImGui::InputText("##save", &state.save_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Save")) state.request_save = true;
+  ImGui::InputText("##shot", &state.screenshot_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot")) state.request_screenshot = true;
+  // Messages, newest last (errors in red), in a box of fixed height: a new message must not
+  // move the widgets below it under the user's mouse.
+  ImGui::BeginChild("messages", ImVec2(0.0f, 3.0f * ImGui::GetTextLineHeightWithSpacing() + 6.0f),
+                    true);
+  for (const Message& m : state.messages) {
+    if (m.error) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.35f, 1.0f));
+    ImGui::TextWrapped("%s", m.text.c_str());
+    if (m.error) ImGui::PopStyleColor();
+  }
+  if (state.message_count != state.messages_shown)
+    ImGui::SetScrollHereY(1.0f);  // follow the newest
+  state.messages_shown = state.message_count;
+  ImGui::EndChild();
+}
+
+void history_section(Session& session, ViewerState& state) {
+  if (!ImGui::CollapsingHeader("History", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const EditHistory& history = session.history();
+  ImGui::BeginDisabled(!history.can_undo());
+  if (ImGui::Button("Undo")) session.undo();
+  ImGui::EndDisabled();
+  if (history.can_undo()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", history.undo_label().c_str());
+  }
+  ImGui::BeginDisabled(!history.can_redo());
+  if (ImGui::Button("Redo")) session.redo();
+  ImGui::EndDisabled();
+  if (history.can_redo()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", history.redo_label().c_str());
+  }
+  ImGui::Text("%zu step(s)%s", history.undo_count(), history.unsaved() ? ", unsaved" : "");
+  (void)state;
+}
+
+void hipr_section(Session& session, ViewerState& state) {
+  if (!ImGui::CollapsingHeader("HiPR")) return;
+  const SessionSettings& settings = session.settings();
+  const std::string current = policy_name(settings.policy);
+  if (ImGui::BeginCombo("policy", current.c_str())) {
+    for (Policy p : kPolicies)
+      if (ImGui::Selectable(policy_name(p).c_str(), p == settings.policy)) state.request_policy = p;
+    ImGui::EndCombo();
+  }
+  const std::optional<DisplayRule> rule = settings.display;
+  const std::string rule_label =
+      rule ? display_rule_name(*rule)
+           : "default (" + display_rule_name(default_display_rule(settings.policy)) + ")";
+  if (ImGui::BeginCombo("display rule", rule_label.c_str())) {
+    if (ImGui::Selectable("default", !rule))
+      state.request_display_rule = std::optional<DisplayRule>();
+    for (DisplayRule r : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend})
+      if (ImGui::Selectable(display_rule_name(r).c_str(), rule == r))
+        state.request_display_rule = std::optional<DisplayRule>(r);
+    ImGui::EndCombo();
+  }
+  ImGui::InputInt("n (tile px)", &state.tile_size_input);
+  state.tile_size_input = std::clamp(state.tile_size_input, 1, 256);
+  ImGui::SameLine();
+  if (ImGui::Button("Apply")) state.request_tile_size = uint32_t(state.tile_size_input);
+  ImGui::TextDisabled("n restarts the image; the rest applies from the next edit");
+
+  bool changed = false;
+  if (ImGui::BeginCombo("preset", state.preset.c_str())) {
+    for (const std::string& name : app::hipr_preset_names())
+      if (ImGui::Selectable(name.c_str(), name == state.preset)) {
+        state.preset = name;
+        app::apply_hipr_preset(name, state.hipr_sliders);
+        changed = true;
+      }
+    ImGui::EndCombo();
+  }
+  HiprParameters& h = state.hipr_sliders;
+  changed |= ImGui::SliderFloat("eps", &h.depth_epsilon, 0.0005f, 0.2f, "%.4f",
+                                ImGuiSliderFlags_Logarithmic);
+  const char* lobes[] = {"w_lobe diffuse", "w_lobe glossy", "w_lobe specular",
+                         "w_lobe transmission"};
+  for (int i = 0; i < 4; ++i) changed |= ImGui::SliderFloat(lobes[i], &h.w_lobe[i], 0.0f, 1.0f);
+  const char* paths[] = {"w_path direct", "w_path indirect", "w_path caustic"};
+  for (int i = 0; i < 3; ++i) changed |= ImGui::SliderFloat(paths[i], &h.w_path[i], 0.0f, 1.0f);
+  changed |= ImGui::SliderFloat("w_occlusion", &h.w_occlusion, 0.0f, 2.0f);
+  if (changed) session.set_hipr_parameters(normalised(h));
+  ImGui::TextWrapped(
+      "%u tiles of %u px, %u per step; %u spp per visit (first visit %u), target %u spp",
+      session.renderer().tile_count(), settings.render.tile_size,
+      settings.tiles_per_step ? settings.tiles_per_step
+                              : default_tiles_per_step(session.renderer().tile_count()),
+      settings.visit_spp,
+      settings.first_visit_spp ? settings.first_visit_spp : default_first_visit_spp(settings),
+      settings.spp);
+}
+
+void display_section(ViewerState& state) {
+  if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  int overlay = int(state.overlay);
+  const char* names[] = {"none", "object ids", "tile weights", "owed tiles"};
+  ImGui::Combo("overlay (0-3)", &overlay, names, 4);
+  state.overlay = Overlay(overlay);
+  ImGui::SliderFloat("exposure (EV)", &state.exposure_ev, -8.0f, 8.0f, "%.1f");
+  ImGui::Checkbox("status line", &state.show_status);
+  float budget = float(state.frame_budget_ms);
+  if (ImGui::SliderFloat("render ms/frame", &budget, 2.0f, 250.0f, "%.0f",
+                         ImGuiSliderFlags_Logarithmic))
+    state.frame_budget_ms = budget;
+}
+
+}  // namespace
+
+bool ui_edit(Session& session, ViewerState& state, const Edit& edit) {
+  if (!state.ui_group_open && ImGui::IsAnyItemActive()) {
+    session.begin_group();
+    state.ui_group_open = true;
+  }
+  try {
+    session.edit(edit);
+    return true;
+  } catch (const InputError& e) {
+    state.error(e.what());
+    return false;
+  }
+}
+
+void end_ui_edit_group(Session& session, ViewerState& state) {
+  if (state.ui_group_open && !ImGui::IsAnyItemActive()) {
+    session.end_group();
+    state.ui_group_open = false;
+  }
+}
+
+void draw_side_panel(Session& session, ViewerState& state, float x, float height) {
+  ImGui::SetNextWindowPos(ImVec2(x, 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, height), ImGuiCond_Always);
+  ImGui::Begin("hipr", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::PushItemWidth(-150.0f);
+  file_section(session, state);
+  history_section(session, state);
+  display_section(state);
+  scene_tree_section(session, state);
+  selection_section(session, state);
+  lights_section(session, state);
+  environment_section(session, state);
+  hipr_section(session, state);
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+void draw_status_line(const Session& session, const ViewerState& state, float x, float y,
+                      float width) {
+  char buffer[96];
+  std::vector<std::string> items;
+  const auto add = [&](const char* format, auto... values) {
+    std::snprintf(buffer, sizeof buffer, format, values...);
+    items.emplace_back(buffer);
+  };
+  add("%s", policy_name(session.settings().policy).c_str());
+  add("%.1f/%u spp", state.mean_spp, session.settings().spp);
+  add("work %.2f", session.work_since_edit());
+  add("%.1f s since edit", session.seconds_since_edit());
+  add("%.2f Msamples/s", session.samples_per_second() * 1e-6);
+  add("%.1f fps", state.fps);
+  const auto& records = session.edit_records();
+  if (!records.empty() && records.back().latency_seconds >= 0.0)
+    add("latency %.0f ms", records.back().latency_seconds * 1e3);
+  if (session.converged()) add("converged");
+  // Items flow onto as many lines as the view's width needs (the view can be as narrow as
+  // the render).
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float gap = ImGui::CalcTextSize("  ").x,
+              usable = std::max(width - 2.0f * style.WindowPadding.x, 1.0f);
+  std::vector<std::string> lines(1);
+  float line_width = 0.0f;
+  for (const std::string& item : items) {
+    const float w = ImGui::CalcTextSize(item.c_str()).x;
+    if (!lines.back().empty() && line_width + gap + w > usable) {
+      lines.emplace_back();
+      line_width = 0.0f;
+    }
+    if (!lines.back().empty()) {
+      lines.back() += "  ";
+      line_width += gap;
+    }
+    lines.back() += item;
+    line_width += w;
+  }
+  const float height =
+      float(lines.size()) * ImGui::GetTextLineHeightWithSpacing() + 2.0f * style.WindowPadding.y;
+  ImGui::SetNextWindowPos(ImVec2(x, y - height), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.55f);
+  ImGui::Begin("status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav);
+  for (const std::string& line : lines) ImGui::TextUnformatted(line.c_str());
+  ImGui::End();
+}
+
+}  // namespace hipr::viewer

@@ -1,0 +1,232 @@
+// Side panel sections about the scene: tree, selection + materials, lights, environment.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <glm/trigonometric.hpp>
+
+#include "app/viewer/panels.h"
+#include "scene/material_parameters.h"
+
+namespace hipr::viewer {
+namespace {
+
+std::string index_reference(uint32_t index) { return "#" + std::to_string(index); }
+
+template <typename Items, typename NameOf>
+std::string reference(const Items& items, uint32_t index, NameOf name_of) {
+  const std::string& name = name_of(items[index]);
+  // The edit model resolves a name to its first holder; "#..." would read as an index.
+  if (name.empty() || name[0] == '#') return index_reference(index);
+  for (uint32_t i = 0; i < items.size(); ++i)
+    if (name_of(items[i]) == name) return i == index ? name : index_reference(index);
+  return index_reference(index);
+}
+
+// Drag speed for an unbounded value: about 1% of its size, so small and large values both move.
+float drag_speed(float value, float floor) { return std::max(std::abs(value) * 0.01f, floor); }
+
+void tree_node(Session& session, ViewerState& state, uint32_t node) {
+  const Scene& scene = session.scene();
+  const Node& n = scene.nodes[node];
+  const bool leaf = scene.children[node].empty();
+  ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth;
+  if (leaf) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
+  if (state.selected_node == int(node)) flags |= ImGuiTreeNodeFlags_Selected;
+  std::string label = node_label(scene, node);
+  if (n.light >= 0) label += "  (light)";
+  if (n.camera >= 0) label += "  (camera)";
+  ImGui::PushID(int(node));
+  const bool open = ImGui::TreeNodeEx("node", flags, "%s", label.c_str());
+  if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) state.selected_node = int(node);
+  if (n.mesh >= 0 || !leaf) {
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::GetFrameHeight());
+    bool visible = n.visible;
+    if (ImGui::Checkbox("##visible", &visible))
+      ui_edit(session, state, VisibilityEdit{node_reference(scene, node), visible});
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("visible");
+  }
+  if (open && !leaf) {
+    for (uint32_t child : scene.children[node]) tree_node(session, state, child);
+    ImGui::TreePop();
+  }
+  ImGui::PopID();
+}
+
+void material_editor(Session& session, ViewerState& state, uint32_t material) {
+  const Scene& scene = session.scene();
+  const abi::MaterialBlock& block = scene.materials[material].params;
+  const std::string name = material_reference(scene, material);
+  for (const MaterialParameter& p : material_parameters()) {
+    float values[3] = {0.0f, 0.0f, 0.0f};
+    std::memcpy(values, reinterpret_cast<const char*>(&block) + p.offset,
+                size_t(p.components) * sizeof(float));
+    bool changed = false;
+    if (p.components == 3) {
+      ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float;
+      if (!(p.max <= 1.0f)) flags |= ImGuiColorEditFlags_HDR;
+      changed = ImGui::ColorEdit3(p.name, values, flags);
+    } else if (std::isfinite(p.min) && std::isfinite(p.max)) {
+      changed = ImGui::SliderFloat(p.name, values, p.min, p.max);
+    } else {
+      const float lo = std::isfinite(p.min) ? p.min : -FLT_MAX,
+                  hi = std::isfinite(p.max) ? p.max : FLT_MAX;
+      changed = ImGui::DragFloat(p.name, values, drag_speed(values[0], 0.01f), lo, hi, "%.3f",
+                                 ImGuiSliderFlags_AlwaysClamp);
+    }
+    if (!changed) continue;
+    std::vector<float> set(values, values + p.components);
+    for (float& v : set) v = std::clamp(std::isfinite(v) ? v : 0.0f, p.min, p.max);
+    ui_edit(session, state, MaterialEdit{name, {{p.name, set}}});
+  }
+}
+
+}  // namespace
+
+std::string node_reference(const Scene& scene, uint32_t node) {
+  return reference(scene.nodes, node, [](const Node& n) -> const std::string& { return n.name; });
+}
+
+std::string material_reference(const Scene& scene, uint32_t material) {
+  return reference(scene.materials, material,
+                   [](const Material& m) -> const std::string& { return m.name; });
+}
+
+std::string node_label(const Scene& scene, uint32_t node) {
+  return scene.nodes[node].name.empty() ? index_reference(node) : scene.nodes[node].name;
+}
+
+void scene_tree_section(Session& session, ViewerState& state) {
+  if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::BeginChild("tree", ImVec2(0.0f, 160.0f), true);
+  for (uint32_t root : session.scene().root_nodes) tree_node(session, state, root);
+  ImGui::EndChild();
+}
+
+void selection_section(Session& session, ViewerState& state) {
+  if (!ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const Scene& scene = session.scene();
+  if (state.selected_node < 0 || size_t(state.selected_node) >= scene.nodes.size()) {
+    ImGui::TextDisabled("Click an object in the view (or a node above).");
+    return;
+  }
+  const uint32_t node = uint32_t(state.selected_node);
+  const Node& n = scene.nodes[node];
+  ImGui::Text("%s", node_label(scene, node).c_str());
+  const std::string reference = node_reference(scene, node);
+  float translation[3] = {n.local[3].x, n.local[3].y, n.local[3].z};
+  const auto [lo, hi] = scene.bounds();
+  if (ImGui::DragFloat3("translation", translation,
+                        std::max(glm::length(hi - lo) * 0.002f, 1e-4f))) {
+    glm::mat4 local = n.local;
+    local[3] = glm::vec4(translation[0], translation[1], translation[2], 1.0f);
+    ui_edit(session, state, TransformEdit{reference, std::nullopt, local});
+  }
+  bool visible = n.visible;
+  if (ImGui::Checkbox("visible", &visible))
+    ui_edit(session, state, VisibilityEdit{reference, visible});
+  if (n.mesh < 0) return;
+  // Each material of the mesh once, in primitive order.
+  std::vector<uint32_t> materials;
+  for (const MeshPrimitive& p : scene.meshes[size_t(n.mesh)].primitives)
+    if (std::find(materials.begin(), materials.end(), p.material) == materials.end())
+      materials.push_back(p.material);
+  for (uint32_t m : materials) {
+    ImGui::PushID(int(m));
+    const std::string title =
+        "material " +
+        (scene.materials[m].name.empty() ? "#" + std::to_string(m) : scene.materials[m].name);
+    if (ImGui::TreeNodeEx("material", materials.size() == 1 ? ImGuiTreeNodeFlags_DefaultOpen : 0,
+                          "%s", title.c_str())) {
+      material_editor(session, state, m);
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+}
+
+void lights_section(Session& session, ViewerState& state) {
+  if (!ImGui::CollapsingHeader("Lights")) return;
+  const Scene& scene = session.scene();
+  bool any = false;
+  for (uint32_t node = 0; node < scene.nodes.size(); ++node) {
+    if (scene.nodes[node].light < 0) continue;
+    any = true;
+    const PunctualLight& light = scene.lights[size_t(scene.nodes[node].light)];
+    const std::string reference = node_reference(scene, node);
+    ImGui::PushID(int(node));
+    ImGui::Text("%s", node_label(scene, node).c_str());
+    float intensity = light.intensity;
+    if (ImGui::DragFloat("intensity", &intensity, drag_speed(intensity, 0.01f), 0.0f, FLT_MAX,
+                         "%.3f", ImGuiSliderFlags_AlwaysClamp))
+      ui_edit(session, state,
+              LightEdit{reference, std::max(intensity, 0.0f), std::nullopt, std::nullopt});
+    float colour[3] = {light.color.r, light.color.g, light.color.b};
+    if (ImGui::ColorEdit3("colour", colour, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
+      ui_edit(session, state,
+              LightEdit{reference, std::nullopt,
+                        glm::max(glm::vec3(colour[0], colour[1], colour[2]), glm::vec3(0.0f)),
+                        std::nullopt});
+    float range = light.range;
+    if (ImGui::DragFloat("range (0: infinite)", &range, drag_speed(range, 0.01f), 0.0f, FLT_MAX,
+                         "%.3f", ImGuiSliderFlags_AlwaysClamp))
+      ui_edit(session, state,
+              LightEdit{reference, std::nullopt, std::nullopt, std::max(range, 0.0f)});
+    ImGui::Separator();
+    ImGui::PopID();
+  }
+  // Emissive as the light tables see it: luminance and colour both non-zero (glTF gives every
+  // material luminance 1 and a black colour, which an emission texture only multiplies).
+  for (uint32_t m = 0; m < scene.materials.size(); ++m) {
+    const abi::MaterialBlock& p = scene.materials[m].params;
+    if (p.emission_luminance > 0.0f &&
+        glm::any(glm::greaterThan(p.emission_color, glm::vec3(0.0f))))
+      state.emitters.insert(m);
+  }
+  for (uint32_t m : state.emitters) {
+    any = true;
+    const abi::MaterialBlock& block = scene.materials[m].params;
+    const std::string reference = material_reference(scene, m);
+    ImGui::PushID(int(1000000 + m));
+    ImGui::Text("emitter: material %s", scene.materials[m].name.empty()
+                                            ? reference.c_str()
+                                            : scene.materials[m].name.c_str());
+    float luminance = block.emission_luminance;
+    if (ImGui::DragFloat("emission (nits)", &luminance, drag_speed(luminance, 0.01f), 0.0f, FLT_MAX,
+                         "%.3f", ImGuiSliderFlags_AlwaysClamp))
+      ui_edit(session, state,
+              MaterialEdit{reference, {{"emission_luminance", {std::max(luminance, 0.0f)}}}});
+    float colour[3] = {block.emission_color.r, block.emission_color.g, block.emission_color.b};
+    if (ImGui::ColorEdit3("emission colour", colour,
+                          ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
+      ui_edit(session, state,
+              MaterialEdit{reference,
+                           {{"emission_color",
+                             {std::max(colour[0], 0.0f), std::max(colour[1], 0.0f),
+                              std::max(colour[2], 0.0f)}}}});
+    ImGui::Separator();
+    ImGui::PopID();
+  }
+  if (!any) ImGui::TextDisabled("No lights or emissive materials.");
+}
+
+void environment_section(Session& session, ViewerState& state) {
+  if (!ImGui::CollapsingHeader("Environment")) return;
+  const Scene& scene = session.scene();
+  if (!scene.environment) {
+    ImGui::TextDisabled("No environment map (start with --env FILE.hdr).");
+    return;
+  }
+  ImGui::TextWrapped("%s", scene.environment->path.filename().string().c_str());
+  float intensity = scene.environment->intensity;
+  if (ImGui::DragFloat("intensity##env", &intensity, drag_speed(intensity, 0.01f), 0.0f, FLT_MAX,
+                       "%.3f", ImGuiSliderFlags_AlwaysClamp))
+    ui_edit(session, state, EnvironmentEdit{std::max(intensity, 0.0f), std::nullopt});
+  float degrees = glm::degrees(scene.environment->rotation);
+  if (ImGui::SliderFloat("rotation (deg)", &degrees, -180.0f, 180.0f))
+    ui_edit(session, state, EnvironmentEdit{std::nullopt, glm::radians(degrees)});
+}
+
+}  // namespace hipr::viewer

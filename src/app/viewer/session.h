@@ -1,0 +1,125 @@
+#pragma once
+// One scene being edited: the scene model, its renderer and scheduler, the undo history, and
+// what the window should show. No window here, so tests drive it headless. Every change to
+// the scene (an edit, an undo, a redo) goes through the same path: diff against the scene
+// before, Scheduler::on_edit, so HiPR re-renders first what the change touched.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/viewer/edit_history.h"
+#include "core/timer.h"
+#include "hipr/renderer.h"
+#include "hipr/scheduler.h"
+#include "vk/context.h"
+
+namespace hipr::viewer {
+
+struct SessionSettings {
+  RenderSettings render;
+  Policy policy = Policy::Hipr;
+  uint32_t tiles_per_step = 0;  // 0: 1/64 of the frame, so a frame's time budget is spent finely
+  uint32_t visit_spp = 1;
+  uint32_t first_visit_spp = 0;  // a tile's first visit after an edit; 0: default_first_visit_spp
+  std::optional<DisplayRule>
+      display;        // how re-rendered tiles are shown; none: the policy's default
+  uint32_t spp = 64;  // samples per pixel to converge to; rendering pauses there
+};
+
+// How one change reached the screen: the feedback latency of the measurements.
+struct EditRecord {
+  std::string what;
+  double latency_seconds = -1.0;      // edit -> first presented frame that differs; -1: none yet
+  double work_at_first_change = 0.0;  // in full-frame 1-spp passes
+};
+
+class Session {
+ public:
+  // Takes the scene as loaded. A scene without a camera gets its default camera as a node
+  // first: otherwise moving an object would move the framing camera and restart everything.
+  Session(const vk::Context& ctx, Scene scene, const SessionSettings& settings);
+
+  const Scene& scene() const { return m_scene; }
+  const SessionSettings& settings() const { return m_settings; }
+  const Renderer& renderer() const { return *m_renderer; }
+  const Scheduler& scheduler() const { return *m_scheduler; }
+  const EditHistory& history() const { return m_history; }
+
+  // Applies and records an edit and starts its re-render. Throws InputError (nothing changed)
+  // for an edit the scene refuses.
+  void edit(const Edit& edit);
+  // Edits between these form one undo step (a drag).
+  void begin_group() { m_history.begin_group(); }
+  void end_group() { m_history.end_group(); }
+  bool undo();
+  bool redo();
+  void mark_saved() { m_history.mark_saved(); }
+
+  // Runs scheduling steps until `budget_seconds` is spent (at least one step) or the image
+  // has `spp` samples per pixel again; returns how many ran.
+  uint32_t render(double budget_seconds, uint32_t max_steps = UINT32_MAX);
+  bool converged() const;
+  double work_since_edit() const { return m_scheduler->work_since_edit(); }
+  double seconds_since_edit() const { return m_since_edit.seconds(); }
+  // Samples per second since the last edit (0 before any sample).
+  double samples_per_second() const;
+
+  // What the scheduler says is displayed (read back only when steps ran since the last call).
+  const ImageRGB& displayed();
+  // Increments whenever displayed() may return something new.
+  uint64_t display_version() const { return m_display_version; }
+  // Call after a frame showing displayed() was presented: completes the latency of the last
+  // change when this frame is the first to show it.
+  void on_presented();
+  const std::vector<EditRecord>& edit_records() const { return m_records; }
+
+  // The G-buffer of the scene as it is now: instance per pixel, and one pixel's hit.
+  const std::vector<uint32_t>& instance_ids();
+  Renderer::PixelHit pick(uint32_t x, uint32_t y);
+
+  // Viewer settings, not edits (no undo): a new policy applies from the next edit on; a new
+  // tile size rebuilds the renderer (the image restarts); HiPR weights apply from the next
+  // stage 2.
+  void set_policy(Policy policy);  // throws InputError for the oracle (it needs a reference)
+  void set_display_rule(std::optional<DisplayRule> rule);
+  void set_tile_size(uint32_t tile_size);
+  void set_hipr_parameters(const HiprParameters& parameters);
+
+ private:
+  void rebuild();
+  std::unique_ptr<Scheduler> make_scheduler(Renderer& renderer, Policy policy) const;
+  void changed(const Scene& before, const std::string& what);
+
+  const vk::Context& m_ctx;
+  SessionSettings m_settings;
+  Scene m_scene;
+  EditHistory m_history;
+  std::unique_ptr<Renderer> m_renderer;
+  std::unique_ptr<Scheduler> m_scheduler;
+  Timer m_since_edit;
+  bool m_dirty_display = true;
+  uint64_t m_display_version = 0;
+  ImageRGB m_displayed;
+  std::optional<ImageRGB> m_shown_at_edit;  // what the screen showed when the pending change came
+  std::vector<EditRecord> m_records;
+  bool m_ids_stale = true;
+  bool m_gbuffer_stale = false;  // edits since stage 1 last ran (policies without stage 1)
+  std::vector<uint32_t> m_ids;
+};
+
+// A copy of `scene` with what diff_scenes reads (nodes, materials, lights, cameras, the
+// environment's settings, mesh primitive materials; vertex positions only when the default
+// camera depends on them), without texels and vertex data: the "before" of an edit stays
+// cheap in big scenes.
+Scene diff_snapshot(const Scene& scene);
+
+// The default tiles per step: 1/64 of the frame, at least one tile.
+uint32_t default_tiles_per_step(uint32_t tile_count);
+
+// Samples of a tile's first visit after an edit unless set: 2 (as hipr bench), at least
+// visit_spp, at most spp. The blend and switch display rules need two samples per pixel to
+// judge a fresh estimate, so one sample would keep an edit off the screen for a whole pass.
+uint32_t default_first_visit_spp(const SessionSettings& settings);
+
+}  // namespace hipr::viewer

@@ -1,0 +1,470 @@
+#include "app/viewer/viewer.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <fstream>
+#include <glm/trigonometric.hpp>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "app/viewer/panels.h"
+#include "app/viewer/screenshot.h"
+#include "app/viewer/session.h"
+#include "app/viewer/ui_layer.h"
+#include "app/viewer/view_layout.h"
+#include "app/viewer/viewer_state.h"
+#include "app/viewer/viewport_input.h"
+#include "app/viewer/window.h"
+#include "core/error.h"
+#include "core/file_util.h"
+#include "core/log.h"
+#include "core/timer.h"
+#include "hipr/scene_loader.h"
+#include "hipr/scene_writer.h"
+#include "render/display_pass.h"
+#include "vk/image.h"
+#include "vk/swapchain.h"
+#include "vk/ui_pass.h"
+
+namespace hipr::viewer {
+namespace {
+namespace fs = std::filesystem;
+
+// With panels, the window is at least this tall so the side panel has room.
+constexpr uint32_t kMinUiHeight = 640;
+// The frame image: what the display pass writes, the UI draws on and screenshots read.
+constexpr VkFormat kFrameFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkImageUsageFlags kFrameUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                          VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+
+std::string default_save_path(const fs::path& source) {
+  const fs::path dir = source.has_parent_path() ? source.parent_path() : fs::path(".");
+  return (dir / (source.stem().string() + "_edited" + source.extension().string())).string();
+}
+
+vk::ContextOptions presenting_context_options(const app::CommonOptions& common,
+                                              const Window& window) {
+  vk::ContextOptions options = app::context_options(common);
+  options.instance_extensions = window.required_instance_extensions();
+  options.create_surface = [&window](VkInstance instance) {
+    return window.create_surface(instance);
+  };
+  return options;
+}
+
+class Viewer {
+ public:
+  Viewer(const ViewerOptions& options, Scene scene)
+      : m_started(),
+        m_options(options),
+        m_window("hipr view - " + scene.source.filename().string(), window_width(options),
+                 window_height(options)),
+        m_ctx(presenting_context_options(options.common, m_window)),
+        m_swapchain(m_ctx, m_window.framebuffer_size()),
+        m_ui_pass(m_ctx, kFrameFormat),
+        m_frame(m_ctx, m_swapchain.extent(), kFrameFormat, kFrameUsage),
+        m_ui(m_window, m_ctx, m_ui_pass, m_swapchain),
+        m_display(m_ctx, options.common.render.width, options.common.render.height) {
+    m_ui_pass.set_target(m_frame);
+    SessionSettings settings;
+    settings.render = options.common.render;
+    settings.policy = options.policy;
+    settings.tiles_per_step = options.tiles_per_step;
+    settings.visit_spp = options.visit_spp;
+    settings.first_visit_spp = options.first_visit_spp;
+    settings.display = options.display_rule;
+    settings.spp = options.common.spp;
+    m_state.open_path = scene.source.string();
+    m_state.save_path = default_save_path(scene.source);
+    m_state.screenshot_path =
+        options.screenshot.empty() ? "hipr_screenshot.png" : options.screenshot.string();
+    m_state.overlay = options.overlay;
+    m_state.exposure_ev = options.exposure_ev;
+    m_state.show_ui = options.show_ui;
+    m_state.frame_budget_ms = options.frame_budget_ms;
+    m_state.steps_per_frame = options.steps_per_frame;
+    m_state.hipr_sliders = options.common.render.hipr;
+    m_state.tile_size_input = int(options.common.render.tile_size);
+    m_state.preset = options.common.preset.empty() ? "default" : options.common.preset;
+    m_state.selected_node = options.select;
+    // The session compiles the kernels (lavapipe: up to minutes on a first start): say so.
+    show_message("Preparing " + scene.source.filename().string() +
+                 ":\ncompiling the path tracer (the first start with a scene can take a minute or "
+                 "two on a CPU)");
+    m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
+    log::info("viewer on " + m_ctx.device_name() + ", present mode " +
+              std::to_string(int(m_swapchain.present_mode())));
+  }
+
+  int run();
+
+ private:
+  static uint32_t window_width(const ViewerOptions& o) {
+    return o.common.render.width + (o.show_ui ? uint32_t(kPanelWidth) : 0u);
+  }
+  static uint32_t window_height(const ViewerOptions& o) {
+    return o.show_ui ? std::max(o.common.render.height, kMinUiHeight) : o.common.render.height;
+  }
+
+  void resize(VkExtent2D extent);
+  void show_message(const std::string& text);
+  void show_message_frame(const std::string& text);
+  void run_script(uint32_t frame);
+  void draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys);
+  void handle_requests();
+  void render_steps();
+  void update_overlay();
+  bool present(const ViewLayout& layout);
+  ViewLayout layout() const;
+  void write_stats(double seconds) const;
+  void open_scene();
+  void save_scene_file();
+  void take_screenshot(const fs::path& path);
+
+  Timer m_started;  // first member: times the whole start (window, device, kernels)
+  double m_first_frame_seconds = -1.0;
+  const ViewerOptions& m_options;
+  Window m_window;
+  vk::Context m_ctx;
+  vk::Swapchain m_swapchain;
+  vk::UiPass m_ui_pass;
+  vk::Image m_frame;
+  UiLayer m_ui;
+  DisplayPass m_display;
+  std::unique_ptr<Session> m_session;
+  ViewerState m_state;
+  ViewportInput m_input;
+  size_t m_script_next = 0;
+  uint64_t m_frames = 0;
+  uint64_t m_steps = 0;
+  // The displayed image last uploaded to the display pass: which session, which version.
+  const Session* m_uploaded_session = nullptr;
+  uint64_t m_uploaded_version = UINT64_MAX;
+  // What the current overlay was made from, to rebuild it only when that changes.
+  struct OverlayKey {
+    Overlay overlay = Overlay::None;
+    int selected = -1;
+    uint64_t version = UINT64_MAX;
+    const Session* session = nullptr;
+    bool operator==(const OverlayKey&) const = default;
+  } m_overlay_key;
+  bool m_overlay_on = false;
+  Timer m_spp_timer;
+};
+
+ViewLayout Viewer::layout() const {
+  const VkExtent2D extent = m_frame.extent();
+  const uint32_t panel = m_state.show_ui ? uint32_t(kPanelWidth * m_window.pixel_ratio()) : 0u;
+  const uint32_t area = extent.width > panel ? extent.width - panel : extent.width;
+  return fit_view(m_options.common.render.width, m_options.common.render.height, area,
+                  extent.height);
+}
+
+void Viewer::resize(VkExtent2D extent) {
+  // Minimised: nothing to present to; the loop resizes again once the window has a size.
+  if (extent.width == 0 || extent.height == 0) return;
+  m_swapchain.recreate(extent);
+  m_ui.set_min_image_count(m_swapchain.min_image_count());
+  m_frame = vk::Image(m_ctx, m_swapchain.extent(), kFrameFormat, kFrameUsage);
+  m_ui_pass.set_target(m_frame);
+}
+
+// A centred text on the background (before there is an image). Two frames: ImGui sizes a new
+// auto-sized window in its first frame and draws it from the second.
+void Viewer::show_message(const std::string& text) {
+  for (int i = 0; i < 2; ++i) show_message_frame(text);
+}
+
+void Viewer::show_message_frame(const std::string& text) {
+  m_ui.new_frame({});
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
+                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("message", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoInputs);
+  ImGui::TextUnformatted(text.c_str());
+  ImGui::End();
+  const auto frame = m_swapchain.begin_frame();
+  if (!frame) {
+    ImGui::EndFrame();
+    return;
+  }
+  DisplayView view;
+  view.output_width = m_frame.extent().width;
+  view.output_height = m_frame.extent().height;
+  view.x = int(view.output_width);  // no image yet: the background everywhere
+  m_display.record(frame->cmd, view);
+  vk::record_buffer_to_image(frame->cmd, m_display.output(), m_frame);
+  m_ui_pass.begin(frame->cmd);
+  m_ui.render(frame->cmd);
+  m_ui_pass.end(frame->cmd);
+  m_swapchain.blit_to_swapchain(*frame, m_frame);
+  m_swapchain.end_frame(*frame);
+}
+
+void Viewer::run_script(uint32_t frame) {
+  const auto& script = m_options.script;
+  if (m_script_next >= script.size() || frame != (m_script_next + 1) * m_options.script_every)
+    return;
+  // As if typed: the same path as a panel edit (undoable, one on_edit).
+  try {
+    m_session->edit(script[m_script_next]);
+  } catch (const InputError& e) {
+    m_state.error(e.what());
+  }
+  ++m_script_next;
+}
+
+void Viewer::draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys) {
+  const ImGuiIO& io = ImGui::GetIO();
+  m_input.update(*m_session, m_state, layout, m_window.pixel_ratio(), keys);
+  if (m_state.show_ui) {
+    const float panel_x = io.DisplaySize.x - kPanelWidth;
+    draw_side_panel(*m_session, m_state, panel_x, io.DisplaySize.y);
+    if (m_state.show_status)
+      draw_status_line(*m_session, m_state, 0.0f, io.DisplaySize.y, std::max(panel_x, 0.0f));
+  }
+  end_ui_edit_group(*m_session, m_state);
+}
+
+void Viewer::open_scene() {
+  m_state.request_open = false;
+  const fs::path path = m_state.open_path;
+  // The current scene stays until the new one is loaded and on the GPU: a bad file loses nothing.
+  try {
+    Scene scene = load_scene(path, m_options.common.load);
+    SessionSettings settings = m_session->settings();
+    auto session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
+    m_session = std::move(session);
+    m_state.selected_node = -1;
+    m_state.emitters.clear();
+    m_state.save_path = default_save_path(path);
+    m_window.set_title("hipr view - " + path.filename().string());
+    m_state.info("opened " + path.string());
+  } catch (const std::exception& e) {
+    m_state.error("cannot open " + path.string() + ": " + e.what());
+  }
+}
+
+void Viewer::save_scene_file() {
+  m_state.request_save = false;
+  const fs::path path = m_state.save_path;
+  // save_scene writes atomically (temp file + rename): a failure leaves any old file intact,
+  // and the scene and its edits stay in the session either way.
+  try {
+    save_scene(m_session->scene(), path);
+    m_session->mark_saved();
+    m_state.info("saved " + path.string());
+    // The environment map comes from --env, not from glTF: say how to get its edits back.
+    const auto& env = m_session->scene().environment;
+    const SceneLoadOptions& loaded = m_options.common.load;
+    if (env && (env->intensity != loaded.environment_intensity ||
+                env->rotation != glm::radians(loaded.environment_rotation_degrees)))
+      m_state.info("glTF has no environment: reopen with --env-intensity " +
+                   std::to_string(env->intensity) + " --env-rotation " +
+                   std::to_string(glm::degrees(env->rotation)));
+  } catch (const std::exception& e) {
+    m_state.error("cannot save " + path.string() + ": " + e.what());
+  }
+}
+
+void Viewer::take_screenshot(const fs::path& path) {
+  try {
+    m_swapchain.wait_idle();
+    save_screenshot(path, m_ctx, m_frame, m_session->displayed());
+    m_state.info("screenshot " + path.string());
+  } catch (const InputError& e) {
+    m_state.error(e.what());
+  }
+}
+
+void Viewer::handle_requests() {
+  if (m_state.request_open && m_state.open_confirmed) open_scene();
+  if (m_state.request_save) save_scene_file();
+  if (m_state.request_policy) {
+    try {
+      m_session->set_policy(*m_state.request_policy);
+    } catch (const InputError& e) {
+      m_state.error(e.what());
+    }
+    m_state.request_policy.reset();
+  }
+  if (m_state.request_display_rule) {
+    m_session->set_display_rule(*m_state.request_display_rule);
+    m_state.request_display_rule.reset();
+  }
+  if (m_state.request_tile_size) {
+    try {
+      m_session->set_tile_size(*m_state.request_tile_size);
+    } catch (const std::exception& e) {
+      m_state.error(std::string("cannot change the tile size: ") + e.what());
+    }
+    m_state.request_tile_size.reset();
+  }
+}
+
+void Viewer::render_steps() {
+  if (m_state.steps_per_frame > 0)
+    m_state.steps_last_frame = m_session->render(1e30, m_state.steps_per_frame);
+  else
+    m_state.steps_last_frame = m_session->render(m_state.frame_budget_ms * 1e-3);
+}
+
+void Viewer::update_overlay() {
+  const OverlayKey key{m_state.overlay, m_state.selected_node, m_session->display_version(),
+                       m_session.get()};
+  if (key == m_overlay_key) return;
+  m_overlay_key = key;
+  const Renderer& renderer = m_session->renderer();
+  const RenderSettings& s = renderer.settings();
+  const OverlayGrid grid{s.width, s.height, s.tile_size, renderer.tiles_x()};
+  std::vector<uint32_t> overlay;
+  switch (m_state.overlay) {
+    case Overlay::Ids:
+      overlay = id_overlay(m_session->instance_ids(), grid);
+      break;
+    case Overlay::Weights:
+      overlay = weight_overlay(renderer.tile_weights(), renderer.tile_flags(), grid);
+      break;
+    case Overlay::Owed:
+      overlay = owed_overlay(renderer.owed_tiles(), grid);
+      break;
+    case Overlay::None:
+      break;
+  }
+  const Scene& scene = m_session->scene();
+  if (m_state.selected_node >= 0) {
+    if (overlay.empty()) overlay.assign(size_t(s.width) * s.height, 0u);
+    const auto instances = scene.instances();
+    for (uint32_t i = 0; i < instances.size(); ++i)
+      if (int(instances[i].node) == m_state.selected_node)
+        outline_instance(overlay, m_session->instance_ids(), i, grid);
+  }
+  m_overlay_on = !overlay.empty();
+  if (m_overlay_on) m_display.set_overlay(overlay);
+}
+
+bool Viewer::present(const ViewLayout& layout) {
+  const auto frame = m_swapchain.begin_frame();
+  if (!frame) {
+    ImGui::EndFrame();
+    resize(m_window.framebuffer_size());
+    return false;
+  }
+  // The previous frame is done (begin_frame waited): its inputs may change now.
+  const ImageRGB& shown = m_session->displayed();
+  if (m_session.get() != m_uploaded_session || m_session->display_version() != m_uploaded_version) {
+    m_display.set_image(shown);
+    m_uploaded_session = m_session.get();
+    m_uploaded_version = m_session->display_version();
+  }
+  update_overlay();
+  DisplayView view;
+  view.output_width = m_frame.extent().width;
+  view.output_height = m_frame.extent().height;
+  view.x = layout.x;
+  view.y = layout.y;
+  view.scale = layout.scale;
+  view.exposure_ev = m_state.exposure_ev;
+  view.overlay = m_overlay_on;
+  m_display.record(frame->cmd, view);
+  vk::record_buffer_to_image(frame->cmd, m_display.output(), m_frame);
+  m_ui_pass.begin(frame->cmd);
+  m_ui.render(frame->cmd);
+  m_ui_pass.end(frame->cmd);
+  m_swapchain.blit_to_swapchain(*frame, m_frame);
+  if (!m_swapchain.end_frame(*frame)) resize(m_window.framebuffer_size());
+  m_session->on_presented();
+  return true;
+}
+
+void Viewer::write_stats(double seconds) const {
+  // Written atomically like every other output.
+  nlohmann::json edits = nlohmann::json::array();
+  for (const EditRecord& r : m_session->edit_records())
+    edits.push_back({{"edit", r.what},
+                     {"latency_seconds", r.latency_seconds},
+                     {"work_at_first_change", r.work_at_first_change}});
+  const RenderSettings& s = m_options.common.render;
+  const nlohmann::json stats = {{"device", m_ctx.device_name()},
+                                {"width", s.width},
+                                {"height", s.height},
+                                {"policy", policy_name(m_session->settings().policy)},
+                                {"first_frame_seconds", m_first_frame_seconds},
+                                {"frames", m_frames},
+                                {"seconds", seconds},
+                                {"fps", seconds > 0.0 ? double(m_frames) / seconds : 0.0},
+                                {"steps", m_steps},
+                                {"edits", edits}};
+  write_atomically(m_options.stats_json,
+                   [&](const fs::path& temp) { std::ofstream(temp) << stats.dump(2) << "\n"; });
+}
+
+int Viewer::run() {
+  const Timer run_timer;
+  Timer frame_timer;
+  uint32_t frame_index = 0;
+  while (!m_window.should_close() && !m_state.request_quit) {
+    const bool scripted =
+        m_options.exit_after_frames > 0 || m_script_next < m_options.script.size();
+    // Nothing to render and nobody in a hurry: sleep until an event instead of spinning.
+    if (m_session->converged() && !scripted)
+      m_window.wait_events(0.1);
+    else
+      m_window.poll_events();
+    const VkExtent2D size = m_window.framebuffer_size();
+    if (size.width == 0 || size.height == 0) continue;  // minimised
+    if (size.width != m_frame.extent().width || size.height != m_frame.extent().height)
+      resize(size);
+
+    const std::vector<KeyPress> keys = m_window.take_key_presses();
+    m_ui.new_frame(keys);
+    run_script(frame_index);
+    const ViewLayout view = layout();
+    draw_ui(view, keys);
+    handle_requests();
+    render_steps();
+    m_steps += m_state.steps_last_frame;
+    if (m_state.show_status && m_spp_timer.seconds() > 0.25) {
+      // The mean over pixels of the samples they hold, a few times a second (a read-back).
+      const std::vector<uint32_t> counts = m_session->renderer().sample_counts();
+      double sum = 0.0;
+      for (uint32_t c : counts) sum += c;
+      m_state.mean_spp = counts.empty() ? 0.0 : sum / double(counts.size());
+      m_spp_timer = Timer();
+    }
+    if (!present(view)) continue;
+    ++frame_index;
+    ++m_frames;
+    if (m_first_frame_seconds < 0.0) m_first_frame_seconds = m_started.seconds();
+    const double frame_seconds = frame_timer.seconds();
+    frame_timer = Timer();
+    m_state.fps = m_state.fps > 0.0 ? 0.9 * m_state.fps + 0.1 / frame_seconds : 1.0 / frame_seconds;
+    if (m_state.request_screenshot) {
+      m_state.request_screenshot = false;
+      take_screenshot(m_state.screenshot_path);
+    }
+    if (m_options.exit_after_frames > 0 && frame_index >= m_options.exit_after_frames) break;
+  }
+  const double seconds = run_timer.seconds();
+  m_swapchain.wait_idle();
+  if (!m_options.screenshot.empty())
+    save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed());
+  if (!m_options.stats_json.empty()) write_stats(seconds);
+  if (!m_options.save.empty())
+    save_scene(m_session->scene(), m_options.save);  // a failure: exit code 2
+  app::check_validation(m_ctx);
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_viewer(const ViewerOptions& options, Scene scene) {
+  Viewer viewer(options, std::move(scene));
+  return viewer.run();
+}
+
+}  // namespace hipr::viewer

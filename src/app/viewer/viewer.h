@@ -1,0 +1,41 @@
+#pragma once
+// `hipr view`: the interactive viewer's main loop. Each frame: events and panels (edits go
+// to the session), the scheduler's steps for a time budget (or a fixed count in scripts), the
+// display pass + UI into the frame image, then the swapchain.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cli_common.h"
+#include "app/viewer/overlays.h"
+#include "hipr/edits.h"
+#include "hipr/scheduler.h"
+
+namespace hipr::viewer {
+
+struct ViewerOptions {
+  app::CommonOptions common;  // validated; render size from --size or --width/--height
+  std::vector<Edit> script;   // applied as if typed: edit k at frame (k + 1) * script_every
+  uint32_t script_every = 10;
+  std::filesystem::path screenshot;  // written at exit
+  uint32_t exit_after_frames = 0;    // 0: run until the window closes
+  Overlay overlay = Overlay::None;
+  Policy policy = Policy::Hipr;
+  uint32_t tiles_per_step = 0;  // 0: 1/64 of the frame
+  uint32_t visit_spp = 1;
+  uint32_t first_visit_spp = 0;             // 0: default_first_visit_spp
+  std::optional<DisplayRule> display_rule;  // none: the policy's default
+  uint32_t steps_per_frame = 0;  // > 0: exactly this many steps per frame (reproducible scripts)
+  double frame_budget_ms = 30.0;
+  float exposure_ev = 0.0f;
+  bool show_ui = true;
+  std::filesystem::path stats_json;  // fps and per-edit latency, written at exit
+  std::filesystem::path save;        // the edited scene, saved as glTF at exit
+  int select = -1;                   // node selected at start (-1: none)
+};
+
+// Runs the viewer on a loaded scene until the window closes or the frame count is reached.
+int run_viewer(const ViewerOptions& options, Scene scene);
+
+}  // namespace hipr::viewer

@@ -1,0 +1,63 @@
+#pragma once
+// What the viewer's UI shows and changes besides the scene (which lives in the Session):
+// overlay, exposure, selection, the paths of the file panel, messages, and requests the panels
+// hand to the main loop (opening, saving, screenshots, renderer settings).
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "app/viewer/overlays.h"
+#include "hipr/renderer.h"
+#include "hipr/scheduler.h"
+
+namespace hipr::viewer {
+
+struct Message {
+  std::string text;
+  bool error = false;
+};
+
+struct ViewerState {
+  Overlay overlay = Overlay::None;
+  float exposure_ev = 0.0f;
+  bool show_ui = true;      // panels and status line (Tab)
+  bool show_status = true;  // the status line alone
+  int selected_node = -1;
+  double frame_budget_ms = 30.0;  // time spent on scheduling steps per frame
+  uint32_t steps_per_frame = 0;   // > 0: a fixed number of steps instead (scripts, tests)
+
+  std::string open_path, save_path, screenshot_path;
+  bool request_open = false;
+  bool request_save = false;
+  bool request_screenshot = false;
+  bool request_quit = false;
+  bool open_confirmed = false;  // discard unsaved edits when opening
+  std::optional<Policy> request_policy;
+  std::optional<std::optional<DisplayRule>>
+      request_display_rule;  // inner none: the policy's default
+  std::optional<uint32_t> request_tile_size;
+  int tile_size_input = 16;
+  std::string preset = "default";
+  HiprParameters hipr_sliders;  // as the sliders hold them; normalised when applied
+
+  // Materials listed under "Lights" as emitters: emissive once, listed for good (so setting
+  // one's emission to 0 does not make it vanish from the panel).
+  std::set<uint32_t> emitters;
+
+  bool ui_group_open = false;  // a widget is being dragged: its edits form one undo step
+
+  // Frame statistics for the status line.
+  double fps = 0.0;
+  uint32_t steps_last_frame = 0;
+  double mean_spp = 0.0;
+
+  std::vector<Message> messages;  // newest last; the panel shows the last few
+  uint64_t message_count = 0;     // messages ever posted
+  uint64_t messages_shown = 0;  // message_count when the panel last drew (it scrolls to a new one)
+  void info(const std::string& text);
+  void error(const std::string& text);  // also printed on stderr as a warning
+};
+
+}  // namespace hipr::viewer

@@ -1,0 +1,74 @@
+#include "render/display_pass.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "shaders/shared/abi.h"
+
+namespace hipr {
+namespace {
+
+vk::Buffer storage(const vk::Context& ctx, size_t bytes) {
+  return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
+}  // namespace
+
+DisplayPass::DisplayPass(const vk::Context& ctx, uint32_t width, uint32_t height)
+    : m_ctx(ctx),
+      m_width(width),
+      m_height(height),
+      m_radiance(storage(ctx, size_t(width) * height * 3 * sizeof(float))),
+      m_overlay(storage(ctx, size_t(width) * height * 4)),
+      m_pipeline(ctx, "display.comp", {},
+                 {{abi::kBindingDisplayRadiance},
+                  {abi::kBindingDisplayOverlay},
+                  {abi::kBindingDisplayOutput}},
+                 sizeof(abi::DisplayPush)) {
+  m_radiance.clear();
+  m_overlay.clear();
+  m_pipeline.bind_buffer(abi::kBindingDisplayRadiance, m_radiance);
+  m_pipeline.bind_buffer(abi::kBindingDisplayOverlay, m_overlay);
+}
+
+void DisplayPass::set_image(const ImageRGB& image) {
+  if (image.width != m_width || image.height != m_height ||
+      image.rgb.size() != size_t(m_width) * m_height * 3)
+    throw InternalError("the displayed image does not have the rendered size");
+  m_radiance.upload(image.rgb.data(), image.rgb.size() * sizeof(float));
+}
+
+void DisplayPass::set_overlay(const std::vector<uint32_t>& rgba8) {
+  if (rgba8.size() != size_t(m_width) * m_height)
+    throw InternalError("the overlay does not have the rendered size");
+  m_overlay.upload(rgba8.data(), rgba8.size() * 4);
+}
+
+void DisplayPass::record(VkCommandBuffer cmd, const DisplayView& view) {
+  const size_t pixels = size_t(view.output_width) * view.output_height;
+  if (pixels == 0 || !(view.scale > 0.0f)) throw InternalError("empty display view");
+  if (!m_output || m_output.size() != pixels * 4) {
+    m_output = storage(m_ctx, pixels * 4);
+    m_pipeline.bind_buffer(abi::kBindingDisplayOutput, m_output);
+  }
+  abi::DisplayPush push{};
+  push.outputWidth = view.output_width;
+  push.outputHeight = view.output_height;
+  push.sourceWidth = m_width;
+  push.sourceHeight = m_height;
+  push.viewX = view.x;
+  push.viewY = view.y;
+  push.viewScale = view.scale;
+  push.exposureScale = std::exp2(view.exposure_ev);
+  push.background = view.background;
+  push.overlayEnabled = view.overlay ? 1u : 0u;
+  m_pipeline.dispatch(cmd, &push,
+                      uint32_t((pixels + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize));
+}
+
+std::vector<uint32_t> DisplayPass::run(const DisplayView& view) {
+  m_ctx.submit_and_wait([&](VkCommandBuffer cmd) { record(cmd, view); });
+  return m_output.download_all<uint32_t>();
+}
+
+}  // namespace hipr

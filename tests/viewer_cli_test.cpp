@@ -1,0 +1,340 @@
+// `hipr view` as CI runs it: in a virtual X server (xvfb-run), scripted, ending in a
+// screenshot. Checks that an edit from a script is visible, that overlays render what they
+// stand for, that the panels draw, and that bad input is refused before any window opens.
+// The window tests skip when xvfb-run is missing.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "core/error.h"
+#include "hipr/edits.h"
+#include "hipr/scene_diff.h"
+#include "hipr/scene_loader.h"
+#include "image/debug_images.h"
+#include "image/tonemap.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+namespace fs = std::filesystem;
+using test::quoted;
+
+constexpr uint32_t kSize = 128;
+
+bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+// Deterministic runs: one full-frame step per frame (--tiles-per-step 64 = every tile), so a
+// frame count fixes the picture. Unedited, 2 spp are reached at frame 2; a script edit comes
+// at frame 4; by frame 8 the edit has converged again.
+// Without panels (--no-ui) the window is exactly the render.
+std::string view_arguments(const std::string& extra, bool panels = false) {
+  return "view " + quoted(test::asset("cornell_box.gltf")) +
+         " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 64 --steps-per-frame 1 "
+         "--script-every 4 -q " +
+         (panels ? "" : "--no-ui ") + extra;
+}
+
+test::CommandResult run_in_xvfb(const std::string& arguments) {
+  return test::run_command("xvfb-run -a -s '-screen 0 800x700x24' " + quoted(test::hipr_binary()) +
+                           " " + arguments);
+}
+
+fs::path write_script(const fs::path& dir, const std::string& name, const std::string& json) {
+  const fs::path path = dir / name;
+  std::ofstream(path) << json;
+  return path;
+}
+
+const char* kRecolour =
+    R"({"edits": [{"op": "material", "material": "red", "set": {"base_color": [0.05, 0.1, 0.65]}}]})";
+const char* kMove =
+    R"({"edits": [{"op": "transform", "node": "tall_block", "translate": [0.12, 0.0, -0.05]}]})";
+
+// Screenshots of one kind of run, made once per test binary: runs cost a second or two each.
+class ViewerWindow : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { s_dir = test::temp_dir("viewer-window"); }
+
+  void SetUp() override {
+    if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+  }
+
+  // Runs the viewer once per distinct argument list and returns its screenshot.
+  static const ImageRGB& screenshot(const std::string& name, const std::string& arguments,
+                                    bool panels = false) {
+    static std::map<std::string, ImageRGB> shots;
+    if (auto it = shots.find(name); it != shots.end()) return it->second;
+    const fs::path png = s_dir / (name + ".png");
+    const test::CommandResult result =
+        run_in_xvfb(view_arguments(arguments + " --screenshot " + quoted(png), panels));
+    EXPECT_EQ(result.exit_code, kExitOk) << result.output;
+    shots[name] = fs::exists(png) ? read_image(png) : ImageRGB{};
+    return shots[name];
+  }
+
+  static fs::path script(const std::string& name, const char* json) {
+    return write_script(s_dir, name, json);
+  }
+
+  static fs::path s_dir;
+};
+
+fs::path ViewerWindow::s_dir;
+
+// The instance per pixel of `scene` at the test size, from the renderer's own G-buffer.
+std::vector<uint32_t> instance_ids(const Scene& scene) {
+  RenderSettings s;
+  s.width = s.height = kSize;
+  s.tile_size = 16;
+  Renderer renderer(test::context(), scene, s);
+  renderer.stage1_visibility({});
+  return renderer.gbuffer_instances();
+}
+
+uint32_t instance_of(const Scene& scene, const std::string& node) {
+  const auto instances = scene.instances();
+  for (uint32_t i = 0; i < instances.size(); ++i)
+    if (scene.nodes[instances[i].node].name == node) return i;
+  return UINT32_MAX;
+}
+
+// Mean of one channel over the pixels where `mask` holds `value`.
+double masked_mean(const ImageRGB& image, const std::vector<uint32_t>& mask, uint32_t value,
+                   int channel) {
+  double sum = 0.0;
+  size_t n = 0;
+  for (size_t i = 0; i < mask.size(); ++i)
+    if (mask[i] == value) {
+      sum += image.rgb[3 * i + size_t(channel)];
+      ++n;
+    }
+  return n ? sum / double(n) : -1.0;
+}
+
+// Whether 16x16 tile t holds the same pixels in both images.
+bool same_tile(const ImageRGB& a, const ImageRGB& b, uint32_t t) {
+  const uint32_t tx = t % (kSize / 16), ty = t / (kSize / 16);
+  for (uint32_t y = ty * 16; y < ty * 16 + 16; ++y)
+    for (uint32_t x = tx * 16; x < tx * 16 + 16; ++x)
+      for (size_t c = 0; c < 3; ++c)
+        if (a.rgb[(size_t(y) * kSize + x) * 3 + c] != b.rgb[(size_t(y) * kSize + x) * 3 + c])
+          return false;
+  return true;
+}
+
+TEST_F(ViewerWindow, AScriptedRecolourIsVisible) {
+  const ImageRGB& before = screenshot("plain", "--exit-after-frames 8");
+  const ImageRGB& after = screenshot(
+      "recolour", "--exit-after-frames 8 --script " + quoted(script("recolour.json", kRecolour)));
+  ASSERT_EQ(before.width, kSize);
+  ASSERT_EQ(after.width, kSize);
+  const Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  const std::vector<uint32_t> ids = instance_ids(scene);
+  const uint32_t wall = instance_of(scene, "left_wall");
+  // The red wall turned blue (under the warm light: darker, and the bright speckles of 2 spp
+  // keep some red in it)...
+  EXPECT_GT(masked_mean(before, ids, wall, 0), masked_mean(before, ids, wall, 2) + 0.2);
+  EXPECT_LT(masked_mean(after, ids, wall, 0), masked_mean(before, ids, wall, 0) - 0.15);
+  EXPECT_GT(masked_mean(after, ids, wall, 2), masked_mean(before, ids, wall, 2) + 0.05);
+  // ...and the right wall stayed green.
+  const uint32_t right = instance_of(scene, "right_wall");
+  EXPECT_NEAR(masked_mean(after, ids, right, 1), masked_mean(before, ids, right, 1), 0.05);
+}
+
+// The object-id view of a moved block is exactly the G-buffer of the moved scene: the edit
+// reached the renderer and the overlay shows its ids, one flat colour per object.
+TEST_F(ViewerWindow, ObjectIdOverlayShowsTheEditedScene) {
+  const ImageRGB& shot = screenshot("ids-moved", "--exit-after-frames 6 --overlay ids --script " +
+                                                     quoted(script("move.json", kMove)));
+  ASSERT_EQ(shot.width, kSize);
+  Scene moved = load_scene(test::asset("cornell_box.gltf"));
+  apply_edit(moved, parse_edit_script(kMove, "move").front());
+  const std::vector<uint8_t> expected =
+      tonemap_srgb8(object_id_image(instance_ids(moved), kSize, kSize).rgb, 0.0f);
+  const std::vector<uint8_t> original = tonemap_srgb8(
+      object_id_image(instance_ids(load_scene(test::asset("cornell_box.gltf"))), kSize, kSize).rgb,
+      0.0f);
+  size_t mismatches = 0, moved_pixels = 0;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    mismatches += std::lround(shot.rgb[i] * 255.0f) != expected[i];
+    moved_pixels += expected[i] != original[i];
+  }
+  EXPECT_EQ(mismatches, 0u);
+  EXPECT_GT(moved_pixels, 100u) << "the move changes the id image";
+}
+
+// Right after an edit (one step: HiPR's stage 2 rendered the active tiles), the owed overlay
+// tints exactly the tiles still showing old radiance: the wall's tiles are re-rendered and
+// clean, the rest tinted.
+TEST_F(ViewerWindow, OwedOverlayTintsTheTilesStillOwed) {
+  const std::string edit =
+      " --exit-after-frames 5 --script " + quoted(script("recolour.json", kRecolour));
+  const ImageRGB& plain = screenshot("step1", edit);
+  const ImageRGB& owed = screenshot("step1-owed", edit + " --overlay owed");
+  const ImageRGB& weights = screenshot("step1-weights", edit + " --overlay weights");
+  ASSERT_EQ(plain.width, kSize);
+  ASSERT_EQ(owed.width, kSize);
+  ASSERT_EQ(weights.width, kSize);
+  const Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  const std::vector<uint32_t> ids = instance_ids(scene);
+  const uint32_t wall = instance_of(scene, "left_wall");
+  uint32_t clean = 0, tinted = 0;
+  for (uint32_t t = 0; t < (kSize / 16) * (kSize / 16); ++t) {
+    bool shows_wall = false;
+    for (uint32_t y = (t / 8) * 16; y < (t / 8) * 16 + 16; ++y)
+      for (uint32_t x = (t % 8) * 16; x < (t % 8) * 16 + 16; ++x)
+        shows_wall |= ids[y * kSize + x] == wall;
+    const bool same = same_tile(plain, owed, t);
+    if (shows_wall) {
+      EXPECT_TRUE(same) << "tile " << t << " holds the wall: re-rendered by stage 2, not owed";
+    }
+    clean += same;
+    tinted += !same;
+  }
+  EXPECT_GT(tinted, clean) << "most tiles still owe their restart after one step";
+  // The weight heat map marks the active tiles (the wall) blue.
+  EXPECT_GT(masked_mean(weights, ids, wall, 2), masked_mean(weights, ids, wall, 0) + 0.2);
+  EXPECT_NE(weights.rgb, plain.rgb);
+}
+
+// With panels on, the window is wider than the render and the render sits unchanged in the
+// view area (the panel takes the right side).
+TEST_F(ViewerWindow, PanelsDrawBesideTheRender) {
+  const ImageRGB& plain = screenshot("plain", "--exit-after-frames 8");
+  // With the validation layer on: the swapchain, UI pass and display pass must be clean (exit
+  // code 1 otherwise).
+  const ImageRGB& ui = screenshot("ui", "--exit-after-frames 8 --validate", true);
+  ASSERT_EQ(plain.width, kSize);
+  ASSERT_GT(ui.width, kSize + 200);
+  ASSERT_GE(ui.height, kSize);
+  // The render, centred vertically at 1:1 in a view as wide as itself.
+  const uint32_t top = (ui.height - kSize) / 2;
+  size_t different = 0;
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x)
+      for (size_t c = 0; c < 3; ++c)
+        different += plain.rgb[(size_t(y) * kSize + x) * 3 + c] !=
+                     ui.rgb[(size_t(y + top) * ui.width + x) * 3 + c];
+  EXPECT_EQ(different, 0u);
+  // The panel: text on a dark background, not a flat fill.
+  std::map<uint32_t, size_t> colours;
+  for (uint32_t y = 0; y < ui.height; ++y)
+    for (uint32_t x = kSize + 10; x < ui.width; ++x) {
+      const size_t i = (size_t(y) * ui.width + x) * 3;
+      colours[uint32_t(std::lround(ui.rgb[i] * 255)) << 16 |
+              uint32_t(std::lround(ui.rgb[i + 1] * 255)) << 8 |
+              uint32_t(std::lround(ui.rgb[i + 2] * 255))]++;
+    }
+  EXPECT_GT(colours.size(), 20u);
+}
+
+// Errors and warnings the Khronos glTF-Validator reports for `files` (tools/validate_gltf.js,
+// one JSON line per file), or nothing when node or the validator package is absent.
+struct ValidatorReport {
+  int errors = 0;
+  std::map<std::string, int> codes;
+};
+
+std::optional<std::vector<ValidatorReport>> validate_gltf(const std::vector<fs::path>& files) {
+  const fs::path tools = HIPR_TOOLS_DIR;
+  if (std::system("command -v node >/dev/null 2>&1") != 0 ||
+      !fs::exists(tools / "node_modules" / "gltf-validator" / "package.json"))
+    return std::nullopt;
+  std::string command = "node " + quoted(tools / "validate_gltf.js");
+  for (const fs::path& file : files) command += " " + quoted(file);
+  const test::CommandResult result = test::run_command(command);
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  std::vector<ValidatorReport> reports;
+  for (const std::string& line : test::lines_of(result.output)) {
+    const nlohmann::json summary = nlohmann::json::parse(line);
+    ValidatorReport report;
+    report.errors = summary["errors"];
+    for (const auto& [code, count] : summary["error_codes"].items()) report.codes[code] = count;
+    reports.push_back(report);
+  }
+  return reports;
+}
+
+// Edits typed into the viewer (here: a script), saved at exit: the file reloads to the edited
+// scene, and the glTF validator finds no error the original did not have.
+TEST_F(ViewerWindow, SavedSceneReloadsToTheEditedScene) {
+  const char* edits = R"({"edits": [
+    {"op": "transform", "node": "tall_block", "translate": [0.12, 0.0, -0.05]},
+    {"op": "material", "material": "red", "set": {"base_color": [0.05, 0.1, 0.65], "specular_roughness": 0.2}},
+    {"op": "visibility", "node": "short_block", "visible": false},
+    {"op": "camera", "translate": [0.0, 0.02, -0.1]}]})";
+  const fs::path saved = s_dir / "edited.gltf";
+  const test::CommandResult result =
+      run_in_xvfb(view_arguments("--exit-after-frames 17 --save " + quoted(saved) + " --script " +
+                                 quoted(script("save.json", edits))));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  Scene expected = load_scene(test::asset("cornell_box.gltf"));
+  for (const Edit& edit : parse_edit_script(edits, "save.json")) apply_edit(expected, edit);
+  const Scene reloaded = load_scene(saved);
+  EXPECT_TRUE(diff_scenes(expected, reloaded).empty())
+      << "the saved file loads as the edited scene";
+  for (size_t n = 0; n < expected.nodes.size(); ++n) {
+    EXPECT_EQ(reloaded.nodes[n].visible, expected.nodes[n].visible) << n;
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        EXPECT_NEAR(reloaded.nodes[n].local[c][r], expected.nodes[n].local[c][r], 1e-6f) << n;
+  }
+  EXPECT_FLOAT_EQ(reloaded.materials[1].params.specular_roughness, 0.2f);
+  const auto reports = validate_gltf({test::asset("cornell_box.gltf"), saved});
+  if (!reports)
+    GTEST_SKIP()
+        << "node or the gltf-validator package is absent (tools/setup-deps.sh installs it)";
+  ASSERT_EQ(reports->size(), 2u);
+  EXPECT_LE((*reports)[1].errors, (*reports)[0].errors);
+  const auto& original = (*reports)[0].codes;
+  for (const auto& [code, count] : (*reports)[1].codes)
+    EXPECT_LE(count, original.count(code) ? original.at(code) : 0)
+        << "new validator error " << code;
+}
+
+// Bad input is refused before a window opens: no display is needed to see the error.
+TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {
+  const fs::path dir = test::temp_dir("viewer-bad");
+  const fs::path bad_script =
+      write_script(dir, "bad.json",
+                   R"({"edits": [{"op": "transform", "node": "teapot", "translate": [0,0,0]}]})");
+  const fs::path shot = dir / "shot.png";
+  const std::string base =
+      quoted(test::asset("cornell_box.gltf")) + " --screenshot " + quoted(shot);
+  for (const std::string& arguments :
+       {base + " --size 12", base + " --size 0x64", base + " --overlay normals",
+        base + " --policy best", base + " --script " + quoted(bad_script),
+        base + " --script " + quoted(dir / "missing.json"),
+        quoted(test::asset("cornell_box.gltf")) + " --screenshot " + quoted(dir / "shot.jpg"),
+        quoted(test::asset("cornell_box.gltf")) + " --screenshot " +
+            quoted(dir / "no/such/folder/shot.png"),
+        quoted(dir / "missing.gltf"), base + " --visit-spp 0", base + " --policy oracle",
+        base + " --display fast", base + " --save " + quoted(dir / "scene.obj"),
+        base + " --save " + quoted(dir / "no/such/folder/a.gltf"), base + " --select teapot"}) {
+    const test::CommandResult result = test::run_command(
+        "env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " view " + arguments);
+    EXPECT_EQ(result.exit_code, kExitBadInput) << arguments << "\n" << result.output;
+    const auto lines = test::lines_of(result.output);
+    ASSERT_EQ(lines.size(), 1u) << result.output;
+    EXPECT_EQ(lines[0].rfind("hipr: error: ", 0), 0u) << lines[0];
+  }
+  EXPECT_FALSE(fs::exists(shot));
+}
+
+// Valid input without a display: one line that says what to do, no crash.
+TEST(ViewerCli, WithoutADisplayTheViewerSaysSo) {
+  const test::CommandResult result =
+      test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) +
+                        " view " + quoted(test::asset("cornell_box.gltf")) + " -q");
+  EXPECT_EQ(result.exit_code, kExitInternal) << result.output;
+  const auto lines = test::lines_of(result.output);
+  ASSERT_EQ(lines.size(), 1u) << result.output;
+  EXPECT_NE(lines[0].find("xvfb-run"), std::string::npos) << lines[0];
+}
+
+}  // namespace
+}  // namespace hipr

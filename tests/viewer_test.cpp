@@ -1,0 +1,559 @@
+// The viewer's window-free parts: undo/redo history, camera controller, view layout, overlays,
+// the edit path of a session (headless GPU) and the display pass.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app/viewer/camera_controller.h"
+#include "app/viewer/edit_history.h"
+#include "app/viewer/overlays.h"
+#include "app/viewer/session.h"
+#include "app/viewer/view_layout.h"
+#include "core/error.h"
+#include "hipr/scene_diff.h"
+#include "hipr/scene_loader.h"
+#include "image/debug_images.h"
+#include "image/tonemap.h"
+#include "render/display_pass.h"
+#include "test_support.h"
+
+namespace hipr::viewer {
+namespace {
+
+Scene cornell() { return load_scene(test::asset("cornell_box.gltf")); }
+
+size_t node_index(const Scene& scene, const std::string& name) {
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    if (scene.nodes[n].name == name) return n;
+  return SIZE_MAX;
+}
+
+uint32_t instance_of(const Scene& scene, const std::string& name) {
+  const auto instances = scene.instances();
+  for (uint32_t i = 0; i < instances.size(); ++i)
+    if (scene.nodes[instances[i].node].name == name) return i;
+  return UINT32_MAX;
+}
+
+bool same_material(const Scene& a, const Scene& b, size_t m) {
+  return std::memcmp(&a.materials[m].params, &b.materials[m].params, sizeof(abi::MaterialBlock)) ==
+         0;
+}
+
+// ---- EditHistory (no GPU)
+
+TEST(EditHistory, UndoAndRedoRestoreEachStateExactly) {
+  const Scene original = cornell();
+  Scene scene = original;
+  EditHistory history;
+  history.apply(scene, TransformEdit{"tall_block", glm::vec3(0.1f, 0.0f, -0.05f), std::nullopt});
+  history.apply(scene, MaterialEdit{"red", {{"base_color", {0.1f, 0.2f, 0.7f}}}});
+  const Scene edited = scene;
+  EXPECT_EQ(history.undo_count(), 2u);
+  EXPECT_EQ(history.undo_label(), "material red");
+
+  ASSERT_TRUE(history.undo(scene));
+  EXPECT_TRUE(same_material(scene, original, 1));
+  EXPECT_EQ(history.redo_label(), "material red");
+  ASSERT_TRUE(history.undo(scene));
+  EXPECT_TRUE(diff_scenes(original, scene).empty());
+  EXPECT_FALSE(history.undo(scene)) << "nothing left to undo";
+
+  ASSERT_TRUE(history.redo(scene));
+  ASSERT_TRUE(history.redo(scene));
+  EXPECT_FALSE(history.redo(scene));
+  EXPECT_TRUE(diff_scenes(edited, scene).empty());
+  EXPECT_EQ(scene.nodes[node_index(scene, "tall_block")].local,
+            edited.nodes[node_index(edited, "tall_block")].local);
+}
+
+TEST(EditHistory, AGroupIsOneStepAndANewEditDropsTheRedoList) {
+  const Scene original = cornell();
+  Scene scene = original;
+  EditHistory history;
+  history.begin_group();  // a drag: many small moves
+  for (int i = 1; i <= 20; ++i) {
+    glm::mat4 local = original.nodes[node_index(original, "short_block")].local;
+    local[3].x += 0.01f * float(i);
+    history.apply(scene, TransformEdit{"short_block", std::nullopt, local});
+  }
+  history.end_group();
+  history.apply(scene, VisibilityEdit{"tall_block", false});
+  EXPECT_EQ(history.undo_count(), 2u);
+  ASSERT_TRUE(history.undo(scene));
+  ASSERT_TRUE(history.undo(scene));
+  EXPECT_TRUE(diff_scenes(original, scene).empty()) << "one undo reverts the whole drag";
+  EXPECT_EQ(history.redo_count(), 2u);
+  history.apply(scene, CameraEdit{glm::vec3(0.0f, 0.0f, -0.1f), std::nullopt});
+  EXPECT_FALSE(history.can_redo()) << "a new edit forks the history";
+}
+
+TEST(EditHistory, ARefusedEditChangesNothingAndRecordsNothing) {
+  const Scene original = cornell();
+  Scene scene = original;
+  EditHistory history;
+  // The second key is unknown: the first must not be applied half-way.
+  EXPECT_THROW(
+      history.apply(scene,
+                    MaterialEdit{"red", {{"base_color", {0.0f, 0.0f, 1.0f}}, {"colour", {1.0f}}}}),
+      InputError);
+  EXPECT_THROW(history.apply(scene, TransformEdit{"teapot", glm::vec3(1.0f), std::nullopt}),
+               InputError);
+  EXPECT_TRUE(same_material(scene, original, 1));
+  EXPECT_FALSE(history.can_undo());
+}
+
+TEST(EditHistory, UnsavedFollowsTheSavedState) {
+  Scene scene = cornell();
+  EditHistory history;
+  EXPECT_FALSE(history.unsaved());
+  history.apply(scene, VisibilityEdit{"tall_block", false});
+  EXPECT_TRUE(history.unsaved());
+  history.mark_saved();
+  EXPECT_FALSE(history.unsaved());
+  history.undo(scene);
+  EXPECT_TRUE(history.unsaved());
+  history.redo(scene);
+  EXPECT_FALSE(history.unsaved()) << "redo returns to the saved state";
+  // Growing the saved step (a drag that continues) makes it unsaved again.
+  history.begin_group();
+  history.apply(scene, VisibilityEdit{"short_block", false});
+  history.mark_saved();
+  history.apply(scene, VisibilityEdit{"short_block", true});
+  history.end_group();
+  EXPECT_TRUE(history.unsaved());
+}
+
+// ---- CameraController (no GPU)
+
+TEST(CameraController, TakesOverARollFreeCameraWithoutAJump) {
+  const glm::vec3 eye(1.0f, 2.0f, 5.0f), target(0.0f, 0.5f, 0.0f);
+  const glm::mat4 camera = glm::inverse(glm::lookAt(eye, target, glm::vec3(0, 1, 0)));
+  CameraController controller;
+  controller.reset(camera, glm::length(target - eye));
+  const glm::mat4 back = controller.camera_to_world();
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) EXPECT_NEAR(back[c][r], camera[c][r], 1e-5f) << c << "," << r;
+  EXPECT_NEAR(glm::length(controller.pivot() - target), 0.0f, 1e-5f);
+}
+
+TEST(CameraController, OrbitKeepsThePivotPanMovesItZoomApproaches) {
+  const glm::mat4 camera =
+      glm::inverse(glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0)));
+  CameraController controller;
+  controller.reset(camera, 4.0f);
+  controller.orbit(glm::vec2(50.0f, -30.0f), 512.0f);
+  const glm::mat4 orbited = controller.camera_to_world();
+  EXPECT_NEAR(glm::length(glm::vec3(orbited[3])), 4.0f, 1e-4f)
+      << "the eye stays at the pivot distance";
+  EXPECT_NEAR(glm::dot(-glm::vec3(orbited[2]), glm::normalize(-glm::vec3(orbited[3]))), 1.0f, 1e-5f)
+      << "still looking at the pivot";
+  EXPECT_GT(std::abs(orbited[3].x), 0.1f) << "a horizontal drag turns the view";
+  EXPECT_NEAR(orbited[0].y, 0.0f, 1e-5f) << "no roll";
+
+  // Panning by half the view's height moves the pivot by half the visible height at its depth.
+  controller.reset(camera, 4.0f);
+  const float tan_half = std::tan(glm::radians(20.0f));
+  controller.pan(glm::vec2(0.0f, 256.0f), 512.0f, tan_half);
+  EXPECT_NEAR(controller.pivot().y, 4.0f * tan_half, 1e-4f);
+  EXPECT_NEAR(controller.pivot().x, 0.0f, 1e-5f);
+
+  controller.zoom(2.0f);
+  EXPECT_LT(controller.distance(), 4.0f);
+  controller.zoom(-1000.0f);
+  EXPECT_TRUE(std::isfinite(controller.distance()));
+  controller.zoom(1000.0f);
+  EXPECT_GT(controller.distance(), 0.0f) << "zoom never passes the pivot";
+}
+
+// ---- ViewLayout (no GPU)
+
+TEST(ViewLayout, CentresAtIntegerZoomAndMapsBack) {
+  const ViewLayout same = fit_view(128, 128, 128, 128);
+  EXPECT_EQ(same.x, 0);
+  EXPECT_EQ(same.y, 0);
+  EXPECT_EQ(same.scale, 1.0f);
+  EXPECT_EQ(*same.to_render({0.5f, 127.5f}), glm::uvec2(0, 127));
+  EXPECT_FALSE(same.to_render({128.5f, 3.0f}).has_value());
+
+  const ViewLayout tall = fit_view(256, 256, 300, 700);  // a crisp 1:1, centred
+  EXPECT_EQ(tall.scale, 1.0f);
+  EXPECT_EQ(tall.x, 22);
+  EXPECT_EQ(tall.y, 222);
+  EXPECT_FALSE(tall.to_render({10.0f, 300.0f}).has_value());
+  EXPECT_EQ(*tall.to_render({22.0f, 222.0f}), glm::uvec2(0, 0));
+
+  const ViewLayout big = fit_view(100, 50, 450, 300);  // integer zoom 4
+  EXPECT_EQ(big.scale, 4.0f);
+  EXPECT_EQ(*big.to_render({float(big.x) + 9.0f, float(big.y) + 5.0f}), glm::uvec2(2, 1));
+
+  const ViewLayout small = fit_view(512, 512, 256, 400);  // shrinks to fit
+  EXPECT_EQ(small.scale, 0.5f);
+}
+
+// ---- Overlays (no GPU)
+
+TEST(Overlays, IdsAreTheDebugImageInDisplayBytes) {
+  const std::vector<uint32_t> ids = {0, 1, UINT32_MAX, 7, 7, 3};
+  const OverlayGrid grid{3, 2, 2, 2};
+  const std::vector<uint32_t> overlay = id_overlay(ids, grid);
+  const std::vector<uint8_t> expected = tonemap_srgb8(object_id_image(ids, 3, 2).rgb, 0.0f);
+  ASSERT_EQ(overlay.size(), 6u);
+  for (size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(overlay[i] & 0xff, expected[3 * i]);
+    EXPECT_EQ((overlay[i] >> 8) & 0xff, expected[3 * i + 1]);
+    EXPECT_EQ((overlay[i] >> 16) & 0xff, expected[3 * i + 2]);
+    EXPECT_EQ(overlay[i] >> 24, 255u) << "ids cover the image";
+  }
+  EXPECT_EQ(overlay[3], overlay[4]) << "one flat colour per object";
+  EXPECT_NE(overlay[0], overlay[1]);
+}
+
+TEST(Overlays, OwedTintsOnlyOwedTilesAndOutlinesFollowTheObject) {
+  const OverlayGrid grid{4, 4, 2, 2};
+  const std::vector<uint32_t> owed = owed_overlay({0, 3, 0, 0}, grid);  // tile 1: top right
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 4; ++x)
+      EXPECT_EQ(owed[y * 4 + x] != 0u, x >= 2 && y < 2) << x << "," << y;
+
+  // A 3x3 object in a 4x4 image: its 8 border pixels are outlined, its centre is not.
+  std::vector<uint32_t> ids(16, UINT32_MAX);
+  for (uint32_t y = 0; y < 3; ++y)
+    for (uint32_t x = 0; x < 3; ++x) ids[y * 4 + x] = 5;
+  std::vector<uint32_t> overlay(16, 0u);
+  outline_instance(overlay, ids, 5, grid);
+  size_t outlined = 0;
+  for (uint32_t v : overlay) outlined += v != 0u;
+  EXPECT_EQ(outlined, 8u);
+  EXPECT_EQ(overlay[1 * 4 + 1], 0u);
+  EXPECT_EQ(parse_overlay("weights"), Overlay::Weights);
+  EXPECT_THROW(parse_overlay("normals"), InputError);
+}
+
+// ---- diff_snapshot (no GPU)
+
+// The viewer diffs against a stripped copy of the scene: it must report exactly what a diff
+// against the full scene reports, for every kind of edit.
+TEST(DiffSnapshot, ReportsWhatAFullDiffReports) {
+  Scene base = load_scene(test::asset("cornell_sphere.glb"));
+  base.environment = test::uniform_environment(1.0f);
+  const Edit edits[] = {
+      TransformEdit{"sphere", glm::vec3(0.1f, 0.0f, 0.0f), std::nullopt},
+      MaterialEdit{"light", {{"emission_luminance", {3.0f}}}},
+      LightEdit{"lamp", 9.0f, std::nullopt, std::nullopt},
+      VisibilityEdit{"tall_block", false},
+      CameraEdit{glm::vec3(0.0f, 0.1f, 0.0f), std::nullopt},
+      EnvironmentEdit{2.0f, std::nullopt},
+  };
+  for (const Edit& edit : edits) {
+    Scene after = base;
+    apply_edit(after, edit);
+    const ChangeSet full = diff_scenes(base, after), lean = diff_scenes(diff_snapshot(base), after);
+    EXPECT_EQ(lean.instances, full.instances) << describe(edit);
+    EXPECT_EQ(lean.lights, full.lights) << describe(edit);
+    EXPECT_EQ(lean.materials, full.materials) << describe(edit);
+    EXPECT_EQ(lean.transforms, full.transforms) << describe(edit);
+    EXPECT_EQ(lean.light_tables, full.light_tables) << describe(edit);
+    EXPECT_EQ(lean.camera, full.camera) << describe(edit);
+    EXPECT_EQ(lean.environment, full.environment) << describe(edit);
+  }
+  const Scene snapshot = diff_snapshot(base);
+  EXPECT_TRUE(snapshot.images.empty());
+  EXPECT_TRUE(snapshot.environment->texels.empty());
+}
+
+// ---- Session (headless GPU)
+
+SessionSettings small_settings(Policy policy = Policy::Hipr) {
+  SessionSettings s;
+  s.render.width = 32;
+  s.render.height = 32;
+  s.render.tile_size = 8;
+  s.render.max_depth = 4;
+  s.policy = policy;
+  s.tiles_per_step = 4;
+  s.spp = 2;
+  return s;
+}
+
+ImageRGB fresh_render(const Scene& scene, const SessionSettings& s) {
+  Renderer renderer(test::context(), scene, s.render);
+  renderer.add_samples_full_frame(s.spp);
+  return renderer.image();
+}
+
+void converge(Session& session) {
+  for (int i = 0; i < 10000 && !session.converged(); ++i) session.render(1e9, 1);
+  ASSERT_TRUE(session.converged());
+}
+
+// Undo is a change like any other: it goes through on_edit, and the re-render ends exactly
+// where a fresh render of the restored scene is (samples depend only on pixel, index, seed).
+TEST(Session, UndoReRendersToTheOriginalImageBitForBit) {
+  const SessionSettings s = small_settings();
+  Session session(test::context(), cornell(), s);
+  converge(session);
+  const ImageRGB original = session.displayed();
+  EXPECT_EQ(original.rgb, fresh_render(session.scene(), s).rgb);
+
+  session.edit(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}});
+  EXPECT_FALSE(session.converged()) << "the edit restarts the render";
+  converge(session);
+  EXPECT_NE(session.displayed().rgb, original.rgb);
+  EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
+
+  ASSERT_TRUE(session.undo());
+  EXPECT_FALSE(session.converged()) << "undo restarts what it changed";
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, original.rgb);
+  ASSERT_TRUE(session.redo());
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
+  EXPECT_EQ(session.edit_records().size(), 3u);
+  EXPECT_EQ(session.edit_records()[1].what, "undo material red");
+}
+
+TEST(Session, ARefusedEditKeepsTheSceneAndItsRender) {
+  Session session(test::context(), cornell(), small_settings());
+  converge(session);
+  const double work = session.work_since_edit();
+  EXPECT_THROW(session.edit(TransformEdit{"teapot", glm::vec3(1.0f), std::nullopt}), InputError);
+  EXPECT_FALSE(session.history().can_undo());
+  EXPECT_TRUE(session.converged());
+  EXPECT_EQ(session.work_since_edit(), work) << "no restart";
+}
+
+// With the immediate display rule, the first step after an edit (HiPR's stage 2 on the most
+// changed active tiles) shows the edit, long before a whole frame's work; the latency of the
+// change is recorded when that frame is presented. (Under the blend and switch rules a fresh
+// estimate may wait until it is worth showing: the scheduler's choice, not the viewer's.)
+TEST(Session, TheFirstStepShowsTheEditAndRecordsItsLatency) {
+  SessionSettings settings = small_settings();
+  settings.display = DisplayRule::Immediate;
+  Session session(test::context(), cornell(), settings);
+  converge(session);
+  const ImageRGB before = session.displayed();
+  session.edit(TransformEdit{"tall_block", glm::vec3(0.1f, 0.0f, 0.0f), std::nullopt});
+  session.on_presented();  // the frame of the edit itself shows the old image
+  EXPECT_LT(session.edit_records().back().latency_seconds, 0.0);
+  session.render(1e9, 1);
+  EXPECT_NE(session.displayed().rgb, before.rgb);
+  session.on_presented();
+  EXPECT_GE(session.edit_records().back().latency_seconds, 0.0);
+  EXPECT_GT(session.edit_records().back().work_at_first_change, 0.0);
+  EXPECT_LE(session.edit_records().back().work_at_first_change,
+            0.25 * default_first_visit_spp(settings))
+      << "one step: 4 of the 16 tiles at the first visit's spp";
+}
+
+// Picking reads the G-buffer of the scene as it is now, also under policies without stage 1.
+TEST(Session, PickingFollowsAMovedObjectUnderEveryPolicy) {
+  for (Policy policy : {Policy::Hipr, Policy::Scanline}) {
+    Session session(test::context(), cornell(), small_settings(policy));
+    const uint32_t block = instance_of(session.scene(), "tall_block");
+    // Find a pixel of the tall block, then move the block out of it.
+    const std::vector<uint32_t> ids = session.instance_ids();
+    const auto at = std::find(ids.begin(), ids.end(), block);
+    ASSERT_NE(at, ids.end());
+    const uint32_t pixel = uint32_t(at - ids.begin());
+    EXPECT_EQ(session.pick(pixel % 32, pixel / 32).instance, block);
+    session.edit(TransformEdit{"tall_block", glm::vec3(0.0f, 5.0f, 0.0f), std::nullopt});
+    EXPECT_NE(session.pick(pixel % 32, pixel / 32).instance, block) << policy_name(policy);
+    EXPECT_EQ(std::count(session.instance_ids().begin(), session.instance_ids().end(), block), 0)
+        << policy_name(policy);
+  }
+}
+
+TEST(Session, ViewerSettingsKeepTheScene) {
+  Session session(test::context(), cornell(), small_settings());
+  session.edit(VisibilityEdit{"short_block", false});
+  session.set_tile_size(4);
+  EXPECT_EQ(session.renderer().tile_count(), 64u);
+  EXPECT_FALSE(session.scene().nodes[node_index(session.scene(), "short_block")].visible);
+  EXPECT_TRUE(session.history().can_undo());
+  EXPECT_THROW(session.set_tile_size(0), InputError);
+  EXPECT_EQ(session.settings().render.tile_size, 4u);
+  session.set_policy(Policy::Full);
+  EXPECT_EQ(session.scheduler().policy(), Policy::Full);
+  EXPECT_THROW(session.set_policy(Policy::Oracle), InputError)
+      << "the oracle needs a reference render";
+  EXPECT_EQ(session.scheduler().policy(), Policy::Full);
+  session.set_display_rule(DisplayRule::Switch);
+  EXPECT_EQ(session.scheduler().display_rule(), DisplayRule::Switch);
+  session.set_display_rule(std::nullopt);
+  EXPECT_EQ(session.scheduler().display_rule(), default_display_rule(Policy::Full));
+  HiprParameters h;
+  h.depth_epsilon = 0.05f;
+  session.set_hipr_parameters(h);
+  EXPECT_EQ(session.renderer().settings().hipr.depth_epsilon, 0.05f);
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), session.settings()).rgb);
+}
+
+// A scene without a camera gets one, so moving an object does not move the framing camera.
+TEST(Session, ASceneWithoutACameraGetsItsDefaultCamera) {
+  Session session(test::context(), test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f),
+                  small_settings());
+  ASSERT_GE(session.scene().camera_node(), 0);
+  Scene before = session.scene();
+  session.edit(TransformEdit{"#0", glm::vec3(0.3f, 0.0f, 0.0f), std::nullopt});
+  EXPECT_FALSE(diff_scenes(before, session.scene()).camera);
+}
+
+// ---- Renderer methods the viewer added (headless GPU)
+
+RenderSettings tiny(uint32_t size = 32) {
+  RenderSettings s;
+  s.width = s.height = size;
+  s.tile_size = 8;
+  s.max_depth = 4;
+  return s;
+}
+
+TEST(RendererForViewer, WarmUpCompilesButRendersNothing) {
+  const Scene scene = cornell();
+  Renderer renderer(test::context(), scene, tiny());
+  const std::vector<uint32_t> schedule = renderer.schedule();
+  renderer.warm_up_kernels();
+  EXPECT_EQ(renderer.counters().samples, 0u);
+  EXPECT_EQ(renderer.counters().rays, 0u);
+  for (float v : renderer.image().rgb) ASSERT_EQ(v, 0.0f);
+  EXPECT_EQ(renderer.schedule(), schedule);
+  renderer.add_samples_full_frame(2);
+  Renderer fresh(test::context(), scene, tiny());
+  fresh.add_samples_full_frame(2);
+  EXPECT_EQ(renderer.image().rgb, fresh.image().rgb);
+}
+
+TEST(RendererForViewer, OwedTilesCountPixelsStillOwingARestart) {
+  Renderer renderer(test::context(), cornell(),
+                    tiny(20));  // 3 x 3 tiles, the last row and column 4 px wide
+  renderer.add_samples_full_frame(1);
+  for (uint32_t owed : renderer.owed_tiles()) EXPECT_EQ(owed, 0u);
+  renderer.mark_all_owed();
+  const std::vector<uint32_t> owed = renderer.owed_tiles();
+  ASSERT_EQ(owed.size(), 9u);
+  EXPECT_EQ(owed[0], 64u);
+  EXPECT_EQ(owed[2], 32u);
+  EXPECT_EQ(owed[8], 16u);
+  const uint32_t tile = 4;
+  renderer.add_samples(std::span<const uint32_t>(&tile, 1), 1);
+  EXPECT_EQ(renderer.owed_tiles()[4], 0u);
+  EXPECT_EQ(renderer.owed_tiles()[3], 64u);
+}
+
+TEST(RendererForViewer, GBufferHitsAgreeWithTheInstanceImage) {
+  Scene scene = cornell();
+  Renderer renderer(test::context(), scene, tiny());
+  renderer.stage1_visibility({});
+  const std::vector<uint32_t> ids = renderer.gbuffer_instances();
+  for (uint32_t y = 0; y < 32; y += 5)
+    for (uint32_t x = 0; x < 32; x += 3) {
+      const Renderer::PixelHit hit = renderer.gbuffer_at(x, y);
+      EXPECT_EQ(hit.instance, ids[y * 32 + x]);
+      if (hit.instance != UINT32_MAX) {
+        EXPECT_GT(hit.depth, 0.0f);
+      }
+    }
+  EXPECT_EQ(renderer.gbuffer_at(32, 0).instance, UINT32_MAX) << "outside the image";
+  // refresh_gbuffer follows an edit without touching the tile flags.
+  const Scene before = scene;
+  apply_edit(scene, VisibilityEdit{"tall_block", false});
+  renderer.update_scene(scene, diff_scenes(before, scene));
+  renderer.refresh_gbuffer();
+  const uint32_t block = instance_of(scene, "tall_block");
+  for (uint32_t id : renderer.gbuffer_instances()) EXPECT_NE(id, block);
+  for (uint32_t flags : renderer.tile_flags()) EXPECT_EQ(flags, 0u);
+}
+
+TEST(RendererForViewer, HiprParametersSteerTheNextStage2) {
+  const auto weights_after_move = [](const HiprParameters& h) {
+    Scene scene = cornell();
+    Renderer renderer(test::context(), scene, tiny());
+    renderer.stage1_visibility({});
+    renderer.set_hipr_parameters(h);
+    const Scene before = scene;
+    apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt});
+    const ChangeSet changes = diff_scenes(before, scene);
+    renderer.update_scene(scene, changes);
+    renderer.mark_all_owed();
+    renderer.stage1_visibility(changes);
+    renderer.stage2_discover(1);
+    EXPECT_EQ(renderer.settings().hipr.depth_epsilon, h.depth_epsilon);
+    return renderer.tile_weights();
+  };
+  HiprParameters direct, caustic;
+  direct.w_path[0] = 1.0f;
+  direct.w_path[1] = direct.w_path[2] = 0.0f;
+  caustic.w_path[2] = 1.0f;
+  caustic.w_path[0] = caustic.w_path[1] = 0.0f;
+  caustic.depth_epsilon = 0.02f;
+  EXPECT_NE(weights_after_move(direct), weights_after_move(caustic));
+}
+
+// ---- DisplayPass (headless GPU)
+
+TEST(DisplayPass, ToneMapsLikeTheCpuAndPlacesTheImage) {
+  ImageRGB image{4, 2, {}};
+  const float values[] = {0.0f, 0.002f, 0.01f, 0.2f, 0.5f, 0.99f, 1.5f, 40.0f};
+  for (size_t i = 0; i < 8; ++i)
+    image.rgb.insert(image.rgb.end(), {values[i], values[7 - i], 0.3f * values[i]});
+  DisplayPass pass(test::context(), 4, 2);
+  pass.set_image(image);
+  DisplayView view;
+  view.output_width = 4;
+  view.output_height = 2;
+  for (float ev : {0.0f, -1.5f}) {
+    view.exposure_ev = ev;
+    const std::vector<uint32_t> out = pass.run(view);
+    const std::vector<uint8_t> expected = tonemap_srgb8(image.rgb, ev);
+    ASSERT_EQ(out.size(), 8u);
+    for (size_t i = 0; i < 8; ++i)
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(int((out[i] >> (8 * c)) & 0xff), int(expected[3 * i + size_t(c)]), 1)
+            << i << " " << c << " ev " << ev;
+  }
+
+  // Scaled 2x at (1, 1) in a 10 x 6 window: nearest texels, background around.
+  view = DisplayView{};
+  view.output_width = 10;
+  view.output_height = 6;
+  view.x = 1;
+  view.y = 1;
+  view.scale = 2.0f;
+  view.background = 0xff123456u;
+  const std::vector<uint32_t> out = pass.run(view);
+  const std::vector<uint32_t> one = [&] {
+    DisplayView v;
+    v.output_width = 4;
+    v.output_height = 2;
+    return pass.run(v);
+  }();
+  EXPECT_EQ(out[0], 0xff123456u);
+  EXPECT_EQ(out[9], 0xff123456u);
+  EXPECT_EQ(out[5 * 10 + 4], 0xff123456u);
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 8; ++x)
+      EXPECT_EQ(out[(y + 1) * 10 + x + 1], one[(y / 2) * 4 + x / 2]) << x << "," << y;
+}
+
+TEST(DisplayPass, BlendsTheOverlayByItsCoverage) {
+  ImageRGB image{2, 1, {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}};
+  DisplayPass pass(test::context(), 2, 1);
+  pass.set_image(image);
+  pass.set_overlay({pack_rgba8(1.0f, 0.5f, 0.0f, 1.0f), pack_rgba8(1.0f, 1.0f, 1.0f, 0.5f)});
+  DisplayView view;
+  view.output_width = 2;
+  view.output_height = 1;
+  view.overlay = true;
+  const std::vector<uint32_t> out = pass.run(view);
+  EXPECT_EQ(out[0], pack_rgba8(1.0f, 0.5f, 0.0f, 1.0f)) << "full coverage replaces the image";
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(int((out[1] >> (8 * c)) & 0xff), 128, 1) << "half coverage mixes";
+  view.overlay = false;
+  EXPECT_EQ(pass.run(view)[0], 0xff000000u) << "off: the image alone";
+}
+
+}  // namespace
+}  // namespace hipr::viewer
