@@ -16,6 +16,10 @@
 //    expected closer to the truth: threshold 2 means V < B). `blend` shows s + a (f - s) with
 //    a = B / (B + V), the mix with the least expected error (ghosts of large changes fade at
 //    once, small changes fade in as their samples grow). Variances need two samples per pixel.
+//    A pixel whose visible surface is not the one its stale estimate depicts (the G-buffer's
+//    record differs: an object moved in or out, in this edit or an earlier one) shows f at once:
+//    its stale value is of the wrong surface. Such pixels stay out of the tile's D and V, which
+//    then judge the tile's other pixels.
 //    A tile whose pixels all have as many fresh samples as their stale estimate shows f alone
 //    under every rule: f is then at least as good, and this is what makes every schedule end on
 //    the unbiased image. A tile that shows f alone stays so until the next edit (no flicker).
@@ -33,6 +37,7 @@ layout(scalar, binding = kBindingTileList) readonly buffer TileList { uint b_til
 layout(scalar, binding = kBindingAccumulation) readonly buffer Accumulation { PixelAccum b_accum[]; };
 layout(scalar, binding = kBindingTileFlags) buffer TileFlags { uint b_tile_flags[]; };
 layout(scalar, binding = kBindingDisplay) buffer Display { DisplayTexel b_display[]; };
+layout(scalar, binding = kBindingGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 layout(push_constant, scalar) uniform Push { ResolvePush u_push; };
 
 shared float s_fresh_error[64];  // V
@@ -40,6 +45,7 @@ shared float s_difference[64];   // D
 shared uint s_unrendered[64];    // pixels without a fresh sample
 shared uint s_single[64];        // pixels with one fresh sample (no variance yet)
 shared uint s_short[64];         // pixels with fewer fresh samples than their stale estimate
+shared uint s_resurfaced[64];    // rendered pixels whose surface changed since their stale estimate
 shared float s_alpha;            // weight of the fresh estimate in what the tile shows
 
 uvec2 tile_origin(uint tile) { return uvec2(tile % u_frame.tilesX, tile / u_frame.tilesX) * u_frame.tileSize; }
@@ -50,6 +56,14 @@ uint tile_pixel_index(uvec2 origin, uint local) {
   return pixel.x < u_frame.width && pixel.y < u_frame.height ? pixel.y * u_frame.width + pixel.x : kInvalidIndex;
 }
 
+// The surface the pixel shows now (kRecordUnknown without a current G-buffer).
+uint current_record(uint index) { return u_push.useGBuffer != 0u ? b_gbuffer[index].record : kRecordUnknown; }
+
+// The pixel's stale estimate depicts another surface than the pixel shows now.
+bool resurfaced(uint index, DisplayTexel texel) {
+  return texel.staleRecord != kRecordUnknown && u_push.useGBuffer != 0u && texel.staleRecord != b_gbuffer[index].record;
+}
+
 bool has_fresh_samples(PixelAccum accum) { return (accum.count & kPixelOwed) == 0u && (accum.count & kPixelCountMask) > 0u; }
 
 void capture(uvec2 origin, uint tilePixels) {
@@ -58,6 +72,7 @@ void capture(uvec2 origin, uint tilePixels) {
     if (index == kInvalidIndex) continue;
     b_display[index].stale = b_display[index].shown;
     b_display[index].staleSamples = b_display[index].shownSamples;
+    b_display[index].staleRecord = b_display[index].shownRecord;
   }
 }
 
@@ -88,7 +103,7 @@ void main() {
 
   const uint lane = gl_LocalInvocationIndex;
   float freshError = 0.0, difference = 0.0;
-  uint unrendered = 0u, single = 0u, shortOfStale = 0u;
+  uint unrendered = 0u, single = 0u, shortOfStale = 0u, resurfacedPixels = 0u;
   for (uint local = lane; local < tilePixels; local += gl_WorkGroupSize.x) {
     const uint index = tile_pixel_index(origin, local);
     if (index == kInvalidIndex) continue;
@@ -99,6 +114,10 @@ void main() {
     }
     const uint n = accum.count & kPixelCountMask;
     const DisplayTexel texel = b_display[index];
+    if (resurfaced(index, texel)) {
+      resurfacedPixels += 1u;
+      continue;
+    }
     if (n < texel.staleSamples) shortOfStale += 1u;
     if (n < 2u) {
       single += 1u;
@@ -116,6 +135,7 @@ void main() {
   s_unrendered[lane] = unrendered;
   s_single[lane] = single;
   s_short[lane] = shortOfStale;
+  s_resurfaced[lane] = resurfacedPixels;
   barrier();
   for (uint stride = gl_WorkGroupSize.x / 2u; stride > 0u; stride /= 2u) {
     if (lane < stride) {
@@ -124,19 +144,21 @@ void main() {
       s_unrendered[lane] += s_unrendered[lane + stride];
       s_single[lane] += s_single[lane + stride];
       s_short[lane] += s_short[lane + stride];
+      s_resurfaced[lane] += s_resurfaced[lane + stride];
     }
     barrier();
   }
   if (lane == 0u) {
     const float alpha = tile_alpha(tile, flags);
-    // Immediate shows pixel by pixel: the tile counts once all its pixels are fresh.
-    if (s_unrendered[0] == 0u && alpha >= 0.5)
+    // Immediate shows pixel by pixel: the tile counts once all its pixels are fresh. A tile
+    // where a moved surface appeared counts as shown: the change is on screen.
+    if (s_unrendered[0] == 0u && (alpha >= 0.5 || s_resurfaced[0] > 0u))
       b_tile_flags[tile] = flags | kTileShown | (alpha == 1.0 ? kTileSettled : 0u);
     s_alpha = alpha;
   }
   barrier();
-  const float alpha = s_alpha;
-  if (alpha == 0.0) return;
+  const float tileAlpha = s_alpha;
+  if (tileAlpha == 0.0 && s_resurfaced[0] == 0u) return;
   for (uint local = lane; local < tilePixels; local += gl_WorkGroupSize.x) {
     const uint index = tile_pixel_index(origin, local);
     if (index == kInvalidIndex) continue;
@@ -144,12 +166,17 @@ void main() {
     if (!has_fresh_samples(accum)) continue;
     const uint n = accum.count & kPixelCountMask;
     const vec3 fresh = accum.sum / float(n);
+    DisplayTexel texel = b_display[index];
+    const float alpha = resurfaced(index, texel) ? 1.0 : tileAlpha;
     if (alpha == 1.0) {
-      b_display[index].shown = fresh;
-      b_display[index].shownSamples = n;
-    } else {
-      b_display[index].shown = mix(b_display[index].stale, fresh, alpha);
-      b_display[index].shownSamples = b_display[index].staleSamples;
+      texel.shown = fresh;
+      texel.shownSamples = n;
+      texel.shownRecord = current_record(index);
+    } else if (alpha > 0.0) {
+      texel.shown = mix(texel.stale, fresh, alpha);
+      texel.shownSamples = texel.staleSamples;
+      texel.shownRecord = texel.staleRecord;
     }
+    b_display[index] = texel;
   }
 }

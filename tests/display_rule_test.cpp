@@ -115,6 +115,36 @@ INSTANTIATE_TEST_SUITE_P(Rules, StatisticalRules,
                          ::testing::Values(DisplayRule::Switch, DisplayRule::Blend),
                          [](const auto& case_info) { return display_rule_name(case_info.param); });
 
+// Where an object moved in or out, the stale value is of another surface: those pixels show
+// their fresh estimate at once under every rule, while the rest of their tile may keep blending.
+TEST(DisplayRules, PixelsWhoseSurfaceChangedShowTheirFreshEstimateAtOnce) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(kStaleSpp);
+  Scheduler scheduler(renderer, Policy::Hipr, renderer.tile_count());
+  scheduler.set_first_visit_spp(2);
+  const std::vector<uint32_t> before_ids = renderer.gbuffer_instances();
+  const Scene before = scene;
+  apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.1f, 0.0f, -0.05f), std::nullopt});
+  scheduler.on_edit(scene, diff_scenes(before, scene));
+  while (scheduler.work_since_edit() < 2.0) scheduler.step();  // every tile visited once
+  const std::vector<uint32_t> after_ids = renderer.gbuffer_instances();
+  const ImageRGB shown = scheduler.displayed_image(), fresh = renderer.image();
+  size_t resurfaced = 0, blended = 0;
+  for (size_t p = 0; p < after_ids.size(); ++p) {
+    bool equal = true;
+    for (size_t c = p * 3; c < p * 3 + 3; ++c) equal = equal && std::abs(shown.rgb[c] - fresh.rgb[c]) <= 1e-6f * fresh.rgb[c];
+    if (after_ids[p] != before_ids[p]) {
+      ++resurfaced;
+      EXPECT_TRUE(equal) << "pixel " << p;
+    } else if (!equal) {
+      ++blended;
+    }
+  }
+  EXPECT_GT(resurfaced, 20u);
+  EXPECT_GT(blended, 100u) << "pixels on unchanged surfaces still weigh stale against fresh";
+}
+
 TEST(DisplayRules, ImmediateShowsEveryReRenderedPixel) {
   EditedBox box(DisplayRule::Immediate);
   box.edit(kNoOpEdit);

@@ -75,6 +75,7 @@ HIPR_CONST uint kPathIndirect = 1u;  // an earlier diffuse/glossy bounce after x
 HIPR_CONST uint kPathCaustic = 2u;   // x_0 diffuse, then only specular/transmission (E D S+ ...)
 HIPR_CONST uint kWorkgroupSize = 64u;
 HIPR_CONST uint kInvalidIndex = 0xffffffffu;
+HIPR_CONST uint kRecordUnknown = 0xfffffffeu;  // DisplayTexel: no G-buffer said which surface it shows
 
 HIPR_CONST uint kLightTriangle = 0u;
 HIPR_CONST uint kLightPoint = 1u;
@@ -239,6 +240,8 @@ struct DisplayTexel {
   uint staleSamples;
   vec3 stale;
   uint shownSamples;  // samples behind `shown` (of the stale estimate while it has any weight)
+  uint shownRecord;   // the G-buffer record (surface) `shown` depicts, kRecordUnknown if not known
+  uint staleRecord;   // the same for `stale`
 };
 
 // resolve_display.comp rules (ResolvePush::rule).
@@ -310,6 +313,7 @@ struct ResolvePush {
   uint skipFlags;
   uint rule;        // kDisplay*
   float threshold;  // switch: show the fresh estimate when D > threshold * V (see the shader)
+  uint useGBuffer;  // 1: the G-buffer describes the current scene (stage 1 ran since the last edit)
 };
 
 // Per-dispatch parameters of display.comp: the rendered image is drawn into the window at

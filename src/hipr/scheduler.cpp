@@ -91,7 +91,10 @@ Scheduler::Scheduler(Renderer& renderer, Policy policy, uint32_t tiles_per_step,
       tile_order(Policy::Scanline, renderer.tiles_x(), renderer.tiles_y(), 0);
   renderer.set_schedule(order);
   renderer.resolve_display_all(DisplayRule::Immediate);
-  if (policy == Policy::Hipr) renderer.stage1_visibility({});  // the G-buffer before any edit
+  // The G-buffer before any edit. The oracle keeps one too: the display rule uses it (which
+  // surface each pixel shows), so the oracle differs from HiPR in its order alone.
+  if (policy == Policy::Hipr) renderer.stage1_visibility({});
+  if (policy == Policy::Oracle) renderer.refresh_gbuffer();
 }
 
 void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
@@ -123,6 +126,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
     m_stage2_cursor = 0;
     if (m_active_tiles == 0) m_cursor = 0;  // nothing visible changed: stage 3 at once
   } else if (m_policy == Policy::Oracle) {
+    m_renderer.refresh_gbuffer();
     m_renderer.set_schedule(
         oracle_order(m_renderer.displayed_image(), *m_reference, m_renderer.settings().tile_size));
   } else {

@@ -121,8 +121,12 @@ struct Renderer::Impl {
                   {{abi::kBindingFrame}, {abi::kBindingAccumulation}, {abi::kBindingTileFlags}}, 0),
         resolve(c, "resolve_display.comp", {},
                 {{abi::kBindingFrame}, {abi::kBindingTileList}, {abi::kBindingAccumulation}, {abi::kBindingTileFlags},
-                 {abi::kBindingDisplay}},
-                sizeof(abi::ResolvePush)) {
+                 {abi::kBindingDisplay}, {abi::kBindingGBuffer}},
+                sizeof(abi::ResolvePush)),
+        // The display pass reads the G-buffer from the start (it says which surface a pixel
+        // shows), so the G-buffers exist even in renders that never run HiPR's stages.
+        gbuffer(storage(c, size_t(pixels) * sizeof(abi::GBufferTexel))),
+        previous_gbuffer(storage(c, size_t(pixels) * sizeof(abi::GBufferTexel))) {
     all_tiles.resize(size_t(tiles_x) * tiles_y);
     std::iota(all_tiles.begin(), all_tiles.end(), 0u);
     accumulation.clear();
@@ -137,6 +141,7 @@ struct Renderer::Impl {
     resolve.bind_buffer(abi::kBindingAccumulation, accumulation);
     resolve.bind_buffer(abi::kBindingTileFlags, tile_flags);
     resolve.bind_buffer(abi::kBindingDisplay, display);
+    resolve.bind_buffer(abi::kBindingGBuffer, gbuffer);
     update_background(scene);
     bind_scene(scene);
   }
@@ -174,8 +179,6 @@ struct Renderer::Impl {
   void ensure_hipr() {
     if (discover) return;
     const size_t tiles = all_tiles.size();
-    gbuffer = storage(ctx, size_t(pixels) * sizeof(abi::GBufferTexel));
-    previous_gbuffer = storage(ctx, size_t(pixels) * sizeof(abi::GBufferTexel));
     changed_records = storage(ctx, std::max<size_t>(gpu.record_count(), 1) * 4);
     tile_weights = storage(ctx, tiles * 8);
     row_distance = storage(ctx, tiles * 4);
@@ -202,6 +205,7 @@ struct Renderer::Impl {
     bind_scene_buffers(*visibility);
     // The first G-buffer describes the scene as loaded, so the first edit has a "before".
     ctx.submit_and_wait([&](VkCommandBuffer cmd) { visibility->dispatch(cmd, nullptr, groups_for(pixels)); });
+    gbuffer_current = true;
   }
 
   // (Re)binds everything the scene owns: after an update some buffers are new objects.
@@ -279,7 +283,8 @@ struct Renderer::Impl {
   // 0 .. count - 1), after whatever the command buffer wrote before.
   void record_resolve(VkCommandBuffer cmd, uint32_t offset, uint32_t count, uint32_t rule, uint32_t require_flags,
                       uint32_t skip_flags) const {
-    const abi::ResolvePush push{offset, count, require_flags, skip_flags, rule, display_threshold};
+    const abi::ResolvePush push{offset,          count, require_flags, skip_flags, rule, display_threshold,
+                                gbuffer_current ? 1u : 0u};
     vk::compute_to_compute_barrier(cmd);
     resolve.dispatch(cmd, &push, count);
   }
@@ -300,9 +305,11 @@ struct Renderer::Impl {
   vk::Buffer display;          // DisplayTexel per pixel
   vk::ComputePipeline mark_owed, resolve;
   float display_threshold = 2.0f;
+  vk::Buffer gbuffer, previous_gbuffer;  // stage 1 (GBufferTexel per pixel), also read by the display pass
+  bool gbuffer_current = false;          // the G-buffer shows the scene as it is now
   std::vector<uint32_t> all_tiles;
   // HiPR (made by ensure_hipr)
-  vk::Buffer gbuffer, previous_gbuffer, changed_records, tile_weights, row_distance, tile_change;
+  vk::Buffer changed_records, tile_weights, row_distance, tile_change;
   std::unique_ptr<RadixSorter> sorter;
   std::unique_ptr<vk::ComputePipeline> discover, visibility, mark_active, keys;
   std::unique_ptr<vk::ComputePipeline> probe;  // material_inputs_at
@@ -342,6 +349,7 @@ void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
   if (changes.transforms) m->gpu.update_instances(scene);  // includes the light tables
   else if (changes.light_tables) m->gpu.update_lights(scene);
   if (changes.transforms || changes.camera) m->update_background(scene);
+  if (!changes.empty()) m->gbuffer_current = false;
   m->bind_scene(scene);
 }
 
@@ -376,6 +384,7 @@ uint32_t Renderer::stage1_visibility(const ChangeSet& changes) {
     vk::compute_to_compute_barrier(cmd);
     m->mark_active->dispatch(cmd, nullptr, groups_for(m->pixels));
   });
+  m->gbuffer_current = true;
   // The one number the CPU needs: stage 2 is split into steps of equal work over |A| tiles.
   const std::vector<uint32_t> flags = m->tile_flags.download_all<uint32_t>();
   return uint32_t(std::count_if(flags.begin(), flags.end(), [](uint32_t f) { return (f & abi::kTileActive) != 0; }));
@@ -564,6 +573,7 @@ void Renderer::refresh_gbuffer() {
   m->ensure_hipr();
   m->ctx.submit_and_wait(
       [&](VkCommandBuffer cmd) { m->visibility->dispatch(cmd, nullptr, groups_for(m->pixels)); });
+  m->gbuffer_current = true;
 }
 
 Renderer::PixelHit Renderer::gbuffer_at(uint32_t x, uint32_t y) const {
