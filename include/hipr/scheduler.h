@@ -85,9 +85,9 @@ class Scheduler {
   uint32_t m_cursor = 0;       // next schedule entry
   bool m_edited = false;       // an edit happened: the display rule applies
   bool m_first_round = false;  // still in the first pass over the schedule since the edit
-  uint32_t m_active_tiles =
-      0;  // HiPR: |A| of the last edit; schedule entries [0, |A|) are stage 2's
-  uint32_t m_stage2_cursor = 0;  // next stage-2 entry
+  // HiPR: |A| of the last edit (schedule entries [0, |A|) are stage 2's) and the next of them.
+  uint32_t m_active_tiles = 0;
+  uint32_t m_stage2_cursor = 0;
   double m_overhead_seconds = 0.0;
   std::optional<ImageRGB> m_reference;
 };

@@ -94,6 +94,20 @@ vk::ShaderDefines trace_defines(const RenderSettings& s, bool discovery, uint32_
 
 vk::Buffer storage(const vk::Context& ctx, size_t bytes) { return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT); }
 
+// The image whose pixel i is radiance_of(texels[i]).
+template <typename Texel, typename RadianceOf>
+ImageRGB image_of(const RenderSettings& s, const std::vector<Texel>& texels, RadianceOf radiance_of) {
+  ImageRGB image;
+  image.width = s.width;
+  image.height = s.height;
+  image.rgb.resize(texels.size() * 3);
+  for (size_t i = 0; i < texels.size(); ++i) {
+    const glm::vec3 radiance = radiance_of(texels[i]);
+    for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = radiance[c];
+  }
+  return image;
+}
+
 uint32_t groups_for(uint32_t items) { return (items + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize; }
 
 }  // namespace
@@ -468,14 +482,8 @@ void Renderer::capture_stale_display() {
 void Renderer::set_display_threshold(float threshold) { m->display_threshold = threshold; }
 
 ImageRGB Renderer::displayed_image() const {
-  const auto texels = m->display.download_all<abi::DisplayTexel>();
-  ImageRGB image;
-  image.width = m->settings.width;
-  image.height = m->settings.height;
-  image.rgb.resize(texels.size() * 3);
-  for (size_t i = 0; i < texels.size(); ++i)
-    for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = texels[i].shown[c];
-  return image;
+  return image_of(m->settings, m->display.download_all<abi::DisplayTexel>(),
+                  [](const abi::DisplayTexel& t) { return t.shown; });
 }
 
 RenderSnapshot Renderer::snapshot() const {
@@ -522,17 +530,10 @@ std::vector<double> Renderer::tile_weights() const {
 std::vector<uint32_t> Renderer::schedule() const { return m->tile_list.download_all<uint32_t>(); }
 
 ImageRGB Renderer::image() const {
-  const auto accum = m->accumulation.download_all<abi::PixelAccum>();
-  ImageRGB image;
-  image.width = m->settings.width;
-  image.height = m->settings.height;
-  image.rgb.resize(accum.size() * 3);
-  for (size_t i = 0; i < accum.size(); ++i) {
-    const uint32_t count = accum[i].count & abi::kPixelCountMask;
-    const float scale = count ? 1.0f / float(count) : 0.0f;
-    for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = accum[i].sum[c] * scale;
-  }
-  return image;
+  return image_of(m->settings, m->accumulation.download_all<abi::PixelAccum>(), [](const abi::PixelAccum& a) {
+    const uint32_t count = a.count & abi::kPixelCountMask;
+    return count ? a.sum * (1.0f / float(count)) : glm::vec3(0.0f);
+  });
 }
 
 std::vector<uint32_t> Renderer::sample_counts() const {
