@@ -11,6 +11,7 @@
 layout(local_size_x = 64) in;
 
 #include "shared/abi.h"
+#include "common/dispatch.glsl"
 
 layout(scalar, binding = kBindingDisplayRadiance) readonly buffer Radiance { vec3 b_radiance[]; };
 layout(scalar, binding = kBindingDisplayOverlay) readonly buffer Overlay { uint b_overlay[]; };
@@ -26,7 +27,7 @@ float display_srgb_encode(float x) {
 uint display_byte(float encoded) { return uint(floor(encoded * 255.0 + 0.5)); }
 
 void main() {
-  const uint index = gl_GlobalInvocationID.x;
+  const uint index = dispatch_index();
   if (index >= u_push.outputWidth * u_push.outputHeight) return;
   const vec2 window = vec2(index % u_push.outputWidth, index / u_push.outputWidth) + 0.5;
   const vec2 source = floor((window - vec2(u_push.viewX, u_push.viewY)) / u_push.viewScale);

@@ -12,6 +12,7 @@
 layout(local_size_x = 64) in;
 
 #include "shared/abi.h"
+#include "common/dispatch.glsl"
 
 layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
 layout(scalar, binding = kBindingGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
@@ -23,7 +24,7 @@ layout(scalar, binding = kBindingTileChange) buffer TileChange { uint b_tile_cha
 bool changed(uint record) { return record != kInvalidIndex && b_changed_records[record] != 0u; }
 
 void main() {
-  const uint index = gl_GlobalInvocationID.x;
+  const uint index = dispatch_index();
   if (index >= u_frame.width * u_frame.height) return;
   const uint now = b_gbuffer[index].record, before = b_previous[index].record;
   if (!changed(now) && !changed(before)) return;

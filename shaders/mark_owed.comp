@@ -10,13 +10,14 @@
 layout(local_size_x = 64) in;
 
 #include "shared/abi.h"
+#include "common/dispatch.glsl"
 
 layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
 layout(scalar, binding = kBindingAccumulation) buffer Accumulation { PixelAccum b_accum[]; };
 layout(scalar, binding = kBindingTileFlags) buffer TileFlags { uint b_tile_flags[]; };
 
 void main() {
-  const uint index = gl_GlobalInvocationID.x;
+  const uint index = dispatch_index();
   if (index < u_frame.tileCount) b_tile_flags[index] &= ~(kTileShown | kTileSettled);  // tiles never outnumber pixels
   if (index >= u_frame.width * u_frame.height) return;
   b_accum[index].count |= kPixelOwed;

@@ -12,6 +12,7 @@
 layout(local_size_x = 256) in;  // == kSortBlock == kSortRadix
 
 #include "shared/abi.h"
+#include "common/dispatch.glsl"
 
 layout(push_constant, scalar) uniform Push { SortPush u_push; };
 layout(scalar, binding = kBindingSortKeys) buffer Keys { uint b_keys[]; };
@@ -29,8 +30,11 @@ uint read_value(uint i) { return u_push.pingToPong != 0u ? b_values[i] : b_value
 uint digit_of(uint key) { return (key >> u_push.shift) & 0xffu; }
 
 void main() {
-  const uint group = gl_WorkGroupID.x;
+  const uint group = dispatch_group();
   const uint lane = gl_LocalInvocationIndex;
+#if HIPR_SORT_STAGE != 1
+  if (group >= u_push.groups) return;  // past the blocks, in a folded dispatch's last row
+#endif
 #if HIPR_SORT_STAGE == 0
   s_sums[lane] = 0u;
   barrier();

@@ -2,7 +2,9 @@
 // Decides what the screen shows, tile by tile, after a scheduling step or at an edit.
 // Reads:  the tile list entries [listOffset, listOffset + tileCount) (filtered by tile flags;
 //         listOffset kInvalidIndex: tiles 0 .. tileCount - 1 without the list), per-pixel
-//         accumulation (sum, sum of squares, count + owed bit), FrameParams.
+//         accumulation (sum, sum of squares, count + owed bit), the tiles' flags, the display
+//         texels (stale and shown values, their records), the G-buffer (which surface each pixel
+//         sees now), FrameParams.
 // Writes: the display texels of those tiles' pixels; in their tile flags kTileShown once a tile
 //         shows its fresh estimate at weight 1/2 or more, kTileSettled once it shows it alone.
 // Rules (ResolvePush::rule):
@@ -31,6 +33,7 @@
 layout(local_size_x = 64) in;  // == kWorkgroupSize; one workgroup per tile
 
 #include "shared/abi.h"
+#include "common/dispatch.glsl"
 
 layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
 layout(scalar, binding = kBindingTileList) readonly buffer TileList { uint b_tiles[]; };
@@ -77,20 +80,24 @@ void capture(uvec2 origin, uint tilePixels) {
 }
 
 // The fresh estimate's weight for the tile (lane 0 decides after the reduction).
-float tile_alpha(uint tile, uint flags) {
+float tile_alpha(uint flags) {
   if (u_push.rule == kDisplayImmediate || (flags & kTileSettled) != 0u) return 1.0;
   if (s_unrendered[0] != 0u) return 0.0;
   if (s_short[0] == 0u) return 1.0;
   if (s_single[0] != 0u) return 0.0;
   const float v = s_fresh_error[0], d = s_difference[0];
+  // Sums that overflowed (radiance near float's range) cannot judge noise: the fresh estimate
+  // is the one that converges, so it shows, as it would without a display rule.
+  if (isinf(v) || isnan(v) || isinf(d) || isnan(d)) return 1.0;
   if (u_push.rule == kDisplaySwitch) return d > u_push.threshold * v ? 1.0 : 0.0;
   const float b = max(d - v, 0.0);
   return b > 0.0 ? b / (b + v) : 0.0;
 }
 
 void main() {
-  if (gl_WorkGroupID.x >= u_push.tileCount) return;
-  const uint tile = u_push.listOffset == kInvalidIndex ? gl_WorkGroupID.x : b_tiles[u_push.listOffset + gl_WorkGroupID.x];
+  const uint group = dispatch_group();
+  if (group >= u_push.tileCount) return;
+  const uint tile = u_push.listOffset == kInvalidIndex ? group : b_tiles[u_push.listOffset + group];
   const uint flags = b_tile_flags[tile];
   // Uniform per workgroup: every invocation leaves together, before any barrier.
   if ((flags & u_push.requireFlags) != u_push.requireFlags || (flags & u_push.skipFlags) != 0u) return;
@@ -149,7 +156,7 @@ void main() {
     barrier();
   }
   if (lane == 0u) {
-    const float alpha = tile_alpha(tile, flags);
+    const float alpha = tile_alpha(flags);
     // Immediate shows pixel by pixel: the tile counts once all its pixels are fresh. A tile
     // where a moved surface appeared counts as shown: the change is on screen.
     if (s_unrendered[0] == 0u && (alpha >= 0.5 || s_resurfaced[0] > 0u))

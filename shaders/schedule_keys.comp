@@ -13,6 +13,7 @@
 layout(local_size_x = 64) in;
 
 #include "shared/abi.h"
+#include "common/dispatch.glsl"
 
 layout(push_constant) uniform Push { uint u_pass; };
 layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
@@ -26,7 +27,7 @@ layout(scalar, binding = kBindingSortValues) writeonly buffer Values { uint b_va
 const uint kNone = 0xffffu;
 
 void main() {
-  const uint tile = gl_GlobalInvocationID.x;
+  const uint tile = dispatch_index();
   if (tile >= u_frame.tileCount) return;
   const uint x = tile % u_frame.tilesX;
   const uint y = tile / u_frame.tilesX;

@@ -2,7 +2,8 @@
 // Path-tracing megakernel over a list of tiles.
 // Reads:  scene buffers (geometry, materials, textures, lights, environment), the TLAS,
 //         the tile list (tile ids in render order), the background-tile mask and FrameParams.
-// Writes: per-pixel accumulation (radiance sum + sample count) and the ray/sample counters.
+// Writes: per-pixel accumulation (radiance sum, sum of squares, sample count) and the ray/sample
+//         counters.
 // One invocation owns one pixel for the whole dispatch and adds `samplesPerPixel` samples
 // whose indices continue the pixel's count, so results never depend on tile order.
 #extension GL_GOOGLE_include_directive : require

@@ -10,13 +10,14 @@
 layout(local_size_x = 64) in;
 
 #include "common/bindings.glsl"
+#include "common/dispatch.glsl"
 #include "common/textures.glsl"
 #include "common/cutout.glsl"
 
 layout(scalar, binding = kBindingGBuffer) writeonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 
 void main() {
-  const uint index = gl_GlobalInvocationID.x;
+  const uint index = dispatch_index();
   if (index >= u_frame.width * u_frame.height) return;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
   const vec2 ndc = (vec2(pixel) + 0.5) / vec2(u_frame.width, u_frame.height) * 2.0 - 1.0;

@@ -277,6 +277,7 @@ TEST_F(ViewerWindow, SavedSceneReloadsToTheEditedScene) {
   const Scene reloaded = load_scene(saved);
   EXPECT_TRUE(diff_scenes(expected, reloaded).empty())
       << "the saved file loads as the edited scene";
+  ASSERT_EQ(reloaded.nodes.size(), expected.nodes.size());
   for (size_t n = 0; n < expected.nodes.size(); ++n) {
     EXPECT_EQ(reloaded.nodes[n].visible, expected.nodes[n].visible) << n;
     for (int c = 0; c < 4; ++c)

@@ -258,6 +258,7 @@ TEST(DiffSnapshot, ReportsWhatAFullDiffReports) {
     EXPECT_EQ(lean.camera, full.camera) << describe(edit);
     EXPECT_EQ(lean.environment, full.environment) << describe(edit);
   }
+  base.images.push_back({"texels", 2, 2, std::vector<uint8_t>(16, 200)});  // the sphere scene has none
   const Scene snapshot = diff_snapshot(base);
   EXPECT_TRUE(snapshot.images.empty());
   EXPECT_TRUE(snapshot.environment->texels.empty());

@@ -9,6 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/build.sh >/dev/null
 out=${1:-bench-results}
+rm -rf "$out/throughput"
 mkdir -p "$out/throughput"
 size=${HIPR_BENCH_SIZE:-128}
 spp=${HIPR_BENCH_SPP:-64}
@@ -20,6 +21,7 @@ bench() {
   local name=$1
   shift
   echo "== bench $name"
+  rm -rf "${out:?}/$name"  # no stale edit images from an earlier run with other edits
   build/hipr bench "$@" -o "$out/$name" --width "$size" --height "$size" --spp "$spp"
 }
 
@@ -49,5 +51,6 @@ for round in 1 2 3; do
       --width 256 --height 256 --spp 16 --env "$studio"
   fi
 done
-/usr/bin/python3 tools/bench_tables.py "$out" >"$out/tables.md"
+/usr/bin/python3 tools/bench_tables.py "$out" >"$out/tables.md.tmp"
+mv "$out/tables.md.tmp" "$out/tables.md"
 echo "wrote $out/tables.md"

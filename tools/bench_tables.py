@@ -12,8 +12,18 @@ import sys
 POLICIES = ["hipr", "oracle", "full", "scanline", "spiral", "random"]
 
 
+def num(value):
+    """JSON null (a NaN, or an event that never happened) as NaN."""
+    return float("nan") if value is None else value
+
+
+def with_hipr(summaries):
+    """(scene, edit) pairs whose edit has a hipr run: every table compares against it."""
+    return [(scene, e) for scene, s in summaries for e in s["edits"] if "hipr" in e["policies"]]
+
+
 def geomean(values):
-    values = [v for v in values if v and v > 0]
+    values = [v for v in values if v > 0]  # NaN compares false: left out
     return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
 
 
@@ -21,13 +31,13 @@ def auc_table(summaries, key, title):
     lines = [f"#### {title}", "",
              "| scene | edit | " + " | ".join(POLICIES) + " | hipr / full | hipr / oracle |",
              "|---|---|" + "---:|" * (len(POLICIES) + 2)]
-    for scene, summary in summaries:
-        for edit in summary["edits"]:
-            p = edit["policies"]
-            cells = [f"{p[name][key]:.4g}" if name in p else "" for name in POLICIES]
-            full = p["hipr"][key] / p["full"][key] if "full" in p and p["full"][key] else float("nan")
-            oracle = p["hipr"][key] / p["oracle"][key] if "oracle" in p and p["oracle"][key] else float("nan")
-            lines.append(f"| {scene} | {edit['name']} | " + " | ".join(cells) + f" | {full:.2f} | {oracle:.2f} |")
+    for scene, edit in with_hipr(summaries):
+        p = edit["policies"]
+        cells = [f"{num(p[name][key]):.4g}" if name in p else "" for name in POLICIES]
+        ratios = [num(p["hipr"][key]) / num(p[other][key]) if other in p and p[other][key] else float("nan")
+                  for other in ["full", "oracle"]]
+        lines.append(f"| {scene} | {edit['name']} | " + " | ".join(cells) +
+                     f" | {ratios[0]:.2f} | {ratios[1]:.2f} |")
     return lines
 
 
@@ -36,18 +46,16 @@ def feedback_table(summaries):
              "| scene | edit | changed tiles | first feedback (work / ms) | changed tiles shown (work / ms) "
              "| same for full (work) | scheduler overhead share |",
              "|---|---|---:|---:|---:|---:|---:|"]
-    for scene, summary in summaries:
-        for edit in summary["edits"]:
-            h = edit["policies"]["hipr"]
-            full = edit["policies"].get("full", {})
-
-            def pair(work, ms):
-                return "never" if work is None else f"{work:.3f} / {ms:.0f}"
-            lines.append(
-                f"| {scene} | {edit['name']} | {edit['changed_tiles']}/{edit['tiles']} "
-                f"| {pair(h['first_feedback_work'], h['first_feedback_ms'])} "
-                f"| {pair(h['changed_tiles_shown_work'], h['changed_tiles_shown_ms'])} "
-                f"| {full.get('changed_tiles_shown_work', float('nan')):.3f} | {100 * h['overhead_share']:.1f} % |")
+    def pair(work, ms):
+        return "never" if work is None else f"{work:.3f} / {ms:.0f}"
+    for scene, edit in with_hipr(summaries):
+        h = edit["policies"]["hipr"]
+        full = edit["policies"].get("full", {})
+        lines.append(
+            f"| {scene} | {edit['name']} | {edit['changed_tiles']}/{edit['tiles']} "
+            f"| {pair(h['first_feedback_work'], h['first_feedback_ms'])} "
+            f"| {pair(h['changed_tiles_shown_work'], h['changed_tiles_shown_ms'])} "
+            f"| {num(full.get('changed_tiles_shown_work')):.3f} | {100 * num(h['overhead_share']):.1f} % |")
     return lines
 
 
@@ -59,8 +67,8 @@ def ratio_lines(summaries):
             row = []
             for suffix in ["", "_4", "_16"]:
                 key = f"auc_{metric}{suffix}"
-                row.append(geomean([e["policies"]["hipr"][key] / e["policies"][other][key]
-                                    for _, s in summaries for e in s["edits"]
+                row.append(geomean([num(e["policies"]["hipr"][key]) / e["policies"][other][key]
+                                    for _, e in with_hipr(summaries)
                                     if other in e["policies"] and e["policies"][other][key]]))
             lines.append(f"| hipr / {other}, {metric} AUC | " + " | ".join(f"{v:.3f}" for v in row) + " |")
     return lines

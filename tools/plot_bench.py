@@ -47,13 +47,13 @@ def main(argv):
                 (1, 2, "wall time since the edit (ms)", "relMSE"),
                 (1, 3, "wall time since the edit (ms)", "FLIP")]):
             ax = axes[row][col]
+            # The stale image (x = 0) is drawn from one left edge of the log axis for all policies.
+            floor = 0.5 * min((p[x_index] for policy in policies for p in curves[(edit, policy)]
+                               if p[x_index] > 0), default=1.0)
             for policy in policies:
                 points = curves[(edit, policy)]
-                xs = [p[x_index] for p in points]
+                xs = [max(p[x_index], floor) for p in points]
                 ys = [p[y_index] for p in points]
-                # The stale image (x = 0) is drawn from the left edge of the log axis.
-                floor = min((x for x in xs if x > 0), default=1.0) * 0.5
-                xs = [max(x, floor) for x in xs]
                 ax.step(xs, ys, where="post", label=policy, color=COLOURS.get(policy),
                         linewidth=2.2 if policy == "hipr" else 1.2)
             ax.set_xscale("log")

@@ -67,4 +67,13 @@ else
   have_all || { echo "setup-deps: mesa-vulkan-drivers from bookworm-backports did not install" >&2; exit 1; }
   echo "setup-deps: done"
 fi
+
+# The ImGui backends build from sources libimgui-dev ships under /usr/share/doc, which slim
+# images (debian:bookworm-slim) tell dpkg to leave out: let that folder in and reinstall.
+imgui_backends=/usr/share/doc/libimgui-dev/examples/backends
+if [ ! -f "$imgui_backends/imgui_impl_glfw.cpp" ] || [ ! -f "$imgui_backends/imgui_impl_vulkan.cpp" ]; then
+  echo "path-include=$imgui_backends/*" >/etc/dpkg/dpkg.cfg.d/hipr-imgui-backends
+  apt-get update -q && apt-get install -y -q --reinstall libimgui-dev
+  [ -f "$imgui_backends/imgui_impl_vulkan.cpp" ] || { echo "setup-deps: $imgui_backends is still missing" >&2; exit 1; }
+fi
 install_gltf_validator || true

@@ -120,16 +120,11 @@ class Renderer {
                        std::optional<DisplayRule> then_resolve = std::nullopt);
 
   // ---- Display: what the screen shows. Pixels keep their previous radiance until a resolve
-  // lets their fresh estimate take over. Resolves entries [offset, offset + count) of the
-  // schedule whose tile flags have all of `require_flags` and none of `skip_flags`.
-  void resolve_display(uint32_t offset, uint32_t count, DisplayRule rule, uint32_t require_flags = 0,
-                       uint32_t skip_flags = 0);
-  // Every tile, in id order (the schedule is not read).
+  // lets their fresh estimate take over; the render calls above resolve the tiles they rendered
+  // when given `then_resolve`. This one resolves every tile, in id order.
   void resolve_display_all(DisplayRule rule);
   // At an edit: what every pixel shows becomes the stale estimate fresh samples are weighed against.
   void capture_stale_display();
-  // Switch rule: a tile switches when D > threshold * V (see resolve_display.comp).
-  void set_display_threshold(float threshold);
   ImageRGB displayed_image() const;
 
   RenderSnapshot snapshot() const;

@@ -75,6 +75,8 @@ class Scheduler {
   // How the tiles a step renders are shown (resolved in the step's own submission); none for
   // `full`, whose display waits for the whole pass.
   std::optional<DisplayRule> step_display_rule() const;
+  // The last schedule entry was rendered: the next step starts a new round at the first.
+  void end_round();
 
   Renderer& m_renderer;
   Policy m_policy;

@@ -2,13 +2,16 @@
 #ifndef HIPR_TILE_PIXELS_GLSL
 #define HIPR_TILE_PIXELS_GLSL
 
+#include "common/dispatch.glsl"
+
 // llvmpipe hands each thread a contiguous range of workgroups: scattering them (stride
 // coprime to the group count) gives every thread a share of the expensive tiles.
 // Returns false for invocations outside the tile or the image.
 bool tile_pixel(uint listOffset, uint tileCount, uint tileStride, uint groupsPerTile, uint requireFlags,
                 uint skipFlags, out uvec2 pixel) {
   const uint totalGroups = tileCount * groupsPerTile;
-  const uint group = uint((uint64_t(gl_WorkGroupID.x) * uint64_t(tileStride)) % uint64_t(totalGroups));
+  if (dispatch_group() >= totalGroups) return false;  // past the tiles, in a folded dispatch
+  const uint group = uint((uint64_t(dispatch_group()) * uint64_t(tileStride)) % uint64_t(totalGroups));
   const uint listIndex = group / groupsPerTile;
   const uint local = (group % groupsPerTile) * gl_WorkGroupSize.x + gl_LocalInvocationIndex;
   const uint tileSize = u_frame.tileSize;

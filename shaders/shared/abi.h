@@ -53,10 +53,10 @@ HIPR_CONST uint kBindingSortValues = 24u;       // uint values (tile ids), ping
 HIPR_CONST uint kBindingSortKeysAlt = 25u;      // pong
 HIPR_CONST uint kBindingSortValuesAlt = 26u;    // pong
 HIPR_CONST uint kBindingSortHistogram = 27u;    // uint [digit][workgroup] counts, then offsets
-// The viewer's display pass (display.comp)
-HIPR_CONST uint kBindingDisplayRadiance = 30u;  // float RGB per rendered pixel (displayed image)
-HIPR_CONST uint kBindingDisplayOverlay = 31u;   // uint RGBA8 per rendered pixel (sRGB, A = coverage)
-HIPR_CONST uint kBindingDisplayOutput = 32u;    // uint RGBA8 per window pixel (what the window shows)
+// The viewer's display pass (display.comp, its own pipeline; numbers kept apart all the same)
+HIPR_CONST uint kBindingDisplayRadiance = 35u;  // float RGB per rendered pixel (displayed image)
+HIPR_CONST uint kBindingDisplayOverlay = 36u;   // uint RGBA8 per rendered pixel (sRGB, A = coverage)
+HIPR_CONST uint kBindingDisplayOutput = 37u;    // uint RGBA8 per window pixel (what the window shows)
 
 // ---- constants ----
 HIPR_CONST uint kPixelOwed = 0x80000000u;

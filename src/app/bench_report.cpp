@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 #include "app/plot_bench_script.h"
 #include "core/error.h"
@@ -72,14 +71,6 @@ nlohmann::json ratio(const nlohmann::json& edits, const std::string& a, const st
   return count ? nlohmann::json(std::exp(log_sum / count)) : nlohmann::json(nullptr);
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-  write_atomically(path, [&](const fs::path& temp) {
-    std::ofstream out(temp);
-    out << text;
-    if (!out) throw InputError("cannot write " + path.string());
-  });
-}
-
 }  // namespace
 
 BenchEdit& BenchReport::add_edit(const std::string& name, ImageRGB reference, size_t changed_tiles,
@@ -120,7 +111,7 @@ void BenchReport::write_curves(const fs::path& path) const {
                       p.step, p.work, p.wall_ms, p.relmse, p.flip);
         csv += line;
       }
-  write_text(path, csv);
+  write_text_atomically(path, csv);
 }
 
 void BenchReport::write_images() const {
@@ -138,7 +129,7 @@ void BenchReport::write_images() const {
 
 void BenchReport::write() const {
   write_curves(m_folder / "curves.csv");
-  write_text(m_folder / "summary.json", summary().dump(2) + "\n");
+  write_text_atomically(m_folder / "summary.json", summary().dump(2) + "\n");
   write_images();
   const fs::path plot = m_folder / "plot.png";
   write_atomically(plot, [&](const fs::path& temp) {

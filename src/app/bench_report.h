@@ -28,8 +28,8 @@ class BenchReport {
       : m_scene(std::move(scene)), m_settings(std::move(settings)), m_folder(std::move(folder)) {}
   BenchEdit& add_edit(const std::string& name, ImageRGB reference, size_t changed_tiles,
                       uint32_t tiles);
-  // Writes everything (each file atomically). A missing python3/matplotlib only skips plot.png,
-  // with a warning.
+  // Writes everything (each file atomically); plot.png last, since it needs python3-matplotlib
+  // (a missing one is an InternalError after the other outputs are written).
   void write() const;
 
  private:

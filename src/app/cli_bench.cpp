@@ -3,6 +3,7 @@
 // pre-edit state at equal work per step, with the error of the displayed image after each step.
 // Writes DIR/curves.csv, DIR/summary.json, DIR/plot.png (DESIGN.md "Measuring run time against
 // error") and, per edit, the reference and what each policy shows after 0.25 and 1 work units.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -28,7 +29,7 @@ struct BenchOptions {
     common.render.width = 128;
     common.render.height = 128;
     common.render.tile_size = 8;
-    common.spp = 32;
+    common.spp = 64;
   }
   CommonOptions common;
   fs::path edits;
@@ -61,16 +62,15 @@ void converge(Renderer& renderer, uint32_t spp) {
 }
 
 // Stage 1's active set for this edit (the tiles where a changed element is visible now or
-// before). Running one HiPR step also compiles every kernel the timed runs use, so no run pays
-// for JIT compilation.
+// before). Also compiles every kernel the edited scene's runs use (an edit can add a kernel
+// feature), so no timed run pays for JIT compilation.
 std::vector<uint32_t> changed_tiles_and_warm_up(Renderer& renderer, const RenderSnapshot& start,
                                                 const Scene& after, const ChangeSet& changes) {
   renderer.restore(start);
   Scheduler probe(renderer, Policy::Hipr, 1);
   probe.on_edit(after, changes);
   const std::vector<uint32_t> flags = renderer.tile_flags();
-  probe.step();
-  probe.step();
+  renderer.warm_up_kernels();
   std::vector<uint32_t> tiles;
   for (uint32_t t = 0; t < flags.size(); ++t)
     if (flags[t] & abi::kTileActive) tiles.push_back(t);
@@ -81,7 +81,12 @@ int run_bench(BenchOptions& o) {
   validate_common_options(o.common);
   log::set_quiet(o.common.quiet);
   std::vector<Policy> policies;
-  for (const std::string& name : o.policies) policies.push_back(parse_policy(name));
+  for (const std::string& name : o.policies) {
+    const Policy policy = parse_policy(name);
+    if (std::find(policies.begin(), policies.end(), policy) != policies.end())
+      throw InputError("--policies names " + name + " twice");
+    policies.push_back(policy);
+  }
   if (policies.empty()) throw InputError("--policies names no policy");
   if (o.ref_spp < 1 || o.ref_spp > (1u << 20))
     throw InputError("--ref-spp must be between 1 and 1048576");
@@ -129,6 +134,8 @@ int run_bench(BenchOptions& o) {
                                    {"tiles_per_step", run_options.tiles_per_step},
                                    {"visit_spp", run_options.visit_spp},
                                    {"first_visit_spp", run_options.first_visit_spp},
+                                   {"display_hipr_oracle", display_rule_name(ordered_display)},
+                                   {"steps", o.steps},
                                    {"max_depth", settings.max_depth},
                                    {"seed", settings.seed},
                                    {"device", ctx.device_name()}};

@@ -2,7 +2,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <fstream>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -22,14 +21,6 @@ struct RenderOptions {
   std::filesystem::path stats_json;
   float exposure = 0.0f;
 };
-
-void write_stats(const std::filesystem::path& path, const nlohmann::json& stats) {
-  write_atomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp);
-    out << stats.dump(2) << "\n";
-    if (!out) throw InputError("cannot write " + path.string());
-  });
-}
 
 int run_render(RenderOptions& o) {
   validate_common_options(o.common);
@@ -114,7 +105,7 @@ int run_render(RenderOptions& o) {
         {"tile", o.common.render.tile_size},
         {"max_depth", o.common.render.max_depth},
     };
-    write_stats(o.stats_json, stats);
+    write_text_atomically(o.stats_json, stats.dump(2) + "\n");
   }
   log::info("wrote " + o.outputs.front().string() + (o.outputs.size() > 1 ? " (and more)" : "") + ": " + std::to_string(o.common.spp) + " spp in " +
             std::to_string(render_seconds) + " s (" + std::to_string(samples / render_seconds / 1e6) +

@@ -3,7 +3,6 @@
 // writing the displayed image after chosen steps, the final image and debug images.
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <set>
 
 #include "app/cli_common.h"
@@ -128,9 +127,7 @@ int run_replay(ReplayOptions& o) {
   check_validation(ctx);
   const ImageRGB final_image = scheduler.displayed_image();
   write_pair(o.output, "final", final_image);
-  write_atomically(o.output / "summary.json", [&](const fs::path& temp) {
-    std::ofstream(temp) << summary.dump(2) << "\n";
-  });
+  write_text_atomically(o.output / "summary.json", summary.dump(2) + "\n");
   non_finite += renderer.counters().non_finite_samples;
   if (non_finite) log::warn(std::to_string(non_finite) + " non-finite samples were dropped");
   return kExitOk;

@@ -1,5 +1,7 @@
 #include "bench/policy_run.h"
 
+#include <algorithm>
+
 #include "core/timer.h"
 
 namespace hipr::bench {
@@ -18,7 +20,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
                      const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options) {
   renderer.restore(start);
   Scheduler scheduler(renderer, options.policy, options.tiles_per_step, options.visit_spp);
-  scheduler.set_display_rule(options.display);
+  if (options.display) scheduler.set_display_rule(*options.display);
   scheduler.set_first_visit_spp(options.first_visit_spp);
   if (options.policy == Policy::Oracle) scheduler.set_reference(reference);
 
@@ -49,9 +51,10 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
     const double work = scheduler.work_since_edit();
     run.converged = work >= double(options.target_spp);
     const bool tracking = run.first_feedback_work < 0.0 || run.changed_tiles_shown_work < 0.0;
-    const bool dense = work <= options.dense_until;
-    if (!dense && !tracking && !run.converged && step % options.sparse_every != 0) continue;
-    const ImageRGB shown = dense || run.converged || step % options.sparse_every == 0
+    const bool last = run.converged || step == options.max_steps;
+    const bool evaluated = work <= options.dense_until || last || step % std::max(options.sparse_every, 1u) == 0;
+    if (!evaluated && !tracking) continue;
+    const ImageRGB shown = evaluated
                                ? evaluate(step, wall)
                                : scheduler.displayed_image();
     if (run.first_feedback_work < 0.0 && shown.rgb != stale.rgb) {

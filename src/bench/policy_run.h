@@ -2,6 +2,7 @@
 // One policy's re-render after one edit, measured step by step against a reference: the core
 // of `hipr bench`.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "bench/error_curve.h"
@@ -12,14 +13,14 @@ namespace hipr::bench {
 
 struct PolicyRunOptions {
   Policy policy = Policy::Hipr;
-  DisplayRule display = DisplayRule::Blend;
+  std::optional<DisplayRule> display;  // unset: the policy's default (default_display_rule)
   uint32_t tiles_per_step = 1;
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp = 1;  // samples of a tile's first visit after the edit (not for `full`)
   uint32_t target_spp = 1;       // converged: every pixel has this many samples since the edit
   uint32_t max_steps = 0;        // 0: until converged
   double dense_until = 16.0;     // evaluate after every step until this much work, then sparser
-  uint32_t sparse_every = 8;     // steps between evaluations after that
+  uint32_t sparse_every = 8;     // steps between evaluations after that (0 counts as 1)
   FlipOptions flip;
   std::vector<double> capture_work = {0.25,
                                       1.0};  // keep the displayed image at these amounts of work

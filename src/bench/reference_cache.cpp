@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Any fixed odd constant works; it only has to move the reference off the runs' sample streams.
+// Any fixed nonzero constant works: it only has to move the reference off the runs' sample streams.
 constexpr uint32_t kReferenceSeedOffset = 0x68e31da5u;
 
 }  // namespace

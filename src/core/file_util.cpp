@@ -28,6 +28,15 @@ void write_atomically(const fs::path& path, const std::function<void(const fs::p
   }
 }
 
+void write_text_atomically(const fs::path& path, const std::string& text) {
+  write_atomically(path, [&](const fs::path& temp) {
+    std::ofstream out(temp);
+    out << text;
+    out.close();  // the flush can fail too: checked before the rename makes the file visible
+    if (!out) throw InputError("cannot write " + path.string());
+  });
+}
+
 std::vector<unsigned char> read_file_bytes(const fs::path& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw InputError("not a readable file: " + path.string());

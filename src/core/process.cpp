@@ -76,7 +76,10 @@ ProcessResult run_process(const std::vector<std::string>& argv, std::string_view
     }
   }
   signal(SIGPIPE, previous);
+  // Closing our read end too: a child still writing after a failed poll gets EPIPE instead of
+  // blocking on a full pipe while we wait for it.
   in.close_both();
+  out.close_both();
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }

@@ -123,8 +123,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
     // Stage 1, then the order it gives (active tiles by change score) for stage 2's steps.
     m_active_tiles = m_renderer.stage1_visibility(changes);
     m_renderer.build_schedule();
-    m_stage2_cursor = 0;
-    if (m_active_tiles == 0) m_cursor = 0;  // nothing visible changed: stage 3 at once
+    m_stage2_cursor = 0;  // with no active tile (nothing visible changed) stage 3 starts at once
   } else if (m_policy == Policy::Oracle) {
     m_renderer.refresh_gbuffer();
     m_renderer.set_schedule(
@@ -156,22 +155,22 @@ void Scheduler::step() {
       m_renderer.build_schedule();
       m_overhead_seconds += timer.seconds();
       m_cursor = m_active_tiles;
+      if (m_cursor == m_renderer.tile_count()) end_round();  // every tile was active
     }
     return;
   }
   const uint32_t tiles = m_renderer.tile_count();
   m_renderer.render_schedule(m_cursor, m_tiles_per_step, spp, false, step_display_rule());
   m_cursor += m_tiles_per_step;
-  if (m_cursor >= tiles) {
-    m_cursor = 0;
-    m_first_round = false;
-    if (m_policy == Policy::Full) {
-      // A whole pass is done: show it, as a full-frame progressive viewer presents each frame.
-      const Timer timer;
-      m_renderer.resolve_display_all(DisplayRule::Immediate);
-      m_overhead_seconds += timer.seconds();
-    }
-  }
+  if (m_cursor >= tiles) end_round();
+}
+
+void Scheduler::end_round() {
+  m_cursor = 0;
+  m_first_round = false;
+  // `full` shows a whole pass when it completes, as a full-frame progressive viewer presents
+  // each frame. Like every policy's per-step display pass, this counts as rendering.
+  if (m_policy == Policy::Full) m_renderer.resolve_display_all(DisplayRule::Immediate);
 }
 
 double Scheduler::work_since_edit() const {

@@ -112,11 +112,4 @@ vk::ShaderDefines kernel_feature_defines(uint32_t features) {
   return defines;
 }
 
-std::vector<std::string> kernel_feature_names(uint32_t features, bool present) {
-  std::vector<std::string> names;
-  for (const KernelFeature& f : kernel_feature_table())
-    if (((features & f.bit) != 0) == present) names.emplace_back(f.name);
-  return names;
-}
-
 }  // namespace hipr

@@ -39,7 +39,4 @@ uint32_t kernel_feature_bit(const std::string& define);
 // HIPR_FEATURE_* = 0/1 for each feature.
 vk::ShaderDefines kernel_feature_defines(uint32_t features);
 
-// Names of the features in `features` (or, with `present` false, of those not in it).
-std::vector<std::string> kernel_feature_names(uint32_t features, bool present = true);
-
 }  // namespace hipr

@@ -70,7 +70,9 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, cons
   f.wPath = glm::vec3(h.w_path[0], h.w_path[1], h.w_path[2]);
   f.wOcclusion = h.w_occlusion;
   f.depthEpsilon = h.depth_epsilon;
-  f.rayOffsetScale = 2.0f * gpu.info().scene_radius;
+  // Finite extents can still overflow a radius; unit scale then (the loader rejects non-finite data).
+  const float offset_scale = 2.0f * gpu.info().scene_radius;
+  f.rayOffsetScale = std::isfinite(offset_scale) ? offset_scale : 1.0f;
   return f;
 }
 
@@ -107,6 +109,10 @@ ImageRGB image_of(const RenderSettings& s, const std::vector<Texel>& texels, Rad
   }
   return image;
 }
+
+// Switch rule: a tile switches to its fresh estimate when D > kSwitchThreshold * V
+// (resolve_display.comp): 2 means the stale estimate's squared error B = D - V exceeds V.
+constexpr float kSwitchThreshold = 2.0f;
 
 uint32_t groups_for(uint32_t items) { return (items + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize; }
 
@@ -189,7 +195,8 @@ struct Renderer::Impl {
     tile_background.upload(mask.data(), mask.size() * sizeof(uint32_t));
   }
 
-  // HiPR resources are made on first use: plain renders never pay for them.
+  // HiPR's stage-1..3 pipelines and buffers are made on first use: plain renders never pay for
+  // them (the G-buffers are not among them: the display pass reads those for every policy).
   void ensure_hipr() {
     if (discover) return;
     const size_t tiles = all_tiles.size();
@@ -217,7 +224,7 @@ struct Renderer::Impl {
     bind_hipr();
     bind_scene_buffers(*discover);
     bind_scene_buffers(*visibility);
-    // The first G-buffer describes the scene as loaded, so the first edit has a "before".
+    // The first G-buffer describes the scene as it is now, so the first edit has a "before".
     ctx.submit_and_wait([&](VkCommandBuffer cmd) { visibility->dispatch(cmd, nullptr, groups_for(pixels)); });
     gbuffer_current = true;
   }
@@ -297,7 +304,7 @@ struct Renderer::Impl {
   // 0 .. count - 1), after whatever the command buffer wrote before.
   void record_resolve(VkCommandBuffer cmd, uint32_t offset, uint32_t count, uint32_t rule, uint32_t require_flags,
                       uint32_t skip_flags) const {
-    const abi::ResolvePush push{offset,          count, require_flags, skip_flags, rule, display_threshold,
+    const abi::ResolvePush push{offset,          count, require_flags, skip_flags, rule, kSwitchThreshold,
                                 gbuffer_current ? 1u : 0u};
     vk::compute_to_compute_barrier(cmd);
     resolve.dispatch(cmd, &push, count);
@@ -318,7 +325,6 @@ struct Renderer::Impl {
   vk::Buffer tile_background;  // per tile: 1 = background only (BackgroundTiles)
   vk::Buffer display;          // DisplayTexel per pixel
   vk::ComputePipeline mark_owed, resolve;
-  float display_threshold = 2.0f;
   vk::Buffer gbuffer, previous_gbuffer;  // stage 1 (GBufferTexel per pixel), also read by the display pass
   bool gbuffer_current = false;          // the G-buffer shows the scene as it is now
   std::vector<uint32_t> all_tiles;
@@ -463,14 +469,6 @@ void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples
   });
 }
 
-void Renderer::resolve_display(uint32_t offset, uint32_t count, DisplayRule rule, uint32_t require_flags,
-                               uint32_t skip_flags) {
-  if (offset >= tile_count() || count == 0) return;
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    m->record_resolve(cmd, offset, std::min(count, tile_count() - offset), uint32_t(rule), require_flags, skip_flags);
-  });
-}
-
 void Renderer::resolve_display_all(DisplayRule rule) {
   m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->record_resolve(cmd, abi::kInvalidIndex, tile_count(), uint32_t(rule), 0, 0); });
 }
@@ -478,8 +476,6 @@ void Renderer::resolve_display_all(DisplayRule rule) {
 void Renderer::capture_stale_display() {
   m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->record_resolve(cmd, abi::kInvalidIndex, tile_count(), abi::kDisplayCapture, 0, 0); });
 }
-
-void Renderer::set_display_threshold(float threshold) { m->display_threshold = threshold; }
 
 ImageRGB Renderer::displayed_image() const {
   return image_of(m->settings, m->display.download_all<abi::DisplayTexel>(),

@@ -113,8 +113,7 @@ struct Inverter {
                   old.size() * sizeof(float));
       inverse.set.push_back({p.key, std::move(old)});
     }
-    // Restoring in reverse order undoes an edit that sets the same key twice.
-    std::reverse(inverse.set.begin(), inverse.set.end());
+    // Every entry holds its key's value before the edit, so a key set twice restores alike.
     return inverse;
   }
 

@@ -150,12 +150,18 @@ void write_volume(Json& m, const M& t) {
   }
 }
 
-// The editable parameters where `mapped` (what the glTF fields load as) is not `target`.
-Json openpbr_extras(const M& mapped, const M& target) {
+// The editable parameters where `mapped` (what the glTF fields load as) is not `target`. The
+// loader refuses extras outside a parameter's range, so such a value is refused here, before
+// anything is written (a glTF base colour above 1 can carry one into a derived parameter).
+Json openpbr_extras(const M& mapped, const M& target, const std::string& what) {
   Json extras = Json::object();
   for (const MaterialParameter& p : material_parameters()) {
     const std::vector<float> want = values(target, p.offset, p.components);
     if (values(mapped, p.offset, p.components) == want) continue;
+    for (float v : want)
+      if (!(v >= p.min && v <= p.max))
+        throw InputError(what + ": cannot save " + p.name + " = " + std::to_string(v) + ", outside [" +
+                         std::to_string(p.min) + ", " + std::to_string(p.max) + "]");
     if (p.components == 1) {
       extras[p.name] = json_number(want[0]);
     } else {
@@ -221,12 +227,12 @@ void write_materials(Json& doc, const std::vector<Material>& materials, const st
     for (size_t i = 0; i < count; ++i) {
       const std::string what = name + ": material " + std::to_string(i) + " ('" + materials[i].name + "')";
       check_unchanged(mapped[i], materials[i].params, what);
-      Json extras = openpbr_extras(mapped[i], materials[i].params);
+      Json extras = openpbr_extras(mapped[i], materials[i].params, what);
       if (!extras.empty()) set_extra(doc["materials"][i], kOpenPbrExtras, std::move(extras), what);
     }
   }
   erase_extra(doc, kDefaultMaterialExtras);
-  Json extras = openpbr_extras(default_gltf_material_params(), materials.back().params);
+  Json extras = openpbr_extras(default_gltf_material_params(), materials.back().params, name + ": the default material");
   if (!extras.empty()) set_extra(doc, kDefaultMaterialExtras, std::move(extras), name);
 }
 

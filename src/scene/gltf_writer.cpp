@@ -9,6 +9,7 @@
 // saves as the same document. Buffers and images are carried as bytes, never decoded.
 #include <algorithm>
 #include <cctype>
+#include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "hipr/scene_writer.h"
@@ -60,9 +61,15 @@ void save_scene(const Scene& scene, const fs::path& path) {
 
   const gltf::SourceDocument source = gltf::read_source(scene.source);
   gltf::Json doc = source.json;
-  gltf::write_nodes(doc, scene, source.name);
-  gltf::write_lights(doc, scene.lights, source.name);
-  gltf::write_materials(doc, scene.materials, source.name);
+  try {
+    gltf::write_nodes(doc, scene, source.name);
+    gltf::write_lights(doc, scene.lights, source.name);
+    gltf::write_materials(doc, scene.materials, source.name);
+  } catch (const nlohmann::json::exception& e) {
+    // The source was read again from disk: it may have been rewritten since it was loaded.
+    throw InputError(source.name + ": its JSON no longer has the structure it was loaded with (" +
+                     std::string(e.what()) + ")");
+  }
   declare_extensions(doc);
   if (extension == ".glb")
     gltf::write_glb(source, std::move(doc), path);

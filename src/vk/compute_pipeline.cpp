@@ -1,5 +1,8 @@
 #include "vk/compute_pipeline.h"
 
+#include <algorithm>
+#include <string>
+
 #include "core/error.h"
 #include "vk/check.h"
 
@@ -107,7 +110,14 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, 
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout, 0, 1, &m_set, 0, nullptr);
   if (m_push_size)
     vkCmdPushConstants(cmd, m_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, m_push_size, push_constants);
-  if (groups) vkCmdDispatch(cmd, groups, 1, 1);
+  if (groups == 0) return;
+  // Folded into rows when wider than the device allows; shaders/common/dispatch.glsl unfolds.
+  const uint32_t width = std::min(groups, m_ctx.max_dispatch_width());
+  const uint32_t rows = (groups - 1) / width + 1;
+  if (rows > m_ctx.max_dispatch_height())
+    throw InputError("a dispatch of " + std::to_string(groups) + " workgroups is more than " + m_ctx.device_name() +
+                     " can run: use a smaller image or larger tiles");
+  vkCmdDispatch(cmd, width, rows, 1);
 }
 
 void compute_to_compute_barrier(VkCommandBuffer cmd) {

@@ -242,6 +242,9 @@ void Context::pick_physical_device(const ContextOptions& options) {
   vkGetPhysicalDeviceProperties2(m_physical, &props2);
   m_min_storage_alignment = uint32_t(props2.properties.limits.minStorageBufferOffsetAlignment);
   m_min_scratch_alignment = accel_props.minAccelerationStructureScratchOffsetAlignment;
+  const auto& groups = props2.properties.limits.maxComputeWorkGroupCount;
+  m_max_dispatch[0] = options.dispatch_width_limit ? std::min(options.dispatch_width_limit, groups[0]) : groups[0];
+  m_max_dispatch[1] = groups[1];
 }
 
 void Context::create_device() {

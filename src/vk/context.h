@@ -19,6 +19,9 @@ struct ContextOptions {
   // VK_KHR_swapchain. Without one (the default) the context is headless, as before.
   std::vector<std::string> instance_extensions;
   std::function<VkSurfaceKHR(VkInstance)> create_surface;
+  // Tests: fold 1-D dispatches wider than this many workgroups into rows (see
+  // max_dispatch_width) as if the device allowed no more; 0 = the device's own limit.
+  uint32_t dispatch_width_limit = 0;
 };
 
 struct DeviceFunctions {
@@ -47,6 +50,9 @@ class Context {
   bool is_cpu_device() const { return m_is_cpu; }
   uint32_t min_storage_alignment() const { return m_min_storage_alignment; }
   uint32_t min_scratch_alignment() const { return m_min_scratch_alignment; }
+  // maxComputeWorkGroupCount[0] and [1]: ComputePipeline::dispatch folds wider dispatches.
+  uint32_t max_dispatch_width() const { return m_max_dispatch[0]; }
+  uint32_t max_dispatch_height() const { return m_max_dispatch[1]; }
 
   // Records commands into a one-time command buffer, submits it and waits for completion.
   void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
@@ -78,6 +84,7 @@ class Context {
   std::string m_device_name;
   bool m_is_cpu = false;
   uint32_t m_min_storage_alignment = 16;
+  uint32_t m_max_dispatch[2] = {65535, 65535};  // the minimum every device supports
   uint32_t m_min_scratch_alignment = 128;
   std::atomic<uint32_t> m_validation_errors{0};
 };

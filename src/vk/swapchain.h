@@ -23,7 +23,6 @@ class Swapchain {
   Swapchain& operator=(const Swapchain&) = delete;
 
   VkExtent2D extent() const { return m_extent; }
-  VkFormat format() const { return m_format; }
   uint32_t image_count() const { return uint32_t(m_images.size()); }
   uint32_t min_image_count() const { return m_min_image_count; }
   VkPresentModeKHR present_mode() const { return m_present_mode; }

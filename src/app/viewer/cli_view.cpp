@@ -56,8 +56,8 @@ int run_view(ViewCommandOptions& o) {
   if (v.policy == Policy::Oracle)
     throw InputError("the oracle policy needs a reference image: use hipr bench");
   if (!o.display.empty()) v.display_rule = parse_display_rule(o.display);
-  if (v.first_visit_spp > v.common.spp)
-    throw InputError("--first-visit-spp must be between 1 and --spp");
+  if (v.first_visit_spp != 0 && (v.first_visit_spp < v.visit_spp || v.first_visit_spp > v.common.spp))
+    throw InputError("--first-visit-spp must be between --visit-spp and --spp");
   v.show_ui = !o.no_ui;
   if (v.script_every < 1) throw InputError("--script-every must be at least 1");
   if (v.visit_spp < 1 || v.visit_spp > v.common.spp)

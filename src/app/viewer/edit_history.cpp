@@ -60,12 +60,4 @@ std::string EditHistory::redo_label() const { return m_redo.empty() ? "" : label
 void EditHistory::mark_saved() { m_saved_id = top_id(); }
 bool EditHistory::unsaved() const { return top_id() != m_saved_id; }
 
-void EditHistory::clear() {
-  m_undo.clear();
-  m_redo.clear();
-  m_group_depth = 0;
-  m_group_has_step = false;
-  m_saved_id = 0;
-}
-
 }  // namespace hipr::viewer

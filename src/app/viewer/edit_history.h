@@ -21,7 +21,6 @@ class EditHistory {
   // Edits between begin_group and end_group form one step (nested calls are counted).
   void begin_group();
   void end_group();
-  bool in_group() const { return m_group_depth > 0; }
 
   bool can_undo() const { return !m_undo.empty(); }
   bool can_redo() const { return !m_redo.empty(); }
@@ -38,7 +37,6 @@ class EditHistory {
   // The scene as it is now was saved (or loaded); unsaved() tells whether it changed since.
   void mark_saved();
   bool unsaved() const;
-  void clear();
 
  private:
   struct Step {

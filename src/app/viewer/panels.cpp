@@ -41,8 +41,7 @@ void file_section(Session& session, ViewerState& state) {
     state.open_confirmed = !history.unsaved();
   }
   if (state.request_open && !state.open_confirmed) {
-    ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%zu unsaved edit(s) will be lost.",
-                       history.undo_count());
+    ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "Unsaved edits will be lost.");
     if (ImGui::Button("Open anyway")) state.open_confirmed = true;
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) state.request_open = false;
@@ -114,7 +113,7 @@ void hipr_section(Session& session, ViewerState& state) {
   state.tile_size_input = std::clamp(state.tile_size_input, 1, 256);
   ImGui::SameLine();
   if (ImGui::Button("Apply")) state.request_tile_size = uint32_t(state.tile_size_input);
-  ImGui::TextDisabled("n restarts the image; the rest applies from the next edit");
+  ImGui::TextDisabled("n restarts the image; weights apply from the next edit");
 
   bool changed = false;
   if (ImGui::BeginCombo("preset", state.preset.c_str())) {
@@ -162,11 +161,7 @@ void display_section(ViewerState& state) {
 
 }  // namespace
 
-bool ui_edit(Session& session, ViewerState& state, const Edit& edit) {
-  if (!state.ui_group_open && ImGui::IsAnyItemActive()) {
-    session.begin_group();
-    state.ui_group_open = true;
-  }
+bool try_edit(Session& session, ViewerState& state, const Edit& edit) {
   try {
     session.edit(edit);
     return true;
@@ -174,6 +169,14 @@ bool ui_edit(Session& session, ViewerState& state, const Edit& edit) {
     state.error(e.what());
     return false;
   }
+}
+
+bool ui_edit(Session& session, ViewerState& state, const Edit& edit) {
+  if (!state.ui_group_open && ImGui::IsAnyItemActive()) {
+    session.begin_group();
+    state.ui_group_open = true;
+  }
+  return try_edit(session, state, edit);
 }
 
 void end_ui_edit_group(Session& session, ViewerState& state) {

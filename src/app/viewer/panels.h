@@ -18,6 +18,8 @@ void draw_side_panel(Session& session, ViewerState& state, float x, float height
 void draw_status_line(const Session& session, const ViewerState& state, float x, float y,
                       float width);
 
+// An edit; a refusal (InputError) becomes a message and returns false, the scene unchanged.
+bool try_edit(Session& session, ViewerState& state, const Edit& edit);
 // An edit from a widget. While any widget stays active (a slider or colour being dragged) its
 // edits form one undo step. Returns false when the scene refused it (shown as a message).
 bool ui_edit(Session& session, ViewerState& state, const Edit& edit);

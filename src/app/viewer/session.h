@@ -78,9 +78,9 @@ class Session {
   const std::vector<uint32_t>& instance_ids();
   Renderer::PixelHit pick(uint32_t x, uint32_t y);
 
-  // Viewer settings, not edits (no undo): a new policy applies from the next edit on; a new
-  // tile size rebuilds the renderer (the image restarts); HiPR weights apply from the next
-  // stage 2.
+  // Viewer settings, not edits (no undo): a new policy takes over at once (its scheduler starts
+  // from the samples there are; the image is not restarted); a new tile size rebuilds the
+  // renderer (the image restarts); HiPR weights apply from the next stage 2.
   void set_policy(Policy policy);  // throws InputError for the oracle (it needs a reference)
   void set_display_rule(std::optional<DisplayRule> rule);
   void set_tile_size(uint32_t tile_size);

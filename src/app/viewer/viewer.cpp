@@ -3,7 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <fstream>
+#include <functional>
 #include <glm/trigonometric.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -56,6 +56,9 @@ vk::ContextOptions presenting_context_options(const app::CommonOptions& common,
 
 class Viewer {
  public:
+  // The last frame may still be reading the buffers and images destroyed with the members
+  // (when an exception ends the loop early).
+  ~Viewer() { vkDeviceWaitIdle(m_ctx.device()); }
   Viewer(const ViewerOptions& options, Scene scene)
       : m_started(),
         m_options(options),
@@ -66,7 +69,8 @@ class Viewer {
         m_ui_pass(m_ctx, kFrameFormat),
         m_frame(m_ctx, m_swapchain.extent(), kFrameFormat, kFrameUsage),
         m_ui(m_window, m_ctx, m_ui_pass, m_swapchain),
-        m_display(m_ctx, options.common.render.width, options.common.render.height) {
+        m_display(m_ctx, options.common.render.width, options.common.render.height),
+        m_requested_size(m_window.framebuffer_size()) {
     m_ui_pass.set_target(m_frame);
     SessionSettings settings;
     settings.render = options.common.render;
@@ -117,6 +121,7 @@ class Viewer {
   void render_steps();
   void update_overlay();
   bool present(const ViewLayout& layout);
+  bool draw_and_present(const vk::Swapchain::Frame& frame, const DisplayView& view);
   ViewLayout layout() const;
   void write_stats(double seconds) const;
   void open_scene();
@@ -151,6 +156,8 @@ class Viewer {
     bool operator==(const OverlayKey&) const = default;
   } m_overlay_key;
   bool m_overlay_on = false;
+  bool m_swapchain_stale = false;  // the last present found the swapchain out of date
+  VkExtent2D m_requested_size{};   // the window size the swapchain was last made for
   Timer m_spp_timer;
 };
 
@@ -165,6 +172,8 @@ ViewLayout Viewer::layout() const {
 void Viewer::resize(VkExtent2D extent) {
   // Minimised: nothing to present to; the loop resizes again once the window has a size.
   if (extent.width == 0 || extent.height == 0) return;
+  m_requested_size = extent;
+  m_swapchain_stale = false;
   m_swapchain.recreate(extent);
   m_ui.set_min_image_count(m_swapchain.min_image_count());
   m_frame = vk::Image(m_ctx, m_swapchain.extent(), kFrameFormat, kFrameUsage);
@@ -196,13 +205,19 @@ void Viewer::show_message_frame(const std::string& text) {
   view.output_width = m_frame.extent().width;
   view.output_height = m_frame.extent().height;
   view.x = int(view.output_width);  // no image yet: the background everywhere
-  m_display.record(frame->cmd, view);
-  vk::record_buffer_to_image(frame->cmd, m_display.output(), m_frame);
-  m_ui_pass.begin(frame->cmd);
-  m_ui.render(frame->cmd);
-  m_ui_pass.end(frame->cmd);
-  m_swapchain.blit_to_swapchain(*frame, m_frame);
-  m_swapchain.end_frame(*frame);
+  draw_and_present(*frame, view);  // an out-of-date swapchain is rebuilt by the next present()
+}
+
+// Records the display pass, the UI on top and the copy into the swapchain image, then presents.
+// False when the swapchain turned out of date.
+bool Viewer::draw_and_present(const vk::Swapchain::Frame& frame, const DisplayView& view) {
+  m_display.record(frame.cmd, view);
+  vk::record_buffer_to_image(frame.cmd, m_display.output(), m_frame);
+  m_ui_pass.begin(frame.cmd);
+  m_ui.render(frame.cmd);
+  m_ui_pass.end(frame.cmd);
+  m_swapchain.blit_to_swapchain(frame, m_frame);
+  return m_swapchain.end_frame(frame);
 }
 
 void Viewer::run_script(uint32_t frame) {
@@ -370,19 +385,13 @@ bool Viewer::present(const ViewLayout& layout) {
   view.scale = layout.scale;
   view.exposure_ev = m_state.exposure_ev;
   view.overlay = m_overlay_on;
-  m_display.record(frame->cmd, view);
-  vk::record_buffer_to_image(frame->cmd, m_display.output(), m_frame);
-  m_ui_pass.begin(frame->cmd);
-  m_ui.render(frame->cmd);
-  m_ui_pass.end(frame->cmd);
-  m_swapchain.blit_to_swapchain(*frame, m_frame);
-  if (!m_swapchain.end_frame(*frame)) resize(m_window.framebuffer_size());
+  // Rebuilt at the next frame's start, so a screenshot of this frame still reads its image.
+  if (!draw_and_present(*frame, view)) m_swapchain_stale = true;
   m_session->on_presented();
   return true;
 }
 
 void Viewer::write_stats(double seconds) const {
-  // Written atomically like every other output.
   nlohmann::json edits = nlohmann::json::array();
   for (const EditRecord& r : m_session->edit_records())
     edits.push_back({{"edit", r.what},
@@ -399,15 +408,14 @@ void Viewer::write_stats(double seconds) const {
                                 {"fps", seconds > 0.0 ? double(m_frames) / seconds : 0.0},
                                 {"steps", m_steps},
                                 {"edits", edits}};
-  write_atomically(m_options.stats_json,
-                   [&](const fs::path& temp) { std::ofstream(temp) << stats.dump(2) << "\n"; });
+  write_text_atomically(m_options.stats_json, stats.dump(2) + "\n");
 }
 
 int Viewer::run() {
   const Timer run_timer;
   Timer frame_timer;
   uint32_t frame_index = 0;
-  while (!m_window.should_close() && !m_state.request_quit) {
+  while (!m_window.should_close()) {
     const bool scripted =
         m_options.exit_after_frames > 0 || m_script_next < m_options.script.size();
     // Nothing to render and nobody in a hurry: sleep until an event instead of spinning.
@@ -416,8 +424,14 @@ int Viewer::run() {
     else
       m_window.poll_events();
     const VkExtent2D size = m_window.framebuffer_size();
-    if (size.width == 0 || size.height == 0) continue;  // minimised
-    if (size.width != m_frame.extent().width || size.height != m_frame.extent().height)
+    if (size.width == 0 || size.height == 0) {  // minimised: nothing to draw until restored
+      m_window.wait_events(0.1);
+      continue;
+    }
+    // Against the size asked for, not the one the surface granted (it may clamp it): a clamped
+    // swapchain is not rebuilt every frame.
+    if (m_swapchain_stale || size.width != m_requested_size.width ||
+        size.height != m_requested_size.height)
       resize(size);
 
     const std::vector<KeyPress> keys = m_window.take_key_presses();
@@ -451,12 +465,21 @@ int Viewer::run() {
   }
   const double seconds = run_timer.seconds();
   m_swapchain.wait_idle();
+  // The scene first, and every output tried: a failed screenshot must not cost the edits.
+  std::string failures;
+  const auto attempt = [&failures](const std::function<void()>& write) {
+    try {
+      write();
+    } catch (const InputError& e) {
+      failures += (failures.empty() ? "" : "; ") + std::string(e.what());
+    }
+  };
+  if (!m_options.save.empty()) attempt([&] { save_scene(m_session->scene(), m_options.save); });
   if (!m_options.screenshot.empty())
-    save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed());
-  if (!m_options.stats_json.empty()) write_stats(seconds);
-  if (!m_options.save.empty())
-    save_scene(m_session->scene(), m_options.save);  // a failure: exit code 2
+    attempt([&] { save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed()); });
+  if (!m_options.stats_json.empty()) attempt([&] { write_stats(seconds); });
   app::check_validation(m_ctx);
+  if (!failures.empty()) throw InputError(failures);
   return kExitOk;
 }
 

@@ -32,7 +32,6 @@ struct ViewerState {
   bool request_open = false;
   bool request_save = false;
   bool request_screenshot = false;
-  bool request_quit = false;
   bool open_confirmed = false;  // discard unsaved edits when opening
   std::optional<Policy> request_policy;
   std::optional<std::optional<DisplayRule>>

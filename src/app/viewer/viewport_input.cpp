@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "app/viewer/panels.h"
-#include "core/error.h"
 #include "scene/default_camera.h"
 
 namespace hipr::viewer {
@@ -29,16 +28,6 @@ glm::vec3 to_local_offset(const Scene& scene, uint32_t node, glm::vec3 world_off
 float scene_radius(const Scene& scene) {
   const auto [lo, hi] = scene.bounds();
   return std::max(0.5f * glm::length(hi - lo), 1e-6f);
-}
-
-bool try_edit(Session& session, ViewerState& state, const Edit& edit) {
-  try {
-    session.edit(edit);
-    return true;
-  } catch (const InputError& e) {
-    state.error(e.what());
-    return false;
-  }
 }
 
 }  // namespace
