@@ -42,6 +42,15 @@ render() {
   shift 2
   build/hipr render "$scene" -o "$out/throughput/$name.exr" --stats-json "$out/throughput/$name.json" -q "$@"
 }
+# Lavapipe compiles a kernel at its first dispatch (seconds to a minute) and Mesa's shader cache
+# keeps it: a tiny render of each configuration first, so no round pays for compilation.
+render warmup assets/scenes/cornell_box.gltf --width 16 --height 16 --spp 1
+render warmup assets/scenes/cornell_box.gltf --width 16 --height 16 --spp 1 --uber-kernel
+if [ -d "$shared" ]; then
+  render warmup "$shared/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb" \
+    --width 16 --height 16 --spp 1 --env "$studio"
+fi
+rm -f "$out/throughput/warmup".*
 for round in 1 2 3; do
   echo "== throughput round $round"
   render "cornell_box_r$round" assets/scenes/cornell_box.gltf --width 256 --height 256 --spp 64
