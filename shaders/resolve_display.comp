@@ -12,8 +12,10 @@
 //  - immediate: a pixel shows its fresh mean as soon as it has a sample since the last edit.
 //  - switch / blend: per tile, with weights w = 1 / (s^2 + 0.01) as relMSE weighs errors
 //    (s = stale value, per channel):
-//      V = sum w var(f) / n      (expected squared error of the fresh mean f of n samples)
-//      D = sum w (f - s)^2       (E[D] = V + B, B = the stale estimate's squared error)
+//      V = sum w var (1/n - 1/n_s)  (the noise of f - s: f, the fresh mean of n samples, and s,
+//                                   the stale one of n_s, share the random numbers of their
+//                                   first n samples where paths miss the change)
+//      D = sum w (f - s)^2          (E[D] = V + B, B = the stale estimate's squared bias)
 //    so B is estimated by max(D - V, 0). `switch` shows f once D > threshold * V (f is then
 //    expected closer to the truth: threshold 2 means V < B). `blend` shows s + a (f - s) with
 //    a = B / (B + V), the mix with the least expected error (ghosts of large changes fade at
@@ -133,7 +135,11 @@ void main() {
     const vec3 mean = accum.sum / float(n);
     const vec3 variance = max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u);
     const vec3 weight = 1.0 / (texel.stale * texel.stale + 0.01);
-    freshError += dot(weight, variance) / float(n);
+    // Var(f - s) with shared random streams: sample i of a pixel draws the same random numbers
+    // before and after an edit, so where paths miss the change f and s share their first n
+    // samples' noise and Var(f - s) = var (1/n - 1/n_stale) (no stale count known: 1/n).
+    const float staleShare = texel.staleSamples > n ? 1.0 / float(texel.staleSamples) : 0.0;
+    freshError += dot(weight, variance) * (1.0 / float(n) - staleShare);
     const vec3 d = mean - texel.stale;
     difference += dot(weight, d * d);
   }

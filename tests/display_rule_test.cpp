@@ -73,6 +73,27 @@ TEST_P(StatisticalRules, AnUnchangedImageKeepsItsStaleRadianceUntilTheFreshOneCa
       << "caught up: the very same samples";
 }
 
+// Sample i of a pixel draws the same random numbers before and after an edit, so where paths
+// miss the change the fresh and stale estimates share their noise and f - s is the change
+// alone: a lamp 20 % brighter, small next to each estimate's noise, must show once the fresh
+// estimate has nearly the stale one's samples (it did not while V ignored the shared noise).
+TEST_P(StatisticalRules, ASmallChangeEverywhereShowsOnceTheSharedNoiseCancels) {
+  EditedBox box(GetParam(), kStaleSpp - 1);
+  const auto light = std::find_if(box.scene.materials.begin(), box.scene.materials.end(),
+                                  [](const Material& m) { return m.name == "light"; });
+  ASSERT_NE(light, box.scene.materials.end());
+  box.edit(MaterialEdit{"light", {{"emission_luminance", {1.2f * light->params.emission_luminance}}}});
+  box.scheduler.step();  // every tile: 15 fresh samples against 16 stale
+  const ImageRGB fresh = box.renderer.image(), shown = box.scheduler.displayed_image();
+  double shown_gain = 0.0, fresh_gain = 0.0;
+  for (size_t i = 0; i < fresh.rgb.size(); ++i) {
+    shown_gain += shown.rgb[i] - box.stale.rgb[i];
+    fresh_gain += fresh.rgb[i] - box.stale.rgb[i];
+  }
+  ASSERT_GT(fresh_gain, 0.0);
+  EXPECT_GT(shown_gain, 0.8 * fresh_gain) << "the brighter lamp must be on screen";
+}
+
 // The converged image of `scene` (no noise to speak of next to the edit's change).
 ImageRGB converged(const Scene& scene) {
   Renderer renderer(test::context(), scene, settings());
