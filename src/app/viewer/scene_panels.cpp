@@ -117,7 +117,7 @@ void selection_section(Session& session, ViewerState& state) {
   ImGui::Text("%s", node_label(scene, node).c_str());
   const std::string reference = node_reference(scene, node);
   float translation[3] = {n.local[3].x, n.local[3].y, n.local[3].z};
-  const auto [lo, hi] = scene.bounds();
+  const auto [lo, hi] = session.bounds();
   if (ImGui::DragFloat3("translation", translation,
                         std::max(glm::length(hi - lo) * 0.002f, 1e-4f))) {
     glm::mat4 local = n.local;

@@ -99,6 +99,17 @@ void Session::changed(const Scene& before, const std::string& what) {
   // policies leave it as it was (scheduler.h).
   if (m_settings.policy != Policy::Hipr) m_gbuffer_stale = true;
   m_records.push_back({what});
+  m_bounds.reset();
+}
+
+std::pair<glm::vec3, glm::vec3> Session::bounds() const {
+  if (!m_bounds) m_bounds = m_scene.bounds();
+  return *m_bounds;
+}
+
+float Session::radius() const {
+  const auto [lo, hi] = bounds();
+  return std::max(0.5f * glm::length(hi - lo), 1e-6f);
 }
 
 void Session::edit(const Edit& edit) {

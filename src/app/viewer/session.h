@@ -41,6 +41,11 @@ class Session {
   Session(const vk::Context& ctx, Scene scene, const SessionSettings& settings);
 
   const Scene& scene() const { return m_scene; }
+  // scene().bounds(), kept until the next change: the panels and gestures ask every frame, and
+  // Scene::bounds() walks every vertex (a million in the big scenes).
+  std::pair<glm::vec3, glm::vec3> bounds() const;
+  // Half the bounds' diagonal (at least 1e-6): the scale of drags and key steps.
+  float radius() const;
   const SessionSettings& settings() const { return m_settings; }
   const Renderer& renderer() const { return *m_renderer; }
   const Scheduler& scheduler() const { return *m_scheduler; }
@@ -106,6 +111,7 @@ class Session {
   bool m_ids_stale = true;
   bool m_gbuffer_stale = false;  // edits since stage 1 last ran (policies without stage 1)
   std::vector<uint32_t> m_ids;
+  mutable std::optional<std::pair<glm::vec3, glm::vec3>> m_bounds;  // cache of bounds()
 };
 
 // A copy of `scene` with what diff_scenes reads (nodes, materials, lights, cameras, the

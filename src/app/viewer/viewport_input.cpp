@@ -25,22 +25,17 @@ glm::vec3 to_local_offset(const Scene& scene, uint32_t node, glm::vec3 world_off
   return glm::vec3(glm::inverse(parent_world(scene, node)) * glm::vec4(world_offset, 0.0f));
 }
 
-float scene_radius(const Scene& scene) {
-  const auto [lo, hi] = scene.bounds();
-  return std::max(0.5f * glm::length(hi - lo), 1e-6f);
-}
-
 }  // namespace
 
 void ViewportInput::start_camera_gesture(const Session& session) {
   const Scene& scene = session.scene();
   const Camera camera = resolve_camera(scene);
-  const auto [lo, hi] = scene.bounds();
+  const auto [lo, hi] = session.bounds();
   const glm::vec3 eye(camera.camera_to_world[3]);
   const glm::vec3 forward = -glm::vec3(camera.camera_to_world[2]);
   // Orbit about the scene's centre as seen along the view axis.
   float distance = glm::dot(0.5f * (lo + hi) - eye, forward);
-  if (!(distance > 1e-3f * scene_radius(scene))) distance = scene_radius(scene);
+  if (!(distance > 1e-3f * session.radius())) distance = session.radius();
   m_camera.reset(camera.camera_to_world, distance);
 }
 
@@ -98,7 +93,7 @@ void ViewportInput::key(Session& session, ViewerState& state, const KeyPress& pr
                {GLFW_KEY_PAGE_UP, {0, 1, 0}}, {GLFW_KEY_PAGE_DOWN, {0, -1, 0}}};
   for (const auto& move : moves) {
     if (k != move.key) continue;
-    const float step = 0.01f * scene_radius(scene) * (press.shift ? 10.0f : 1.0f);
+    const float step = 0.01f * session.radius() * (press.shift ? 10.0f : 1.0f);
     glm::mat4 local = scene.nodes[node].local;
     local[3] += glm::vec4(to_local_offset(scene, node, move.direction * step), 0.0f);
     try_edit(session, state, TransformEdit{node_reference(scene, node), std::nullopt, local});
