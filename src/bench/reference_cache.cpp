@@ -21,6 +21,8 @@ constexpr uint32_t kReferenceSeedOffset = 0x68e31da5u;
 std::string reference_key(const Scene& scene, const std::string& state,
                           const RenderSettings& settings, uint32_t spp) {
   Hasher hasher;
+  // The shader sources are hashed below; a change of host code that alters pixels (scene
+  // packing, light or BSDF tables) must bump this version, or stale references are reused.
   hasher.add("hipr-reference-v1").add(scene.content_hash).add(state);
   if (scene.environment) {
     hasher.add(&scene.environment->intensity, sizeof(float));
