@@ -64,6 +64,9 @@ using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit
 std::vector<Edit> load_edit_script(const std::filesystem::path& path);
 std::vector<Edit> parse_edit_script(const std::string& json_text, const std::string& name);
 
+// The node an edit names: its glTF name (the first of that name) or "#index"; throws InputError.
+size_t find_node(const Scene& scene, const std::string& name);
+
 // Applies one edit to the scene; throws InputError for an unknown node, material or key.
 void apply_edit(Scene& scene, const Edit& edit);
 

@@ -55,12 +55,6 @@ std::vector<std::string> edit_texts(const fs::path& path) {
   return texts;
 }
 
-void converge(Renderer& renderer, uint32_t spp) {
-  renderer.reset();
-  for (uint32_t done = 0; done < spp; done += 16)
-    renderer.add_samples_full_frame(std::min(16u, spp - done));
-}
-
 // Stage 1's active set for this edit (the tiles where a changed element is visible now or
 // before). Also compiles every kernel the edited scene's runs use (an edit can add a kernel
 // feature), so no timed run pays for JIT compilation.
@@ -157,7 +151,7 @@ int run_bench(BenchOptions& o) {
                   ? "  reference read from the cache"
                   : "  reference rendered in " + std::to_string(reference.render_seconds) + " s");
 
-    converge(renderer, o.common.spp);  // the renderer holds `before`
+    bench::converge(renderer, o.common.spp);  // the renderer holds `before`
     renderer.resolve_display_all(DisplayRule::Immediate);
     const RenderSnapshot start = renderer.snapshot();
     const std::vector<uint32_t> changed =

@@ -18,6 +18,11 @@ constexpr uint32_t kReferenceSeedOffset = 0x68e31da5u;
 
 }  // namespace
 
+void converge(Renderer& renderer, uint32_t spp) {
+  renderer.reset();
+  for (uint32_t done = 0; done < spp; done += 16) renderer.add_samples_full_frame(std::min(16u, spp - done));
+}
+
 std::string reference_key(const Scene& scene, const std::string& state,
                           const RenderSettings& settings, uint32_t spp) {
   Hasher hasher;
@@ -64,11 +69,7 @@ Reference converged_reference(const vk::Context& ctx, const Scene& scene, const 
   reference_settings.seed = settings.seed ^ kReferenceSeedOffset;
   Renderer renderer(ctx, scene, reference_settings);
   const Timer timer;
-  for (uint32_t done = 0; done < spp;) {
-    const uint32_t batch = std::min(spp - done, 16u);
-    renderer.add_samples_full_frame(batch);
-    done += batch;
-  }
+  converge(renderer, spp);
   Reference reference{renderer.image(), false, timer.seconds()};
   if (!file.empty()) {
     fs::create_directories(cache_dir, ec);

@@ -29,6 +29,10 @@ struct Reference {
   double render_seconds = 0.0;  // 0 when read from the cache
 };
 
+// Restarts the renderer's image and renders `spp` samples per pixel, in submissions of at most
+// 16 (each stays short: no device watchdog, and lavapipe's threads stay shared).
+void converge(Renderer& renderer, uint32_t spp);
+
 // The reference of `scene` at `spp` samples per pixel, rendered with a seed unrelated to
 // `settings.seed` (its noise must not correlate with the runs it judges). Read from
 // `cache_dir`/KEY.exr when present, else rendered and stored there (when cache_dir is set).

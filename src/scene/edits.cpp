@@ -28,9 +28,6 @@ size_t find_by_name(const Items& items, const std::string& name, NameOf name_of,
   throw InputError(std::string("no ") + kind + " named '" + name + "' in the scene");
 }
 
-size_t find_node(const Scene& scene, const std::string& name) {
-  return find_by_name(scene.nodes, name, [](const Node& n) { return n.name; }, "node");
-}
 
 size_t find_material(const Scene& scene, const std::string& name) {
   return find_by_name(scene.materials, name, [](const Material& m) { return m.name; }, "material");
@@ -144,6 +141,10 @@ struct Inverter {
 };
 
 }  // namespace
+
+size_t find_node(const Scene& scene, const std::string& name) {
+  return find_by_name(scene.nodes, name, [](const Node& n) { return n.name; }, "node");
+}
 
 Edit inverse_edit(const Scene& scene, const Edit& edit) {
   return std::visit(Inverter{scene}, edit);

@@ -35,16 +35,6 @@ void apply_size(const std::string& size, RenderSettings& render) {
   render.height = uint32_t(std::stoul(match[2]));
 }
 
-// A node by glTF name or "#index", as edit scripts name them.
-int find_node(const Scene& scene, const std::string& name) {
-  if (name.size() > 1 && name[0] == '#' &&
-      name.find_first_not_of("0123456789", 1) == std::string::npos && name.size() < 10 &&
-      std::stoul(name.substr(1)) < scene.nodes.size())
-    return int(std::stoul(name.substr(1)));
-  for (size_t n = 0; n < scene.nodes.size(); ++n)
-    if (scene.nodes[n].name == name) return int(n);
-  throw InputError("--select: no node named '" + name + "' in the scene");
-}
 
 int run_view(ViewCommandOptions& o) {
   viewer::ViewerOptions& v = o.viewer;
@@ -80,7 +70,13 @@ int run_view(ViewCommandOptions& o) {
       throw InputError("--stats-json folder does not exist: " + dir.string());
   }
   Scene scene = load_scene(v.common.scene, v.common.load);
-  if (!o.select.empty()) v.select = find_node(scene, o.select);
+  if (!o.select.empty()) {
+    try {
+      v.select = int(find_node(scene, o.select));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--select: ") + e.what());
+    }
+  }
   if (!o.script.empty()) {
     v.script = load_edit_script(o.script);
     // Every name in the script must resolve before the window opens.

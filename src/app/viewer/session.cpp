@@ -172,12 +172,15 @@ void Session::on_presented() {
   m_shown_at_edit.reset();
 }
 
+void Session::ensure_gbuffer() {
+  if (!m_gbuffer_stale) return;
+  m_renderer->refresh_gbuffer();
+  m_gbuffer_stale = false;
+  m_ids_stale = true;
+}
+
 const std::vector<uint32_t>& Session::instance_ids() {
-  if (m_gbuffer_stale) {
-    m_renderer->refresh_gbuffer();
-    m_gbuffer_stale = false;
-    m_ids_stale = true;
-  }
+  ensure_gbuffer();
   if (m_ids_stale) {
     m_ids = m_renderer->gbuffer_instances();
     m_ids_stale = false;
@@ -186,11 +189,7 @@ const std::vector<uint32_t>& Session::instance_ids() {
 }
 
 Renderer::PixelHit Session::pick(uint32_t x, uint32_t y) {
-  if (m_gbuffer_stale) {
-    m_renderer->refresh_gbuffer();
-    m_gbuffer_stale = false;
-    m_ids_stale = true;
-  }
+  ensure_gbuffer();
   return m_renderer->gbuffer_at(x, y);
 }
 

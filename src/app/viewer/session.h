@@ -93,6 +93,8 @@ class Session {
 
  private:
   void rebuild();
+  // The G-buffer of the scene as it is now (policies without stage 1 leave it behind edits).
+  void ensure_gbuffer();
   std::unique_ptr<Scheduler> make_scheduler(Renderer& renderer, Policy policy) const;
   void changed(const Scene& before, const std::string& what);
 
