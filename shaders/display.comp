@@ -10,12 +10,12 @@
 
 layout(local_size_x = 64) in;
 
-#include "shared/abi.h"
+#include "shared/bindings/display.h"
 #include "common/dispatch.glsl"
 
-layout(scalar, binding = kBindingDisplayRadiance) readonly buffer Radiance { vec3 b_radiance[]; };
-layout(scalar, binding = kBindingDisplayOverlay) readonly buffer Overlay { uint b_overlay[]; };
-layout(scalar, binding = kBindingDisplayOutput) writeonly buffer Output { uint b_output[]; };
+layout(scalar, binding = kDisplayRadiance) readonly buffer Radiance { vec3 b_radiance[]; };
+layout(scalar, binding = kDisplayOverlay) readonly buffer Overlay { uint b_overlay[]; };
+layout(scalar, binding = kDisplayOutput) writeonly buffer Output { uint b_output[]; };
 layout(push_constant, scalar) uniform Push { DisplayPush u_push; };
 
 // image/tonemap.cpp's srgb_encode: non-finite -> 0, clamp to [0, 1], sRGB transfer curve.

@@ -11,15 +11,15 @@
 
 layout(local_size_x = 64) in;
 
-#include "shared/abi.h"
+#include "common/frame.glsl"
+#include "shared/bindings/visibility.h"
 #include "common/dispatch.glsl"
 
-layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
-layout(scalar, binding = kBindingGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
-layout(scalar, binding = kBindingPreviousGBuffer) readonly buffer Previous { GBufferTexel b_previous[]; };
-layout(scalar, binding = kBindingChangedRecords) readonly buffer Changed { uint b_changed_records[]; };
-layout(scalar, binding = kBindingTileFlags) buffer TileFlags { uint b_tile_flags[]; };
-layout(scalar, binding = kBindingTileChange) buffer TileChange { uint b_tile_change[]; };
+layout(scalar, binding = kMarkActiveGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
+layout(scalar, binding = kMarkActivePrevious) readonly buffer Previous { GBufferTexel b_previous[]; };
+layout(scalar, binding = kMarkActiveChangedRecords) readonly buffer Changed { uint b_changed_records[]; };
+layout(scalar, binding = kMarkActiveTileFlags) buffer TileFlags { uint b_tile_flags[]; };
+layout(scalar, binding = kMarkActiveTileChange) buffer TileChange { uint b_tile_change[]; };
 
 bool changed(uint record) { return record != kInvalidIndex && b_changed_records[record] != 0u; }
 

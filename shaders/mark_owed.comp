@@ -9,12 +9,12 @@
 
 layout(local_size_x = 64) in;
 
-#include "shared/abi.h"
+#include "common/frame.glsl"
+#include "shared/bindings/film.h"
 #include "common/dispatch.glsl"
 
-layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
-layout(scalar, binding = kBindingAccumulation) buffer Accumulation { PixelAccum b_accum[]; };
-layout(scalar, binding = kBindingTileFlags) buffer TileFlags { uint b_tile_flags[]; };
+layout(scalar, binding = kOwedAccumulation) buffer Accumulation { PixelAccum b_accum[]; };
+layout(scalar, binding = kOwedTileFlags) buffer TileFlags { uint b_tile_flags[]; };
 
 void main() {
   const uint index = dispatch_index();

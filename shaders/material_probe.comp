@@ -9,7 +9,8 @@
 
 layout(local_size_x = 1) in;
 
-#include "common/bindings.glsl"
+#include "common/scene_bindings.glsl"
+#include "shared/bindings/probe.h"
 #include "common/sampling.glsl"
 #include "common/textures.glsl"
 #include "bsdf/bsdf.glsl"
@@ -17,7 +18,7 @@ layout(local_size_x = 1) in;
 #include "common/material_inputs.glsl"
 
 layout(push_constant, scalar) uniform Push { ProbePush u_probe; };
-layout(scalar, binding = kBindingMaterialProbe) writeonly buffer Probe { MaterialInputsProbe b_probe; };
+layout(scalar, binding = kProbeOutput) writeonly buffer Probe { MaterialInputsProbe b_probe; };
 
 void main() {
   const mat4x3 identity = mat4x3(1.0);

@@ -11,15 +11,15 @@
 
 layout(local_size_x = 256) in;  // == kSortBlock == kSortRadix
 
-#include "shared/abi.h"
+#include "shared/bindings/schedule.h"
 #include "common/dispatch.glsl"
 
 layout(push_constant, scalar) uniform Push { SortPush u_push; };
-layout(scalar, binding = kBindingSortKeys) buffer Keys { uint b_keys[]; };
-layout(scalar, binding = kBindingSortValues) buffer Values { uint b_values[]; };
-layout(scalar, binding = kBindingSortKeysAlt) buffer KeysAlt { uint b_keys_alt[]; };
-layout(scalar, binding = kBindingSortValuesAlt) buffer ValuesAlt { uint b_values_alt[]; };
-layout(scalar, binding = kBindingSortHistogram) buffer Histogram { uint b_hist[]; };
+layout(scalar, binding = kSortKeys) buffer Keys { uint b_keys[]; };
+layout(scalar, binding = kSortValues) buffer Values { uint b_values[]; };
+layout(scalar, binding = kSortKeysAlt) buffer KeysAlt { uint b_keys_alt[]; };
+layout(scalar, binding = kSortValuesAlt) buffer ValuesAlt { uint b_values_alt[]; };
+layout(scalar, binding = kSortHistogram) buffer Histogram { uint b_hist[]; };
 
 shared uint s_keys[kSortBlock];
 shared uint s_values[kSortBlock];

@@ -34,15 +34,15 @@
 
 layout(local_size_x = 64) in;  // == kWorkgroupSize; one workgroup per tile
 
-#include "shared/abi.h"
+#include "common/frame.glsl"
+#include "shared/bindings/resolve.h"
 #include "common/dispatch.glsl"
 
-layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
-layout(scalar, binding = kBindingTileList) readonly buffer TileList { uint b_tiles[]; };
-layout(scalar, binding = kBindingAccumulation) readonly buffer Accumulation { PixelAccum b_accum[]; };
-layout(scalar, binding = kBindingTileFlags) buffer TileFlags { uint b_tile_flags[]; };
-layout(scalar, binding = kBindingDisplay) buffer Display { DisplayTexel b_display[]; };
-layout(scalar, binding = kBindingGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
+layout(scalar, binding = kResolveTileList) readonly buffer TileList { uint b_tiles[]; };
+layout(scalar, binding = kResolveAccumulation) readonly buffer Accumulation { PixelAccum b_accum[]; };
+layout(scalar, binding = kResolveTileFlags) buffer TileFlags { uint b_tile_flags[]; };
+layout(scalar, binding = kResolveDisplay) buffer Display { DisplayTexel b_display[]; };
+layout(scalar, binding = kResolveGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 layout(push_constant, scalar) uniform Push { ResolvePush u_push; };
 
 shared float s_fresh_error[64];  // V

@@ -12,17 +12,17 @@
 
 layout(local_size_x = 64) in;
 
-#include "shared/abi.h"
+#include "common/frame.glsl"
+#include "shared/bindings/schedule.h"
 #include "common/dispatch.glsl"
 
 layout(push_constant) uniform Push { uint u_pass; };
-layout(scalar, binding = kBindingFrame) readonly buffer Frame { FrameParams u_frame; };
-layout(scalar, binding = kBindingTileFlags) readonly buffer TileFlags { uint b_tile_flags[]; };
-layout(scalar, binding = kBindingTileWeights) readonly buffer TileWeights { uint64_t b_tile_weights[]; };
-layout(scalar, binding = kBindingTileRowDistance) buffer RowDistance { uint b_row_distance[]; };
-layout(scalar, binding = kBindingTileChange) readonly buffer TileChange { uint b_tile_change[]; };
-layout(scalar, binding = kBindingSortKeys) writeonly buffer Keys { uint b_keys[]; };
-layout(scalar, binding = kBindingSortValues) writeonly buffer Values { uint b_values[]; };
+layout(scalar, binding = kKeysTileFlags) readonly buffer TileFlags { uint b_tile_flags[]; };
+layout(scalar, binding = kKeysTileWeights) readonly buffer TileWeights { uint64_t b_tile_weights[]; };
+layout(scalar, binding = kKeysRowDistance) buffer RowDistance { uint b_row_distance[]; };
+layout(scalar, binding = kKeysTileChange) readonly buffer TileChange { uint b_tile_change[]; };
+layout(scalar, binding = kKeysSortKeys) writeonly buffer Keys { uint b_keys[]; };
+layout(scalar, binding = kKeysSortValues) writeonly buffer Values { uint b_values[]; };
 
 const uint kNone = 0xffffu;
 

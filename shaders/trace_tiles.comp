@@ -14,7 +14,15 @@
 
 layout(local_size_x = 64) in;  // == kWorkgroupSize
 
-#include "common/bindings.glsl"
+#include "common/scene_bindings.glsl"
+#include "shared/bindings/trace.h"
+
+layout(scalar, binding = kTraceTileList) readonly buffer TileList { uint b_tiles[]; };
+layout(scalar, binding = kTraceAccumulation) buffer Accumulation { PixelAccum b_accum[]; };
+layout(scalar, binding = kTraceStats) buffer Stats { RenderStats b_stats; };
+layout(scalar, binding = kTraceTileFlags) buffer TileFlags { uint b_tile_flags[]; };
+layout(scalar, binding = kTraceTileBackground) readonly buffer TileBackground { uint b_tile_background[]; };
+
 #include "common/rng.glsl"
 #include "common/sampling.glsl"
 #include "common/ray_offset.glsl"

@@ -9,12 +9,13 @@
 
 layout(local_size_x = 64) in;
 
-#include "common/bindings.glsl"
+#include "common/scene_bindings.glsl"
+#include "shared/bindings/visibility.h"
 #include "common/dispatch.glsl"
 #include "common/textures.glsl"
 #include "common/cutout.glsl"
 
-layout(scalar, binding = kBindingGBuffer) writeonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
+layout(scalar, binding = kVisibilityGBuffer) writeonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 
 void main() {
   const uint index = dispatch_index();

@@ -23,7 +23,7 @@ Scene make_card_camera_scene(float env) {
   return scene;
 }
 
-uint32_t add_card(Scene& scene, const std::string& name, const glm::mat4& transform, const abi::MaterialBlock& material) {
+uint32_t add_card(Scene& scene, const std::string& name, const glm::mat4& transform, const MaterialParameters& material) {
   MeshPrimitive card;
   card.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
   card.normals.assign(4, glm::vec3(0, 0, 1));
@@ -46,8 +46,8 @@ uint32_t add_card(Scene& scene, const std::string& name, const glm::mat4& transf
   return card.material;
 }
 
-abi::MaterialBlock black_material() {
-  abi::MaterialBlock m = default_material_params();
+MaterialParameters black_material() {
+  MaterialParameters m = default_material_params();
   m.base_color = glm::vec3(0.0f);
   m.specular_weight = 0.0f;
   return m;

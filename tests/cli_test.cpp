@@ -1,4 +1,4 @@
-// The hipr binary as scripts use it (DESIGN.md, "CLI contract"): exit codes, one-line errors,
+// The hipr binary as scripts use it (docs/method.md#command-line-and-edit-scripts): exit codes, one-line errors,
 // outputs that appear whole or not at all, image metadata and --stats-json.
 #include <nlohmann/json.hpp>
 
@@ -12,6 +12,7 @@
 #include "hipr/scene_loader.h"
 #include "image/tonemap.h"
 #include "test_support.h"
+#include "image/image_io.h"
 
 namespace hipr {
 namespace {

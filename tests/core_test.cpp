@@ -12,6 +12,7 @@
 #include "core/hash.h"
 #include "core/process.h"
 #include "hipr/renderer.h"
+#include "render/trace_pass.h"
 #include "scene/gltf_sandbox.h"
 #include "scene/mesh_processing.h"
 #include "test_support.h"

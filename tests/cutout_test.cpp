@@ -10,21 +10,15 @@
 #include "hipr/scene_loader.h"
 #include "render/gpu_scene.h"
 #include "test_support.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
 
-RenderSettings card_settings(uint32_t tile = 16) {
-  RenderSettings s;
-  s.width = s.height = 32;
-  s.seed = 5;
-  s.max_depth = 4;
-  s.tile_size = tile;
-  return s;
-}
+RenderSettings card_settings(uint32_t tile = 16) { return test::render_settings(32, 32, tile, 4, 5); }
 
-abi::MaterialBlock cutout(float opacity, float cutoff) {
-  abi::MaterialBlock m = test::black_material();
+MaterialParameters cutout(float opacity, float cutoff) {
+  MaterialParameters m = test::black_material();
   m.geometry_opacity = opacity;
   m.alpha_cutoff = cutoff;
   return m;
@@ -32,7 +26,7 @@ abi::MaterialBlock cutout(float opacity, float cutoff) {
 
 // A black card in front of a uniform environment of radiance 1: the image mean is the
 // fraction of camera rays the card lets through.
-Scene card_before_sky(const abi::MaterialBlock& card) {
+Scene card_before_sky(const MaterialParameters& card) {
   Scene scene = test::make_card_camera_scene(1.0f);
   test::add_card(scene, "card", glm::mat4(1.0f), card);
   return scene;
@@ -55,7 +49,7 @@ TEST(Cutout, BlendCoversTheFractionOfItsOpacity) {
 }
 
 // A 2x2 texture whose alpha is 1 on the diagonal and 0 off it.
-void add_diagonal_alpha(Scene& scene, abi::MaterialBlock& card) {
+void add_diagonal_alpha(Scene& scene, MaterialParameters& card) {
   Image image;
   image.name = "diagonal";
   image.width = image.height = 2;
@@ -70,7 +64,7 @@ void add_diagonal_alpha(Scene& scene, abi::MaterialBlock& card) {
 }
 
 TEST(Cutout, TextureAlphaCutsOutTexels) {
-  abi::MaterialBlock card = cutout(1.0f, 0.5f);
+  MaterialParameters card = cutout(1.0f, 0.5f);
   Scene scene = test::make_card_camera_scene(1.0f);
   add_diagonal_alpha(scene, card);
   test::add_card(scene, "card", glm::mat4(1.0f), card);
@@ -89,9 +83,9 @@ TEST(Cutout, TextureAlphaCutsOutTexels) {
 
 // A white floor filling the view, lit straight on by a directional light of 1 lux, under a
 // card behind the camera (unseen) that shadows all of it.
-Scene shadowed_floor(const abi::MaterialBlock& blocker) {
+Scene shadowed_floor(const MaterialParameters& blocker) {
   Scene scene = test::make_card_camera_scene(0.0f);
-  abi::MaterialBlock white = default_material_params();
+  MaterialParameters white = default_material_params();
   white.base_color = glm::vec3(1.0f);
   white.specular_weight = 0.0f;
   test::add_card(scene, "floor", glm::mat4(1.0f), white);
@@ -119,7 +113,7 @@ TEST(Cutout, ShadowRaysHonourTheCutout) {
 TEST(Cutout, StageOneSeesThroughCutouts) {
   for (const float cutoff : {0.5f, 0.3f}) {
     Renderer renderer(test::context(), card_before_sky(cutout(0.4f, cutoff)), card_settings());
-    renderer.stage1_visibility(ChangeSet{});
+    renderer.hipr_stages()->stage1_visibility(ChangeSet{});
     const uint32_t expected = cutoff > 0.4f ? UINT32_MAX : 0u;  // the sky, or instance 0 (the card)
     for (uint32_t id : renderer.gbuffer_instances()) ASSERT_EQ(id, expected) << "cutoff " << cutoff;
   }
@@ -136,9 +130,9 @@ TEST(Cutout, StochasticCoverageIsDeterministic) {
 
 TEST(Cutout, OpaqueScenesBuildOpaqueGeometry) {
   const Scene cornell = load_scene(test::asset("cornell_box.gltf"));
-  EXPECT_EQ(Renderer(test::context(), cornell, card_settings()).scene_info().cutout_geometries, 0u);
-  EXPECT_EQ(Renderer(test::context(), card_before_sky(cutout(1.0f, -1.0f)), card_settings()).scene_info().cutout_geometries, 0u);
-  EXPECT_EQ(Renderer(test::context(), card_before_sky(cutout(1.0f, 0.5f)), card_settings()).scene_info().cutout_geometries, 1u);
+  EXPECT_EQ(Renderer(test::context(), cornell, card_settings()).scene_stats().cutout_geometries, 0u);
+  EXPECT_EQ(Renderer(test::context(), card_before_sky(cutout(1.0f, -1.0f)), card_settings()).scene_stats().cutout_geometries, 0u);
+  EXPECT_EQ(Renderer(test::context(), card_before_sky(cutout(1.0f, 0.5f)), card_settings()).scene_stats().cutout_geometries, 1u);
 }
 
 TEST(Cutout, OpacityEditOfAnOpaqueMaterialRebuildsItsGeometry) {
@@ -150,13 +144,13 @@ TEST(Cutout, OpacityEditOfAnOpaqueMaterialRebuildsItsGeometry) {
   changes.materials = true;
   scene.materials[0].params.geometry_opacity = 0.0f;
   renderer.update_scene(scene, changes);
-  EXPECT_EQ(renderer.scene_info().cutout_geometries, 1u);
+  EXPECT_EQ(renderer.scene_stats().cutout_geometries, 1u);
   renderer.reset();
   renderer.add_samples_full_frame(1);
   EXPECT_NEAR(test::mean(renderer.image()), 1.0, 1e-4);
   scene.materials[0].params.geometry_opacity = 1.0f;
   renderer.update_scene(scene, changes);
-  EXPECT_EQ(renderer.scene_info().cutout_geometries, 0u);
+  EXPECT_EQ(renderer.scene_stats().cutout_geometries, 0u);
   renderer.reset();
   renderer.add_samples_full_frame(1);
   EXPECT_EQ(test::mean(renderer.image()), 0.0);

@@ -12,6 +12,7 @@
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "test_support.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
@@ -103,15 +104,7 @@ Scene room(float scale) {
   return scene;
 }
 
-RenderSettings settings() {
-  RenderSettings s;
-  s.width = 64;
-  s.height = 48;
-  s.tile_size = 4;
-  s.max_depth = 8;
-  s.seed = 21;
-  return s;
-}
+RenderSettings settings() { return test::render_settings(64, 48, 4, 8, 21); }
 
 struct Discovery {
   std::vector<uint32_t> flags;
@@ -126,11 +119,11 @@ Discovery discover(float scale, const RenderSettings& s = settings()) {
   apply_edit(after, TransformEdit{"block", kMove * scale, std::nullopt});
   Renderer renderer(test::context(), before, s);
   renderer.add_samples_full_frame(1);
-  renderer.stage1_visibility({});
+  renderer.hipr_stages()->stage1_visibility({});
   renderer.update_scene(after, diff_scenes(before, after));
   renderer.mark_all_owed();
-  renderer.stage1_visibility(diff_scenes(before, after));
-  renderer.stage2_discover(4);
+  renderer.hipr_stages()->stage1_visibility(diff_scenes(before, after));
+  test::discover_all(renderer, 4);
   EXPECT_EQ(renderer.counters().non_finite_samples, 0u) << "scale " << scale;
   return {renderer.tile_flags(), renderer.tile_weights(), renderer.gbuffer_instances()};
 }

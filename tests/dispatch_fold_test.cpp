@@ -53,7 +53,7 @@ HiprRun run_hipr_edit(const vk::Context& ctx) {
   apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.08f, 0.0f, 0.0f), std::nullopt});
   scheduler.on_edit(scene, diff_scenes(before, scene));
   for (int i = 0; i < 64 && scheduler.work_since_edit() < 2.0; ++i) scheduler.step();
-  EXPECT_FALSE(scheduler.in_stage2());
+  EXPECT_FALSE(scheduler.leading_steps_pending());
   return {renderer.tile_flags(), renderer.schedule(), renderer.tile_weights(), renderer.image().rgb,
           scheduler.displayed_image().rgb};
 }

@@ -11,21 +11,14 @@
 #include "hipr/scheduler.h"
 #include "image/error_metrics.h"
 #include "test_support.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
 
 constexpr uint32_t kStaleSpp = 16;
 
-RenderSettings settings() {
-  RenderSettings s;
-  s.width = 32;
-  s.height = 32;
-  s.tile_size = 8;
-  s.max_depth = 4;
-  s.seed = 5;
-  return s;
-}
+RenderSettings settings() { return test::render_settings(32, 32, 8, 4, 5); }
 
 // A converged Cornell box with a scanline scheduler that visits every tile in one step with
 // `first_visit` samples, so one step is one whole round.

@@ -225,7 +225,7 @@ TEST(Edits, InverseRestoresTheSceneExactly) {
     }
     for (size_t m = 0; m < with_sky.materials.size(); ++m)
       EXPECT_EQ(std::memcmp(&scene.materials[m].params, &with_sky.materials[m].params,
-                            sizeof(abi::MaterialBlock)),
+                            sizeof(MaterialParameters)),
                 0)
           << describe(edit);
     for (size_t l = 0; l < with_sky.lights.size(); ++l) {

@@ -6,6 +6,8 @@
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
 #include "test_support.h"
+#include "image/image_io.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
@@ -61,7 +63,7 @@ TEST(Furnace, GreySphereReflectsItsAlbedo) {
 // tests in openpbr_test.cpp, with the integrator's refraction, media and delta events).
 struct FurnaceMaterial {
   const char* name;
-  void (*set)(abi::MaterialBlock&);
+  void (*set)(MaterialParameters&);
   double low, high;  // bounds of the sphere's mean (layers that only lose a little)
 };
 
@@ -88,27 +90,27 @@ INSTANTIATE_TEST_SUITE_P(
     OpenPbr, FurnaceMaterials,
     ::testing::Values(
         FurnaceMaterial{"RoughDielectric",
-                        [](abi::MaterialBlock& m) {
+                        [](MaterialParameters& m) {
                           m.specular_weight = 1.0f;
                           m.specular_roughness = 0.5f;
                         },
                         0.98, 1.02},
         FurnaceMaterial{"RoughMetal",
-                        [](abi::MaterialBlock& m) {
+                        [](MaterialParameters& m) {
                           m.specular_weight = 1.0f;
                           m.base_metalness = 1.0f;
                           m.specular_roughness = 0.7f;
                         },
                         0.98, 1.02},
         FurnaceMaterial{"RoughGlass",
-                        [](abi::MaterialBlock& m) {
+                        [](MaterialParameters& m) {
                           m.specular_weight = 1.0f;
                           m.transmission_weight = 1.0f;
                           m.specular_roughness = 0.4f;
                         },
                         0.97, 1.03},
         FurnaceMaterial{"SmoothGlassWithClearVolume",
-                        [](abi::MaterialBlock& m) {
+                        [](MaterialParameters& m) {
                           m.specular_weight = 1.0f;
                           m.transmission_weight = 1.0f;
                           m.specular_roughness = 0.0f;
@@ -116,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(
                         },
                         0.97, 1.03},
         FurnaceMaterial{"ThinWalledGlass",
-                        [](abi::MaterialBlock& m) {
+                        [](MaterialParameters& m) {
                           m.specular_weight = 1.0f;
                           m.transmission_weight = 1.0f;
                           m.specular_roughness = 0.3f;
@@ -124,20 +126,20 @@ INSTANTIATE_TEST_SUITE_P(
                         },
                         0.97, 1.03},
         FurnaceMaterial{"IndexMatchedGlass",
-                        [](abi::MaterialBlock& m) {
+                        [](MaterialParameters& m) {
                           m.transmission_weight = 1.0f;
                           m.specular_ior = 1.0f;
                         },
                         0.99, 1.01},
         FurnaceMaterial{"RoughDiffuseUnderCoat",
-                        [](abi::MaterialBlock& m) {
+                        [](MaterialParameters& m) {
                           m.base_diffuse_roughness = 1.0f;
                           m.coat_weight = 1.0f;
                           m.coat_roughness = 0.2f;
                         },
                         0.88, 1.02},
         FurnaceMaterial{"FuzzOverDiffuse",
-                        [](abi::MaterialBlock& m) {
+                        [](MaterialParameters& m) {
                           m.fuzz_weight = 1.0f;
                           m.fuzz_roughness = 0.5f;
                         },

@@ -9,6 +9,7 @@
 #include "hipr/scene_loader.h"
 #include "image/image_io.h"
 #include "test_support.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
@@ -19,7 +20,7 @@ using test::Document;
 struct Loaded {
   Scene scene;
   std::string warnings;
-  const abi::MaterialBlock& material() const { return scene.materials[0].params; }
+  const MaterialParameters& material() const { return scene.materials[0].params; }
 };
 
 // The triangle document with `material` as its one material, two textures on one image
@@ -54,7 +55,7 @@ TEST(GltfExtensions, IorSpecularAndEmissiveStrength) {
                                  {{"specularFactor", 0.5}, {"specularColorFactor", {0.2, 0.3, 0.4}},
                                   {"specularTexture", texture(0)}, {"specularColorTexture", texture(1)}}},
                                 {"KHR_materials_emissive_strength", {{"emissiveStrength", 6.0}}}}}});
-  const abi::MaterialBlock& m = l.material();
+  const MaterialParameters& m = l.material();
   EXPECT_FLOAT_EQ(m.specular_ior, 1.7f);
   EXPECT_FLOAT_EQ(m.specular_weight, 0.5f);
   EXPECT_EQ(m.specular_color, glm::vec3(0.2f, 0.3f, 0.4f));
@@ -72,7 +73,7 @@ TEST(GltfExtensions, TransmissionWithVolumeIsThick) {
                                {{"KHR_materials_transmission", {{"transmissionFactor", 0.8}, {"transmissionTexture", texture(0)}}},
                                 {"KHR_materials_volume",
                                  {{"thicknessFactor", 0.1}, {"attenuationColor", {0.9, 0.5, 0.1}}, {"attenuationDistance", 0.25}}}}}});
-  const abi::MaterialBlock& m = l.material();
+  const MaterialParameters& m = l.material();
   EXPECT_FLOAT_EQ(m.transmission_weight, 0.8f);
   EXPECT_NE(m.transmission_texture, abi::kInvalidIndex);
   EXPECT_FALSE(m.flags & abi::kMaterialThinWalled);
@@ -101,7 +102,7 @@ TEST(GltfExtensions, ClearcoatBecomesCoat) {
         {{"KHR_materials_clearcoat",
           {{"clearcoatFactor", 0.7}, {"clearcoatRoughnessFactor", 0.2}, {"clearcoatTexture", texture(0)},
            {"clearcoatRoughnessTexture", texture(0)}, {"clearcoatNormalTexture", {{"index", 1}, {"scale", 0.5}}}}}}}});
-  const abi::MaterialBlock& m = l.material();
+  const MaterialParameters& m = l.material();
   EXPECT_FLOAT_EQ(m.coat_weight, 0.7f);
   EXPECT_FLOAT_EQ(m.coat_roughness, 0.2f);
   EXPECT_FLOAT_EQ(m.coat_ior, 1.5f);
@@ -118,7 +119,7 @@ TEST(GltfExtensions, SheenBecomesFuzz) {
                                {{"KHR_materials_sheen",
                                  {{"sheenColorFactor", {0.5, 0.25, 0.1}}, {"sheenRoughnessFactor", 0.3},
                                   {"sheenColorTexture", texture(0)}, {"sheenRoughnessTexture", texture(1)}}}}}});
-  const abi::MaterialBlock& m = l.material();
+  const MaterialParameters& m = l.material();
   EXPECT_EQ(m.fuzz_weight, 1.0f);
   EXPECT_EQ(m.fuzz_color, glm::vec3(0.5f, 0.25f, 0.1f));
   EXPECT_FLOAT_EQ(m.fuzz_roughness, 0.3f);
@@ -134,7 +135,7 @@ TEST(GltfExtensions, IridescenceBecomesThinFilmInNanometres) {
                                  {{"iridescenceFactor", 0.9}, {"iridescenceIor", 1.8}, {"iridescenceThicknessMinimum", 200.0},
                                   {"iridescenceThicknessMaximum", 650.0}, {"iridescenceTexture", texture(0)},
                                   {"iridescenceThicknessTexture", texture(1)}}}}}});
-  const abi::MaterialBlock& m = l.material();
+  const MaterialParameters& m = l.material();
   EXPECT_FLOAT_EQ(m.thin_film_weight, 0.9f);
   EXPECT_FLOAT_EQ(m.thin_film_ior, 1.8f);
   EXPECT_FLOAT_EQ(m.thin_film_thickness_min, 200.0f);
@@ -142,7 +143,7 @@ TEST(GltfExtensions, IridescenceBecomesThinFilmInNanometres) {
   EXPECT_NE(m.iridescence_texture, abi::kInvalidIndex);
   EXPECT_NE(m.iridescence_thickness_texture, abi::kInvalidIndex);
   // glTF's defaults: 100-400 nm, ior 1.3.
-  const abi::MaterialBlock d = load_with({{"extensions", {{"KHR_materials_iridescence", json::object()}}}}).material();
+  const MaterialParameters d = load_with({{"extensions", {{"KHR_materials_iridescence", json::object()}}}}).material();
   EXPECT_FLOAT_EQ(d.thin_film_thickness_min, 100.0f);
   EXPECT_FLOAT_EQ(d.thin_film_thickness, 400.0f);
   EXPECT_FLOAT_EQ(d.thin_film_ior, 1.3f);

@@ -45,15 +45,7 @@ TEST_P(RadixSort, MatchesStdStableSort) {
 
 INSTANTIATE_TEST_SUITE_P(Counts, RadixSort, ::testing::Values(1u, 2u, 255u, 256u, 257u, 1000u, 65537u, 1000000u));
 
-RenderSettings settings() {
-  RenderSettings s;
-  s.width = 64;
-  s.height = 48;
-  s.tile_size = 8;
-  s.max_depth = 8;
-  s.seed = 9;
-  return s;
-}
+RenderSettings settings() { return test::render_settings(64, 48, 8, 8, 9); }
 
 struct Edited {
   Scene before, after;
@@ -89,12 +81,12 @@ Scene mirror_cornell() {
 std::unique_ptr<Renderer> run_stages(const Edited& e) {
   auto renderer = std::make_unique<Renderer>(test::context(), e.before, settings());
   renderer->add_samples_full_frame(2);
-  renderer->stage1_visibility({});  // G-buffer of the scene as it was
+  renderer->hipr_stages()->stage1_visibility({});  // G-buffer of the scene as it was
   renderer->update_scene(e.after, e.changes);
   renderer->mark_all_owed();
-  renderer->stage1_visibility(e.changes);
-  renderer->stage2_discover(1);
-  renderer->build_schedule();
+  renderer->hipr_stages()->stage1_visibility(e.changes);
+  test::discover_all(*renderer, 1);
+  renderer->hipr_stages()->build_schedule();
   return renderer;
 }
 
@@ -109,12 +101,12 @@ TEST(HiprStages, ScheduledRerenderConvergesToTheFullFrameImage) {
     s.tile_size = tile;
     Renderer renderer(test::context(), e.before, s);
     renderer.add_samples_full_frame(3);
-    renderer.stage1_visibility({});
+    renderer.hipr_stages()->stage1_visibility({});
     renderer.update_scene(e.after, e.changes);
     renderer.mark_all_owed();
-    renderer.stage1_visibility(e.changes);
-    renderer.stage2_discover(1);
-    renderer.build_schedule();
+    renderer.hipr_stages()->stage1_visibility(e.changes);
+    test::discover_all(renderer, 1);
+    renderer.hipr_stages()->build_schedule();
     // Stage 3 in steps of 5 tiles, then ordinary passes: every pixel ends with 3 samples.
     for (uint32_t offset = 0; offset < renderer.tile_count(); offset += 5) renderer.render_schedule(offset, 5, 1, true);
     renderer.render_schedule(0, renderer.tile_count(), 2, false);
@@ -245,9 +237,9 @@ TEST(HiprStages, StagesRunOnAFreshRenderer) {
   ChangeSet changes;
   changes.instances = {0};
   renderer.mark_all_owed();
-  renderer.stage1_visibility(changes);
-  renderer.stage2_discover(1);
-  renderer.build_schedule();
+  renderer.hipr_stages()->stage1_visibility(changes);
+  test::discover_all(renderer, 1);
+  renderer.hipr_stages()->build_schedule();
   EXPECT_GT(count_flag(renderer.tile_flags(), 1), 0u);
   EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
 }

@@ -9,18 +9,12 @@
 #include "hipr/scene_loader.h"
 #include "render/kernel_features.h"
 #include "test_support.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
 
-RenderSettings settings() {
-  RenderSettings s;
-  s.width = 32;
-  s.height = 32;
-  s.max_depth = 6;
-  s.seed = 4;
-  return s;
-}
+RenderSettings settings() { return test::render_settings(32, 32, 16, 6, 4); }
 
 ImageRGB fresh_render(const Scene& scene, uint32_t spp) {
   Renderer renderer(test::context(), scene, settings());
@@ -175,12 +169,12 @@ TEST(IncrementalUpdate, EnvironmentEditMakesEveryTileActive) {
   Scene scene = test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f);
   scene.environment = banded_environment();
   Renderer renderer(test::context(), scene, settings());
-  renderer.stage1_visibility({});
+  renderer.hipr_stages()->stage1_visibility({});
   const Scene before = scene;
   apply_edit(scene, EnvironmentEdit{0.5f, std::nullopt});
   const ChangeSet changes = diff_scenes(before, scene);
   renderer.update_scene(scene, changes);
-  renderer.stage1_visibility(changes);
+  renderer.hipr_stages()->stage1_visibility(changes);
   for (uint32_t flags : renderer.tile_flags()) EXPECT_TRUE(flags & abi::kTileActive);
 }
 

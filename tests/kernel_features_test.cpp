@@ -17,6 +17,7 @@
 #include "render/kernel_features.h"
 #include "test_support.h"
 #include "vk/embedded_shaders.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
@@ -60,7 +61,7 @@ TEST(KernelFeatures, EachFeatureIsFoundWhereTheSceneUsesIt) {
     change(scene, scene.materials[0].params);  // "white", used by the walls
     return kernel_features(scene) & ~base;
   };
-  using M = abi::MaterialBlock;
+  using M = MaterialParameters;
   EXPECT_EQ(with([](Scene&, M& m) { m.metallic_roughness_texture = 0; }), bit("HIPR_FEATURE_TEXTURES"));
   EXPECT_EQ(with([](Scene&, M& m) {
               m.base_metalness = 1.0f;
@@ -118,14 +119,7 @@ TEST(KernelFeatures, EachFeatureIsFoundWhereTheSceneUsesIt) {
 
 // ---- a specialized kernel renders what the uber kernel renders ----
 
-RenderSettings settings() {
-  RenderSettings s;
-  s.width = s.height = 48;
-  s.tile_size = 8;
-  s.max_depth = 6;
-  s.seed = 3;
-  return s;
-}
+RenderSettings settings() { return test::render_settings(48, 48, 8, 6, 3); }
 
 struct Rendered {
   ImageRGB image;
@@ -155,7 +149,7 @@ Scene lamp_only() {
 // A textured card of 60% stochastic opacity in front of an emissive card, under a sky.
 Scene textured_blend_card() {
   Scene scene = test::make_card_camera_scene(0.5f);
-  abi::MaterialBlock glow = test::black_material();
+  MaterialParameters glow = test::black_material();
   glow.emission_luminance = 2.0f;
   test::add_card(scene, "glow", glm::translate(glm::mat4(1.0f), {0.3f, 0.2f, -1.0f}), glow);
   Image image;
@@ -166,7 +160,7 @@ Scene textured_blend_card() {
   Texture texture;
   texture.name = "checker";
   scene.textures.push_back(texture);
-  abi::MaterialBlock card = default_material_params();
+  MaterialParameters card = default_material_params();
   card.base_color_texture = 0;
   card.geometry_opacity = 0.6f;
   card.flags |= abi::kMaterialIgnoreTextureAlpha;
@@ -186,7 +180,7 @@ Scene half_metal_card() {
   texture.name = "metalness";
   texture.flags = abi::kTextureNearest;
   scene.textures.push_back(texture);
-  abi::MaterialBlock card = default_material_params();
+  MaterialParameters card = default_material_params();
   card.base_color = glm::vec3(0.9f, 0.6f, 0.3f);
   card.base_metalness = 1.0f;
   card.metallic_roughness_texture = 0;
@@ -336,13 +330,13 @@ TEST(BackgroundTiles, HiprStagesAreTheSameWithTheShortcut) {
     s.skip_background_tiles = skip;
     Renderer renderer(test::context(), before, s);
     renderer.add_samples_full_frame(1);
-    renderer.stage1_visibility({});
+    renderer.hipr_stages()->stage1_visibility({});
     renderer.update_scene(after, changes);
     renderer.mark_all_owed();
     renderer.reset_counters();
-    renderer.stage1_visibility(changes);
-    renderer.stage2_discover(2);
-    renderer.build_schedule();
+    renderer.hipr_stages()->stage1_visibility(changes);
+    test::discover_all(renderer, 2);
+    renderer.hipr_stages()->build_schedule();
     renderer.render_schedule(0, renderer.tile_count(), 2, true);
     return Result{renderer.tile_flags(), renderer.schedule(), renderer.tile_weights(), renderer.image(),
                   renderer.counters().rays};

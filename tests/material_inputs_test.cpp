@@ -5,8 +5,9 @@
 #include <cmath>
 
 #include "card_scene.h"
-#include "hipr/renderer.h"
+#include "render/material_probe.h"
 #include "test_support.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
@@ -18,7 +19,7 @@ float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c 
 
 struct Probe {
   Scene scene = test::make_card_camera_scene(0.0f);
-  abi::MaterialBlock m = test::black_material();
+  MaterialParameters m = test::black_material();
   uint32_t linear = 0, srgb = 1;  // texture entries on the one image
 
   Probe() {
@@ -29,10 +30,7 @@ struct Probe {
 
   abi::MaterialInputsProbe run() {
     test::add_card(scene, "card", glm::mat4(1.0f), m);
-    RenderSettings s;
-    s.width = s.height = 8;
-    Renderer renderer(test::context(), scene, s);
-    return renderer.material_inputs_at(0, 0, glm::vec2(0.25f, 0.25f));
+    return MaterialProbe(test::context(), scene).at(0, 0, glm::vec2(0.25f, 0.25f));
   }
 };
 

@@ -26,13 +26,7 @@ Scene load(const MaterialScene& param) {
   return load_scene(test::shared_scene(std::string(param.name) + "/" + param.file), options);
 }
 
-RenderSettings settings() {
-  RenderSettings s;
-  s.width = s.height = 48;
-  s.max_depth = 8;
-  s.seed = 9;
-  return s;
-}
+RenderSettings settings() { return test::render_settings(48, 48, 16, 8, 9); }
 
 TEST_P(MaterialScenes, RenderWithoutNonFiniteSamples) {
   if (!test::shared_scenes_available()) GTEST_SKIP() << "../shared/scenes is not available";

@@ -8,20 +8,21 @@
 
 #include "hipr/renderer.h"
 #include "test_support.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
 
 struct Extreme {
   const char* name;
-  void (*set)(abi::MaterialBlock&);
+  void (*set)(MaterialParameters&);
 };
 
 void PrintTo(const Extreme& e, std::ostream* os) { *os << e.name; }
 
 const Extreme kExtremes[] = {
     {"SmoothGlassIor3",
-     [](abi::MaterialBlock& m) {
+     [](MaterialParameters& m) {
        m.specular_weight = 1.0f;
        m.transmission_weight = 1.0f;
        m.specular_roughness = 0.0f;
@@ -30,14 +31,14 @@ const Extreme kExtremes[] = {
        m.transmission_color = glm::vec3(0.2f, 0.5f, 0.9f);
      }},
     {"RoughGlassIorNearOne",
-     [](abi::MaterialBlock& m) {
+     [](MaterialParameters& m) {
        m.specular_weight = 1.0f;
        m.transmission_weight = 1.0f;
        m.specular_roughness = 1.0f;
        m.specular_ior = 1.0001f;
      }},
     {"ThinWalledMirrorGlass",
-     [](abi::MaterialBlock& m) {
+     [](MaterialParameters& m) {
        m.specular_weight = 1.0f;
        m.transmission_weight = 1.0f;
        m.specular_roughness = 0.0f;
@@ -45,14 +46,14 @@ const Extreme kExtremes[] = {
        m.flags |= abi::kMaterialThinWalled;
      }},
     {"MirrorAnisotropicMetal",
-     [](abi::MaterialBlock& m) {
+     [](MaterialParameters& m) {
        m.specular_weight = 1.0f;
        m.base_metalness = 1.0f;
        m.specular_roughness = 0.0f;
        m.specular_anisotropy = 1.0f;
      }},
     {"BrightEmitterUnderCoatAndFuzz",
-     [](abi::MaterialBlock& m) {
+     [](MaterialParameters& m) {
        m.coat_weight = 1.0f;
        m.coat_ior = 3.0f;
        m.coat_roughness = 0.0f;

@@ -6,6 +6,7 @@
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
 #include "test_support.h"
+#include "image/image_io.h"
 
 namespace hipr {
 namespace {

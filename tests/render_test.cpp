@@ -9,19 +9,13 @@
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
 #include "test_support.h"
+#include "image/image_io.h"
 
 namespace hipr {
 namespace {
 
-RenderSettings small_settings(uint32_t tile) {
-  RenderSettings s;
-  s.width = 40;  // not a multiple of the tile sizes: partial tiles take part
-  s.height = 36;
-  s.seed = 7;
-  s.max_depth = 8;
-  s.tile_size = tile;
-  return s;
-}
+// 40 x 36 is not a multiple of the tile sizes: partial tiles take part.
+RenderSettings small_settings(uint32_t tile) { return test::render_settings(40, 36, tile, 8, 7); }
 
 ImageRGB render_full(const Scene& scene, const RenderSettings& s, uint32_t spp, uint32_t per_dispatch) {
   Renderer renderer(test::context(), scene, s);

@@ -15,6 +15,8 @@
 #include "scene/default_camera.h"
 #include "gltf_document.h"
 #include "test_support.h"
+#include "image/image_io.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {

@@ -11,7 +11,7 @@ namespace hipr::test {
 
 namespace {
 
-std::vector<float> field(const abi::MaterialBlock& m, const MaterialParameter& p) {
+std::vector<float> field(const MaterialParameters& m, const MaterialParameter& p) {
   std::vector<float> v(static_cast<size_t>(p.components));
   std::memcpy(v.data(), reinterpret_cast<const char*>(&m) + p.offset, v.size() * sizeof(float));
   return v;
@@ -61,7 +61,7 @@ void expect_same_scene(const Scene& want, const Scene& got, bool same_extensions
     for (const MaterialParameter& p : material_parameters())
       EXPECT_EQ(field(a.params, p), field(b.params, p)) << p.name;
     // Everything else of the block (flags, cutoff, scales, texture slots) too, to the byte.
-    EXPECT_EQ(std::memcmp(&a.params, &b.params, sizeof(abi::MaterialBlock)), 0);
+    EXPECT_EQ(std::memcmp(&a.params, &b.params, sizeof(MaterialParameters)), 0);
   }
   ASSERT_EQ(want.textures.size(), got.textures.size());
   for (size_t i = 0; i < want.textures.size(); ++i) {

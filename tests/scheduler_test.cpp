@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "bench/oracle_policy.h"
 #include "core/error.h"
 
 #include "hipr/edits.h"
@@ -16,15 +17,7 @@
 namespace hipr {
 namespace {
 
-RenderSettings settings() {
-  RenderSettings s;
-  s.width = 48;
-  s.height = 40;
-  s.tile_size = 8;
-  s.max_depth = 6;
-  s.seed = 13;
-  return s;
-}
+RenderSettings settings() { return test::render_settings(48, 40, 8, 6, 13); }
 
 // Steps until every pixel has `spp` samples since the last edit.
 void run_to_convergence(Scheduler& scheduler, uint32_t spp) {
@@ -54,15 +47,15 @@ TEST_P(EveryPolicy, ConvergesToTheFullFrameImageOfTheEditedScene) {
   const uint32_t spp = 3;
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
   Renderer renderer(test::context(), scene, settings());
-  Scheduler scheduler(renderer, c.policy, 7);
+  ImageRGB expected;  // the oracle's reference, current at each edit
+  Scheduler scheduler(renderer, bench::make_bench_policy(c.policy, expected), 7);
   scheduler.set_display_rule(c.display);
   scheduler.set_first_visit_spp(c.first_visit_spp);
   renderer.add_samples_full_frame(spp);
   for (const Edit& edit : load_edit_script(test::asset("cornell_box.edits.json"))) {
     const Scene before = scene;
     apply_edit(scene, edit);
-    const ImageRGB expected = fresh(scene, spp);
-    scheduler.set_reference(expected);
+    expected = fresh(scene, spp);
     scheduler.on_edit(scene, diff_scenes(before, scene));
     run_to_convergence(scheduler, spp);
     EXPECT_EQ(scheduler.displayed_image().rgb, expected.rgb) << describe(edit);
@@ -85,8 +78,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Scheduler, TheOracleNeedsAReference) {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
   Renderer renderer(test::context(), scene, settings());
-  Scheduler scheduler(renderer, Policy::Oracle, 7);
-  EXPECT_THROW(scheduler.on_edit(scene, {}), InternalError);
+  EXPECT_THROW(Scheduler(renderer, Policy::Oracle, 7), InputError);
 }
 
 // The oracle visits tiles by the true error of what they show: the recoloured wall's tiles come
@@ -94,14 +86,14 @@ TEST(Scheduler, TheOracleNeedsAReference) {
 TEST(Scheduler, TheOracleVisitsTheMostWrongTilesFirst) {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
   Renderer renderer(test::context(), scene, settings());
-  Scheduler scheduler(renderer, Policy::Oracle, 1);
+  ImageRGB reference;
+  Scheduler scheduler(renderer, std::make_unique<bench::OraclePolicy>(reference), 1);
   renderer.add_samples_full_frame(4);
   renderer.resolve_display_all(DisplayRule::Immediate);
   const ImageRGB stale = renderer.displayed_image();
   const Scene before = scene;
   apply_edit(scene, MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}});
-  const ImageRGB reference = fresh(scene, 4);
-  scheduler.set_reference(reference);
+  reference = fresh(scene, 4);
   scheduler.on_edit(scene, diff_scenes(before, scene));
   const std::vector<uint32_t> order = renderer.schedule();
   const std::vector<double> error = relmse_tile_sums(stale, reference, settings().tile_size);

@@ -70,6 +70,22 @@ const vk::Context& context() {
   return *ctx;
 }
 
+RenderSettings render_settings(uint32_t width, uint32_t height, uint32_t tile_size, uint32_t max_depth, uint32_t seed) {
+  RenderSettings s;
+  s.width = width;
+  s.height = height;
+  s.tile_size = tile_size;
+  s.max_depth = max_depth;
+  s.seed = seed;
+  return s;
+}
+
+void discover_all(Renderer& renderer, uint32_t samples_per_pixel) {
+  HiprStageRunner& stages = *renderer.hipr_stages();
+  stages.build_schedule();
+  stages.stage2_discover(0, renderer.tile_count(), samples_per_pixel);
+}
+
 CommandResult run_hipr(const std::string& arguments) {
   return run_command(std::string("'") + HIPR_BINARY + "' " + arguments);
 }

@@ -22,6 +22,10 @@ std::filesystem::path temp_dir(const std::string& name);      // fresh, empty
 // One Vulkan context per test binary, with validation layers on. A test environment fails
 // the run at exit if the layer reported any error.
 const vk::Context& context();
+// Small render settings for GPU tests, everything else at its default.
+RenderSettings render_settings(uint32_t width, uint32_t height, uint32_t tile_size, uint32_t max_depth, uint32_t seed);
+// HiPR's stage 2 over every active tile in one dispatch, after ordering the schedule.
+void discover_all(Renderer& renderer, uint32_t samples_per_pixel);
 
 struct CommandResult {
   int exit_code = -1;

@@ -7,6 +7,7 @@
 #include "card_scene.h"
 #include "hipr/renderer.h"
 #include "test_support.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
@@ -23,7 +24,7 @@ std::array<Texel, 4> quadrants(uint32_t flags, glm::vec3 row_u, glm::vec3 row_v)
   checker.rgba8 = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};  // R G / B W
   scene.images.push_back(checker);
   scene.textures.push_back({"checker", 0, flags | abi::kTextureNearest, row_u, row_v});
-  abi::MaterialBlock m = test::black_material();
+  MaterialParameters m = test::black_material();
   m.emission_color = glm::vec3(1.0f);
   m.emission_luminance = 1.0f;
   m.emission_texture = 0;

@@ -17,6 +17,7 @@
 #include "image/debug_images.h"
 #include "image/tonemap.h"
 #include "test_support.h"
+#include "image/image_io.h"
 
 namespace hipr {
 namespace {
@@ -91,7 +92,7 @@ std::vector<uint32_t> instance_ids(const Scene& scene) {
   s.width = s.height = kSize;
   s.tile_size = 16;
   Renderer renderer(test::context(), scene, s);
-  renderer.stage1_visibility({});
+  renderer.hipr_stages()->stage1_visibility({});
   return renderer.gbuffer_instances();
 }
 

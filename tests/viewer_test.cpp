@@ -37,7 +37,7 @@ uint32_t instance_of(const Scene& scene, const std::string& name) {
 }
 
 bool same_material(const Scene& a, const Scene& b, size_t m) {
-  return std::memcmp(&a.materials[m].params, &b.materials[m].params, sizeof(abi::MaterialBlock)) ==
+  return std::memcmp(&a.materials[m].params, &b.materials[m].params, sizeof(MaterialParameters)) ==
          0;
 }
 
@@ -404,19 +404,17 @@ TEST(Session, ASceneWithoutACameraGetsItsDefaultCamera) {
 
 // ---- Renderer methods the viewer added (headless GPU)
 
-RenderSettings tiny(uint32_t size = 32) {
-  RenderSettings s;
-  s.width = s.height = size;
-  s.tile_size = 8;
-  s.max_depth = 4;
-  return s;
-}
+RenderSettings tiny(uint32_t size = 32) { return test::render_settings(size, size, 8, 4, 0); }
 
-TEST(RendererForViewer, WarmUpCompilesButRendersNothing) {
+// Early compilation dispatches every kernel over no tile: nothing is rendered or reordered.
+TEST(RendererForViewer, EarlyCompilationRendersNothing) {
   const Scene scene = cornell();
-  Renderer renderer(test::context(), scene, tiny());
+  RenderSettings early = tiny();
+  early.compile_kernels_early = true;
+  Renderer renderer(test::context(), scene, early);
+  renderer.set_schedule(tile_order(Policy::Random, renderer.tiles_x(), renderer.tiles_y(), 7));
   const std::vector<uint32_t> schedule = renderer.schedule();
-  renderer.warm_up_kernels();
+  renderer.hipr_stages();  // makes (and so compiles) stage 2's and stage 3's kernels
   EXPECT_EQ(renderer.counters().samples, 0u);
   EXPECT_EQ(renderer.counters().rays, 0u);
   for (float v : renderer.image().rgb) ASSERT_EQ(v, 0.0f);
@@ -447,7 +445,7 @@ TEST(RendererForViewer, OwedTilesCountPixelsStillOwingARestart) {
 TEST(RendererForViewer, GBufferHitsAgreeWithTheInstanceImage) {
   Scene scene = cornell();
   Renderer renderer(test::context(), scene, tiny());
-  renderer.stage1_visibility({});
+  renderer.hipr_stages()->stage1_visibility({});
   const std::vector<uint32_t> ids = renderer.gbuffer_instances();
   for (uint32_t y = 0; y < 32; y += 5)
     for (uint32_t x = 0; x < 32; x += 3) {
@@ -472,15 +470,15 @@ TEST(RendererForViewer, HiprParametersSteerTheNextStage2) {
   const auto weights_after_move = [](const HiprParameters& h) {
     Scene scene = cornell();
     Renderer renderer(test::context(), scene, tiny());
-    renderer.stage1_visibility({});
+    renderer.hipr_stages()->stage1_visibility({});
     renderer.set_hipr_parameters(h);
     const Scene before = scene;
     apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt});
     const ChangeSet changes = diff_scenes(before, scene);
     renderer.update_scene(scene, changes);
     renderer.mark_all_owed();
-    renderer.stage1_visibility(changes);
-    renderer.stage2_discover(1);
+    renderer.hipr_stages()->stage1_visibility(changes);
+    test::discover_all(renderer, 1);
     EXPECT_EQ(renderer.settings().hipr.depth_epsilon, h.depth_epsilon);
     return renderer.tile_weights();
   };

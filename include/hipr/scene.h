@@ -1,6 +1,6 @@
 #pragma once
 // The scene model: what a glTF file (plus command-line additions such as an environment map)
-// describes, in the form the renderer uploads. Units: meters, radiance in nits (cd/m^2).
+// describes. Units: meters, radiance in nits (cd/m^2).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "shaders/shared/abi.h"
+#include "hipr/material.h"
 
 namespace hipr {
 
@@ -59,14 +59,14 @@ struct Image {
 struct Texture {
   std::string name;
   uint32_t image = 0;   // into Scene::images
-  uint32_t flags = 0;   // abi::kTexture*
+  uint32_t flags = 0;   // kTexture* (hipr/material.h)
   glm::vec3 uv_transform_u{1.0f, 0.0f, 0.0f};  // u' = dot(uv_transform_u, (u, v, 1))
   glm::vec3 uv_transform_v{0.0f, 1.0f, 0.0f};
 };
 
 struct Material {
   std::string name;
-  abi::MaterialBlock params;
+  MaterialParameters params;
 };
 
 enum class LightType { Point, Spot, Directional };
@@ -98,11 +98,11 @@ struct Environment {
 };
 
 // Default OpenPBR parameters (the spec's defaults), used for glTF's default material too.
-abi::MaterialBlock default_material_params();
+MaterialParameters default_material_params();
 
 // Whether rays may treat the material's triangles as opaque without an alpha test (the
 // acceleration structures then mark them VK_GEOMETRY_OPAQUE_BIT_KHR).
-bool material_is_opaque(const abi::MaterialBlock& m);
+bool material_is_opaque(const MaterialParameters& m);
 
 struct Scene {
   std::filesystem::path source;
@@ -110,7 +110,7 @@ struct Scene {
   std::vector<Node> nodes;
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
-  std::vector<Texture> textures;  // what MaterialBlock texture indices refer to
+  std::vector<Texture> textures;  // what MaterialParameters texture slots refer to
   std::vector<Image> images;
   std::vector<PunctualLight> lights;
   std::vector<Camera> cameras;  // camera nodes reference these

@@ -29,4 +29,8 @@ struct ChangeSet {
 // Both states must come from the same loaded scene (same meshes and instances), as edits keep.
 ChangeSet diff_scenes(const Scene& before, const Scene& after);
 
+// What diff_scenes reads of a scene, copied without the geometry (vertex positions only when the
+// default camera, which frames the bounds, is in use): a cheap "before" for every edit.
+Scene diff_snapshot(const Scene& scene);
+
 }  // namespace hipr

@@ -1,5 +1,8 @@
 #pragma once
+// Loading a glTF 2.0 scene (.gltf with its files, or .glb): src/scene/scene_loader.cpp.
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "hipr/scene.h"
 

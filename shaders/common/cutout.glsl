@@ -4,7 +4,7 @@
 // query of the renderer (closest hit, shadow, discovery blocker, stage 1) starts with
 // kCutoutRayFlags and runs this one loop. A kernel without HIPR_FEATURE_CUTOUT (every
 // material opaque) has no candidate code at all and marks its rays opaque.
-// Needs bindings.glsl (scene buffers) and textures.glsl.
+// Needs scene_bindings.glsl (scene buffers) and textures.glsl.
 #ifndef HIPR_CUTOUT_GLSL
 #define HIPR_CUTOUT_GLSL
 

@@ -1,14 +1,14 @@
 // HiPR stage 2: project path vertices into the camera and grow the weight of the tile they
-// land in, if the G-buffer shows that very point there (depth test). Needs bindings.glsl and
+// land in, if the G-buffer shows that very point there (depth test). Needs scene_bindings.glsl and
 // cutout.glsl.
 #ifndef HIPR_DISCOVERY_GLSL
 #define HIPR_DISCOVERY_GLSL
 
-layout(scalar, binding = kBindingGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
-layout(scalar, binding = kBindingChangedRecords) readonly buffer Changed { uint b_changed_records[]; };
+layout(scalar, binding = kTraceGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
+layout(scalar, binding = kTraceChangedRecords) readonly buffer Changed { uint b_changed_records[]; };
 // Fixed-point (kWeightScale units) 64-bit sums: integer atomics make W(T) independent of the
 // order in which threads add, so the schedule is deterministic.
-layout(scalar, binding = kBindingTileWeights) buffer TileWeights { uint64_t b_tile_weights[]; };
+layout(scalar, binding = kTraceTileWeights) buffer TileWeights { uint64_t b_tile_weights[]; };
 
 float discovery_lobe_weight(uint lobe) { return u_frame.wLobe[min(lobe, 3u)]; }
 

@@ -5,7 +5,7 @@
 // (FrameParams::rayOffsetScale), so a scene a ten-thousandth of a unit across gets the offsets
 // a unit-sized one gets, relative to its size. (A fixed 1/65536 started the rays of a scene
 // 1e-4 across 15% of its size away from their surfaces.)
-// Needs bindings.glsl (u_frame).
+// Needs frame.glsl (u_frame).
 #ifndef HIPR_RAY_OFFSET_GLSL
 #define HIPR_RAY_OFFSET_GLSL
 

@@ -1,4 +1,4 @@
-// Vertex data of one triangle from the shared buffers (needs bindings.glsl).
+// Vertex data of one triangle from the shared buffers (needs scene_bindings.glsl).
 #ifndef HIPR_VERTICES_GLSL
 #define HIPR_VERTICES_GLSL
 

@@ -1,4 +1,4 @@
-// Host/device ABI of the path tracer: struct layouts, binding slots and constants.
+// Host/device ABI of the path tracer: struct layouts and constants.
 // Compiles as C++ (through glm) and as GLSL; GLSL side uses `layout(scalar)` buffers, whose
 // packing equals C++'s natural packing of these float/uint members, so the two never drift.
 #ifndef HIPR_SHARED_ABI_H
@@ -18,45 +18,7 @@ using uint64_t = std::uint64_t;
 #define HIPR_CONST const
 #endif
 
-// ---- descriptor bindings (set 0) of the path-tracing kernels ----
-HIPR_CONST uint kBindingTlas = 0u;
-HIPR_CONST uint kBindingPositions = 1u;      // vec3 per vertex, object space
-HIPR_CONST uint kBindingNormals = 2u;        // vec3 per vertex
-HIPR_CONST uint kBindingTangents = 3u;       // vec4 per vertex (w = handedness)
-HIPR_CONST uint kBindingUvs = 4u;            // vec4 per vertex: TEXCOORD_0 in xy, TEXCOORD_1 in zw
-HIPR_CONST uint kBindingIndices = 5u;        // uint, 3 per triangle, relative to the vertex offset
-HIPR_CONST uint kBindingGeometries = 6u;     // GeometryRecord per (instance, primitive)
-HIPR_CONST uint kBindingMaterials = 7u;      // MaterialBlock
-HIPR_CONST uint kBindingTextures = 8u;       // TextureInfo
-HIPR_CONST uint kBindingTexels = 9u;         // packed RGBA8 texels of all textures
-HIPR_CONST uint kBindingLights = 10u;        // Light
-HIPR_CONST uint kBindingLightCdf = 11u;      // float, lightCount + 1 entries
-HIPR_CONST uint kBindingEnvironment = 12u;   // vec4 texels + marginal/conditional CDFs (floats)
-HIPR_CONST uint kBindingTileList = 13u;      // uint tile ids, in the order to render them
-HIPR_CONST uint kBindingAccumulation = 14u;  // PixelAccum per pixel
-HIPR_CONST uint kBindingStats = 15u;         // RenderStats
-HIPR_CONST uint kBindingFrame = 16u;         // FrameParams (one)
-HIPR_CONST uint kBindingBsdfTables = 28u;    // float: generated BSDF tables (bsdf/ggx_energy_table.glsl)
-HIPR_CONST uint kBindingMaterialProbe = 29u; // MaterialInputsProbe: material_probe.comp's output (inspection)
-HIPR_CONST uint kBindingTileBackground = 30u; // uint per tile: 1 = its camera rays cannot hit anything
-HIPR_CONST uint kBindingDisplay = 33u;       // DisplayTexel per pixel: what the screen shows
-HIPR_CONST uint kBindingTileChange = 34u;    // uint per tile: how much of it stage 1 saw change
-// HiPR scheduling (stages 1-3)
-HIPR_CONST uint kBindingGBuffer = 17u;          // GBufferTexel per pixel, this scene state
-HIPR_CONST uint kBindingPreviousGBuffer = 18u;  // GBufferTexel per pixel, before the edit
-HIPR_CONST uint kBindingChangedRecords = 19u;   // uint per GeometryRecord: 1 = in the changed set E
-HIPR_CONST uint kBindingTileFlags = 20u;        // uint per tile: kTileActive | kTileDiscovered
-HIPR_CONST uint kBindingTileWeights = 21u;      // uint64 per tile: discovery weight W(T) x kWeightScale
-HIPR_CONST uint kBindingTileRowDistance = 22u;  // uint per tile: columns to the nearest active tile in its row
-HIPR_CONST uint kBindingSortKeys = 23u;         // uint keys, ping
-HIPR_CONST uint kBindingSortValues = 24u;       // uint values (tile ids), ping
-HIPR_CONST uint kBindingSortKeysAlt = 25u;      // pong
-HIPR_CONST uint kBindingSortValuesAlt = 26u;    // pong
-HIPR_CONST uint kBindingSortHistogram = 27u;    // uint [digit][workgroup] counts, then offsets
-// The viewer's display pass (display.comp, its own pipeline; numbers kept apart all the same)
-HIPR_CONST uint kBindingDisplayRadiance = 35u;  // float RGB per rendered pixel (displayed image)
-HIPR_CONST uint kBindingDisplayOverlay = 36u;   // uint RGBA8 per rendered pixel (sRGB, A = coverage)
-HIPR_CONST uint kBindingDisplayOutput = 37u;    // uint RGBA8 per window pixel (what the window shows)
+// Descriptor bindings are declared per pass in bindings/ (the scene's set in bindings/scene.h).
 
 // ---- constants ----
 HIPR_CONST uint kPixelOwed = 0x80000000u;

@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// AUC horizons in work units: the headline (1) and the longer views DESIGN.md asks for.
+// AUC horizons in work units: the headline (1) and the longer views of docs/method.md#measuring-run-time-against-error.
 constexpr double kHorizons[] = {1.0, 4.0, 16.0};
 
 // Debian's python3-matplotlib belongs to /usr/bin/python3; another python3 earlier in PATH

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bench/policy_run.h"
+#include "image/image_io.h"
 
 namespace hipr::app {
 

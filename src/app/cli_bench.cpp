@@ -1,8 +1,8 @@
 // `hipr bench SCENE EDITS.json -o DIR [--policies ...] [--ref-spp N] [--steps K]`: for each edit,
 // a converged reference of the edited scene (cached), then every policy from the same converged
 // pre-edit state at equal work per step, with the error of the displayed image after each step.
-// Writes DIR/curves.csv, DIR/summary.json, DIR/plot.png (DESIGN.md "Measuring run time against
-// error") and, per edit, the reference and what each policy shows after 0.25 and 1 work units.
+// Writes DIR/curves.csv, DIR/summary.json, DIR/plot.png (docs/method.md#measuring-run-time-against-error)
+// and, per edit, the reference and what each policy shows after 0.25 and 1 work units.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -18,6 +18,7 @@
 #include "core/log.h"
 #include "core/timer.h"
 #include "hipr/edits.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr::app {
 namespace {
@@ -56,15 +57,14 @@ std::vector<std::string> edit_texts(const fs::path& path) {
 }
 
 // Stage 1's active set for this edit (the tiles where a changed element is visible now or
-// before). Also compiles every kernel the edited scene's runs use (an edit can add a kernel
-// feature), so no timed run pays for JIT compilation.
+// before). Its on_edit also makes every kernel the edited scene's runs use (an edit can add a
+// kernel feature), compiled early, so no timed run pays for JIT compilation.
 std::vector<uint32_t> changed_tiles_and_warm_up(Renderer& renderer, const RenderSnapshot& start,
                                                 const Scene& after, const ChangeSet& changes) {
   renderer.restore(start);
   Scheduler probe(renderer, Policy::Hipr, 1);
   probe.on_edit(after, changes);
   const std::vector<uint32_t> flags = renderer.tile_flags();
-  renderer.warm_up_kernels();
   std::vector<uint32_t> tiles;
   for (uint32_t t = 0; t < flags.size(); ++t)
     if (flags[t] & abi::kTileActive) tiles.push_back(t);
@@ -111,10 +111,12 @@ int run_bench(BenchOptions& o) {
 
   const vk::Context ctx(context_options(o.common));
   const RenderSettings& settings = o.common.render;
-  Renderer renderer(ctx, scene, settings);
+  RenderSettings early = settings;  // compiled before any timed step
+  early.compile_kernels_early = true;
+  Renderer renderer(ctx, scene, early);
   bench::PolicyRunOptions run_options;
   run_options.tiles_per_step =
-      o.tiles_per_step ? o.tiles_per_step : std::max(1u, (renderer.tile_count() + 15) / 16);
+      o.tiles_per_step ? o.tiles_per_step : default_tiles_per_step(renderer.tile_count());
   run_options.visit_spp = o.visit_spp;
   run_options.first_visit_spp = o.first_visit_spp;
   run_options.target_spp = o.common.spp;

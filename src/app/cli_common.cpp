@@ -36,47 +36,6 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
   app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors and warnings");
 }
 
-namespace {
-
-// Copies `values` into `out` scaled to sum 1 (the paper's weights are a distribution).
-void set_weights(const std::vector<float>& values, float* out, const char* flag) {
-  float sum = 0.0f;
-  for (float v : values) {
-    if (!std::isfinite(v) || v < 0.0f) throw InputError(std::string(flag) + " weights must be finite and non-negative");
-    sum += v;
-  }
-  if (!(sum > 0.0f)) throw InputError(std::string(flag) + " weights must not all be zero");
-  for (size_t i = 0; i < values.size(); ++i) out[i] = values[i] / sum;
-}
-
-}  // namespace
-
-const std::vector<std::string>& hipr_preset_names() {
-  static const std::vector<std::string> names = {"default", "lookdev", "glass", "mirror"};
-  return names;
-}
-
-// The paper's use cases: look development favours diffuse + direct response, a glass
-// interior caustics + transmission, a mirror-heavy set the specular lobe.
-void apply_hipr_preset(const std::string& name, HiprParameters& h) {
-  const HiprParameters defaults;
-  if (name.empty() || name == "default") {
-    std::copy(std::begin(defaults.w_lobe), std::end(defaults.w_lobe), h.w_lobe);
-    std::copy(std::begin(defaults.w_path), std::end(defaults.w_path), h.w_path);
-  } else if (name == "lookdev") {
-    set_weights({0.55f, 0.25f, 0.15f, 0.05f}, h.w_lobe, "--preset");
-    set_weights({0.7f, 0.25f, 0.05f}, h.w_path, "--preset");
-  } else if (name == "glass") {
-    set_weights({0.15f, 0.15f, 0.3f, 0.4f}, h.w_lobe, "--preset");
-    set_weights({0.3f, 0.2f, 0.5f}, h.w_path, "--preset");
-  } else if (name == "mirror") {
-    set_weights({0.1f, 0.2f, 0.6f, 0.1f}, h.w_lobe, "--preset");
-    set_weights({0.6f, 0.25f, 0.15f}, h.w_path, "--preset");
-  } else {
-    throw InputError("unknown --preset '" + name + "' (default, lookdev, glass, mirror)");
-  }
-}
-
 void validate_common_options(CommonOptions& o) {
   o.render.specialize_kernel = !o.uber_kernel;
   o.render.skip_background_tiles = !o.trace_background_tiles;
@@ -96,8 +55,8 @@ void validate_common_options(CommonOptions& o) {
   require(std::isfinite(h.depth_epsilon) && h.depth_epsilon > 0.0f && h.depth_epsilon < 1.0f,
           "--eps must be between 0 and 1 (relative depth)");
   apply_hipr_preset(o.preset, h);
-  if (!o.w_lobe.empty()) set_weights(o.w_lobe, h.w_lobe, "--w-lobe");
-  if (!o.w_path.empty()) set_weights(o.w_path, h.w_path, "--w-path");
+  if (!o.w_lobe.empty()) set_hipr_weights(o.w_lobe, h.w_lobe, "--w-lobe");
+  if (!o.w_path.empty()) set_hipr_weights(o.w_path, h.w_path, "--w-path");
 }
 
 vk::ContextOptions context_options(const CommonOptions& o) {

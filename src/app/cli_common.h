@@ -1,5 +1,5 @@
 #pragma once
-// Options shared by every subcommand (the CLI contract in DESIGN.md) and their validation.
+// Options shared by every subcommand (the CLI contract in docs/method.md#command-line-and-edit-scripts) and their validation.
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -35,8 +35,6 @@ void validate_common_options(CommonOptions& options);
 
 // The HiPR weight presets (--preset): names, and setting w_lobe / w_path from one (throws
 // InputError for an unknown name). The viewer offers the same presets.
-const std::vector<std::string>& hipr_preset_names();
-void apply_hipr_preset(const std::string& name, HiprParameters& parameters);
 
 vk::ContextOptions context_options(const CommonOptions& options);
 

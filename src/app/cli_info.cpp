@@ -9,6 +9,7 @@
 #include "core/log.h"
 #include "render/background_tiles.h"
 #include "render/kernel_features.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr::app {
 namespace {
@@ -47,7 +48,7 @@ int run_info(const InfoOptions& o) {
     for (const MeshPrimitive& p : scene.meshes[instance.mesh].primitives) {
       scene_triangles += p.indices.size() / 3;
       used_materials.insert(p.material);
-      const abi::MaterialBlock& m = scene.materials[p.material].params;
+      const MaterialParameters& m = scene.materials[p.material].params;
       if (m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f))))
         emissive_triangles += p.indices.size() / 3;
     }

@@ -11,6 +11,7 @@
 #include "core/log.h"
 #include "core/timer.h"
 #include "render/gpu_scene.h"
+#include "image/image_io.h"
 
 namespace hipr::app {
 namespace {
@@ -46,8 +47,8 @@ int run_render(RenderOptions& o) {
   Renderer renderer(ctx, scene, o.common.render);
   const double setup_seconds = setup_timer.seconds();
   log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" +
-            std::to_string(renderer.scene_info().triangle_count) + " triangles, " +
-            std::to_string(renderer.scene_info().light_count) + " lights)");
+            std::to_string(renderer.scene_stats().triangle_count) + " triangles, " +
+            std::to_string(renderer.scene_stats().light_count) + " lights)");
 
   // Batches grow until one submission takes ~0.25 s: few submissions, steady progress.
   const Timer timer;
@@ -101,7 +102,7 @@ int run_render(RenderOptions& o) {
         {"rays_per_sample", double(counters.rays) / samples},
         {"device", ctx.device_name()},
         {"scene_hash", scene.content_hash},
-        {"triangles", renderer.scene_info().triangle_count},
+        {"triangles", renderer.scene_stats().triangle_count},
         {"tile", o.common.render.tile_size},
         {"max_depth", o.common.render.max_depth},
     };

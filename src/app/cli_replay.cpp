@@ -11,9 +11,10 @@
 #include "core/file_util.h"
 #include "core/log.h"
 #include "core/timer.h"
-#include "hipr/edits.h"
+#include "hipr/edit_pipeline.h"
 #include "hipr/scheduler.h"
 #include "image/debug_images.h"
+#include "image/image_io.h"
 
 namespace hipr::app {
 namespace {
@@ -26,7 +27,7 @@ struct ReplayOptions {
   std::string policy = "hipr";
   std::vector<uint32_t> dump_steps;
   uint32_t steps = 0;  // per edit; 0 = until every pixel has --spp samples again
-  uint32_t tiles_per_step = 0;  // 0 = an eighth of the frame
+  uint32_t tiles_per_step = 0;  // 0 = default_tiles_per_step
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp = 0;  // 0 = visit_spp
   std::string display;           // empty = the policy's own rule
@@ -74,7 +75,7 @@ int run_replay(ReplayOptions& o) {
   const vk::Context ctx(context_options(o.common));
   Renderer renderer(ctx, scene, o.common.render);
   const uint32_t tiles = renderer.tile_count();
-  const uint32_t per_step = o.tiles_per_step ? o.tiles_per_step : std::max(1u, (tiles + 7) / 8);
+  const uint32_t per_step = o.tiles_per_step ? o.tiles_per_step : default_tiles_per_step(tiles);
   Scheduler scheduler(renderer, policy, per_step, o.visit_spp);
   scheduler.set_display_rule(display);
   if (o.first_visit_spp) scheduler.set_first_visit_spp(o.first_visit_spp);
@@ -95,20 +96,20 @@ int run_replay(ReplayOptions& o) {
                             {"full_frame_pass_seconds", pass_seconds},
                             {"edits", nlohmann::json::array()}};
   uint64_t non_finite = 0;  // the counters restart at every edit
+  EditPipeline pipeline(scene, scheduler);
   for (size_t e = 0; e < edits.size(); ++e) {
     non_finite += renderer.counters().non_finite_samples;
-    const Scene before = scene;
-    apply_edit(scene, edits[e]);
     const Timer timer;
-    scheduler.on_edit(scene, diff_scenes(before, scene));
+    // An edit that changes nothing (a move by zero) re-renders nothing.
+    const bool changed = !pipeline.apply(edits[e]).empty();
     double work_after_first_step = 0.0;
-    bool debug_written = policy != Policy::Hipr;
+    bool debug_written = policy != Policy::Hipr || !changed;
     uint32_t steps = 0;
     for (uint32_t s = 1; s <= max_steps && (o.steps || scheduler.work_since_edit() < double(o.common.spp)); ++s) {
       steps = s;
       scheduler.step();
       if (s == 1) work_after_first_step = scheduler.work_since_edit();
-      if (!debug_written && !scheduler.in_stage2()) {  // stage 2's weights are all in
+      if (!debug_written && !scheduler.leading_steps_pending()) {  // stage 2's weights are all in
         write_debug_images(o.output, e, renderer);
         debug_written = true;
       }
@@ -144,7 +145,7 @@ Command add_replay_command(CLI::App& app) {
   cmd->add_option("--policy", options->policy, "hipr, full, scanline, spiral or random")->capture_default_str();
   cmd->add_option("--dump-steps", options->dump_steps, "Steps after which to write the displayed image")->delimiter(',');
   cmd->add_option("--steps", options->steps, "Scheduling steps per edit (default: until converged)");
-  cmd->add_option("--tiles-per-step", options->tiles_per_step, "Tiles rendered per step (default: 1/8 of the frame)");
+  cmd->add_option("--tiles-per-step", options->tiles_per_step, "Tiles rendered per step (default: 1/16 of the frame)");
   cmd->add_option("--visit-spp", options->visit_spp, "Samples per pixel a tile gets per visit")->capture_default_str();
   cmd->add_option("--first-visit-spp", options->first_visit_spp,
                   "Samples per pixel of a tile's first visit after an edit (default: --visit-spp)");

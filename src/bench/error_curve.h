@@ -1,6 +1,6 @@
 #pragma once
 // Error of the displayed image after each scheduling step, and what the benchmark summarises
-// from it (DESIGN.md "Measuring run time against error").
+// from it (docs/method.md#measuring-run-time-against-error).
 #include <cstdint>
 #include <vector>
 

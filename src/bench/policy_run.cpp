@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "bench/oracle_policy.h"
 #include "core/timer.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr::bench {
 namespace {
@@ -19,10 +21,9 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
                      const RenderSnapshot& start, const ImageRGB& reference,
                      const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options) {
   renderer.restore(start);
-  Scheduler scheduler(renderer, options.policy, options.tiles_per_step, options.visit_spp);
+  Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step, options.visit_spp);
   if (options.display) scheduler.set_display_rule(*options.display);
   scheduler.set_first_visit_spp(options.first_visit_spp);
-  if (options.policy == Policy::Oracle) scheduler.set_reference(reference);
 
   PolicyRun run;
   const ImageRGB stale = scheduler.displayed_image();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bench/error_curve.h"
+#include "hipr/renderer.h"
 #include "hipr/scheduler.h"
 #include "image/error_metrics.h"
 

@@ -7,6 +7,7 @@
 #include "core/timer.h"
 #include "vk/embedded_shaders.h"
 #include "vk/shader_compiler.h"
+#include "image/image_io.h"
 
 namespace hipr::bench {
 namespace fs = std::filesystem;

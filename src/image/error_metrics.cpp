@@ -1,6 +1,6 @@
 // Image error metrics for `hipr bench`.
 //
-// relMSE (DESIGN.md): mean over pixels and channels of (x-y)^2 / (y^2 + 0.01), halved.
+// relMSE (docs/method.md#measuring-run-time-against-error): mean over pixels and channels of (x-y)^2 / (y^2 + 0.01), halved.
 //
 // LDR-FLIP, implemented from the description in P. Andersson, J. Nilsson, T. Akenine-Moller,
 // M. Oskarsson, K. Astrom and M. D. Fairchild, "FLIP: A Difference Evaluator for Alternating

@@ -1,6 +1,6 @@
 #pragma once
 // Error of a displayed image against a converged reference, for `hipr bench`: relMSE on linear
-// radiance and LDR-FLIP on the tone-mapped image (DESIGN.md, "Measuring run time against error").
+// radiance and LDR-FLIP on the tone-mapped image (docs/method.md#measuring-run-time-against-error).
 #include <cstdint>
 #include <vector>
 
@@ -8,7 +8,7 @@
 
 namespace hipr {
 
-// DESIGN.md's relMSE: mean over pixels and RGB channels of (x-y)^2 / (y^2 + 0.01), divided by 2.
+// The relMSE of docs/method.md: mean over pixels and RGB channels of (x-y)^2 / (y^2 + 0.01), divided by 2.
 // x = test, y = reference, linear radiance. Throws InternalError when sizes differ (or an image's
 // rgb does not hold width * height * 3 values). An empty image has no error (0). A NaN or
 // infinite value makes the result non-finite, so a broken render never looks converged.

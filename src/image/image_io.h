@@ -6,13 +6,9 @@
 #include <utility>
 #include <vector>
 
-namespace hipr {
+#include "hipr/image.h"
 
-struct ImageRGB {
-  uint32_t width = 0;
-  uint32_t height = 0;
-  std::vector<float> rgb;  // linear, row-major, top row first
-};
+namespace hipr {
 
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 

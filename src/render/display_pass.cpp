@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "shaders/shared/abi.h"
+#include "shaders/shared/bindings/display.h"
 
 namespace hipr {
 namespace {
@@ -20,15 +20,12 @@ DisplayPass::DisplayPass(const vk::Context& ctx, uint32_t width, uint32_t height
       m_height(height),
       m_radiance(storage(ctx, size_t(width) * height * 3 * sizeof(float))),
       m_overlay(storage(ctx, size_t(width) * height * 4)),
+      // The output follows the window's size: bound when record() makes it.
       m_pipeline(ctx, "display.comp", {},
-                 {{abi::kBindingDisplayRadiance},
-                  {abi::kBindingDisplayOverlay},
-                  {abi::kBindingDisplayOutput}},
+                 {{abi::kDisplayRadiance, &m_radiance}, {abi::kDisplayOverlay, &m_overlay}, {abi::kDisplayOutput, nullptr}},
                  sizeof(abi::DisplayPush)) {
   m_radiance.clear();
   m_overlay.clear();
-  m_pipeline.bind_buffer(abi::kBindingDisplayRadiance, m_radiance);
-  m_pipeline.bind_buffer(abi::kBindingDisplayOverlay, m_overlay);
 }
 
 void DisplayPass::set_image(const ImageRGB& image) {
@@ -49,7 +46,7 @@ void DisplayPass::record(VkCommandBuffer cmd, const DisplayView& view) {
   if (pixels == 0 || !(view.scale > 0.0f)) throw InternalError("empty display view");
   if (!m_output || m_output.size() != pixels * 4) {
     m_output = storage(m_ctx, pixels * 4);
-    m_pipeline.bind_buffer(abi::kBindingDisplayOutput, m_output);
+    m_pipeline.bind_buffer(abi::kDisplayOutput, m_output);
   }
   abi::DisplayPush push{};
   push.outputWidth = view.output_width;

@@ -4,7 +4,10 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "render/bsdf_tables.h"
 #include "render/environment_tables.h"
+#include "render/material_packing.h"
+#include "shaders/shared/bindings/scene.h"
 
 namespace hipr {
 namespace {
@@ -37,7 +40,30 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene) : m_ctx(ctx) {
     }
   }
   geometries = vk::make_storage_buffer(ctx, m_records);
+  bsdf_tables = vk::make_storage_buffer(ctx, bsdf_table_data());
+  frame_buffer = vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1));
+  std::vector<vk::BindingSlot> slots = {{abi::kSceneTlas, vk::BindingKind::AccelerationStructure}};
+  for (uint32_t b = abi::kScenePositions; b <= abi::kSceneFrame; ++b) slots.push_back({b});
+  m_set = std::make_unique<vk::DescriptorSet>(ctx, slots);
   update_instances(scene);
+}
+
+void GpuScene::set_frame(const abi::FrameParams& params) {
+  m_frame_params = params;
+  frame_buffer.upload(&params, sizeof params);
+}
+
+void GpuScene::bind_set() {
+  if (!m_set) return;  // during construction: bound once everything exists
+  m_set->bind_acceleration_structure(abi::kSceneTlas, m_tlas.handle());
+  const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
+      {abi::kScenePositions, &positions},   {abi::kSceneNormals, &normals},       {abi::kSceneTangents, &tangents},
+      {abi::kSceneUvs, &uvs},               {abi::kSceneIndices, &indices},       {abi::kSceneGeometries, &geometries},
+      {abi::kSceneMaterials, &materials},   {abi::kSceneTextures, &textures},     {abi::kSceneTexels, &texels},
+      {abi::kSceneLights, &lights},         {abi::kSceneLightCdf, &light_cdf},    {abi::kSceneEnvironment, &environment},
+      {abi::kSceneBsdfTables, &bsdf_tables}, {abi::kSceneFrame, &frame_buffer},
+  };
+  for (const auto& [binding, buffer] : buffers) m_set->bind_buffer(binding, *buffer);
 }
 
 void GpuScene::upload_geometry(const Scene& scene) {
@@ -118,13 +144,14 @@ void GpuScene::upload_textures(const Scene& scene) {
 
 void GpuScene::update_materials(const Scene& scene) {
   std::vector<abi::MaterialBlock> blocks;
-  for (const Material& m : scene.materials) blocks.push_back(m.params);
+  for (const Material& m : scene.materials) blocks.push_back(pack_material(m.params));
   if (materials && materials.size() == blocks.size() * sizeof(abi::MaterialBlock)) {
     materials.upload(blocks.data(), materials.size());
     if (build_blases(scene)) update_instances(scene);  // new BLAS addresses need a new TLAS
   } else {
     materials = vk::make_storage_buffer(m_ctx, blocks);
   }
+  bind_set();
 }
 
 void GpuScene::update_instances(const Scene& scene) {
@@ -159,6 +186,7 @@ void GpuScene::update_lights(const Scene& scene) {
   m_info.light_count = m_lights.lights.size();
   lights = vk::make_storage_buffer(m_ctx, m_lights.lights);
   light_cdf = vk::make_storage_buffer(m_ctx, m_lights.cdf);
+  bind_set();
 }
 
 }  // namespace hipr

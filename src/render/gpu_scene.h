@@ -1,28 +1,27 @@
 #pragma once
 // The scene as the kernels see it: shared vertex/index buffers, one BLAS per mesh, a TLAS of
-// instances, material/texture/light tables and the environment. Geometry is uploaded once;
-// edits update only what they touch (materials, instances + lights, or lights alone).
+// instances, material/texture/light tables, the environment, the BSDF tables and the frame
+// parameters, all in one descriptor set (set 1 of every kernel that reads the scene:
+// shaders/shared/bindings/scene.h). Geometry is uploaded once; edits update only what they
+// touch (materials, instances + lights, or lights alone) and the set follows.
+#include <memory>
 #include <vector>
 
+#include "hipr/renderer.h"
 #include "hipr/scene.h"
 #include "render/light_tables.h"
 #include "vk/acceleration.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
+#include "vk/descriptor_set.h"
 
 namespace hipr {
-
-struct GpuSceneInfo {
-  size_t instance_count = 0;
-  size_t triangle_count = 0;  // over all visible instances
-  size_t light_count = 0;
-  size_t cutout_geometries = 0;  // BLAS geometries without VK_GEOMETRY_OPAQUE_BIT_KHR (alpha-tested)
-  float scene_radius = 1.0f;
-};
 
 class GpuScene {
  public:
   GpuScene(const vk::Context& ctx, const Scene& scene);
+  GpuScene(const GpuScene&) = delete;
+  GpuScene& operator=(const GpuScene&) = delete;
 
   // Re-uploads the material blocks (same count: edits change parameters, not the table). An
   // edit that makes a material need the alpha test, or no longer need it, rebuilds the BLAS of
@@ -33,7 +32,13 @@ class GpuScene {
   // Rebuilds the light tables alone (punctual lights, emission strengths).
   void update_lights(const Scene& scene);
 
-  const GpuSceneInfo& info() const { return m_info; }
+  // The frame parameters the kernels read (camera, image and tiles, HiPR weights).
+  void set_frame(const abi::FrameParams& params);
+  const abi::FrameParams& frame() const { return m_frame_params; }
+  // Set 1 of the kernels that read the scene; its buffers are rebound after every update.
+  const vk::DescriptorSet& descriptor_set() const { return *m_set; }
+
+  const SceneStats& info() const { return m_info; }
   const LightTables& light_tables() const { return m_lights; }
   VkAccelerationStructureKHR tlas() const { return m_tlas.handle(); }
   // Instance index of each GeometryRecord (records are grouped per instance).
@@ -43,6 +48,7 @@ class GpuScene {
   vk::Buffer positions, normals, tangents, uvs, indices;
   vk::Buffer geometries, materials, textures, texels;
   vk::Buffer lights, light_cdf, environment;
+  vk::Buffer bsdf_tables, frame_buffer;
 
  private:
   struct PrimitiveRange {
@@ -56,9 +62,11 @@ class GpuScene {
   // (Re)builds the BLAS of every mesh whose per-primitive opacity flags differ from the built
   // ones; returns whether any was rebuilt.
   bool build_blases(const Scene& scene);
+  // Points the descriptor set at the current buffers (updates replace some of them).
+  void bind_set();
 
   const vk::Context& m_ctx;
-  GpuSceneInfo m_info;
+  SceneStats m_info;
   LightTables m_lights;
   std::vector<std::vector<PrimitiveRange>> m_ranges;  // per mesh, per primitive
   std::vector<vk::AccelerationStructure> m_blas;      // one per mesh (empty meshes: none)
@@ -68,6 +76,8 @@ class GpuScene {
   std::vector<uint32_t> m_record_base;      // per instance
   std::vector<uint32_t> m_record_instance;  // per record
   vk::AccelerationStructure m_tlas;
+  abi::FrameParams m_frame_params{};
+  std::unique_ptr<vk::DescriptorSet> m_set;
 };
 
 }  // namespace hipr

@@ -1,11 +1,12 @@
 #include "render/kernel_features.h"
 
 #include "core/error.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
 
-using M = abi::MaterialBlock;
+using M = MaterialParameters;
 
 bool has_texture(const M& m) {
   for (uint32_t texture :

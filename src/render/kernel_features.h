@@ -19,7 +19,7 @@ struct KernelFeature {
   const char* define;  // HIPR_FEATURE_...
   const char* name;    // as `hipr info` prints it
   // Exactly one of these decides whether a scene needs the feature.
-  bool (*material_needs)(const abi::MaterialBlock&);  // any material a primitive uses
+  bool (*material_needs)(const MaterialParameters&);  // any material a primitive uses
   bool (*scene_needs)(const Scene&);                  // the scene as a whole
   bool bsdf_lobe;  // a part of the BSDF (`hipr info` lists these apart)
 };

@@ -1,4 +1,5 @@
 #include "render/light_tables.h"
+#include "shaders/shared/abi.h"
 
 #include <cmath>
 
@@ -9,7 +10,7 @@ constexpr float kPi = 3.14159265358979f;
 
 float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
-glm::vec3 emission_of(const abi::MaterialBlock& m) { return m.emission_color * m.emission_luminance; }
+glm::vec3 emission_of(const MaterialParameters& m) { return m.emission_color * m.emission_luminance; }
 
 glm::vec3 light_direction(const glm::mat4& world) {
   // KHR_lights_punctual: lights shine down their local -Z.
@@ -45,7 +46,7 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
     const Mesh& mesh = scene.meshes[instance.mesh];
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const MeshPrimitive& prim = mesh.primitives[p];
-      const abi::MaterialBlock& m = scene.materials[prim.material].params;
+      const MaterialParameters& m = scene.materials[prim.material].params;
       const float radiance = luminance(emission_of(m));
       if (!(radiance > 0.0f) || !std::isfinite(radiance)) continue;
       const bool two_sided = (m.flags & abi::kMaterialDoubleSided) != 0;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "hipr/scene.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr {
 

@@ -1,15 +1,10 @@
 #include "render/radix_sorter.h"
 
 #include "core/error.h"
-#include "shaders/shared/abi.h"
+#include "shaders/shared/bindings/schedule.h"
 
 namespace hipr {
 namespace {
-
-std::vector<vk::BindingSlot> sort_bindings() {
-  return {{abi::kBindingSortKeys}, {abi::kBindingSortValues}, {abi::kBindingSortKeysAlt},
-          {abi::kBindingSortValuesAlt}, {abi::kBindingSortHistogram}};
-}
 
 vk::Buffer storage(const vk::Context& ctx, size_t bytes) {
   return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -24,16 +19,16 @@ RadixSorter::RadixSorter(const vk::Context& ctx, uint32_t capacity)
       m_keys_alt(storage(ctx, size_t(capacity) * 4)),
       m_values_alt(storage(ctx, size_t(capacity) * 4)),
       m_histogram(storage(ctx, size_t(abi::kSortRadix) * ((capacity + abi::kSortBlock - 1) / abi::kSortBlock) * 4)),
-      m_histogram_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "0"}}, sort_bindings(), sizeof(abi::SortPush)),
-      m_scan_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "1"}}, sort_bindings(), sizeof(abi::SortPush)),
-      m_scatter_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "2"}}, sort_bindings(), sizeof(abi::SortPush)) {
-  for (vk::ComputePipeline* pass : {&m_histogram_pass, &m_scan_pass, &m_scatter_pass}) {
-    pass->bind_buffer(abi::kBindingSortKeys, keys);
-    pass->bind_buffer(abi::kBindingSortValues, values);
-    pass->bind_buffer(abi::kBindingSortKeysAlt, m_keys_alt);
-    pass->bind_buffer(abi::kBindingSortValuesAlt, m_values_alt);
-    pass->bind_buffer(abi::kBindingSortHistogram, m_histogram);
-  }
+      m_histogram_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "0"}}, bindings(), sizeof(abi::SortPush)),
+      m_scan_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "1"}}, bindings(), sizeof(abi::SortPush)),
+      m_scatter_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "2"}}, bindings(), sizeof(abi::SortPush)) {}
+
+std::vector<vk::BufferBinding> RadixSorter::bindings() const {
+  return {{abi::kSortKeys, &keys},
+          {abi::kSortValues, &values},
+          {abi::kSortKeysAlt, &m_keys_alt},
+          {abi::kSortValuesAlt, &m_values_alt},
+          {abi::kSortHistogram, &m_histogram}};
 }
 
 void RadixSorter::record(VkCommandBuffer cmd, uint32_t count) const {

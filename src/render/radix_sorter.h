@@ -17,6 +17,9 @@ class RadixSorter {
   vk::Buffer keys, values;
 
  private:
+  // The buffers of radix_sort.comp (the same for its three stages).
+  std::vector<vk::BufferBinding> bindings() const;
+
   uint32_t m_capacity;
   vk::Buffer m_keys_alt, m_values_alt, m_histogram;
   vk::ComputePipeline m_histogram_pass, m_scan_pass, m_scatter_pass;

@@ -44,7 +44,7 @@ struct Applier {
   void operator()(const TransformEdit& e) const { move_node(scene.nodes[find_node(scene, e.node)].local, e.translate, e.matrix); }
 
   void operator()(const MaterialEdit& e) const {
-    abi::MaterialBlock& block = scene.materials[find_material(scene, e.material)].params;
+    MaterialParameters& block = scene.materials[find_material(scene, e.material)].params;
     for (const ParameterValue& p : e.set) {
       const MaterialParameter* parameter = find_material_parameter(p.key);
       if (!parameter || int(p.values.size()) != parameter->components)
@@ -99,7 +99,7 @@ struct Inverter {
   }
 
   Edit operator()(const MaterialEdit& e) const {
-    const abi::MaterialBlock& block = scene.materials[find_material(scene, e.material)].params;
+    const MaterialParameters& block = scene.materials[find_material(scene, e.material)].params;
     MaterialEdit inverse{e.material, {}};
     for (const ParameterValue& p : e.set) {
       const MaterialParameter* parameter = find_material_parameter(p.key);

@@ -41,7 +41,7 @@ const tinygltf::Value* member(const tinygltf::Value& extras, const char* key, co
 
 }  // namespace
 
-void apply_openpbr_extras(const tinygltf::Value& extras, const char* key, abi::MaterialBlock& params,
+void apply_openpbr_extras(const tinygltf::Value& extras, const char* key, MaterialParameters& params,
                           const std::string& what) {
   const tinygltf::Value* overrides = member(extras, key, what);
   if (!overrides) return;

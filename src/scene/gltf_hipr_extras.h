@@ -4,7 +4,7 @@
 //   material.extras.hipr_openpbr   {"coat_darkening": 0.3, "base_color": [r, g, b], ...}
 //       OpenPBR parameters (material_parameter_names()) whose value differs from what the
 //       material's glTF fields map to (gltf_material_table.cpp): numbers for scalars, arrays of
-//       three for colours, in the units of abi::MaterialBlock.
+//       three for colours, in the units of MaterialParameters.
 //   extras.hipr_default_material    the same, for glTF's default material (primitives without one)
 //   light.extras.hipr_light         {"color": [r, g, b], "intensity": I}: a KHR_lights_punctual
 //       light whose colour exceeds glTF's [0, 1] (the glTF fields hold colour / max and
@@ -24,7 +24,7 @@ inline constexpr const char* kLightExtras = "hipr_light";
 
 // Applies extras[key] (when `extras` is an object holding `key`) to `params`; `what` names the
 // owner in error messages.
-void apply_openpbr_extras(const tinygltf::Value& extras, const char* key, abi::MaterialBlock& params,
+void apply_openpbr_extras(const tinygltf::Value& extras, const char* key, MaterialParameters& params,
                           const std::string& what);
 
 // Applies extras.hipr_light (when present) to `light`.

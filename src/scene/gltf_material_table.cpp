@@ -1,6 +1,6 @@
 // The one place that says which glTF material field becomes which OpenPBR parameter.
 //
-// glTF field                                  -> OpenPBR (abi::MaterialBlock)
+// glTF field                                  -> OpenPBR (MaterialParameters)
 // --- core (gltf_materials.cpp) ---
 // baseColorFactor.rgb (x baseColorTexture)    -> base_color (base_weight = 1)
 // metallicFactor / roughnessFactor (x MR tex) -> base_metalness / specular_roughness
@@ -44,13 +44,13 @@
 
 #include <limits>
 
-#include "shaders/shared/abi.h"
+#include "hipr/material.h"
 
 namespace hipr::gltf {
 
 const std::vector<FactorRow>& factor_rows() {
   constexpr float kInf = std::numeric_limits<float>::infinity();
-  using M = abi::MaterialBlock;
+  using M = MaterialParameters;
   const glm::vec3 one(1.0f), zero(0.0f);
   static const std::vector<FactorRow> rows = {
       {"KHR_materials_emissive_strength", "emissiveStrength", offsetof(M, emission_luminance), 1, one, 0, kInf},
@@ -79,7 +79,7 @@ const std::vector<FactorRow>& factor_rows() {
 }
 
 const std::vector<TextureRow>& texture_rows() {
-  using M = abi::MaterialBlock;
+  using M = MaterialParameters;
   static const std::vector<TextureRow> rows = {
       {"KHR_materials_transmission", "transmissionTexture", offsetof(M, transmission_texture), false},
       {"KHR_materials_clearcoat", "clearcoatTexture", offsetof(M, clearcoat_texture), false},

@@ -26,7 +26,7 @@
 namespace hipr::gltf {
 namespace {
 
-using M = abi::MaterialBlock;
+using M = MaterialParameters;
 constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 constexpr const char* kVolume = "KHR_materials_volume";
 

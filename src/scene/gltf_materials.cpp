@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_material_table.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr::gltf {
 namespace {
@@ -40,7 +41,7 @@ glm::vec3 factor(const tinygltf::Value& ext, const FactorRow& row) {
   return glm::clamp(v, glm::vec3(row.lo), glm::vec3(row.hi));
 }
 
-void apply_factor_rows(const tinygltf::Material& m, abi::MaterialBlock& p) {
+void apply_factor_rows(const tinygltf::Material& m, MaterialParameters& p) {
   auto* bytes = reinterpret_cast<unsigned char*>(&p);
   for (const FactorRow& row : factor_rows()) {
     const tinygltf::Value* ext = extension(m, row.extension);
@@ -50,7 +51,7 @@ void apply_factor_rows(const tinygltf::Material& m, abi::MaterialBlock& p) {
   }
 }
 
-void apply_texture_rows(const tinygltf::Material& m, abi::MaterialBlock& p, TextureTable& textures,
+void apply_texture_rows(const tinygltf::Material& m, MaterialParameters& p, TextureTable& textures,
                         const std::string& what) {
   auto* bytes = reinterpret_cast<unsigned char*>(&p);
   for (const TextureRow& row : texture_rows()) {
@@ -62,7 +63,7 @@ void apply_texture_rows(const tinygltf::Material& m, abi::MaterialBlock& p, Text
 }
 
 // alphaMode: OPAQUE ignores alpha; MASK thresholds it; BLEND becomes stochastic coverage.
-void apply_alpha_mode(const tinygltf::Material& m, abi::MaterialBlock& p, const std::string& what) {
+void apply_alpha_mode(const tinygltf::Material& m, MaterialParameters& p, const std::string& what) {
   const auto& factor = m.pbrMetallicRoughness.baseColorFactor;
   const float alpha = factor.size() >= 4 && std::isfinite(factor[3]) ? std::clamp(float(factor[3]), 0.0f, 1.0f) : 1.0f;
   p.alpha_cutoff = -1.0f;
@@ -80,7 +81,7 @@ void apply_alpha_mode(const tinygltf::Material& m, abi::MaterialBlock& p, const 
 }
 
 // The rules of gltf_material_table.cpp that are more than a copy.
-void apply_extension_rules(const tinygltf::Material& m, abi::MaterialBlock& p) {
+void apply_extension_rules(const tinygltf::Material& m, MaterialParameters& p) {
   const tinygltf::Value* volume = extension(m, "KHR_materials_volume");
   const bool thick = volume && volume->Has("thicknessFactor") && volume->Get("thicknessFactor").IsNumber() &&
                      volume->Get("thicknessFactor").GetNumberAsDouble() > 0.0;
@@ -112,8 +113,8 @@ void apply_extension_rules(const tinygltf::Material& m, abi::MaterialBlock& p) {
 
 }  // namespace
 
-abi::MaterialBlock map_material_factors(const tinygltf::Material& m, const std::string& what) {
-  abi::MaterialBlock p = default_material_params();
+MaterialParameters map_material_factors(const tinygltf::Material& m, const std::string& what) {
+  MaterialParameters p = default_material_params();
   const auto& pbr = m.pbrMetallicRoughness;
   p.base_color = color(pbr.baseColorFactor, glm::vec3(1.0f));
   p.base_weight = 1.0f;
@@ -130,9 +131,9 @@ abi::MaterialBlock map_material_factors(const tinygltf::Material& m, const std::
   return p;
 }
 
-abi::MaterialBlock default_gltf_material_params() {
+MaterialParameters default_gltf_material_params() {
   // glTF's default material: white-ish, fully rough dielectric.
-  abi::MaterialBlock p = default_material_params();
+  MaterialParameters p = default_material_params();
   p.base_color = glm::vec3(1.0f);
   p.specular_roughness = 1.0f;
   return p;
@@ -143,7 +144,7 @@ Material convert_material(const tinygltf::Material& m, size_t index, TextureTabl
   Material out;
   out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
   const std::string what = file + ": material " + std::to_string(index) + " ('" + out.name + "')";
-  abi::MaterialBlock& p = out.params;
+  MaterialParameters& p = out.params;
   p = map_material_factors(m, what);
   const auto& pbr = m.pbrMetallicRoughness;
   p.base_color_texture = textures.get(texture_reference(pbr.baseColorTexture), true, what);

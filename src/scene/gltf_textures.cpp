@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr::gltf {
 namespace {

@@ -7,7 +7,7 @@ namespace hipr {
 
 const std::vector<MaterialParameter>& material_parameters() {
   constexpr float kInf = std::numeric_limits<float>::infinity();
-  using M = abi::MaterialBlock;
+  using M = MaterialParameters;
   static const std::vector<MaterialParameter> table = {
       {"base_weight", offsetof(M, base_weight), 1, 0, 1},
       {"base_color", offsetof(M, base_color), 3, 0, 1},

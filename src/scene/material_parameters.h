@@ -1,15 +1,15 @@
 #pragma once
-// The table of editable OpenPBR parameters: name -> field of abi::MaterialBlock.
+// The table of editable OpenPBR parameters: name -> field of MaterialParameters.
 #include <string>
 #include <vector>
 
-#include "shaders/shared/abi.h"
+#include "hipr/material.h"
 
 namespace hipr {
 
 struct MaterialParameter {
   const char* name;
-  size_t offset;   // into abi::MaterialBlock
+  size_t offset;   // into MaterialParameters
   int components;  // 1 (scalar) or 3 (colour)
   float min;       // valid range of every component
   float max;

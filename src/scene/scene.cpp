@@ -1,11 +1,12 @@
 #include "hipr/scene.h"
+#include "shaders/shared/abi.h"
 
 #include <limits>
 
 namespace hipr {
 
-abi::MaterialBlock default_material_params() {
-  abi::MaterialBlock m{};
+MaterialParameters default_material_params() {
+  MaterialParameters m{};
   m.base_weight = 1.0f;
   m.base_color = glm::vec3(0.8f);
   m.base_metalness = 0.0f;
@@ -45,7 +46,7 @@ abi::MaterialBlock default_material_params() {
   return m;
 }
 
-bool material_is_opaque(const abi::MaterialBlock& m) {
+bool material_is_opaque(const MaterialParameters& m) {
   // A MASK material is tested even at full opacity: its texture alpha may cut it out.
   if (m.alpha_cutoff >= 0.0f) return false;
   const bool texture_alpha = m.base_color_texture != abi::kInvalidIndex && !(m.flags & abi::kMaterialIgnoreTextureAlpha);

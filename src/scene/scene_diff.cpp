@@ -9,9 +9,9 @@
 namespace hipr {
 namespace {
 
-bool same_bytes(const abi::MaterialBlock& a, const abi::MaterialBlock& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bytes(const MaterialParameters& a, const MaterialParameters& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-bool is_emissive(const abi::MaterialBlock& m) {
+bool is_emissive(const MaterialParameters& m) {
   return m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f)));
 }
 
@@ -74,6 +74,39 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     changes.light_tables = true;
   }
   return changes;
+}
+
+Scene diff_snapshot(const Scene& scene) {
+  Scene s;
+  s.source = scene.source;
+  s.nodes = scene.nodes;
+  s.materials = scene.materials;
+  s.lights = scene.lights;
+  s.cameras = scene.cameras;
+  s.root_nodes = scene.root_nodes;
+  s.children = scene.children;
+  // Without a camera node the default camera frames the scene's bounds: keep positions then.
+  const bool need_positions = scene.camera_node() < 0;
+  s.meshes.reserve(scene.meshes.size());
+  for (const Mesh& mesh : scene.meshes) {
+    Mesh copy;
+    copy.name = mesh.name;
+    for (const MeshPrimitive& primitive : mesh.primitives) {
+      MeshPrimitive p;
+      p.material = primitive.material;
+      if (need_positions) p.positions = primitive.positions;
+      copy.primitives.push_back(std::move(p));
+    }
+    s.meshes.push_back(std::move(copy));
+  }
+  if (scene.environment) {
+    Environment env;
+    env.path = scene.environment->path;
+    env.intensity = scene.environment->intensity;
+    env.rotation = scene.environment->rotation;
+    s.environment = std::move(env);
+  }
+  return s;
 }
 
 }  // namespace hipr

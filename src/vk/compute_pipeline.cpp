@@ -9,36 +9,30 @@
 namespace hipr::vk {
 namespace {
 
-VkDescriptorType descriptor_type(BindingKind kind) {
-  return kind == BindingKind::AccelerationStructure ? VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR
-                                                    : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags src_stage, VkAccessFlags src_access,
+                    VkPipelineStageFlags dst_stage, VkAccessFlags dst_access) {
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = src_access;
+  barrier.dstAccessMask = dst_access;
+  vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 1, &barrier, 0, nullptr, 0, nullptr);
 }
 
 }  // namespace
 
-ComputePipeline::ComputePipeline(const Context& ctx, const std::string& entry,
-                                 const ShaderDefines& defines, std::vector<BindingSlot> bindings,
-                                 uint32_t push_constant_size)
-    : m_ctx(ctx), m_bindings(std::move(bindings)), m_push_size(push_constant_size) {
+ComputePipeline::ComputePipeline(const Context& ctx, const std::string& entry, const ShaderDefines& defines,
+                                 const std::vector<BufferBinding>& bindings, uint32_t push_constant_size,
+                                 const DescriptorSet* shared)
+    : m_ctx(ctx), m_own(ctx, bindings), m_shared(shared), m_push_size(push_constant_size) {
   const VkDevice device = ctx.device();
   const CompiledShader shader = compile_compute_shader(entry, defines);
   m_from_cache = shader.from_cache;
 
-  std::vector<VkDescriptorSetLayoutBinding> layout_bindings;
-  uint32_t buffer_count = 0, tlas_count = 0;
-  for (const BindingSlot& slot : m_bindings) {
-    layout_bindings.push_back({slot.binding, descriptor_type(slot.kind), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-    (slot.kind == BindingKind::AccelerationStructure ? tlas_count : buffer_count)++;
-  }
-  VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  set_info.bindingCount = uint32_t(layout_bindings.size());
-  set_info.pBindings = layout_bindings.data();
-  VK_CHECK(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &m_set_layout));
-
+  std::vector<VkDescriptorSetLayout> set_layouts = {m_own.layout()};
+  if (m_shared) set_layouts.push_back(m_shared->layout());
   VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, m_push_size};
   VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layout_info.setLayoutCount = 1;
-  layout_info.pSetLayouts = &m_set_layout;
+  layout_info.setLayoutCount = uint32_t(set_layouts.size());
+  layout_info.pSetLayouts = set_layouts.data();
   layout_info.pushConstantRangeCount = m_push_size ? 1 : 0;
   layout_info.pPushConstantRanges = &push;
   VK_CHECK(vkCreatePipelineLayout(device, &layout_info, nullptr, &m_layout));
@@ -57,57 +51,18 @@ ComputePipeline::ComputePipeline(const Context& ctx, const std::string& entry,
   const VkResult result = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &m_pipeline);
   vkDestroyShaderModule(device, module, nullptr);
   VK_CHECK(result);
-
-  std::vector<VkDescriptorPoolSize> sizes;
-  if (buffer_count) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer_count});
-  if (tlas_count) sizes.push_back({VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, tlas_count});
-  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  pool_info.maxSets = 1;
-  pool_info.poolSizeCount = uint32_t(sizes.size());
-  pool_info.pPoolSizes = sizes.data();
-  VK_CHECK(vkCreateDescriptorPool(device, &pool_info, nullptr, &m_pool));
-  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  alloc.descriptorPool = m_pool;
-  alloc.descriptorSetCount = 1;
-  alloc.pSetLayouts = &m_set_layout;
-  VK_CHECK(vkAllocateDescriptorSets(device, &alloc, &m_set));
 }
 
 ComputePipeline::~ComputePipeline() {
   const VkDevice device = m_ctx.device();
-  if (m_pool) vkDestroyDescriptorPool(device, m_pool, nullptr);
   if (m_pipeline) vkDestroyPipeline(device, m_pipeline, nullptr);
   if (m_layout) vkDestroyPipelineLayout(device, m_layout, nullptr);
-  if (m_set_layout) vkDestroyDescriptorSetLayout(device, m_set_layout, nullptr);
-}
-
-void ComputePipeline::bind_buffer(uint32_t binding, const Buffer& buffer) {
-  VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = m_set;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  write.pBufferInfo = &info;
-  vkUpdateDescriptorSets(m_ctx.device(), 1, &write, 0, nullptr);
-}
-
-void ComputePipeline::bind_acceleration_structure(uint32_t binding, VkAccelerationStructureKHR tlas) {
-  VkWriteDescriptorSetAccelerationStructureKHR as_info{
-      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
-  as_info.accelerationStructureCount = 1;
-  as_info.pAccelerationStructures = &tlas;
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, &as_info};
-  write.dstSet = m_set;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
-  vkUpdateDescriptorSets(m_ctx.device(), 1, &write, 0, nullptr);
 }
 
 void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, uint32_t groups) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout, 0, 1, &m_set, 0, nullptr);
+  const VkDescriptorSet sets[2] = {m_own.handle(), m_shared ? m_shared->handle() : VK_NULL_HANDLE};
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout, 0, m_shared ? 2 : 1, sets, 0, nullptr);
   if (m_push_size)
     vkCmdPushConstants(cmd, m_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, m_push_size, push_constants);
   if (groups == 0) return;
@@ -121,11 +76,18 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, 
 }
 
 void compute_to_compute_barrier(VkCommandBuffer cmd) {
-  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-  barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                       0, 1, &barrier, 0, nullptr, 0, nullptr);
+  memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+}
+
+void transfer_to_compute_barrier(VkCommandBuffer cmd) {
+  memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT,
+                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+}
+
+void compute_to_transfer_barrier(VkCommandBuffer cmd) {
+  memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                 VK_ACCESS_TRANSFER_READ_BIT);
 }
 
 }  // namespace hipr::vk

@@ -117,10 +117,10 @@ void hipr_section(Session& session, ViewerState& state) {
 
   bool changed = false;
   if (ImGui::BeginCombo("preset", state.preset.c_str())) {
-    for (const std::string& name : app::hipr_preset_names())
+    for (const std::string& name : hipr_preset_names())
       if (ImGui::Selectable(name.c_str(), name == state.preset)) {
         state.preset = name;
-        app::apply_hipr_preset(name, state.hipr_sliders);
+        apply_hipr_preset(name, state.hipr_sliders);
         changed = true;
       }
     ImGui::EndCombo();
@@ -139,7 +139,7 @@ void hipr_section(Session& session, ViewerState& state) {
       "%u tiles of %u px, %u per step; %u spp per visit (first visit %u), target %u spp",
       session.renderer().tile_count(), settings.render.tile_size,
       settings.tiles_per_step ? settings.tiles_per_step
-                              : default_tiles_per_step(session.renderer().tile_count()),
+                              : viewer_tiles_per_step(session.renderer().tile_count()),
       settings.visit_spp,
       settings.first_visit_spp ? settings.first_visit_spp : default_first_visit_spp(settings),
       settings.spp);

@@ -57,7 +57,7 @@ void tree_node(Session& session, ViewerState& state, uint32_t node) {
 
 void material_editor(Session& session, ViewerState& state, uint32_t material) {
   const Scene& scene = session.scene();
-  const abi::MaterialBlock& block = scene.materials[material].params;
+  const MaterialParameters& block = scene.materials[material].params;
   const std::string name = material_reference(scene, material);
   for (const MaterialParameter& p : material_parameters()) {
     float values[3] = {0.0f, 0.0f, 0.0f};
@@ -180,14 +180,14 @@ void lights_section(Session& session, ViewerState& state) {
   // Emissive as the light tables see it: luminance and colour both non-zero (glTF gives every
   // material luminance 1 and a black colour, which an emission texture only multiplies).
   for (uint32_t m = 0; m < scene.materials.size(); ++m) {
-    const abi::MaterialBlock& p = scene.materials[m].params;
+    const MaterialParameters& p = scene.materials[m].params;
     if (p.emission_luminance > 0.0f &&
         glm::any(glm::greaterThan(p.emission_color, glm::vec3(0.0f))))
       state.emitters.insert(m);
   }
   for (uint32_t m : state.emitters) {
     any = true;
-    const abi::MaterialBlock& block = scene.materials[m].params;
+    const MaterialParameters& block = scene.materials[m].params;
     const std::string reference = material_reference(scene, m);
     ImGui::PushID(int(1000000 + m));
     ImGui::Text("emitter: material %s", scene.materials[m].name.empty()

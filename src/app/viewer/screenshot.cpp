@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/error.h"
+#include "image/image_io.h"
 
 namespace hipr::viewer {
 namespace fs = std::filesystem;

@@ -3,50 +3,15 @@
 #include <algorithm>
 
 #include "core/error.h"
-#include "hipr/scene_diff.h"
+#include "hipr/edit_pipeline.h"
 #include "scene/default_camera.h"
 
 namespace hipr::viewer {
 
-uint32_t default_tiles_per_step(uint32_t tile_count) {
-  return std::max(1u, (tile_count + 63) / 64);
-}
+uint32_t viewer_tiles_per_step(uint32_t tile_count) { return std::max(1u, (tile_count + 63) / 64); }
 
 uint32_t default_first_visit_spp(const SessionSettings& s) {
   return std::max(s.visit_spp, std::min(2u, s.spp));
-}
-
-Scene diff_snapshot(const Scene& scene) {
-  Scene s;
-  s.source = scene.source;
-  s.nodes = scene.nodes;
-  s.materials = scene.materials;
-  s.lights = scene.lights;
-  s.cameras = scene.cameras;
-  s.root_nodes = scene.root_nodes;
-  s.children = scene.children;
-  // Without a camera node the default camera frames the scene's bounds: keep positions then.
-  const bool need_positions = scene.camera_node() < 0;
-  s.meshes.reserve(scene.meshes.size());
-  for (const Mesh& mesh : scene.meshes) {
-    Mesh copy;
-    copy.name = mesh.name;
-    for (const MeshPrimitive& primitive : mesh.primitives) {
-      MeshPrimitive p;
-      p.material = primitive.material;
-      if (need_positions) p.positions = primitive.positions;
-      copy.primitives.push_back(std::move(p));
-    }
-    s.meshes.push_back(std::move(copy));
-  }
-  if (scene.environment) {
-    Environment env;
-    env.path = scene.environment->path;
-    env.intensity = scene.environment->intensity;
-    env.rotation = scene.environment->rotation;
-    s.environment = std::move(env);
-  }
-  return s;
 }
 
 Session::Session(const vk::Context& ctx, Scene scene, const SessionSettings& settings)
@@ -63,7 +28,7 @@ std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy po
     throw InputError("the oracle policy needs a reference image: use hipr bench");
   const uint32_t per_step = m_settings.tiles_per_step
                                 ? m_settings.tiles_per_step
-                                : default_tiles_per_step(renderer.tile_count());
+                                : viewer_tiles_per_step(renderer.tile_count());
   auto scheduler = std::make_unique<Scheduler>(renderer, policy, per_step, m_settings.visit_spp);
   scheduler->set_display_rule(m_settings.display.value_or(default_display_rule(policy)));
   scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp
@@ -73,10 +38,11 @@ std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy po
 
 void Session::rebuild() {
   // The new renderer is complete before the old one goes: a failure leaves the session as it was.
-  auto renderer = std::make_unique<Renderer>(m_ctx, m_scene, m_settings.render);
+  // Kernels compile as they are made (a longer start) rather than at the first edit (a frozen window).
+  RenderSettings render = m_settings.render;
+  render.compile_kernels_early = true;
+  auto renderer = std::make_unique<Renderer>(m_ctx, m_scene, render);
   auto scheduler = make_scheduler(*renderer, m_settings.policy);
-  // Compile the kernels now (a longer start) rather than at the first edit (a frozen window).
-  renderer->warm_up_kernels();
   m_scheduler.reset();  // it refers to the renderer
   m_renderer = std::move(renderer);
   m_scheduler = std::move(scheduler);
@@ -86,12 +52,11 @@ void Session::rebuild() {
   m_since_edit = Timer();
 }
 
-void Session::changed(const Scene& before, const std::string& what) {
-  const ChangeSet changes = diff_scenes(before, m_scene);
-  if (changes.empty()) return;  // e.g. a slider released where it started
-  m_shown_at_edit = displayed();
+void Session::changed(const std::function<void(Scene&)>& change, const std::string& what) {
+  std::optional<ImageRGB> shown = displayed();
   const Timer started;  // the latency includes on_edit itself (GPU update, stage 1)
-  m_scheduler->on_edit(m_scene, changes);
+  if (EditPipeline(m_scene, *m_scheduler).apply(change).empty()) return;  // e.g. a slider released where it started
+  m_shown_at_edit = std::move(shown);
   m_since_edit = started;
   m_dirty_display = true;
   m_ids_stale = true;
@@ -113,25 +78,21 @@ float Session::radius() const {
 }
 
 void Session::edit(const Edit& edit) {
-  const Scene before = diff_snapshot(m_scene);
-  m_history.apply(m_scene, edit);
-  changed(before, describe(edit));
+  changed([&](Scene& scene) { m_history.apply(scene, edit); }, describe(edit));
 }
 
 bool Session::undo() {
-  const Scene before = diff_snapshot(m_scene);
   const std::string what = "undo " + m_history.undo_label();
-  if (!m_history.undo(m_scene)) return false;
-  changed(before, what);
-  return true;
+  bool undone = false;
+  changed([&](Scene& scene) { undone = m_history.undo(scene); }, what);
+  return undone;
 }
 
 bool Session::redo() {
-  const Scene before = diff_snapshot(m_scene);
   const std::string what = "redo " + m_history.redo_label();
-  if (!m_history.redo(m_scene)) return false;
-  changed(before, what);
-  return true;
+  bool redone = false;
+  changed([&](Scene& scene) { redone = m_history.redo(scene); }, what);
+  return redone;
 }
 
 bool Session::converged() const { return m_scheduler->work_since_edit() >= double(m_settings.spp); }

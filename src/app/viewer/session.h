@@ -3,6 +3,7 @@
 // what the window should show. No window here, so tests drive it headless. Every change to
 // the scene (an edit, an undo, a redo) goes through the same path: diff against the scene
 // before, Scheduler::on_edit, so HiPR re-renders first what the change touched.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -96,7 +97,8 @@ class Session {
   // The G-buffer of the scene as it is now (policies without stage 1 leave it behind edits).
   void ensure_gbuffer();
   std::unique_ptr<Scheduler> make_scheduler(Renderer& renderer, Policy policy) const;
-  void changed(const Scene& before, const std::string& what);
+  // Changes the scene through the edit pipeline and records the change as `what`.
+  void changed(const std::function<void(Scene&)>& change, const std::string& what);
 
   const vk::Context& m_ctx;
   SessionSettings m_settings;
@@ -116,14 +118,9 @@ class Session {
   mutable std::optional<std::pair<glm::vec3, glm::vec3>> m_bounds;  // cache of bounds()
 };
 
-// A copy of `scene` with what diff_scenes reads (nodes, materials, lights, cameras, the
-// environment's settings, mesh primitive materials; vertex positions only when the default
-// camera depends on them), without texels and vertex data: the "before" of an edit stays
-// cheap in big scenes.
-Scene diff_snapshot(const Scene& scene);
-
-// The default tiles per step: 1/64 of the frame, at least one tile.
-uint32_t default_tiles_per_step(uint32_t tile_count);
+// The viewer's tiles per step unless set: 1/64 of the frame, at least one tile (smaller steps
+// than hipr replay's and bench's: several fit in one frame's time budget).
+uint32_t viewer_tiles_per_step(uint32_t tile_count);
 
 // Samples of a tile's first visit after an edit unless set: 2 (as hipr bench), at least
 // visit_spp, at most spp. The blend and switch display rules need two samples per pixel to

@@ -1,0 +1,34 @@
+#pragma once
+// The one path from an edit to the screen: the edit changes the scene, the scene before and
+// after is diffed into a ChangeSet, and the scheduler updates the renderer's GPU scene and
+// plans the re-render. `hipr replay` and the viewer go through it; `hipr bench` applies each
+// edit once and replays its ChangeSet for every policy.
+#include <functional>
+
+#include "hipr/edits.h"
+#include "hipr/scene.h"
+#include "hipr/scene_diff.h"
+#include "hipr/scheduler.h"
+
+namespace hipr {
+
+// Applies `change` to `scene` and returns what it changed, diffing against a snapshot of what
+// a diff reads (diff_snapshot), not a copy of the geometry.
+ChangeSet change_scene(Scene& scene, const std::function<void(Scene&)>& change);
+
+class EditPipeline {
+ public:
+  EditPipeline(Scene& scene, Scheduler& scheduler) : m_scene(scene), m_scheduler(scheduler) {}
+
+  // Applies the edit (InputError for an unknown name or key, the scene then unchanged) and,
+  // when it changed anything, lets the scheduler re-render. Returns what changed.
+  ChangeSet apply(const Edit& edit);
+  // The same for any change of the scene (an undo or redo of the viewer's history).
+  ChangeSet apply(const std::function<void(Scene&)>& change);
+
+ private:
+  Scene& m_scene;
+  Scheduler& m_scheduler;
+};
+
+}  // namespace hipr

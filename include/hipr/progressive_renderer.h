@@ -1,0 +1,82 @@
+#pragma once
+// What the scheduler needs of a progressive renderer: a tile grid, a schedule to render from,
+// a display to resolve, and (for the HiPR policy) the method's three stages. hipr's Renderer is
+// one; another progressive renderer drives the same policies by implementing this.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "hipr/display_rule.h"
+#include "hipr/image.h"
+#include "hipr/scene.h"
+#include "hipr/scene_diff.h"
+
+namespace hipr {
+
+// Image and tile geometry.
+struct TileGrid {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  uint32_t tile_size = 0;
+  uint32_t tiles_x = 0;
+  uint32_t tiles_y = 0;
+  uint32_t seed = 0;  // of the render's random numbers (the random order uses it too)
+  uint32_t tile_count() const { return tiles_x * tiles_y; }
+};
+
+// HiPR's stages (docs/method.md, "The method"). Each records GPU work and waits.
+class HiprStageRunner {
+ public:
+  virtual ~HiprStageRunner() = default;
+  // Stage 1: the G-buffer of the scene as it is now (the previous one is kept) and the active
+  // tiles, where an element of `changes` is visible now or was before, each with a change
+  // score. A camera, punctual-light or environment change makes every tile active (no G-buffer
+  // shows their reach). Returns |A| (stage 2 is split into steps over it).
+  virtual uint32_t stage1_visibility(const ChangeSet& changes) = 0;
+  // Stage 2: path-traces the active tiles among schedule entries [offset, offset + count)
+  // (restarting them) with discovery on; `then_resolve` resolves their display in the same
+  // submission.
+  virtual void stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
+                               std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
+  // Stage 3: the schedule, sorted on the GPU: active tiles by change score, then discovered
+  // tiles by weight, then the rest by distance to the active set.
+  virtual void build_schedule() = 0;
+};
+
+class ProgressiveRenderer {
+ public:
+  virtual ~ProgressiveRenderer() = default;
+
+  virtual TileGrid tile_grid() const = 0;
+  // Brings the renderer up to date with `scene` after edits, touching only what `changes`
+  // names. Accumulated samples are kept: the scheduler decides which tiles restart.
+  virtual void update_scene(const Scene& scene, const ChangeSet& changes) = 0;
+
+  // The schedule: tile ids in the order to render them, every tile once.
+  virtual void set_schedule(std::span<const uint32_t> order) = 0;
+  // Adds samples to the tiles of schedule entries [offset, offset + count) (skip_active: not
+  // those stage 2 rendered) and, with `then_resolve`, resolves their display.
+  virtual void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
+                               std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
+  // Every pixel owes a restart: its next visit drops its old samples.
+  virtual void mark_all_owed() = 0;
+
+  // The display: what every pixel shows. At an edit it becomes the stale estimate fresh samples
+  // are weighed against; resolves let fresh estimates take over by the display rule.
+  virtual void resolve_display_all(DisplayRule rule) = 0;
+  virtual void capture_stale_display() = 0;
+  virtual ImageRGB displayed_image() const = 0;
+  // Renders the G-buffer of the scene as it is now (the display rules read which surface each
+  // pixel shows), leaving the previous one and the tile flags alone.
+  virtual void refresh_gbuffer() = 0;
+
+  // Samples added since the last reset_counters (work, in samples).
+  virtual uint64_t samples_since_reset() const = 0;
+  virtual void reset_counters() = 0;
+
+  // HiPR's stages, or nullptr for a renderer without them (the HiPR policy then refuses it).
+  virtual HiprStageRunner* hipr_stages() { return nullptr; }
+};
+
+}  // namespace hipr

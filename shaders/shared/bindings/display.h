@@ -1,0 +1,20 @@
+// Set 0 of the viewer's display pass (DisplayPass: display.comp).
+// Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
+// binding numbers, named by the kernel's GLSL layouts and by its C++ pass.
+#ifndef HIPR_BINDINGS_DISPLAY_H
+#define HIPR_BINDINGS_DISPLAY_H
+
+#include "../abi.h"
+
+#ifdef __cplusplus
+namespace hipr::abi {
+#endif
+
+HIPR_CONST uint kDisplayRadiance = 0u;  // float RGB per rendered pixel (the displayed image)
+HIPR_CONST uint kDisplayOverlay = 1u;   // uint RGBA8 per rendered pixel (sRGB, A = coverage)
+HIPR_CONST uint kDisplayOutput = 2u;    // uint RGBA8 per window pixel (what the window shows)
+
+#ifdef __cplusplus
+}  // namespace hipr::abi
+#endif
+#endif

@@ -1,0 +1,26 @@
+// Set 0 of trace_tiles.comp: TracePass, and with discovery on HiPR stage 2's DiscoveryPass.
+// Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
+// binding numbers, named by the kernel's GLSL layouts and by its C++ pass.
+#ifndef HIPR_BINDINGS_TRACE_H
+#define HIPR_BINDINGS_TRACE_H
+
+#include "../abi.h"
+
+#ifdef __cplusplus
+namespace hipr::abi {
+#endif
+
+HIPR_CONST uint kTraceTileList = 0u;        // uint tile ids, in the order to render them
+HIPR_CONST uint kTraceAccumulation = 1u;    // PixelAccum per pixel
+HIPR_CONST uint kTraceStats = 2u;           // RenderStats
+HIPR_CONST uint kTraceTileFlags = 3u;       // uint per tile: kTile* flags
+HIPR_CONST uint kTraceTileBackground = 4u;  // uint per tile: 1 = its camera rays cannot hit anything
+// Stage 2 only (HIPR_DISCOVERY 1, common/discovery.glsl)
+HIPR_CONST uint kTraceGBuffer = 5u;         // GBufferTexel per pixel of the edited scene
+HIPR_CONST uint kTraceChangedRecords = 6u;  // uint per GeometryRecord: 1 = in the changed set E
+HIPR_CONST uint kTraceTileWeights = 7u;     // uint64 per tile: discovery weight W(T) x kWeightScale
+
+#ifdef __cplusplus
+}  // namespace hipr::abi
+#endif
+#endif

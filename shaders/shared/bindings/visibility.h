@@ -1,0 +1,25 @@
+// Set 0 of HiPR stage 1 (VisibilityPass): visibility.comp and mark_active.comp.
+// Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
+// binding numbers, named by the kernel's GLSL layouts and by its C++ pass.
+#ifndef HIPR_BINDINGS_VISIBILITY_H
+#define HIPR_BINDINGS_VISIBILITY_H
+
+#include "../abi.h"
+
+#ifdef __cplusplus
+namespace hipr::abi {
+#endif
+
+// visibility.comp
+HIPR_CONST uint kVisibilityGBuffer = 0u;         // GBufferTexel per pixel (written)
+// mark_active.comp
+HIPR_CONST uint kMarkActiveGBuffer = 0u;         // GBufferTexel per pixel, this scene state
+HIPR_CONST uint kMarkActivePrevious = 1u;        // GBufferTexel per pixel, before the edit
+HIPR_CONST uint kMarkActiveChangedRecords = 2u;  // uint per GeometryRecord: 1 = in the changed set E
+HIPR_CONST uint kMarkActiveTileFlags = 3u;       // uint per tile: kTileActive is set here
+HIPR_CONST uint kMarkActiveTileChange = 4u;      // uint per tile: how much of it stage 1 saw change
+
+#ifdef __cplusplus
+}  // namespace hipr::abi
+#endif
+#endif

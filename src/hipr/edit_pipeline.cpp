@@ -1,0 +1,21 @@
+#include "hipr/edit_pipeline.h"
+
+namespace hipr {
+
+ChangeSet change_scene(Scene& scene, const std::function<void(Scene&)>& change) {
+  const Scene before = diff_snapshot(scene);
+  change(scene);
+  return diff_scenes(before, scene);
+}
+
+ChangeSet EditPipeline::apply(const Edit& edit) {
+  return apply([&](Scene& scene) { apply_edit(scene, edit); });
+}
+
+ChangeSet EditPipeline::apply(const std::function<void(Scene&)>& change) {
+  const ChangeSet changes = change_scene(m_scene, change);
+  if (!changes.empty()) m_scheduler.on_edit(m_scene, changes);  // e.g. a slider released where it started
+  return changes;
+}
+
+}  // namespace hipr

@@ -1,0 +1,75 @@
+#include "hipr/hipr_stages.h"
+
+#include <algorithm>
+
+#include "shaders/shared/bindings/trace.h"
+
+namespace hipr {
+
+abi::TracePush no_tile_push(const TracePass& pass, uint32_t tile_count) {
+  abi::TracePush push = pass.push(0, tile_count, 1);
+  push.requireFlags = 1u << 31;
+  return push;
+}
+
+HiprStages::HiprStages(const RenderParts& parts, uint32_t kernel_features)
+    : m_parts(parts),
+      m_tile_weights(parts.ctx, size_t(parts.tiles.count()) * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      m_active(parts.ctx, parts.scene, parts.tiles, parts.gbuffers, parts.settings.width * parts.settings.height),
+      m_discovery(parts.ctx, parts.scene, parts.tiles, parts.film, parts.settings, kernel_features,
+                  {{abi::kTraceGBuffer, &parts.gbuffers.current},
+                   {abi::kTraceChangedRecords, &m_active.changed_records},
+                   {abi::kTraceTileWeights, &m_tile_weights}}),
+      m_schedule(parts.ctx, parts.scene, parts.tiles, m_tile_weights, m_active.tile_change) {
+  parts.gbuffers.render();
+}
+
+uint32_t HiprStages::stage1_visibility(const ChangeSet& changes) {
+  m_active.set_changed(m_parts.scene, changes);
+  // What no G-buffer shows (a moved camera, a punctual light's or the environment's reach) makes
+  // every tile active.
+  const bool everything = changes.camera || !changes.lights.empty() || changes.environment;
+  m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m_parts.gbuffers.record_keep_previous(cmd);
+    vkCmdFillBuffer(cmd, m_parts.tiles.flags.handle(), 0, VK_WHOLE_SIZE, everything ? abi::kTileActive : 0u);
+    vkCmdFillBuffer(cmd, m_tile_weights.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, m_active.tile_change.handle(), 0, VK_WHOLE_SIZE, 0);
+    vk::transfer_to_compute_barrier(cmd);
+    m_parts.gbuffers.record(cmd);
+    vk::compute_to_compute_barrier(cmd);
+    m_active.record(cmd);
+  });
+  // The one number the CPU needs: stage 2 is split into steps of equal work over |A| tiles.
+  const std::vector<uint32_t> flags = m_parts.tiles.flags.download_all<uint32_t>();
+  return uint32_t(std::count_if(flags.begin(), flags.end(), [](uint32_t f) { return (f & abi::kTileActive) != 0; }));
+}
+
+void HiprStages::stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
+                                 std::optional<DisplayRule> then_resolve) {
+  const uint32_t tiles = m_parts.tiles.count();
+  if (offset >= tiles || count == 0) return;
+  abi::TracePush push = m_discovery.push(offset, std::min(count, tiles - offset), samples_per_pixel);
+  push.requireFlags = abi::kTileActive;
+  m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m_discovery.record(cmd, push);
+    if (then_resolve) m_parts.resolve.record(cmd, {push.listOffset, push.tileCount, push.requireFlags, 0}, *then_resolve);
+  });
+}
+
+void HiprStages::build_schedule() {
+  m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m_schedule.record(cmd); });
+}
+
+void HiprStages::record_warm_up(VkCommandBuffer cmd) const {
+  m_discovery.record(cmd, no_tile_push(m_discovery, m_parts.tiles.count()));
+  m_schedule.record_warm_up(cmd);
+}
+
+std::vector<double> HiprStages::tile_weights() const {
+  const auto fixed = m_tile_weights.download_all<uint64_t>();
+  std::vector<double> out(fixed.size());
+  for (size_t i = 0; i < fixed.size(); ++i) out[i] = double(fixed[i]) / abi::kWeightScale;
+  return out;
+}
+
+}  // namespace hipr

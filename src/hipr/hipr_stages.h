@@ -1,0 +1,58 @@
+#pragma once
+// HiPR's three stages on the GPU, wired to the renderer's shared state: stage 1
+// (GBufferPass + ActiveTilesPass), stage 2 (DiscoveryPass: the trace kernel with discovery on)
+// and stage 3 (SchedulePass). Made on first use: plain renders never pay for them.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "hipr/active_tiles_pass.h"
+#include "hipr/progressive_renderer.h"
+#include "hipr/resolve_pass.h"
+#include "hipr/schedule_pass.h"
+#include "render/trace_pass.h"
+#include "shaders/shared/abi.h"
+
+namespace hipr {
+
+// What the stages share with the rest of the renderer.
+struct RenderParts {
+  const vk::Context& ctx;
+  const RenderSettings& settings;
+  const GpuScene& scene;
+  TileState& tiles;
+  Film& film;
+  GBufferPass& gbuffers;
+  const ResolvePass& resolve;
+};
+
+class HiprStages final : public HiprStageRunner {
+ public:
+  // Renders the G-buffer of the scene as it is now, so the first edit has a "before".
+  HiprStages(const RenderParts& parts, uint32_t kernel_features);
+
+  uint32_t stage1_visibility(const ChangeSet& changes) override;
+  void stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
+                       std::optional<DisplayRule> then_resolve = std::nullopt) override;
+  void build_schedule() override;
+
+  // Recompiles stage 2's kernel with other kernel features.
+  void set_kernel_features(uint32_t features) { m_discovery.set_features(features); }
+  // Dispatches stage 2's and stage 3's kernels over no tile (they compile, nothing changes).
+  void record_warm_up(VkCommandBuffer cmd) const;
+  // Per tile: the discovery weight W(T).
+  std::vector<double> tile_weights() const;
+
+ private:
+  RenderParts m_parts;
+  vk::Buffer m_tile_weights;  // uint64 per tile: W(T) x abi::kWeightScale
+  ActiveTilesPass m_active;
+  TracePass m_discovery;
+  SchedulePass m_schedule;
+};
+
+// A trace push that lets every workgroup leave at once (bit 31 is no kTile* flag): a dispatch
+// that compiles the kernel and renders nothing.
+abi::TracePush no_tile_push(const TracePass& pass, uint32_t tile_count);
+
+}  // namespace hipr

@@ -1,0 +1,56 @@
+#include "hipr/resolve_pass.h"
+
+#include "shaders/shared/bindings/resolve.h"
+
+namespace hipr {
+namespace {
+
+// Switch rule: a tile switches to its fresh estimate when D > kSwitchThreshold * V
+// (resolve_display.comp): 2 means the stale estimate's squared error B = D - V exceeds V.
+constexpr float kSwitchThreshold = 2.0f;
+
+}  // namespace
+
+ResolvePass::ResolvePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
+                         const GBufferPass& gbuffers, uint32_t width, uint32_t height)
+    : display(ctx, size_t(width) * height * sizeof(abi::DisplayTexel), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      m_gbuffers(gbuffers),
+      m_width(width),
+      m_height(height),
+      m_resolve(ctx, "resolve_display.comp", {},
+                {{abi::kResolveTileList, &tiles.schedule},
+                 {abi::kResolveAccumulation, &film.accumulation},
+                 {abi::kResolveTileFlags, &tiles.flags},
+                 {abi::kResolveDisplay, &display},
+                 {abi::kResolveGBuffer, &gbuffers.current}},
+                sizeof(abi::ResolvePush), &scene.descriptor_set()) {
+  display.clear();
+}
+
+void ResolvePass::record(VkCommandBuffer cmd, const Tiles& tiles, DisplayRule rule) const {
+  record_pass(cmd, tiles, uint32_t(rule));
+}
+
+void ResolvePass::record_capture_stale(VkCommandBuffer cmd, uint32_t tile_count) const {
+  record_pass(cmd, {abi::kInvalidIndex, tile_count}, abi::kDisplayCapture);
+}
+
+void ResolvePass::record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t rule) const {
+  const abi::ResolvePush push{tiles.offset,     tiles.count, tiles.require_flags, tiles.skip_flags, rule,
+                              kSwitchThreshold, m_gbuffers.is_current() ? 1u : 0u};
+  vk::compute_to_compute_barrier(cmd);
+  m_resolve.dispatch(cmd, &push, tiles.count);
+}
+
+ImageRGB ResolvePass::displayed_image() const {
+  const auto texels = display.download_all<abi::DisplayTexel>();
+  ImageRGB image;
+  image.width = m_width;
+  image.height = m_height;
+  image.rgb.resize(texels.size() * 3);
+  for (size_t i = 0; i < texels.size(); ++i)
+    for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = texels[i].shown[c];
+  return image;
+}
+
+}  // namespace hipr

@@ -1,0 +1,49 @@
+#pragma once
+// What the screen shows (resolve_display.comp): a display buffer apart from the accumulation.
+// At an edit the shown image is captured as the stale estimate; resolves then decide per tile,
+// by the display rule, when and how much its fresh estimate replaces the stale one
+// (docs/method.md, "The display after an edit").
+#include <cstdint>
+
+#include "hipr/display_rule.h"
+#include "hipr/renderer.h"
+#include "render/film.h"
+#include "render/gbuffer_pass.h"
+#include "render/tile_state.h"
+#include "vk/compute_pipeline.h"
+#include "shaders/shared/abi.h"
+
+namespace hipr {
+
+class ResolvePass {
+ public:
+  ResolvePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
+              const GBufferPass& gbuffers, uint32_t width, uint32_t height);
+
+  // Which tiles a resolve covers: schedule entries [offset, offset + count) with all of
+  // `require_flags` and none of `skip_flags`; offset abi::kInvalidIndex: tile ids 0 .. count - 1.
+  struct Tiles {
+    uint32_t offset;
+    uint32_t count;
+    uint32_t require_flags = 0;
+    uint32_t skip_flags = 0;
+  };
+  // Records a resolve by `rule` after whatever the command buffer wrote before.
+  void record(VkCommandBuffer cmd, const Tiles& tiles, DisplayRule rule) const;
+  // Records the capture of what every pixel shows as its stale estimate (at an edit).
+  void record_capture_stale(VkCommandBuffer cmd, uint32_t tile_count) const;
+
+  ImageRGB displayed_image() const;
+  void clear() { display.clear(); }
+
+  vk::Buffer display;  // DisplayTexel per pixel
+
+ private:
+  void record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t rule) const;
+
+  const GBufferPass& m_gbuffers;
+  uint32_t m_width, m_height;
+  vk::ComputePipeline m_resolve;
+};
+
+}  // namespace hipr

@@ -1,0 +1,68 @@
+#include "render/film.h"
+
+#include "shaders/shared/bindings/film.h"
+
+namespace hipr {
+namespace {
+
+vk::Buffer storage(const vk::Context& ctx, size_t bytes) { return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT); }
+
+}  // namespace
+
+uint32_t groups_for(uint32_t items) { return (items + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize; }
+
+Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, const vk::DescriptorSet& scene,
+           const vk::Buffer& tile_flags)
+    : accumulation(storage(ctx, size_t(width) * height * sizeof(abi::PixelAccum))),
+      stats(storage(ctx, sizeof(abi::RenderStats))),
+      m_width(width),
+      m_height(height),
+      m_mark_owed(ctx, "mark_owed.comp", {},
+                  {{abi::kOwedAccumulation, &accumulation}, {abi::kOwedTileFlags, &tile_flags}}, 0, &scene) {
+  clear();
+}
+
+void Film::record_mark_all_owed(VkCommandBuffer cmd) const {
+  m_mark_owed.dispatch(cmd, nullptr, groups_for(m_width * m_height));
+}
+
+ImageRGB Film::image() const {
+  const auto accum = accumulation.download_all<abi::PixelAccum>();
+  ImageRGB image;
+  image.width = m_width;
+  image.height = m_height;
+  image.rgb.resize(accum.size() * 3);
+  for (size_t i = 0; i < accum.size(); ++i) {
+    const uint32_t count = accum[i].count & abi::kPixelCountMask;
+    const glm::vec3 mean = count ? accum[i].sum * (1.0f / float(count)) : glm::vec3(0.0f);
+    for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = mean[c];
+  }
+  return image;
+}
+
+std::vector<uint32_t> Film::sample_counts() const {
+  const auto accum = accumulation.download_all<abi::PixelAccum>();
+  std::vector<uint32_t> counts(accum.size());
+  for (size_t i = 0; i < accum.size(); ++i) counts[i] = accum[i].count & abi::kPixelCountMask;
+  return counts;
+}
+
+std::vector<bool> Film::owed_pixels() const {
+  const auto accum = accumulation.download_all<abi::PixelAccum>();
+  std::vector<bool> owed(accum.size());
+  for (size_t i = 0; i < accum.size(); ++i) owed[i] = (accum[i].count & abi::kPixelOwed) != 0;
+  return owed;
+}
+
+RenderCounters Film::counters() const {
+  abi::RenderStats s{};
+  stats.download(&s, sizeof s);
+  return {s.rays, s.samples, s.nonFiniteSamples};
+}
+
+void Film::clear() {
+  accumulation.clear();
+  stats.clear();
+}
+
+}  // namespace hipr

@@ -1,0 +1,49 @@
+#include "render/frame_params.h"
+
+#include <cmath>
+
+#include "scene/default_camera.h"
+#include "shaders/shared/abi.h"
+
+namespace hipr {
+
+abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, const RenderSettings& s) {
+  const Camera camera = resolve_camera(scene);
+  abi::FrameParams f{};
+  f.cameraPosition = glm::vec3(camera.camera_to_world[3]);
+  f.cameraRight = glm::normalize(glm::vec3(camera.camera_to_world[0]));
+  f.cameraUp = glm::normalize(glm::vec3(camera.camera_to_world[1]));
+  f.cameraForward = -glm::normalize(glm::vec3(camera.camera_to_world[2]));
+  f.tanHalfFovY = std::tan(0.5f * camera.yfov);
+  f.aspect = float(s.width) / float(s.height);
+  f.seed = s.seed;
+  f.width = s.width;
+  f.height = s.height;
+  f.tileSize = s.tile_size;
+  f.tilesX = (s.width + s.tile_size - 1) / s.tile_size;
+  f.tilesY = (s.height + s.tile_size - 1) / s.tile_size;
+  f.tileCount = f.tilesX * f.tilesY;
+  f.maxDepth = s.max_depth;
+  f.lightCount = uint32_t(gpu.light_tables().lights.size());
+  f.environmentLight = gpu.light_tables().environment_index;
+  if (scene.environment) {
+    f.environmentWidth = scene.environment->width;
+    f.environmentHeight = scene.environment->height;
+    f.environmentIntensity = scene.environment->intensity;
+    f.environmentRotation = scene.environment->rotation;
+  }
+  set_discovery_parameters(f, s.hipr);
+  // Finite extents can still overflow a radius; unit scale then (the loader rejects non-finite data).
+  const float offset_scale = 2.0f * gpu.info().scene_radius;
+  f.rayOffsetScale = std::isfinite(offset_scale) ? offset_scale : 1.0f;
+  return f;
+}
+
+void set_discovery_parameters(abi::FrameParams& f, const HiprParameters& h) {
+  f.wLobe = glm::vec4(h.w_lobe[0], h.w_lobe[1], h.w_lobe[2], h.w_lobe[3]);
+  f.wPath = glm::vec3(h.w_path[0], h.w_path[1], h.w_path[2]);
+  f.wOcclusion = h.w_occlusion;
+  f.depthEpsilon = h.depth_epsilon;
+}
+
+}  // namespace hipr

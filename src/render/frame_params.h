@@ -1,0 +1,15 @@
+#pragma once
+// The FrameParams every kernel reads: camera, image and tile geometry, lights, environment and
+// HiPR's discovery weights, from the scene, its GPU form and the render settings.
+#include "hipr/renderer.h"
+#include "render/gpu_scene.h"
+#include "shaders/shared/abi.h"
+
+namespace hipr {
+
+abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, const RenderSettings& settings);
+
+// Copies the discovery parameters into `frame` (the rest stays).
+void set_discovery_parameters(abi::FrameParams& frame, const HiprParameters& parameters);
+
+}  // namespace hipr
