@@ -1,0 +1,147 @@
+// The scheduler drives any progressive renderer through the narrow ProgressiveRenderer
+// interface: a CPU fake that only records what it is asked proves that the policies need
+// nothing else, and pins down the step protocol (leading steps, rounds, display rules). Also
+// the edit pipeline, which diffs edits into change sets and skips edits that change nothing.
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "core/error.h"
+#include "hipr/edit_pipeline.h"
+#include "hipr/scene_loader.h"
+#include "hipr/scheduler.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+
+// HiPR's stages as calls: stage 1 reports `active` tiles.
+struct FakeStages final : HiprStageRunner {
+  uint32_t active = 3;
+  uint32_t stage1_calls = 0, schedule_builds = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> stage2;  // (offset, count) per call
+  uint32_t stage1_visibility(const ChangeSet&) override {
+    ++stage1_calls;
+    return active;
+  }
+  void stage2_discover(uint32_t offset, uint32_t count, uint32_t, std::optional<DisplayRule>) override {
+    stage2.emplace_back(offset, count);
+  }
+  void build_schedule() override { ++schedule_builds; }
+};
+
+// A renderer that renders nothing: it keeps the schedule and logs the calls.
+struct FakeRenderer final : ProgressiveRenderer {
+  TileGrid grid{32, 24, 8, 4, 3, 5};
+  std::vector<uint32_t> order;
+  std::vector<uint32_t> rendered;       // tile ids, in the order rendered
+  std::vector<uint32_t> samples_given;  // spp per render_schedule call
+  std::vector<std::optional<DisplayRule>> step_rules;
+  std::vector<DisplayRule> whole_resolves;
+  uint32_t captures = 0, owed_marks = 0, scene_updates = 0;
+  uint64_t samples = 0;
+  std::optional<FakeStages> stages;
+
+  TileGrid tile_grid() const override { return grid; }
+  void update_scene(const Scene&, const ChangeSet&) override { ++scene_updates; }
+  void set_schedule(std::span<const uint32_t> o) override { order.assign(o.begin(), o.end()); }
+  void render_schedule(uint32_t offset, uint32_t count, uint32_t spp, bool,
+                       std::optional<DisplayRule> then_resolve) override {
+    count = std::min(count, grid.tile_count() - offset);
+    for (uint32_t i = offset; i < offset + count; ++i) rendered.push_back(order[i]);
+    samples += uint64_t(count) * grid.tile_size * grid.tile_size * spp;
+    samples_given.push_back(spp);
+    step_rules.push_back(then_resolve);
+  }
+  void mark_all_owed() override { ++owed_marks; }
+  void resolve_display_all(DisplayRule rule) override { whole_resolves.push_back(rule); }
+  void capture_stale_display() override { ++captures; }
+  ImageRGB displayed_image() const override { return {grid.width, grid.height, {}}; }
+  void refresh_gbuffer() override {}
+  uint64_t samples_since_reset() const override { return samples; }
+  void reset_counters() override { samples = 0; }
+  HiprStageRunner* hipr_stages() override { return stages ? &*stages : nullptr; }
+};
+
+TEST(SchedulingInterface, BucketOrderRendersItsOrderInStepsAndShowsEachStep) {
+  FakeRenderer renderer;
+  Scheduler scheduler(renderer, Policy::Spiral, 5);
+  scheduler.set_first_visit_spp(2);
+  scheduler.on_edit(Scene{}, ChangeSet{});
+  EXPECT_EQ(renderer.captures, 1u);
+  EXPECT_EQ(renderer.owed_marks, 1u);
+  EXPECT_EQ(renderer.scene_updates, 1u);
+  EXPECT_EQ(renderer.order, tile_order(Policy::Spiral, 4, 3, 5));
+  for (int s = 0; s < 4; ++s) scheduler.step();  // 12 tiles: 5 + 5 + 2, then a second round
+  const std::vector<uint32_t> spiral = tile_order(Policy::Spiral, 4, 3, 5);
+  ASSERT_GE(renderer.rendered.size(), 12u);
+  EXPECT_EQ(std::vector<uint32_t>(renderer.rendered.begin(), renderer.rendered.begin() + 12), spiral);
+  EXPECT_EQ(renderer.samples_given, (std::vector<uint32_t>{2, 2, 2, 1}));  // first visits get more
+  for (const auto& rule : renderer.step_rules) EXPECT_EQ(rule, DisplayRule::Immediate);
+}
+
+TEST(SchedulingInterface, FullShowsWholePassesOnly) {
+  FakeRenderer renderer;
+  Scheduler scheduler(renderer, Policy::Full, 6);
+  scheduler.set_first_visit_spp(4);  // ignored: passes stay whole
+  scheduler.on_edit(Scene{}, ChangeSet{});
+  const size_t resolves_at_edit = renderer.whole_resolves.size();
+  scheduler.step();
+  EXPECT_EQ(renderer.whole_resolves.size(), resolves_at_edit);  // half a pass: nothing new shown
+  scheduler.step();
+  EXPECT_EQ(renderer.whole_resolves.size(), resolves_at_edit + 1);
+  for (const auto& rule : renderer.step_rules) EXPECT_FALSE(rule.has_value());
+  EXPECT_EQ(renderer.samples_given, (std::vector<uint32_t>{1, 1}));
+  EXPECT_DOUBLE_EQ(scheduler.work_since_edit(), 1.0);
+}
+
+TEST(SchedulingInterface, HiprRendersItsActiveTilesAsLeadingStepsThenTheSortedRest) {
+  FakeRenderer renderer;
+  renderer.stages.emplace();
+  Scheduler scheduler(renderer, Policy::Hipr, 2);
+  EXPECT_EQ(renderer.stages->stage1_calls, 1u);  // the G-buffer before any edit
+  std::vector<uint32_t> sorted(12);
+  std::iota(sorted.rbegin(), sorted.rend(), 0u);
+  renderer.set_schedule(sorted);
+  scheduler.on_edit(Scene{}, ChangeSet{});
+  EXPECT_EQ(renderer.stages->stage1_calls, 2u);
+  EXPECT_EQ(renderer.stages->schedule_builds, 1u);
+  EXPECT_TRUE(scheduler.leading_steps_pending());
+  scheduler.step();
+  scheduler.step();
+  EXPECT_EQ(renderer.stages->stage2, (std::vector<std::pair<uint32_t, uint32_t>>{{0, 2}, {2, 1}}));
+  EXPECT_FALSE(scheduler.leading_steps_pending());
+  EXPECT_EQ(renderer.stages->schedule_builds, 2u);  // stage 3 after the last active tile
+  scheduler.step();
+  EXPECT_EQ(renderer.rendered, (std::vector<uint32_t>{8, 7}));  // entries 3 and 4 of the order
+  for (const auto& rule : renderer.step_rules) EXPECT_EQ(rule, DisplayRule::Blend);
+}
+
+TEST(SchedulingInterface, HiprNeedsARendererWithItsStages) {
+  FakeRenderer renderer;
+  EXPECT_THROW(Scheduler(renderer, Policy::Hipr, 2), InputError);
+  EXPECT_THROW(make_policy(Policy::Oracle), InputError);  // hipr bench makes the oracle
+}
+
+TEST(EditPipeline, DiffsLikeAFullCopyAndSkipsEditsThatChangeNothing) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  FakeRenderer renderer;
+  Scheduler scheduler(renderer, Policy::Scanline, 4);
+  EditPipeline pipeline(scene, scheduler);
+  const Scene before = scene;
+  const Edit move = TransformEdit{"tall_block", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt};
+  const ChangeSet changes = pipeline.apply(move);
+  Scene expected = before;
+  apply_edit(expected, move);
+  const ChangeSet full = diff_scenes(before, expected);
+  EXPECT_EQ(changes.instances, full.instances);
+  EXPECT_TRUE(changes.transforms);
+  EXPECT_EQ(renderer.scene_updates, 1u);
+  EXPECT_TRUE(pipeline.apply(TransformEdit{"tall_block", glm::vec3(0.0f), std::nullopt}).empty());
+  EXPECT_EQ(renderer.scene_updates, 1u);  // nothing changed: no re-render
+  EXPECT_THROW(pipeline.apply(TransformEdit{"no_such_node", glm::vec3(1.0f), std::nullopt}), InputError);
+  EXPECT_EQ(renderer.scene_updates, 1u);
+}
+
+}  // namespace
+}  // namespace hipr
