@@ -1,10 +1,13 @@
 #version 460
-// HiPR stage 1, second half: a tile is active when a changed element is visible in it now or
-// was before the edit (pixels an object left changed too).
-// Reads: both G-buffers, the changed-record flags. Writes: kTileActive into the tile flags, and
-// per tile a change score that orders the active tiles: 1 per pixel showing a changed element,
-// 1 more where the pixel shows another surface than before (an object moved in or out: the
-// largest changes on screen, while a moved object's own inside often looks much as it did).
+// HiPR stage 1, last part: a tile is active when a changed element is visible in it now or
+// was before the edit (pixels an object left changed too), or when the screen shows a surface
+// the pixel no longer sees (left there by an earlier edit whose tiles were not re-rendered yet:
+// the starting point of a drag).
+// Reads: both G-buffers, the changed-record flags, the surface each displayed pixel depicts.
+// Writes: kTileActive into the tile flags, and per tile a change score that orders the active
+// tiles: 1 per pixel showing a changed element, 2 where the pixel shows another surface than
+// before or than the screen shows (an object moved in or out: the largest changes on screen,
+// while a moved object's own inside often looks much as it did).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -20,6 +23,7 @@ layout(scalar, binding = kMarkActivePrevious) readonly buffer Previous { GBuffer
 layout(scalar, binding = kMarkActiveChangedRecords) readonly buffer Changed { uint b_changed_records[]; };
 layout(scalar, binding = kMarkActiveTileFlags) buffer TileFlags { uint b_tile_flags[]; };
 layout(scalar, binding = kMarkActiveTileChange) buffer TileChange { uint b_tile_change[]; };
+layout(scalar, binding = kMarkActiveDisplay) readonly buffer Display { DisplayTexel b_display[]; };
 
 bool changed(uint record) { return record != kInvalidIndex && b_changed_records[record] != 0u; }
 
@@ -27,9 +31,11 @@ void main() {
   const uint index = dispatch_index();
   if (index >= u_frame.width * u_frame.height) return;
   const uint now = b_gbuffer[index].record, before = b_previous[index].record;
-  if (!changed(now) && !changed(before)) return;
+  const uint shown = b_display[index].shownRecord;
+  const bool wrongSurface = shown != kRecordUnknown && shown != now;
+  if (!changed(now) && !changed(before) && !wrongSurface) return;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
   const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
   atomicOr(b_tile_flags[tile], kTileActive);
-  atomicAdd(b_tile_change[tile], now != before ? 2u : 1u);
+  atomicAdd(b_tile_change[tile], now != before || wrongSurface ? 2u : 1u);
 }

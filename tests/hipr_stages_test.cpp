@@ -3,14 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
 #include <random>
 
+#include "hipr/edit_pipeline.h"
 #include "hipr/edits.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
+#include "hipr/scheduler.h"
 #include "render/radix_sorter.h"
+#include "shaders/shared/abi.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -242,6 +246,77 @@ TEST(HiprStages, StagesRunOnAFreshRenderer) {
   renderer.hipr_stages()->build_schedule();
   EXPECT_GT(count_flag(renderer.tile_flags(), 1), 0u);
   EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
+}
+
+// ---- Edits in a row (a drag): what the screen shows wrongly stays first.
+
+std::vector<bool> tiles_where(const std::vector<uint32_t>& instances, const Renderer& renderer,
+                              const std::function<bool(uint32_t pixel)>& test) {
+  const RenderSettings& s = renderer.settings();
+  std::vector<bool> tiles(renderer.tile_count(), false);
+  for (uint32_t i = 0; i < instances.size(); ++i)
+    if (test(i)) tiles[(i / s.width / s.tile_size) * renderer.tiles_x() + (i % s.width) / s.tile_size] = true;
+  return tiles;
+}
+
+uint32_t instance_of_node(const Scene& scene, const std::string& name) {
+  const std::vector<Instance> instances = scene.instances();
+  for (uint32_t i = 0; i < instances.size(); ++i)
+    if (scene.nodes[instances[i].node].name == name) return i;
+  return UINT32_MAX;
+}
+
+// Two moves without a step between them: the tiles the block covered before the first move
+// belong to neither of the last two G-buffers, yet they still show the block.
+TEST(HiprStages, TilesAnObjectLeftTwoEditsAgoStayActive) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(2);
+  Scheduler scheduler(renderer, Policy::Hipr, 4);
+  EditPipeline pipeline(scene, scheduler);
+  const uint32_t block = instance_of_node(scene, "tall_block");
+  const std::vector<uint32_t> start = renderer.gbuffer_instances();
+  const Edit move = TransformEdit{"tall_block", glm::vec3(0.12f, 0.0f, 0.0f), std::nullopt};
+  pipeline.apply(move);
+  const std::vector<uint32_t> first = renderer.gbuffer_instances();
+  pipeline.apply(move);
+  const std::vector<uint32_t> second = renderer.gbuffer_instances();
+  const std::vector<uint32_t> flags = renderer.tile_flags();
+  const std::vector<bool> left = tiles_where(start, renderer, [&](uint32_t p) {
+    return start[p] == block && first[p] != block && second[p] != block;
+  });
+  size_t checked = 0;
+  for (uint32_t t = 0; t < left.size(); ++t) {
+    if (!left[t]) continue;
+    ++checked;
+    EXPECT_TRUE(flags[t] & abi::kTileActive) << "tile " << t << " still shows the block's first place";
+  }
+  EXPECT_GT(checked, 0u) << "the moves must uncover tiles";
+}
+
+// A tile the last edit discovered (a shadow the block cast, light it bounced) and that was not
+// re-rendered before the next edit keeps its rank: the screen still shows the old shadow there.
+TEST(HiprStages, DiscoveredTilesNotYetRenderedKeepTheirRankAtTheNextEdit) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(2);
+  Scheduler scheduler(renderer, Policy::Hipr, 4);
+  EditPipeline pipeline(scene, scheduler);
+  pipeline.apply(TransformEdit{"tall_block", glm::vec3(0.12f, 0.0f, 0.0f), std::nullopt});
+  while (scheduler.leading_steps_pending()) scheduler.step();  // stage 2 done, stage 3 not begun
+  const std::vector<uint32_t> flags1 = renderer.tile_flags();
+  const std::vector<double> weights1 = renderer.tile_weights();
+  pipeline.apply(TransformEdit{"short_block", glm::vec3(0.0f, 0.0f, 0.05f), std::nullopt});
+  const std::vector<uint32_t> flags2 = renderer.tile_flags();
+  const std::vector<double> weights2 = renderer.tile_weights();
+  size_t discovered = 0;
+  for (uint32_t t = 0; t < flags1.size(); ++t) {
+    if ((flags1[t] & abi::kTileDiscovered) == 0 || (flags1[t] & abi::kTileActive) != 0) continue;
+    ++discovered;
+    EXPECT_TRUE(flags2[t] & (abi::kTileActive | abi::kTileDiscovered)) << "tile " << t;
+    EXPECT_GE(weights2[t], weights1[t]) << "tile " << t;
+  }
+  EXPECT_GT(discovered, 0u);
 }
 
 }  // namespace

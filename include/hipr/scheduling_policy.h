@@ -45,9 +45,10 @@ class SchedulingPolicy {
 
   // Before any edit, on the scene as loaded (HiPR: the first G-buffer).
   virtual void start(ProgressiveRenderer& renderer) { (void)renderer; }
-  // After an edit (the renderer already holds the edited scene): puts the order in the
-  // renderer's schedule. Returns how many leading schedule entries the policy renders itself
-  // (render_leading), 0 when the schedule is rendered as it is.
+  // After an edit (the renderer already holds the edited scene; pixels not re-rendered since
+  // the previous edit still owe its restart, the new one is marked after this): puts the order
+  // in the renderer's schedule. Returns how many leading schedule entries the policy renders
+  // itself (render_leading), 0 when the schedule is rendered as it is.
   virtual uint32_t plan(ProgressiveRenderer& renderer, const ChangeSet& changes) = 0;
   // Renders leading entries [offset, offset + count) (HiPR: stage 2, with discovery).
   virtual void render_leading(ProgressiveRenderer& renderer, uint32_t offset, uint32_t count, uint32_t samples_per_pixel,

@@ -7,18 +7,34 @@
 
 namespace hipr {
 
-ActiveTilesPass::ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles,
-                                 const GBufferPass& gbuffers, uint32_t pixels)
+ActiveTilesPass::ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
+                                 const GBufferPass& gbuffers, const vk::Buffer& display,
+                                 const vk::Buffer& tile_weights, uint32_t pixels)
     : changed_records(ctx, std::max<size_t>(scene.record_count(), 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       tile_change(ctx, size_t(tiles.count()) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_pixels(pixels),
+      m_tiles(tiles.count()),
+      m_carry(ctx, "carry_tiles.comp", {},
+              {{abi::kCarryAccumulation, &film.accumulation},
+               {abi::kCarryTileFlags, &tiles.flags},
+               {abi::kCarryTileWeights, &tile_weights},
+               {abi::kCarryTileChange, &tile_change}},
+              sizeof(uint32_t), &scene.descriptor_set()),
       m_mark_active(ctx, "mark_active.comp", {},
                     {{abi::kMarkActiveGBuffer, &gbuffers.current},
                      {abi::kMarkActivePrevious, &gbuffers.previous},
                      {abi::kMarkActiveChangedRecords, &changed_records},
                      {abi::kMarkActiveTileFlags, &tiles.flags},
-                     {abi::kMarkActiveTileChange, &tile_change}},
-                    0, &scene.descriptor_set()) {}
+                     {abi::kMarkActiveTileChange, &tile_change},
+                     {abi::kMarkActiveDisplay, &display}},
+                    0, &scene.descriptor_set()) {
+  tile_change.clear();
+}
+
+void ActiveTilesPass::record_carry(VkCommandBuffer cmd, bool everything) const {
+  const uint32_t push = everything ? 1u : 0u;
+  m_carry.dispatch(cmd, &push, groups_for(m_tiles));
+}
 
 void ActiveTilesPass::set_changed(const GpuScene& scene, const ChangeSet& changes) {
   // One pass over the records: a flag per instance, then each record looks up its own.

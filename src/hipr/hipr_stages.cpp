@@ -15,12 +15,14 @@ abi::TracePush no_tile_push(const TracePass& pass, uint32_t tile_count) {
 HiprStages::HiprStages(const RenderParts& parts, uint32_t kernel_features)
     : m_parts(parts),
       m_tile_weights(parts.ctx, size_t(parts.tiles.count()) * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      m_active(parts.ctx, parts.scene, parts.tiles, parts.gbuffers, parts.settings.width * parts.settings.height),
+      m_active(parts.ctx, parts.scene, parts.tiles, parts.film, parts.gbuffers, parts.resolve.display, m_tile_weights,
+               parts.settings.width * parts.settings.height),
       m_discovery(parts.ctx, parts.scene, parts.tiles, parts.film, parts.settings, kernel_features,
                   {{abi::kTraceGBuffer, &parts.gbuffers.current},
                    {abi::kTraceChangedRecords, &m_active.changed_records},
                    {abi::kTraceTileWeights, &m_tile_weights}}),
       m_schedule(parts.ctx, parts.scene, parts.tiles, m_tile_weights, m_active.tile_change) {
+  m_tile_weights.clear();
   parts.gbuffers.render();
 }
 
@@ -31,10 +33,8 @@ uint32_t HiprStages::stage1_visibility(const ChangeSet& changes) {
   const bool everything = changes.camera || !changes.lights.empty() || changes.environment;
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     m_parts.gbuffers.record_keep_previous(cmd);
-    vkCmdFillBuffer(cmd, m_parts.tiles.flags.handle(), 0, VK_WHOLE_SIZE, everything ? abi::kTileActive : 0u);
-    vkCmdFillBuffer(cmd, m_tile_weights.handle(), 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cmd, m_active.tile_change.handle(), 0, VK_WHOLE_SIZE, 0);
     vk::transfer_to_compute_barrier(cmd);
+    m_active.record_carry(cmd, everything);
     m_parts.gbuffers.record(cmd);
     vk::compute_to_compute_barrier(cmd);
     m_active.record(cmd);

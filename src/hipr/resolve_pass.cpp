@@ -24,7 +24,14 @@ ResolvePass::ResolvePass(const vk::Context& ctx, const GpuScene& scene, const Ti
                  {abi::kResolveDisplay, &display},
                  {abi::kResolveGBuffer, &gbuffers.current}},
                 sizeof(abi::ResolvePush), &scene.descriptor_set()) {
-  display.clear();
+  clear();
+}
+
+void ResolvePass::clear() {
+  abi::DisplayTexel black{};
+  black.shownRecord = black.staleRecord = abi::kRecordUnknown;
+  const std::vector<abi::DisplayTexel> texels(size_t(m_width) * m_height, black);
+  display.upload(texels.data(), texels.size() * sizeof(abi::DisplayTexel));
 }
 
 void ResolvePass::record(VkCommandBuffer cmd, const Tiles& tiles, DisplayRule rule) const {

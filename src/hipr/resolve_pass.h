@@ -34,7 +34,8 @@ class ResolvePass {
   void record_capture_stale(VkCommandBuffer cmd, uint32_t tile_count) const;
 
   ImageRGB displayed_image() const;
-  void clear() { display.clear(); }
+  // Black everywhere, depicting no known surface.
+  void clear();
 
   vk::Buffer display;  // DisplayTexel per pixel
 

@@ -43,10 +43,12 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   m_edited = true;
   m_cursor = 0;
   m_first_round = true;
-  m_renderer.mark_all_owed();
-  // With no leading step (HiPR when nothing visible changed) the schedule starts at once.
+  // Planned while the pixels' owed bits still say which tiles earlier edits left unrendered
+  // (HiPR keeps those ranked), then every pixel owes a restart. With no leading step (HiPR when
+  // nothing visible changed) the schedule starts at once.
   m_leading = std::min(m_policy->plan(m_renderer, changes), m_tile_count);
   m_leading_cursor = 0;
+  m_renderer.mark_all_owed();
   m_overhead_seconds += schedule_timer.seconds();
 }
 

@@ -1,4 +1,5 @@
-// Set 0 of HiPR stage 1 (VisibilityPass): visibility.comp and mark_active.comp.
+// Set 0 of the G-buffer pass (visibility.comp) and of HiPR stage 1 (ActiveTilesPass:
+// carry_tiles.comp and mark_active.comp).
 // Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
 // binding numbers, named by the kernel's GLSL layouts and by its C++ pass.
 #ifndef HIPR_BINDINGS_VISIBILITY_H
@@ -18,6 +19,12 @@ HIPR_CONST uint kMarkActivePrevious = 1u;        // GBufferTexel per pixel, befo
 HIPR_CONST uint kMarkActiveChangedRecords = 2u;  // uint per GeometryRecord: 1 = in the changed set E
 HIPR_CONST uint kMarkActiveTileFlags = 3u;       // uint per tile: kTileActive is set here
 HIPR_CONST uint kMarkActiveTileChange = 4u;      // uint per tile: how much of it stage 1 saw change
+HIPR_CONST uint kMarkActiveDisplay = 5u;         // DisplayTexel per pixel: which surface the screen shows
+// carry_tiles.comp
+HIPR_CONST uint kCarryAccumulation = 0u;  // PixelAccum per pixel: the owed bit
+HIPR_CONST uint kCarryTileFlags = 1u;     // uint per tile: rewritten for the new edit
+HIPR_CONST uint kCarryTileWeights = 2u;   // uint64 per tile: kept where carried, else 0
+HIPR_CONST uint kCarryTileChange = 3u;    // uint per tile: kept where carried, else 0
 
 #ifdef __cplusplus
 }  // namespace hipr::abi
