@@ -376,4 +376,32 @@ TEST(Bench, WritesCurvesSummaryAndPlot) {
 }
 
 }  // namespace
+// `hipr bench --drag`: the edits as one drag, measured against the scene as it is at each step;
+// every policy still ends on the same image.
+TEST(Bench, DragMeasuresDuringAndAfterTheDrag) {
+  const fs::path dir = test::temp_dir("bench_drag");
+  const test::CommandResult result = test::run_hipr(
+      "bench " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(test::asset("cornell_box.edits.json")) +
+      " --drag 0.25 --policies hipr,full,oracle --width 24 --height 24 --tile 8 --spp 2 --ref-spp 8 --max-depth 3 -q"
+      " --no-ref-cache -o " + quoted(dir));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  std::ifstream summary_file(dir / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(summary_file);
+  ASSERT_EQ(summary.at("edits").size(), 1u) << "one drag";
+  const auto& policies = summary.at("edits")[0].at("policies");
+  const double final_relmse = policies.at("hipr").at("final_relmse");
+  for (const auto& [name, p] : policies.items()) {
+    EXPECT_GE(p.at("drag_work").get<double>(), 0.25) << name << ": the second edit comes after 0.25 work";
+    for (const char* key : {"auc_relmse_during_drag", "auc_flip_during_drag", "auc_relmse_after_drag", "auc_flip_after_drag"})
+      EXPECT_TRUE(p.contains(key)) << name << " " << key;
+    EXPECT_TRUE(p.at("converged").get<bool>()) << name;
+    EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse) << name << ": every policy ends on the same image";
+  }
+  EXPECT_GT(summary.at("ratios").at("hipr_vs_full_auc_relmse_during_drag").get<double>(), 0.0);
+  EXPECT_EQ(test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " +
+                           quoted(test::asset("cornell_box.edits.json")) + " --drag -1 -o " + quoted(dir / "bad"))
+                .exit_code,
+            kExitBadInput);
+}
+
 }  // namespace hipr

@@ -36,6 +36,23 @@ else
   echo "(no $shared: the real-scene benchmarks are skipped)"
 fi
 
+# Drags: 20 small moves in a row, one every 1/16 of a frame's work, in steps of 1/64 of the frame
+# (as the viewer spends a frame's budget), for hipr and full.
+drag() {
+  local name=$1
+  shift
+  echo "== drag $name"
+  rm -rf "${out:?}/drag_$name"
+  local tiles=$(((size / 8) * (size / 8) / 64))
+  build/hipr bench "$@" -o "$out/drag_$name" --width "$size" --height "$size" --spp "$spp" --drag 0.0625 \
+    --tiles-per-step $((tiles > 0 ? tiles : 1)) --policies hipr,full --ref-spp 256
+}
+drag cornell_box assets/scenes/cornell_box.gltf tools/bench/cornell_box.drag.json
+drag cornell_sphere assets/scenes/cornell_sphere.glb tools/bench/cornell_sphere.drag.json
+if [ -d "$shared" ]; then
+  drag CornellBox "$shared/CornellBox/cornellBox.gltf" tools/bench/CornellBox.drag.json
+fi
+
 # Throughput: three interleaved rounds, so a noisy neighbour hits every configuration alike.
 render() {
   local name=$1 scene=$2

@@ -74,6 +74,26 @@ def ratio_lines(summaries):
     return lines
 
 
+def drag_table(drags):
+    """Drags (hipr bench --drag): mean error while dragging and over the work unit after it."""
+    lines = ["#### Drags: 20 small moves in a row (`hipr bench --drag`), mean error while dragging and after", "",
+             "| scene | drag | policy | drag work | relMSE during | FLIP during | relMSE after | FLIP after |",
+             "|---|---|---|---:|---:|---:|---:|---:|"]
+    for scene, summary in drags:
+        for edit in summary["edits"]:
+            for name, p in edit["policies"].items():
+                if "drag_work" not in p:
+                    continue
+                lines.append(f"| {scene} | {edit['name']} | {name} | {p['drag_work']:.3f} "
+                             f"| {p['auc_relmse_during_drag']:.4g} | {p['auc_flip_during_drag']:.4g} "
+                             f"| {p['auc_relmse_after_drag']:.4g} | {p['auc_flip_after_drag']:.4g} |")
+    if drags and "hipr" in drags[0][1]["edits"][0]["policies"]:
+        lines += ["", "hipr / full, geometric mean over the drags: " + ", ".join(
+            f"{metric} {phase} {geomean([s['ratios'][f'hipr_vs_full_auc_{metric}_{phase}_drag'] for _, s in drags if s['ratios'].get(f'hipr_vs_full_auc_{metric}_{phase}_drag')]):.3f}"
+            for phase in ["during", "after"] for metric in ["relmse", "flip"])]
+    return lines
+
+
 def throughput_lines(folder):
     runs = {}
     for path in sorted(glob.glob(os.path.join(folder, "throughput", "*.json"))):
@@ -103,10 +123,11 @@ def throughput_lines(folder):
 def main(argv):
     if len(argv) != 2:
         sys.exit(__doc__)
-    summaries = []
+    summaries, drags = [], []
     for path in sorted(glob.glob(os.path.join(argv[1], "*", "summary.json"))):
         with open(path) as f:
-            summaries.append((os.path.basename(os.path.dirname(path)), json.load(f)))
+            name = os.path.basename(os.path.dirname(path))
+            (drags if name.startswith("drag_") else summaries).append((name.removeprefix("drag_"), json.load(f)))
     out = []
     if summaries:
         out += auc_table(summaries, "auc_relmse", "relMSE AUC over the first work unit (lower is better)") + [""]
@@ -114,6 +135,8 @@ def main(argv):
         out += auc_table(summaries, "auc_relmse_4", "relMSE AUC over the first 4 work units") + [""]
         out += ratio_lines(summaries) + [""]
         out += feedback_table(summaries) + [""]
+    if drags:
+        out += drag_table(drags) + [""]
     out += throughput_lines(argv[1])
     print("\n".join(out))
 

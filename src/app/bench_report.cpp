@@ -52,6 +52,14 @@ nlohmann::json policy_summary(const bench::PolicyRun& run) {
   j["final_flip"] = run.curve.back().flip;
   j["final_work"] = run.curve.back().work;
   j["nonfinite_samples"] = run.non_finite_samples;
+  if (run.drag_work > 0.0) {  // a drag: the mean error while dragging and over the work unit after it
+    j["drag_work"] = run.drag_work;
+    for (const auto& [name, metric] : {std::pair{"relmse", bench::Metric::RelMse}, std::pair{"flip", bench::Metric::Flip}}) {
+      j[std::string("auc_") + name + "_during_drag"] = bench::error_mean(run.curve, metric, 0.0, run.drag_work);
+      j[std::string("auc_") + name + "_after_drag"] =
+          bench::error_mean(run.curve, metric, run.drag_work, run.drag_work + 1.0);
+    }
+  }
   return j;
 }
 
@@ -97,6 +105,13 @@ nlohmann::json BenchReport::summary() const {
       for (double h : {4.0, 16.0})
         ratios[std::string("hipr_vs_") + other + "_" + auc_key(metric, h)] =
             ratio(edits, "hipr", other, auc_key(metric, h));
+      for (const char* phase : {"_during_drag", "_after_drag"}) {
+        const std::string key = std::string("auc_") + metric + phase;
+        bool drag = !edits.empty();
+        for (const auto& edit : edits)
+          for (const auto& [policy, summary] : edit.at("policies").items()) drag = drag && summary.contains(key);
+        if (drag) ratios[std::string("hipr_vs_") + other + "_" + key] = ratio(edits, "hipr", other, key);
+      }
     }
   return {{"scene", m_scene}, {"settings", m_settings}, {"edits", edits}, {"ratios", ratios}};
 }

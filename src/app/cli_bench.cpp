@@ -5,7 +5,9 @@
 // and, per edit, the reference and what each policy shows after 0.25 and 1 work units.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -18,6 +20,7 @@
 #include "core/log.h"
 #include "core/timer.h"
 #include "hipr/edits.h"
+#include "hipr/scene_diff.h"
 #include "shaders/shared/abi.h"
 
 namespace hipr::app {
@@ -45,6 +48,7 @@ struct BenchOptions {
   std::string display;  // hipr and oracle: blend (default), switch or immediate
   fs::path ref_cache;
   bool no_ref_cache = false;
+  double drag = 0.0;  // > 0: the edits are one drag, this much work apart (full-frame passes)
 };
 
 // The edits' own JSON text, one per edit: with the scene's hash it names a scene state.
@@ -71,6 +75,50 @@ std::vector<uint32_t> changed_tiles_and_warm_up(Renderer& renderer, const Render
   return tiles;
 }
 
+// The edits as one drag: every scene state and its reference first, then each policy from
+// the converged scene before the drag.
+void run_drag_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& renderer, const Scene& scene,
+                    const std::vector<Edit>& edits, const std::vector<std::string>& texts, const fs::path& cache,
+                    const std::vector<Policy>& policies, bench::PolicyRunOptions run_options,
+                    const std::function<DisplayRule(Policy)>& display_of, BenchReport& report) {
+  std::vector<Scene> states = {scene};
+  std::vector<ChangeSet> changes;
+  std::vector<ImageRGB> references;
+  std::string state;
+  for (size_t e = 0; e < edits.size(); ++e) {
+    states.push_back(states.back());
+    apply_edit(states.back(), edits[e]);
+    changes.push_back(diff_scenes(states[e], states.back()));
+    state += texts[e];
+    const bench::Reference reference = bench::converged_reference(
+        ctx, states.back(), bench::reference_key(states.back(), state, o.common.render, o.ref_spp), o.common.render,
+        o.ref_spp, cache);
+    references.push_back(reference.image);
+  }
+  log::info("drag of " + std::to_string(edits.size()) + " edits: references ready");
+  bench::converge(renderer, o.common.spp);  // the renderer holds the scene before the drag
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const RenderSnapshot start = renderer.snapshot();
+  const ChangeSet whole = diff_scenes(states.front(), states.back()), undo = diff_scenes(states.back(), states.front());
+  changed_tiles_and_warm_up(renderer, start, states.back(), whole);  // compiles what the drag needs
+  char spacing[32];
+  std::snprintf(spacing, sizeof spacing, "%g", o.drag);
+  BenchEdit& edit_report = report.add_edit("drag: " + std::to_string(edits.size()) + " edits " + spacing +
+                                               " passes apart, first " + describe(edits.front()),
+                                           references.back(), 0, renderer.tile_count());
+  for (Policy policy : policies) {
+    renderer.update_scene(states.front(), undo);
+    run_options.policy = policy;
+    run_options.display = display_of(policy);
+    const bench::PolicyRun run = bench::run_drag(renderer, states, changes, start, references, o.drag, run_options);
+    edit_report.add_run(policy_name(policy), run);
+    log::info("  " + policy_name(policy) + ": relMSE during the drag " +
+              std::to_string(bench::error_mean(run.curve, bench::Metric::RelMse, 0.0, run.drag_work)) +
+              ", over the work unit after it " +
+              std::to_string(bench::error_mean(run.curve, bench::Metric::RelMse, run.drag_work, run.drag_work + 1.0)));
+  }
+}
+
 int run_bench(BenchOptions& o) {
   validate_common_options(o.common);
   log::set_quiet(o.common.quiet);
@@ -89,6 +137,8 @@ int run_bench(BenchOptions& o) {
   if (o.first_visit_spp > o.common.spp)
     throw InputError("--first-visit-spp must be between 1 and --spp");
   if (o.first_visit_spp == 0) o.first_visit_spp = std::min(2u, o.common.spp);
+  if (!std::isfinite(o.drag) || o.drag < 0.0 || o.drag > 1024.0)
+    throw InputError("--drag must be a work between edits from 0 to 1024 full-frame passes");
   // hipr and the oracle share a display rule: the comparison is of orders, not of displays.
   const DisplayRule ordered_display =
       o.display.empty() ? default_display_rule(Policy::Hipr) : parse_display_rule(o.display);
@@ -132,10 +182,20 @@ int run_bench(BenchOptions& o) {
                                    {"first_visit_spp", run_options.first_visit_spp},
                                    {"display_hipr_oracle", display_rule_name(ordered_display)},
                                    {"steps", o.steps},
+                                   {"drag_steps_per_edit", o.drag},
                                    {"max_depth", settings.max_depth},
                                    {"seed", settings.seed},
                                    {"device", ctx.device_name()}};
   BenchReport report(o.common.scene.filename().string(), recorded, o.output);
+  const auto display_of = [&](Policy policy) {
+    return policy == Policy::Hipr || policy == Policy::Oracle ? ordered_display : default_display_rule(policy);
+  };
+  if (o.drag) {
+    run_drag_bench(o, ctx, renderer, scene, edits, texts, cache, policies, run_options, display_of, report);
+    check_validation(ctx);
+    report.write();
+    return kExitOk;
+  }
   std::string state;  // the edits applied so far
   for (size_t e = 0; e < edits.size(); ++e) {
     const Scene before = scene;
@@ -163,9 +223,7 @@ int run_bench(BenchOptions& o) {
     for (Policy policy : policies) {
       renderer.update_scene(before, undo);
       run_options.policy = policy;
-      run_options.display = policy == Policy::Hipr || policy == Policy::Oracle
-                                ? ordered_display
-                                : default_display_rule(policy);
+      run_options.display = display_of(policy);
       const bench::PolicyRun run =
           bench::run_policy(renderer, scene, changes, start, reference.image, changed, run_options);
       edit_report.add_run(policy_name(policy), run);
@@ -211,6 +269,9 @@ Command add_bench_command(CLI::App& app) {
                   "Folder of cached references (default: beside the shader cache)");
   cmd->add_flag("--no-ref-cache", options->no_ref_cache,
                 "Render references without reading or writing the cache");
+  cmd->add_option("--drag", options->drag,
+                  "Apply the edits as one drag, this much work apart in full-frame passes (as a viewer applies "
+                  "one per frame), measuring against the scene as it is at each step");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_bench(*options); }};
 }

@@ -24,5 +24,7 @@ double metric_of(const CurvePoint& point, Metric metric);
 // stays on screen until point i + 1 (a step function of work); past the last point its error
 // holds. Points must be in increasing work, starting at work 0.
 double error_auc(const ErrorCurve& curve, Metric metric, double horizon);
+// The same over the work interval [from, to] (to > from >= 0).
+double error_mean(const ErrorCurve& curve, Metric metric, double from, double to);
 
 }  // namespace hipr::bench

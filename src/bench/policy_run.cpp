@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bench/oracle_policy.h"
+#include "core/error.h"
 #include "core/timer.h"
 #include "shaders/shared/abi.h"
 
@@ -69,6 +70,67 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
     if (run.converged) break;
   }
   run.overhead_seconds = scheduler.overhead_seconds();
+  run.wall_seconds = wall;
+  run.non_finite_samples = renderer.counters().non_finite_samples;
+  run.final_image = scheduler.displayed_image();
+  while (run.captures.size() < options.capture_work.size())
+    run.captures.emplace_back(options.capture_work[run.captures.size()], run.final_image);
+  return run;
+}
+
+PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const std::vector<ChangeSet>& changes,
+                   const RenderSnapshot& start, const std::vector<ImageRGB>& references,
+                   double work_per_edit, const PolicyRunOptions& options) {
+  if (changes.empty() || states.size() != changes.size() + 1 || references.size() != changes.size())
+    throw InternalError("a drag needs a scene state and a reference after every edit");
+  renderer.restore(start);
+  ImageRGB reference = references.front();  // the oracle reads the current one at each edit
+  Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step,
+                      options.visit_spp);
+  if (options.display) scheduler.set_display_rule(*options.display);
+  scheduler.set_first_visit_spp(options.first_visit_spp);
+
+  PolicyRun run;
+  double wall = 0.0, overhead = 0.0, work_before = 0.0;  // work_before: of the edits before the current one
+  uint32_t step = 0;
+  const auto evaluate = [&](double work) {
+    const ImageRGB shown = scheduler.displayed_image();
+    run.curve.push_back({step, work, wall * 1e3, relmse(shown, reference), flip_mean(shown, reference, options.flip)});
+    while (run.captures.size() < options.capture_work.size() && work >= options.capture_work[run.captures.size()])
+      run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
+  };
+  evaluate(0.0);  // the image before the drag, against the scene after its first edit
+  for (size_t e = 0; e < changes.size(); ++e) {
+    if (e > 0) {
+      work_before += scheduler.work_since_edit();
+      overhead += scheduler.overhead_seconds();
+    }
+    reference = references[e];
+    {
+      const Timer timer;
+      scheduler.on_edit(states[e + 1], changes[e]);
+      wall += timer.seconds();
+    }
+    const bool last = e + 1 == changes.size();
+    if (last) run.drag_work = work_before;
+    for (;;) {
+      const double work = scheduler.work_since_edit();
+      if (last ? work >= double(options.target_spp) || (options.max_steps && step >= options.max_steps)
+               : work >= work_per_edit)
+        break;
+      const Timer timer;
+      scheduler.step();
+      wall += timer.seconds();
+      ++step;
+      // Every step during the drag; after it, as run_policy thins its evaluations.
+      const double since_drag = last ? scheduler.work_since_edit() : 0.0;
+      const bool done = last && scheduler.work_since_edit() >= double(options.target_spp);
+      if (since_drag <= options.dense_until || done || step % std::max(options.sparse_every, 1u) == 0)
+        evaluate(work_before + scheduler.work_since_edit());
+    }
+  }
+  run.converged = scheduler.work_since_edit() >= double(options.target_spp);
+  run.overhead_seconds = overhead + scheduler.overhead_seconds();
   run.wall_seconds = wall;
   run.non_finite_samples = renderer.counters().non_finite_samples;
   run.final_image = scheduler.displayed_image();

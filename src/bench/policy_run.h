@@ -41,6 +41,8 @@ struct PolicyRun {
   ImageRGB final_image;
   // Per capture_work entry: (that work, the first image shown with at least that much work).
   std::vector<std::pair<double, ImageRGB>> captures;
+  // A drag (run_drag): the work at the last of its edits; -1 for a single edit.
+  double drag_work = -1.0;
 };
 
 // `renderer` holds the scene `before` the edit; `start` is the state every policy starts from.
@@ -48,5 +50,15 @@ struct PolicyRun {
 PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes,
                      const RenderSnapshot& start, const ImageRGB& reference,
                      const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options);
+
+// A drag: the edits one after another, `work_per_edit` apart (steps run until the current
+// edit has that much work: a viewer applies one per frame, and a frame has a budget), then
+// steps until converged. `states[0]` is the scene the renderer holds, and
+// `states[i + 1]` the scene after edit i (`changes[i]`), with its converged render
+// `references[i]`: every step is measured against the scene as it is at that step. Work counts
+// from the first edit. No feedback or changed-tile times (they belong to one edit).
+PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const std::vector<ChangeSet>& changes,
+                   const RenderSnapshot& start, const std::vector<ImageRGB>& references,
+                   double work_per_edit, const PolicyRunOptions& options);
 
 }  // namespace hipr::bench
