@@ -1,7 +1,7 @@
 #pragma once
-// Scene edits: what an artist does in the viewer or an edit script describes (docs/method.md#command-line-and-edit-scripts,
-// "Edit scripts"). Edits name nodes and materials by glTF name or "#index"; anything unknown
-// is an InputError naming it, never silently ignored.
+// Scene edits: what an artist does in the viewer or an edit script describes
+// (docs/method.md#command-line-and-edit-scripts). Edits name nodes and materials by glTF name or
+// "#index"; anything unknown is an InputError naming it, never silently ignored.
 #include <array>
 #include <filesystem>
 #include <optional>

@@ -51,8 +51,8 @@ class SchedulingPolicy {
   // itself (render_leading), 0 when the schedule is rendered as it is.
   virtual uint32_t plan(ProgressiveRenderer& renderer, const ChangeSet& changes) = 0;
   // Renders leading entries [offset, offset + count) (HiPR: stage 2, with discovery).
-  virtual void render_leading(ProgressiveRenderer& renderer, uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
-                              std::optional<DisplayRule> then_resolve) {
+  virtual void render_leading(ProgressiveRenderer& renderer, uint32_t offset, uint32_t count,
+                              uint32_t samples_per_pixel, std::optional<DisplayRule> then_resolve) {
     (void)renderer, (void)offset, (void)count, (void)samples_per_pixel, (void)then_resolve;
   }
   // After the last leading entry: orders the rest (HiPR: stage 3, from stage 2's weights).

@@ -182,7 +182,7 @@ int run_bench(BenchOptions& o) {
                                    {"first_visit_spp", run_options.first_visit_spp},
                                    {"display_hipr_oracle", display_rule_name(ordered_display)},
                                    {"steps", o.steps},
-                                   {"drag_steps_per_edit", o.drag},
+                                   {"drag_work_per_edit", o.drag},
                                    {"max_depth", settings.max_depth},
                                    {"seed", settings.seed},
                                    {"device", ctx.device_name()}};

@@ -1,5 +1,6 @@
 #pragma once
-// Options shared by every subcommand (the CLI contract in docs/method.md#command-line-and-edit-scripts) and their validation.
+// Options shared by every subcommand and their validation (the CLI contract:
+// docs/method.md#command-line-and-edit-scripts).
 #include <CLI/CLI.hpp>
 
 #include <filesystem>

@@ -16,6 +16,17 @@ bool all_shown(const std::vector<uint32_t>& flags, const std::vector<uint32_t>& 
   return true;
 }
 
+// The run's totals and the image it ends on; captures not reached take that image.
+void finish(PolicyRun& run, const Scheduler& scheduler, double overhead_seconds, double wall_seconds,
+            uint32_t non_finite_samples, const PolicyRunOptions& options) {
+  run.overhead_seconds = overhead_seconds;
+  run.wall_seconds = wall_seconds;
+  run.non_finite_samples = non_finite_samples;
+  run.final_image = scheduler.displayed_image();
+  while (run.captures.size() < options.capture_work.size())
+    run.captures.emplace_back(options.capture_work[run.captures.size()], run.final_image);
+}
+
 }  // namespace
 
 PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes,
@@ -69,12 +80,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
     }
     if (run.converged) break;
   }
-  run.overhead_seconds = scheduler.overhead_seconds();
-  run.wall_seconds = wall;
-  run.non_finite_samples = renderer.counters().non_finite_samples;
-  run.final_image = scheduler.displayed_image();
-  while (run.captures.size() < options.capture_work.size())
-    run.captures.emplace_back(options.capture_work[run.captures.size()], run.final_image);
+  finish(run, scheduler, scheduler.overhead_seconds(), wall, renderer.counters().non_finite_samples, options);
   return run;
 }
 
@@ -92,6 +98,7 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
 
   PolicyRun run;
   double wall = 0.0, overhead = 0.0, work_before = 0.0;  // work_before: of the edits before the current one
+  uint32_t non_finite = 0;  // the counters restart at every edit
   uint32_t step = 0;
   const auto evaluate = [&](double work) {
     const ImageRGB shown = scheduler.displayed_image();
@@ -104,6 +111,7 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
     if (e > 0) {
       work_before += scheduler.work_since_edit();
       overhead += scheduler.overhead_seconds();
+      non_finite += renderer.counters().non_finite_samples;
     }
     reference = references[e];
     {
@@ -130,12 +138,8 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
     }
   }
   run.converged = scheduler.work_since_edit() >= double(options.target_spp);
-  run.overhead_seconds = overhead + scheduler.overhead_seconds();
-  run.wall_seconds = wall;
-  run.non_finite_samples = renderer.counters().non_finite_samples;
-  run.final_image = scheduler.displayed_image();
-  while (run.captures.size() < options.capture_work.size())
-    run.captures.emplace_back(options.capture_work[run.captures.size()], run.final_image);
+  finish(run, scheduler, overhead + scheduler.overhead_seconds(), wall,
+         non_finite + renderer.counters().non_finite_samples, options);
   return run;
 }
 

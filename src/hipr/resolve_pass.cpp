@@ -50,14 +50,8 @@ void ResolvePass::record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t 
 }
 
 ImageRGB ResolvePass::displayed_image() const {
-  const auto texels = display.download_all<abi::DisplayTexel>();
-  ImageRGB image;
-  image.width = m_width;
-  image.height = m_height;
-  image.rgb.resize(texels.size() * 3);
-  for (size_t i = 0; i < texels.size(); ++i)
-    for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = texels[i].shown[c];
-  return image;
+  return image_of(m_width, m_height, display.download_all<abi::DisplayTexel>(),
+                  [](const abi::DisplayTexel& t) { return t.shown; });
 }
 
 }  // namespace hipr

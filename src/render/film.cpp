@@ -27,17 +27,10 @@ void Film::record_mark_all_owed(VkCommandBuffer cmd) const {
 }
 
 ImageRGB Film::image() const {
-  const auto accum = accumulation.download_all<abi::PixelAccum>();
-  ImageRGB image;
-  image.width = m_width;
-  image.height = m_height;
-  image.rgb.resize(accum.size() * 3);
-  for (size_t i = 0; i < accum.size(); ++i) {
-    const uint32_t count = accum[i].count & abi::kPixelCountMask;
-    const glm::vec3 mean = count ? accum[i].sum * (1.0f / float(count)) : glm::vec3(0.0f);
-    for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = mean[c];
-  }
-  return image;
+  return image_of(m_width, m_height, accumulation.download_all<abi::PixelAccum>(), [](const abi::PixelAccum& a) {
+    const uint32_t count = a.count & abi::kPixelCountMask;
+    return count ? a.sum * (1.0f / float(count)) : glm::vec3(0.0f);
+  });
 }
 
 std::vector<uint32_t> Film::sample_counts() const {

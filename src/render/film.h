@@ -40,4 +40,15 @@ class Film {
 // Workgroups of abi::kWorkgroupSize invocations covering `items`.
 uint32_t groups_for(uint32_t items);
 
+// The image whose pixel i is radiance_of(texels[i]) (a read-back of per-pixel GPU state).
+template <typename Texel, typename RadianceOf>
+ImageRGB image_of(uint32_t width, uint32_t height, const std::vector<Texel>& texels, RadianceOf radiance_of) {
+  ImageRGB image{width, height, std::vector<float>(texels.size() * 3)};
+  for (size_t i = 0; i < texels.size(); ++i) {
+    const glm::vec3 radiance = radiance_of(texels[i]);
+    for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = radiance[c];
+  }
+  return image;
+}
+
 }  // namespace hipr
