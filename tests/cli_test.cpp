@@ -11,8 +11,8 @@
 #include "core/error.h"
 #include "hipr/scene_loader.h"
 #include "image/tonemap.h"
-#include "test_support.h"
 #include "image/image_io.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -402,6 +402,99 @@ TEST(Bench, DragMeasuresDuringAndAfterTheDrag) {
                            quoted(test::asset("cornell_box.edits.json")) + " --drag -1 -o " + quoted(dir / "bad"))
                 .exit_code,
             kExitBadInput);
+}
+
+// ---- hipr compare: for screenshot-regression suites
+
+// A 16 x 12 grey image; `patch` brightens x 4..7, y 2..5 by that much.
+ImageRGB grey_image(float patch = 0.0f) {
+  ImageRGB image{16, 12, std::vector<float>(16 * 12 * 3, 0.25f)};
+  for (uint32_t y = 2; y <= 5; ++y)
+    for (uint32_t x = 4; x <= 7; ++x)
+      for (int c = 0; c < 3; ++c) image.rgb[(size_t(y) * 16 + x) * 3 + size_t(c)] += patch;
+  return image;
+}
+
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+TEST(Compare, EqualImagesAreTheSame) {
+  const fs::path dir = test::temp_dir("compare_same");
+  write_image(dir / "a.exr", grey_image());
+  write_image(dir / "b.exr", grey_image());
+  for (const char* metric : {"flip", "relmse", "rmse", "max"}) {
+    const auto result = test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " --metric " +
+                                       metric + " --json " + quoted(dir / "r.json"));
+    ASSERT_EQ(result.exit_code, kExitOk) << metric << ": " << result.output;
+    const nlohmann::json r = read_json(dir / "r.json");
+    EXPECT_EQ(r.at("value").get<double>(), 0.0) << metric;
+    EXPECT_EQ(r.at("pixels_over").get<int>(), 0) << metric;
+    EXPECT_TRUE(r.at("box").is_null()) << metric;
+  }
+}
+
+TEST(Compare, SaysWhereImagesDiffer) {
+  const fs::path dir = test::temp_dir("compare_diff");
+  write_image(dir / "a.exr", grey_image(0.5f));
+  write_image(dir / "b.exr", grey_image());
+  const std::string images = quoted(dir / "a.exr") + " " + quoted(dir / "b.exr");
+  const auto result = test::run_hipr("compare " + images + " --metric max --threshold 0.1 --json " +
+                                     quoted(dir / "r.json") + " --heatmap " + quoted(dir / "heat.png"));
+  EXPECT_EQ(result.exit_code, kExitDifferent) << result.output;
+  const nlohmann::json r = read_json(dir / "r.json");
+  EXPECT_NEAR(r.at("value").get<double>(), 0.5, 1e-6);
+  EXPECT_EQ(r.at("pixels_over").get<int>(), 16);
+  EXPECT_NEAR(r.at("share_over").get<double>(), 16.0 / (16 * 12), 1e-12);
+  EXPECT_EQ(r.at("box"), nlohmann::json({4, 2, 7, 5}));
+  EXPECT_FALSE(r.at("same").get<bool>());
+  const ImageRGB heat = read_image(dir / "heat.png");
+  EXPECT_EQ(heat.width, 16u);
+  EXPECT_GT(heat.rgb[(3 * 16 + 5) * 3], 0.5f) << "the patch is hot";
+  EXPECT_EQ(heat.rgb[0], 0.0f) << "the rest is cold";
+  // A threshold above the difference: the same.
+  EXPECT_EQ(test::run_hipr("compare " + images + " --metric max --threshold 0.6 -q").exit_code, kExitOk);
+  // FLIP sees the patch too (its filters spread a difference over neighbouring pixels).
+  ASSERT_EQ(test::run_hipr("compare " + images + " --threshold 0.01 --json " + quoted(dir / "f.json")).exit_code,
+            kExitDifferent);
+  const nlohmann::json f = read_json(dir / "f.json");
+  EXPECT_GT(f.at("value").get<double>(), 0.01);
+  const auto fbox = f.at("box");
+  EXPECT_TRUE(fbox[0] <= 4 && fbox[1] <= 2 && fbox[2] >= 7 && fbox[3] >= 5) << fbox;
+}
+
+// A NaN is a difference whatever the threshold: a broken render never passes.
+TEST(Compare, ANonFiniteValueIsNeverTheSame) {
+  const fs::path dir = test::temp_dir("compare_nan");
+  ImageRGB broken = grey_image();
+  broken.rgb[(5 * 16 + 9) * 3 + 1] = std::nanf("");
+  write_image(dir / "a.exr", broken);
+  write_image(dir / "b.exr", grey_image());
+  for (const char* metric : {"flip", "relmse", "rmse", "max"}) {
+    const auto result = test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " --metric " +
+                                       metric + " --threshold 1e30 --json " + quoted(dir / "r.json"));
+    EXPECT_EQ(result.exit_code, kExitDifferent) << metric << ": " << result.output;
+    const nlohmann::json r = read_json(dir / "r.json");
+    EXPECT_EQ(r.at("nonfinite_pixels").get<int>(), 1) << metric;
+    EXPECT_EQ(r.at("box"), nlohmann::json({9, 5, 9, 5})) << metric;
+  }
+}
+
+TEST(Compare, BadInputIsOneLineAndExitTwo) {
+  const fs::path dir = test::temp_dir("compare_bad");
+  write_image(dir / "a.exr", grey_image());
+  ImageRGB wide{20, 12, std::vector<float>(20 * 12 * 3, 0.25f)};
+  write_image(dir / "wide.exr", wide);
+  for (const std::string& args : {quoted(dir / "a.exr") + " " + quoted(dir / "wide.exr"),
+                                  quoted(dir / "a.exr") + " " + quoted(dir / "missing.exr"),
+                                  quoted(dir / "a.exr") + " " + quoted(dir / "a.exr") + " --metric psnr",
+                                  quoted(dir / "a.exr") + " " + quoted(dir / "a.exr") + " --threshold -1"}) {
+    const auto result = test::run_hipr("compare " + args + " --json " + quoted(dir / "r.json"));
+    EXPECT_EQ(result.exit_code, kExitBadInput) << args << ": " << result.output;
+    EXPECT_EQ(lines_of(result.output).size(), 1u) << result.output;
+    EXPECT_FALSE(fs::exists(dir / "r.json")) << "nothing written on bad input";
+  }
 }
 
 }  // namespace hipr

@@ -16,5 +16,6 @@ Command add_info_command(CLI::App& app);
 Command add_replay_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_view_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
 
 }  // namespace hipr::app

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
       hipr::app::add_replay_command(app),
       hipr::app::add_bench_command(app),
       hipr::app::add_view_command(app),
+      hipr::app::add_compare_command(app),
   };
 
   try {

@@ -19,5 +19,7 @@ class InternalError : public std::runtime_error {
 constexpr int kExitOk = 0;
 constexpr int kExitInternal = 1;
 constexpr int kExitBadInput = 2;
+// `hipr compare`: the images differ (as cmp and diff answer; the same code as an internal error).
+constexpr int kExitDifferent = 1;
 
 }  // namespace hipr

@@ -21,6 +21,11 @@ Colour id_colour(uint32_t id) {
           0.15f + 0.85f * float((h >> 16) & 0xff) / 255.0f};
 }
 
+// v in [0, 1]: black -> red -> yellow -> white.
+Colour heat_colour(float v) {
+  return {std::min(1.0f, 3.0f * v), std::clamp(3.0f * v - 1.0f, 0.0f, 1.0f), std::clamp(3.0f * v - 2.0f, 0.0f, 1.0f)};
+}
+
 template <typename TileColour>
 ImageRGB per_tile(uint32_t tiles_x, uint32_t tile_size, uint32_t width, uint32_t height, TileColour colour_of) {
   ImageRGB image{width, height, std::vector<float>(size_t(width) * height * 3)};
@@ -51,9 +56,17 @@ ImageRGB tile_weight_image(const std::vector<double>& weights, const std::vector
     if (flags[t] & abi::kTileActive) return {0.1f, 0.3f, 1.0f};
     if (!(weights[t] > 0.0) || !(max_weight > 0.0)) return {0.0f, 0.0f, 0.0f};
     // Log scale over six decades below the maximum.
-    const float v = float(std::clamp(1.0 + std::log10(weights[t] / max_weight) / 6.0, 0.0, 1.0));
-    return {std::min(1.0f, 3.0f * v), std::clamp(3.0f * v - 1.0f, 0.0f, 1.0f), std::clamp(3.0f * v - 2.0f, 0.0f, 1.0f)};
+    return heat_colour(float(std::clamp(1.0 + std::log10(weights[t] / max_weight) / 6.0, 0.0, 1.0)));
   });
+}
+
+ImageRGB error_heat_image(const std::vector<float>& error, float scale, uint32_t width, uint32_t height) {
+  ImageRGB image{width, height, std::vector<float>(size_t(width) * height * 3, 0.0f)};
+  for (size_t i = 0; i < error.size() && i < size_t(width) * height; ++i) {
+    const Colour c = std::isfinite(error[i]) ? heat_colour(std::clamp(error[i] / scale, 0.0f, 1.0f)) : Colour{1.0f, 0.0f, 1.0f};
+    std::copy(c.begin(), c.end(), image.rgb.begin() + std::ptrdiff_t(i * 3));
+  }
+  return image;
 }
 
 ImageRGB tile_mask_image(const std::vector<uint32_t>& flags, uint32_t tiles_x, uint32_t tile_size, uint32_t width,

@@ -14,6 +14,10 @@ ImageRGB object_id_image(const std::vector<uint32_t>& instance_per_pixel, uint32
 ImageRGB tile_weight_image(const std::vector<double>& weights, const std::vector<uint32_t>& flags, uint32_t tiles_x,
                            uint32_t tile_size, uint32_t width, uint32_t height);
 
+// A per-pixel error as a heat map (black -> red -> yellow -> white over [0, scale]); pixels
+// whose error is not finite are magenta.
+ImageRGB error_heat_image(const std::vector<float>& error, float scale, uint32_t width, uint32_t height);
+
 // Masks: active tiles red, discovered tiles green, the rest dark grey.
 ImageRGB tile_mask_image(const std::vector<uint32_t>& flags, uint32_t tiles_x, uint32_t tile_size, uint32_t width,
                          uint32_t height);
