@@ -497,4 +497,17 @@ TEST(Compare, BadInputIsOneLineAndExitTwo) {
   }
 }
 
+// The determinism contract (docs/method.md#determinism): the same build, device, scene,
+// settings and seed give bit-identical EXR pixels from two processes.
+TEST(Compare, TwoProcessesRenderTheSamePixels) {
+  const fs::path dir = test::temp_dir("determinism");
+  const std::string render = "render " + quoted(test::asset("cornell_sphere.glb")) +
+                             " --width 32 --height 24 --spp 3 --seed 9 --max-depth 5 -q -o ";
+  ASSERT_EQ(test::run_hipr(render + quoted(dir / "a.exr")).exit_code, kExitOk);
+  ASSERT_EQ(test::run_hipr(render + quoted(dir / "b.exr")).exit_code, kExitOk);
+  EXPECT_EQ(read_image(dir / "a.exr").rgb, read_image(dir / "b.exr").rgb);
+  EXPECT_EQ(test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " --metric max -q").exit_code,
+            kExitOk);
+}
+
 }  // namespace hipr
