@@ -510,4 +510,15 @@ TEST(Compare, TwoProcessesRenderTheSamePixels) {
             kExitOk);
 }
 
+// A name with bytes that are not UTF-8 (and a terminal escape) reaches stderr escaped, on one line.
+TEST(Cli, ErrorLinesStayCleanWithBrokenBytes) {
+  const fs::path dir = test::temp_dir("broken_bytes");
+  const test::CommandResult result =
+      test::run_hipr("render " + quoted(dir / ("sc\xff" "ene\x1b" "[31m.gltf")) + " -o " + quoted(dir / "out.exr"));
+  EXPECT_EQ(result.exit_code, kExitBadInput);
+  ASSERT_EQ(lines_of(result.output).size(), 1u) << result.output;
+  EXPECT_NE(result.output.find("sc\\xffene\\x1b[31m.gltf"), std::string::npos) << result.output;
+  for (char c : result.output) EXPECT_TRUE(c == '\n' || static_cast<unsigned char>(c) >= 0x20) << int(c);
+}
+
 }  // namespace hipr

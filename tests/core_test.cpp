@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/file_util.h"
 #include "core/hash.h"
+#include "core/log.h"
 #include "core/process.h"
 #include "hipr/renderer.h"
 #include "render/trace_pass.h"
@@ -39,6 +40,16 @@ void write_text(const fs::path& path, const std::string& text) {
 }
 
 // ---- Hasher -------------------------------------------------------------------------------
+
+// Error and warning lines stay one clean line whatever bytes a broken file put in a name.
+TEST(PrintableLine, KeepsUtf8AndEscapesEverythingElse) {
+  EXPECT_EQ(log::printable_line("node 'caf\xc3\xa9' \xe6\x97\xa5"), "node 'caf\xc3\xa9' \xe6\x97\xa5");  // valid UTF-8 stays
+  EXPECT_EQ(log::printable_line("a\xff" "b"), "a\\xffb");                // not UTF-8
+  EXPECT_EQ(log::printable_line("\xc0\xaf"), "\\xc0\\xaf");             // an overlong '/'
+  EXPECT_EQ(log::printable_line("\xed\xa0\x80"), "\\xed\\xa0\\x80");   // a UTF-16 surrogate
+  EXPECT_EQ(log::printable_line("\xe6\x97"), "\\xe6\\x97");             // cut short
+  EXPECT_EQ(log::printable_line("one\ntwo\tthree\x1b[31m"), "one two three\\x1b[31m");
+}
 
 TEST(Hasher, MatchesPublishedFnv1aValues) {
   // Cache keys and scene hashes are stored on disk: the function must never change.

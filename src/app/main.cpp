@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/log.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"hipr: a Vulkan path tracer that re-renders first what a scene edit changes"};
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "hipr: error: %s (see hipr --help)\n", e.what());
+    std::fprintf(stderr, "hipr: error: %s (see hipr --help)\n", hipr::log::printable_line(e.what()).c_str());
     return hipr::kExitBadInput;
   }
 
@@ -35,10 +36,10 @@ int main(int argc, char** argv) {
       if (command.subcommand->parsed()) return command.run();
     return hipr::kExitBadInput;
   } catch (const hipr::InputError& e) {
-    std::fprintf(stderr, "hipr: error: %s\n", e.what());
+    std::fprintf(stderr, "hipr: error: %s\n", hipr::log::printable_line(e.what()).c_str());
     return hipr::kExitBadInput;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "hipr: internal error: %s\n", e.what());
+    std::fprintf(stderr, "hipr: internal error: %s\n", hipr::log::printable_line(e.what()).c_str());
     return hipr::kExitInternal;
   }
 }
