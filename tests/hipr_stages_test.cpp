@@ -266,15 +266,26 @@ uint32_t instance_of_node(const Scene& scene, const std::string& name) {
   return UINT32_MAX;
 }
 
+Renderer& with_samples(Renderer& renderer, uint32_t spp) {
+  renderer.add_samples_full_frame(spp);
+  return renderer;
+}
+
+// The Cornell box with a few samples, re-rendered by HiPR in steps of 4 tiles as edits come.
+struct EditedCornellBox {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer{test::context(), scene, settings()};
+  Scheduler scheduler{with_samples(renderer, 2), Policy::Hipr, 4};
+  EditPipeline pipeline{scene, scheduler};
+};
+
 // Two moves without a step between them: the tiles the block covered before the first move
 // belong to neither of the last two G-buffers, yet they still show the block.
 TEST(HiprStages, TilesAnObjectLeftTwoEditsAgoStayActive) {
-  Scene scene = load_scene(test::asset("cornell_box.gltf"));
-  Renderer renderer(test::context(), scene, settings());
-  renderer.add_samples_full_frame(2);
-  Scheduler scheduler(renderer, Policy::Hipr, 4);
-  EditPipeline pipeline(scene, scheduler);
-  const uint32_t block = instance_of_node(scene, "tall_block");
+  EditedCornellBox box;
+  Renderer& renderer = box.renderer;
+  EditPipeline& pipeline = box.pipeline;
+  const uint32_t block = instance_of_node(box.scene, "tall_block");
   const std::vector<uint32_t> start = renderer.gbuffer_instances();
   const Edit move = TransformEdit{"tall_block", glm::vec3(0.12f, 0.0f, 0.0f), std::nullopt};
   pipeline.apply(move);
@@ -297,11 +308,10 @@ TEST(HiprStages, TilesAnObjectLeftTwoEditsAgoStayActive) {
 // A tile the last edit discovered (a shadow the block cast, light it bounced) and that was not
 // re-rendered before the next edit keeps its rank: the screen still shows the old shadow there.
 TEST(HiprStages, DiscoveredTilesNotYetRenderedKeepTheirRankAtTheNextEdit) {
-  Scene scene = load_scene(test::asset("cornell_box.gltf"));
-  Renderer renderer(test::context(), scene, settings());
-  renderer.add_samples_full_frame(2);
-  Scheduler scheduler(renderer, Policy::Hipr, 4);
-  EditPipeline pipeline(scene, scheduler);
+  EditedCornellBox box;
+  Renderer& renderer = box.renderer;
+  Scheduler& scheduler = box.scheduler;
+  EditPipeline& pipeline = box.pipeline;
   pipeline.apply(TransformEdit{"tall_block", glm::vec3(0.12f, 0.0f, 0.0f), std::nullopt});
   while (scheduler.leading_steps_pending()) scheduler.step();  // stage 2 done, stage 3 not begun
   const std::vector<uint32_t> flags1 = renderer.tile_flags();

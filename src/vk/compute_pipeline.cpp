@@ -25,7 +25,6 @@ ComputePipeline::ComputePipeline(const Context& ctx, const std::string& entry, c
     : m_ctx(ctx), m_own(ctx, bindings), m_shared(shared), m_push_size(push_constant_size) {
   const VkDevice device = ctx.device();
   const CompiledShader shader = compile_compute_shader(entry, defines);
-  m_from_cache = shader.from_cache;
 
   std::vector<VkDescriptorSetLayout> set_layouts = {m_own.layout()};
   if (m_shared) set_layouts.push_back(m_shared->layout());

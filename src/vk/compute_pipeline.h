@@ -30,14 +30,12 @@ class ComputePipeline {
 
   // Records bind + push constants + dispatch of `groups` workgroups (1D).
   void dispatch(VkCommandBuffer cmd, const void* push_constants, uint32_t groups) const;
-  bool compiled_from_cache() const { return m_from_cache; }
 
  private:
   const Context& m_ctx;
   DescriptorSet m_own;
   const DescriptorSet* m_shared;
   uint32_t m_push_size = 0;
-  bool m_from_cache = false;
   VkPipelineLayout m_layout = VK_NULL_HANDLE;
   VkPipeline m_pipeline = VK_NULL_HANDLE;
 };
