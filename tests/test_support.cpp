@@ -222,15 +222,25 @@ ImageRGB average(const ImageRGB& a, const ImageRGB& b) {
   return out;
 }
 
-double error_to_noise_ratio(const ImageRGB& a, const ImageRGB& b, const ImageRGB& reference) {
-  const auto ba = block_means(a, 4), bb = block_means(b, 4), br = block_means(reference, 4);
+double error_to_noise_ratio(const std::vector<ImageRGB>& renders, const ImageRGB& reference) {
+  const size_t k = renders.size();
+  std::vector<std::vector<double>> blocks;
+  for (const ImageRGB& image : renders) blocks.push_back(block_means(image, 4));
+  const auto br = block_means(reference, 4);
   double noise2 = 0.0, error2 = 0.0;
   for (size_t i = 0; i < br.size(); ++i) {
-    const double avg = 0.5 * (ba[i] + bb[i]);
-    noise2 += 0.25 * (ba[i] - bb[i]) * (ba[i] - bb[i]);
-    error2 += (avg - br[i]) * (avg - br[i]);
+    double mean = 0.0;
+    for (const auto& b : blocks) mean += b[i] / double(k);
+    double spread = 0.0;
+    for (const auto& b : blocks) spread += (b[i] - mean) * (b[i] - mean);
+    noise2 += spread / double(k - 1) / double(k);  // sample variance / k: the mean's variance
+    error2 += (mean - br[i]) * (mean - br[i]);
   }
   return noise2 > 0.0 ? std::sqrt(error2 / noise2) : (error2 > 0.0 ? 1e9 : 0.0);
+}
+
+double error_to_noise_ratio(const ImageRGB& a, const ImageRGB& b, const ImageRGB& reference) {
+  return error_to_noise_ratio(std::vector<ImageRGB>{a, b}, reference);
 }
 
 }  // namespace hipr::test

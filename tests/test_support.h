@@ -71,6 +71,10 @@ std::vector<double> block_means(const ImageRGB& image, uint32_t b);
 // estimated from the half-difference of a and b (the standard error of their average).
 // About 1 when the only difference is noise; clearly above 1 for a real change.
 double error_to_noise_ratio(const ImageRGB& a, const ImageRGB& b, const ImageRGB& reference);
+// The same for k >= 2 independent renders, the noise of their mean from their spread (k - 1
+// degrees of freedom per block: steadier than one pair when a few blocks dominate the error,
+// as with low-discrepancy samples).
+double error_to_noise_ratio(const std::vector<ImageRGB>& renders, const ImageRGB& reference);
 
 ImageRGB average(const ImageRGB& a, const ImageRGB& b);
 

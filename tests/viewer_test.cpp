@@ -389,6 +389,10 @@ TEST(Session, ViewerSettingsKeepTheScene) {
   h.depth_epsilon = 0.05f;
   session.set_hipr_parameters(h);
   EXPECT_EQ(session.renderer().settings().hipr.depth_epsilon, 0.05f);
+  session.set_sampler(Sampler::Random);
+  EXPECT_EQ(session.renderer().settings().sampler, Sampler::Random);
+  EXPECT_FALSE(session.scene().nodes[node_index(session.scene(), "short_block")].visible);
+  // Ends on the fresh render with the random sampler (fresh_render takes the session's settings).
   converge(session);
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), session.settings()).rgb);
 }

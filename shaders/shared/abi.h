@@ -45,6 +45,10 @@ HIPR_CONST uint kLightSpot = 2u;
 HIPR_CONST uint kLightDirectional = 3u;
 HIPR_CONST uint kLightEnvironment = 4u;
 
+// Random numbers of paths (common/rng.glsl); values of RenderSettings::sampler.
+HIPR_CONST uint kSamplerSobol = 0u;
+HIPR_CONST uint kSamplerRandom = 1u;
+
 // HIPR_LIGHT_SAMPLING values (a define of trace_tiles.comp).
 #define kLightSamplingMis 0
 #define kLightSamplingBsdfOnly 1
@@ -247,6 +251,7 @@ struct FrameParams {
   uint tileCount;
   uint tilesY;
   float rayOffsetScale;  // size of the scene (diagonal of its bounds): scales ray_offset.glsl's offsets
+  uint sampleSequence;   // kSamplerSobol or kSamplerRandom (common/rng.glsl)
 };
 
 // Stage 1 output per pixel: what the pixel-centre ray hit.

@@ -185,6 +185,7 @@ int run_bench(BenchOptions& o) {
                                    {"drag_work_per_edit", o.drag},
                                    {"max_depth", settings.max_depth},
                                    {"seed", settings.seed},
+                                   {"sampler", sampler_name(settings.sampler)},
                                    {"device", ctx.device_name()}};
   BenchReport report(o.common.scene.filename().string(), recorded, o.output);
   const auto display_of = [&](Policy policy) {

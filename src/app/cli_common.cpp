@@ -13,6 +13,9 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
   app.add_option("--height", o.render.height, "Image height in pixels")->capture_default_str();
   app.add_option("--spp", o.spp, "Samples per pixel to converge to")->capture_default_str();
   app.add_option("--seed", o.render.seed, "Random seed")->capture_default_str();
+  app.add_option("--sampler", o.sampler,
+                 "Random numbers of paths: sobol (scrambled Sobol, lower error) or random (independent hashes)")
+      ->capture_default_str();
   app.add_option("--max-depth", o.render.max_depth, "Maximum number of bounces (0 = emitters only)")
       ->capture_default_str();
   app.add_option("--tile", o.render.tile_size, "Tile size n (tiles are n x n pixels)")->capture_default_str();
@@ -45,6 +48,9 @@ void validate_common_options(CommonOptions& o) {
   require(o.render.width >= 1 && o.render.width <= 16384, "--width must be between 1 and 16384");
   require(o.render.height >= 1 && o.render.height <= 16384, "--height must be between 1 and 16384");
   require(o.spp >= 1 && o.spp <= (1u << 24), "--spp must be between 1 and 16777216");
+  const std::optional<Sampler> sampler = parse_sampler(o.sampler);
+  require(sampler.has_value(), "--sampler must be sobol or random, not '" + o.sampler + "'");
+  o.render.sampler = *sampler;
   require(o.render.max_depth <= 1024, "--max-depth must be at most 1024");
   require(o.render.tile_size >= 1 && o.render.tile_size <= 256, "--tile must be between 1 and 256");
   require(std::isfinite(o.load.environment_intensity) && o.load.environment_intensity >= 0.0f,

@@ -18,6 +18,7 @@ struct CommonOptions {
   // HiPR weights as given on the command line (normalized to sum 1 when applied).
   std::vector<float> w_lobe, w_path;
   std::string preset;
+  std::string sampler = "sobol";
   uint32_t spp = 64;
   SceneLoadOptions load;
   bool validate = false;
@@ -27,7 +28,7 @@ struct CommonOptions {
   std::string device;
 };
 
-// Adds --width --height --spp --seed --max-depth --tile --env --env-intensity --env-rotation
+// Adds --width --height --spp --seed --sampler --max-depth --tile --env --env-intensity --env-rotation
 // --uber-kernel --trace-background-tiles --validate --device --quiet.
 void add_common_options(CLI::App& app, CommonOptions& options);
 

@@ -77,6 +77,7 @@ int run_render(RenderOptions& o) {
   const ImageMetadata metadata = {
       {"hipr:spp", std::to_string(o.common.spp)},
       {"hipr:seed", std::to_string(o.common.render.seed)},
+      {"hipr:sampler", sampler_name(o.common.render.sampler)},
       {"hipr:scene_hash", scene.content_hash},
       {"hipr:render_seconds", std::to_string(render_seconds)},
       {"hipr:max_depth", std::to_string(o.common.render.max_depth)},
@@ -105,6 +106,7 @@ int run_render(RenderOptions& o) {
         {"triangles", renderer.scene_stats().triangle_count},
         {"tile", o.common.render.tile_size},
         {"max_depth", o.common.render.max_depth},
+        {"sampler", sampler_name(o.common.render.sampler)},
     };
     write_text_atomically(o.stats_json, stats.dump(2) + "\n");
   }

@@ -39,6 +39,7 @@ std::string reference_key(const Scene& scene, const std::string& state,
                               settings.seed,
                               settings.max_depth,
                               uint32_t(settings.light_sampling),
+                              uint32_t(settings.sampler),
                               spp};
   hasher.add(numbers, sizeof numbers);
   for (const vk::EmbeddedShaderFile& file : vk::embedded_shader_files())

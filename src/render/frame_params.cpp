@@ -17,6 +17,7 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, cons
   f.tanHalfFovY = std::tan(0.5f * camera.yfov);
   f.aspect = float(s.width) / float(s.height);
   f.seed = s.seed;
+  f.sampleSequence = s.sampler == Sampler::Random ? abi::kSamplerRandom : abi::kSamplerSobol;
   f.width = s.width;
   f.height = s.height;
   f.tileSize = s.tile_size;

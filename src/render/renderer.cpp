@@ -17,6 +17,14 @@
 #include "render/trace_pass.h"
 
 namespace hipr {
+
+const char* sampler_name(Sampler sampler) { return sampler == Sampler::Random ? "random" : "sobol"; }
+
+std::optional<Sampler> parse_sampler(std::string_view name) {
+  if (name == "sobol") return Sampler::Sobol;
+  if (name == "random") return Sampler::Random;
+  return std::nullopt;
+}
 namespace {
 
 template <typename T>

@@ -113,7 +113,12 @@ void hipr_section(Session& session, ViewerState& state) {
   state.tile_size_input = std::clamp(state.tile_size_input, 1, 256);
   ImGui::SameLine();
   if (ImGui::Button("Apply")) state.request_tile_size = uint32_t(state.tile_size_input);
-  ImGui::TextDisabled("n restarts the image; weights apply from the next edit");
+  if (ImGui::BeginCombo("sampler", sampler_name(settings.render.sampler))) {
+    for (Sampler s : {Sampler::Sobol, Sampler::Random})
+      if (ImGui::Selectable(sampler_name(s), s == settings.render.sampler)) state.request_sampler = s;
+    ImGui::EndCombo();
+  }
+  ImGui::TextDisabled("n and the sampler restart the image; weights apply from the next edit");
 
   bool changed = false;
   if (ImGui::BeginCombo("preset", state.preset.c_str())) {

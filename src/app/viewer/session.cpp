@@ -182,6 +182,18 @@ void Session::set_tile_size(uint32_t tile_size) {
   }
 }
 
+void Session::set_sampler(Sampler sampler) {
+  if (sampler == m_settings.render.sampler) return;
+  const SessionSettings previous = m_settings;
+  m_settings.render.sampler = sampler;
+  try {
+    rebuild();
+  } catch (...) {
+    m_settings = previous;
+    throw;
+  }
+}
+
 void Session::set_hipr_parameters(const HiprParameters& parameters) {
   m_settings.render.hipr = parameters;
   m_renderer->set_hipr_parameters(parameters);

@@ -90,6 +90,7 @@ class Session {
   void set_policy(Policy policy);  // throws InputError for the oracle (it needs a reference)
   void set_display_rule(std::optional<DisplayRule> rule);
   void set_tile_size(uint32_t tile_size);
+  void set_sampler(Sampler sampler);  // rebuilds the renderer: the image restarts
   void set_hipr_parameters(const HiprParameters& parameters);
 
  private:

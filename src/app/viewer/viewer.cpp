@@ -319,6 +319,14 @@ void Viewer::handle_requests() {
     }
     m_state.request_tile_size.reset();
   }
+  if (m_state.request_sampler) {
+    try {
+      m_session->set_sampler(*m_state.request_sampler);
+    } catch (const std::exception& e) {
+      m_state.error(std::string("cannot change the sampler: ") + e.what());
+    }
+    m_state.request_sampler.reset();
+  }
 }
 
 void Viewer::render_steps() {

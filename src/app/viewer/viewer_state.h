@@ -37,6 +37,7 @@ struct ViewerState {
   std::optional<std::optional<DisplayRule>>
       request_display_rule;  // inner none: the policy's default
   std::optional<uint32_t> request_tile_size;
+  std::optional<Sampler> request_sampler;
   int tile_size_input = 16;
   std::string preset = "default";
   HiprParameters hipr_sliders;  // as the sliders hold them; normalised when applied
