@@ -172,24 +172,25 @@ void Session::set_display_rule(std::optional<DisplayRule> rule) {
 void Session::set_tile_size(uint32_t tile_size) {
   if (tile_size < 1 || tile_size > 256) throw InputError("tile size must be between 1 and 256");
   if (tile_size == m_settings.render.tile_size) return;
-  const SessionSettings previous = m_settings;
-  m_settings.render.tile_size = tile_size;
-  try {
-    rebuild();
-  } catch (...) {
-    m_settings = previous;
-    throw;
-  }
+  SessionSettings next = m_settings;
+  next.render.tile_size = tile_size;
+  rebuild_with(next);
 }
 
 void Session::set_sampler(Sampler sampler) {
   if (sampler == m_settings.render.sampler) return;
+  SessionSettings next = m_settings;
+  next.render.sampler = sampler;
+  rebuild_with(next);
+}
+
+void Session::rebuild_with(const SessionSettings& settings) {
   const SessionSettings previous = m_settings;
-  m_settings.render.sampler = sampler;
+  m_settings = settings;
   try {
     rebuild();
   } catch (...) {
-    m_settings = previous;
+    m_settings = previous;  // a renderer that cannot be made leaves the session as it was
     throw;
   }
 }

@@ -95,6 +95,8 @@ class Session {
 
  private:
   void rebuild();
+  // Takes `settings` and rebuilds; on failure the session keeps its old settings and renderer.
+  void rebuild_with(const SessionSettings& settings);
   // The G-buffer of the scene as it is now (policies without stage 1 leave it behind edits).
   void ensure_gbuffer();
   std::unique_ptr<Scheduler> make_scheduler(Renderer& renderer, Policy policy) const;
