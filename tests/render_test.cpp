@@ -103,12 +103,12 @@ TEST(Renderer, OnlyListedTilesReceiveSamples) {
 // Golden image: tests/data/cornell_golden_64.exr was rendered by this renderer at 4096 spp
 // with the Sobol sampler (seed 1, max depth 32; `hipr render assets/scenes/cornell_box.gltf
 // -o ... --width 64 --height 64 --spp 4096 --seed 1`) and checked against Cycles
-// (reference_test). Its noise must stay well below that of the 32-spp test renders, so it is
-// made again whenever the sampler improves (1024 spp was enough for the random sampler). A bit-exact
-// comparison would break on any other driver or compiler, so the test renders four 16-spp
-// images with other seeds and requires (a) the mean within 1% and (b) the 4x4-block error of
-// their mean to the golden image within 1.6x of what their spread explains. Noise alone gives ~1.0-1.2
-// (the golden image has noise too); a wrong light, colour, camera or geometry gives far more.
+// (reference_test). Its noise must stay well below the test renders', so it is made again when
+// the sampler improves (1024 spp was enough for the random sampler). A bit-exact comparison
+// would break on any other driver or compiler, so the test renders four 16-spp images with
+// other seeds and requires (a) the mean within 1% and (b) the 4x4-block error of their mean to
+// the golden image within 1.6x of what their spread explains. Noise alone gives ~1.0-1.2 (the
+// golden image has noise too); a wrong light, colour, camera or geometry gives far more.
 struct GoldenComparison {
   double mean_ratio;
   double error_to_noise;

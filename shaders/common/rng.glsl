@@ -3,7 +3,7 @@
 // samples produces bit-identical pixels. Shared with C++ (see shared/glsl_cpp.h): tests check
 // the very code the kernels run.
 //
-// Two samplers (FrameParams::sampler):
+// Two samplers (FrameParams::sampleSequence, from RenderSettings::sampler):
 // - kSamplerSobol: each 4-dimension block of a path (the camera jitter, the light sample of a
 //   bounce, the BSDF sample of a bounce) is its own 4D Sobol sequence, Owen-scrambled and with
 //   its sample indices shuffled by a nested uniform scramble, both seeded by a hash of
