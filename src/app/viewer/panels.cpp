@@ -118,7 +118,8 @@ void hipr_section(Session& session, ViewerState& state) {
       if (ImGui::Selectable(sampler_name(s), s == settings.render.sampler)) state.request_sampler = s;
     ImGui::EndCombo();
   }
-  ImGui::TextDisabled("n and the sampler restart the image; weights apply from the next edit");
+  ImGui::TextDisabled("n and the sampler restart the image;");
+  ImGui::TextDisabled("weights apply from the next edit");
 
   bool changed = false;
   if (ImGui::BeginCombo("preset", state.preset.c_str())) {
