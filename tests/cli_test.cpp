@@ -420,13 +420,18 @@ nlohmann::json read_json(const fs::path& path) {
   return nlohmann::json::parse(in);
 }
 
+// hipr compare DIR/a.exr DIR/b.exr FLAGS --json DIR/r.json
+test::CommandResult compare_in(const fs::path& dir, const std::string& flags) {
+  return test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " " + flags + " --json " +
+                        quoted(dir / "r.json"));
+}
+
 TEST(Compare, EqualImagesAreTheSame) {
   const fs::path dir = test::temp_dir("compare_same");
   write_image(dir / "a.exr", grey_image());
   write_image(dir / "b.exr", grey_image());
   for (const char* metric : {"flip", "relmse", "rmse", "max"}) {
-    const auto result = test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " --metric " +
-                                       metric + " --json " + quoted(dir / "r.json"));
+    const auto result = compare_in(dir, std::string("--metric ") + metric);
     ASSERT_EQ(result.exit_code, kExitOk) << metric << ": " << result.output;
     const nlohmann::json r = read_json(dir / "r.json");
     EXPECT_EQ(r.at("value").get<double>(), 0.0) << metric;
@@ -472,8 +477,7 @@ TEST(Compare, ANonFiniteValueIsNeverTheSame) {
   write_image(dir / "a.exr", broken);
   write_image(dir / "b.exr", grey_image());
   for (const char* metric : {"flip", "relmse", "rmse", "max"}) {
-    const auto result = test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " --metric " +
-                                       metric + " --threshold 1e30 --json " + quoted(dir / "r.json"));
+    const auto result = compare_in(dir, std::string("--metric ") + metric + " --threshold 1e30");
     EXPECT_EQ(result.exit_code, kExitDifferent) << metric << ": " << result.output;
     const nlohmann::json r = read_json(dir / "r.json");
     EXPECT_EQ(r.at("nonfinite_pixels").get<int>(), 1) << metric;

@@ -118,6 +118,9 @@ class Viewer {
   void run_script(uint32_t frame);
   void draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys);
   void handle_requests();
+  // Applies a pending viewer setting once; a failure becomes a message, the session unchanged.
+  template <class T, class Apply>
+  void take_setting_request(std::optional<T>& request, const char* what, Apply apply);
   void render_steps();
   void update_overlay();
   bool present(const ViewLayout& layout);
@@ -311,22 +314,19 @@ void Viewer::handle_requests() {
     m_session->set_display_rule(*m_state.request_display_rule);
     m_state.request_display_rule.reset();
   }
-  if (m_state.request_tile_size) {
-    try {
-      m_session->set_tile_size(*m_state.request_tile_size);
-    } catch (const std::exception& e) {
-      m_state.error(std::string("cannot change the tile size: ") + e.what());
-    }
-    m_state.request_tile_size.reset();
+  take_setting_request(m_state.request_tile_size, "tile size", [&](uint32_t n) { m_session->set_tile_size(n); });
+  take_setting_request(m_state.request_sampler, "sampler", [&](Sampler s) { m_session->set_sampler(s); });
+}
+
+template <class T, class Apply>
+void Viewer::take_setting_request(std::optional<T>& request, const char* what, Apply apply) {
+  if (!request) return;
+  try {
+    apply(*request);
+  } catch (const std::exception& e) {
+    m_state.error(std::string("cannot change the ") + what + ": " + e.what());
   }
-  if (m_state.request_sampler) {
-    try {
-      m_session->set_sampler(*m_state.request_sampler);
-    } catch (const std::exception& e) {
-      m_state.error(std::string("cannot change the sampler: ") + e.what());
-    }
-    m_state.request_sampler.reset();
-  }
+  request.reset();
 }
 
 void Viewer::render_steps() {
