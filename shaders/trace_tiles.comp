@@ -167,7 +167,7 @@ struct PathState {
 
 PathState start_path(uvec2 pixel, uint sampleIndex) {
   PathState p;
-  p.rng = PathRng(pixel.y * u_frame.width + pixel.x, sampleIndex, u_frame.seed, u_frame.sampleSequence);
+  p.rng = PathRng(pixel.y * u_frame.width + pixel.x, pixel, sampleIndex, u_frame.seed, u_frame.sampleSequence);
   p.origin = u_frame.cameraPosition;
   p.direction = camera_ray_direction(pixel, rng_uniform4(p.rng, 0u, 2u).xy);
   p.radiance = vec3(0.0);

@@ -4,20 +4,20 @@
 // the very code the kernels run.
 //
 // Two samplers (FrameParams::sampleSequence, from RenderSettings::sampler):
-// - kSamplerSobol: each 4-dimension block of a path (the camera jitter, the light sample of a
-//   bounce, the BSDF sample of a bounce) is its own 4D Sobol sequence, Owen-scrambled and with
-//   its sample indices shuffled by a nested uniform scramble, both seeded by a hash of
-//   (pixel, block, seed) (Burley, "Practical Hash-based Owen Scrambling", JCGT 2020). Padding
-//   blocks by independent shuffles keeps any two blocks uncorrelated; within a block, the first
-//   2^m samples of dimensions 0 and 1 form a (0,m,2)-net, whatever the batch sizes that reached
-//   them: a pixel's samples 0..n-1 are the same points however they were split.
+// - kSamplerSobol: the dimensions of a path come in 2D pairs (the camera jitter; per bounce the
+//   light point, the light choice, the BSDF direction, lobe and Russian roulette), each its own
+//   blue-noise Sobol pair (rng_blue_sobol2): Owen-scrambled with hashed seeds, sample indices
+//   shuffled by a nested uniform scramble (Burley, "Practical Hash-based Owen Scrambling", JCGT
+//   2020), and a per-pixel digital shift laid out in Z-order. Within a pixel, the first 2^m
+//   samples of a pair form a (0,m,2)-net, whatever the batch sizes that reached them: a pixel's
+//   samples 0..n-1 are the same points however they were split. Across pixels, neighbours take
+//   different strata, so at a few samples per pixel the error is blue noise.
 // - kSamplerRandom: independent uniform hashes (the sampler before Sobol, kept for comparison).
 #ifndef HIPR_RNG_GLSL
 #define HIPR_RNG_GLSL
 
 #include "../shared/abi.h"
 #include "../shared/glsl_cpp.h"
-#include "sobol_matrices.glsl"
 
 // PCG-style 4D hash (Jarzynski & Olano, "Hash Functions for GPU Rendering", JCGT 2020).
 HIPR_FN uvec4 rng_hash4(uvec4 v) {
@@ -55,58 +55,64 @@ HIPR_FN uint rng_nested_uniform_scramble(uint x, uint seed) {
   return bitfieldReverse(rng_laine_karras(bitfieldReverse(x), seed));
 }
 
-// Dimensions 1..3 of Sobol point `index` (dimension 0 is bitfieldReverse(index)). The
-// direction numbers follow their recurrences in registers: a table indexed in a loop is slow
-// on CPU Vulkan devices. kSobolMatrices holds the same columns; tests check that both agree.
-//   dimension 1 (x + 1):         v_k = v_(k-1) ^ (v_(k-1) >> 1)
-//   dimension 2 (x^2 + x + 1):   v_k = v_(k-1) ^ v_(k-2) ^ (v_(k-2) >> 2)
-//   dimension 3 (x^3 + x + 1):   v_k = v_(k-2) ^ v_(k-3) ^ (v_(k-3) >> 3)
-HIPR_FN uvec3 rng_sobol123(uint index) {
-  uvec3 result = uvec3(0u);
-  uint d1 = 0x80000000u;
-  uint d2 = 0x80000000u, d2Previous = 0u;  // v_k, v_(k-1); m = 1, 3
-  uint d3 = 0x80000000u, d3Previous = 0u, d3Before = 0u;  // v_k, v_(k-1), v_(k-2); m = 1, 3, 1
-  for (uint k = 0u; index != 0u; ++k, index >>= 1u) {
-    if ((index & 1u) != 0u) result ^= uvec3(d1, d2, d3);
-    d1 ^= d1 >> 1u;
-    uint next2 = k == 0u ? 0xc0000000u : d2 ^ d2Previous ^ (d2Previous >> 2u);
-    d2Previous = d2;
-    d2 = next2;
-    uint next3 = k == 0u ? 0xc0000000u : k == 1u ? 0x20000000u : d3Previous ^ d3Before ^ (d3Before >> 3u);
-    d3Before = d3Previous;
-    d3Previous = d3;
-    d3 = next3;
-  }
-  return result;
-}
-
-// Dimension d (0..3) of Sobol point `index` by its generator matrix: the XOR of the columns
-// of its set bits (the tests' definition of the sequence).
-HIPR_FN uint rng_sobol(uint index, uint d) {
+// Dimension 1 of Sobol point `index` (dimension 0 is bitfieldReverse(index)): the XOR of the
+// direction numbers of its set bits, which follow the recurrence of the polynomial x + 1,
+// v_k = v_(k-1) ^ (v_(k-1) >> 1), in a register (a table indexed in a loop is slow on CPU
+// Vulkan devices).
+HIPR_FN uint rng_sobol1(uint index) {
   uint result = 0u;
-  for (uint bit = 0u; index != 0u; ++bit, index >>= 1u)
-    if ((index & 1u) != 0u) result ^= kSobolMatrices[d * 32u + bit];
+  for (uint direction = 0x80000000u; index != 0u; index >>= 1u, direction ^= direction >> 1u)
+    if ((index & 1u) != 0u) result ^= direction;
   return result;
 }
 
-// Point `index` of the Owen-scrambled, index-shuffled 4D Sobol sequence chosen by the seeds.
-// The shuffle scrambles the index as a binary fraction from its top bit down, so it maps every
-// aligned run of 2^m indices (the first 2^m samples, the next 2^m...) onto another aligned run,
-// and an aligned run of a Sobol sequence is a digitally shifted (0,m,2)-net in dimensions 0
-// and 1: every power-of-two prefix of a pixel's samples keeps its stratification.
-HIPR_FN vec4 rng_sobol4(uint index, uvec4 scrambleSeeds, uint shuffleSeed) {
-  // Only the low 16 bits are shuffled (within each run of 2^16 samples, a nested scramble
-  // still), so the Sobol loop stops at bit 16 for a pixel's first 65536 samples.
-  const uint i = (rng_nested_uniform_scramble(index, shuffleSeed) & 0xffffu) | (index & 0xffff0000u);
-  const uvec3 high = rng_sobol123(i);
-  return vec4(rng_unit_float(rng_nested_uniform_scramble(bitfieldReverse(i), scrambleSeeds.x)),
-              rng_unit_float(rng_nested_uniform_scramble(high.x, scrambleSeeds.y)),
-              rng_unit_float(rng_nested_uniform_scramble(high.y, scrambleSeeds.z)),
-              rng_unit_float(rng_nested_uniform_scramble(high.z, scrambleSeeds.w)));
+// Dimensions 0 and 1 of Sobol point `index`, Owen-scrambled by the two seeds, as 32-bit
+// binary fractions.
+HIPR_FN uvec2 rng_scrambled_sobol2(uint index, uvec2 seeds) {
+  return uvec2(rng_nested_uniform_scramble(bitfieldReverse(index), seeds.x),
+               rng_nested_uniform_scramble(rng_sobol1(index), seeds.y));
+}
+
+// Z-order (Morton) index of a pixel: x in the even bits, y in the odd ones, so every aligned
+// 2^k x 2^k block of pixels is an aligned run of 4^k indices.
+HIPR_FN uint rng_morton(uvec2 pixel) {
+  uvec2 v = pixel & 0xffffu;
+  v = (v | (v << 8u)) & 0x00ff00ffu;
+  v = (v | (v << 4u)) & 0x0f0f0f0fu;
+  v = (v | (v << 2u)) & 0x33333333u;
+  v = (v | (v << 1u)) & 0x55555555u;
+  return v.x | (v.y << 1u);
+}
+
+// One 2D pair of a path's dimensions, blue-noise Sobol: sample i of pixel p is
+//   X_i XOR D_p,
+// X: one Owen-scrambled, index-shuffled 2D Sobol sequence shared by every pixel;
+// D_p: a digital shift per pixel, point m(p) of another Owen-scrambled 2D Sobol sequence, where
+//   m(p) is the pixel's Morton index, scrambled from its top bit down (Ahmed & Wonka, "Screen-
+//   space blue-noise sampling by Z-order", 2020, randomise the Z-order the same way).
+// A digital shift keeps nets nets, so
+// - within a pixel, every aligned power-of-two run of samples is a (0,m,2)-net, as with
+//   independent per-pixel sequences (the error per pixel is the same);
+// - across pixels, at one sample index, every aligned 2^k x 2^k block of pixels holds a
+//   (0,2k,2)-net (its Morton indices are an aligned run, the scramble maps it onto another):
+//   neighbouring pixels sample different strata, so at a few samples per pixel the error is
+//   blue noise, fine-grained, with little of it at low spatial frequencies.
+// Each pair has its own seeds, so pairs (of one bounce or of two) are independent: padding.
+HIPR_FN vec2 rng_blue_sobol2(uint index, uvec2 pixel, uint pair, uint seed) {
+  // Salts keep these hashes apart from the random sampler's.
+  const uvec4 sequenceSeeds = rng_hash4(uvec4(pair, 0x5eed0003u, seed, 0x9e3779b9u));
+  const uvec4 shiftSeeds = rng_hash4(uvec4(pair, 0x5eed0004u, seed, 0x7f4a7c15u));
+  // Only the low 16 bits of the sample index are shuffled (within each run of 2^16 samples, a
+  // nested scramble still), so the Sobol loop stops at bit 16 for a pixel's first 65536 samples.
+  const uint i = (rng_nested_uniform_scramble(index, sequenceSeeds.x) & 0xffffu) | (index & 0xffff0000u);
+  const uvec2 x = rng_scrambled_sobol2(i, uvec2(sequenceSeeds.y, sequenceSeeds.z));
+  const uvec2 d = rng_scrambled_sobol2(rng_nested_uniform_scramble(rng_morton(pixel), shiftSeeds.x), uvec2(shiftSeeds.y, shiftSeeds.z));
+  return vec2(rng_unit_float(x.x ^ d.x), rng_unit_float(x.y ^ d.y));
 }
 
 struct PathRng {
-  uint pixel;
+  uint pixel;  // linear index (the random sampler's hash input)
+  uvec2 position;  // pixel coordinates (the Sobol sampler's Z-order)
   uint sampleIndex;
   uint seed;
   uint sequence;  // kSamplerSobol or kSamplerRandom
@@ -114,17 +120,17 @@ struct PathRng {
 
 // Four uniforms in [0,1) for (bounce, block). Blocks: 0 = BSDF (direction in x,y, lobe in z,
 // Russian roulette in w), 1 = light (point in x,y, choice of light in z), 2 = camera jitter
-// (x,y). The best-stratified dimensions (x,y) go to the 2D integrals that matter most.
+// (x,y). With Sobol, (x,y) and (z,w) are two independent blue-noise 2D pairs: the 2D
+// integrals that matter most get a pair of their own.
 HIPR_FN vec4 rng_uniform4(PathRng rng, uint bounce, uint block) {
   const uint dimensionBlock = (bounce << 4u) | block;
   if (rng.sequence == kSamplerRandom) {
     const uvec4 h = rng_hash4(uvec4(rng.pixel, rng.sampleIndex, dimensionBlock, rng.seed));
     return vec4(rng_unit_float(h.x), rng_unit_float(h.y), rng_unit_float(h.z), rng_unit_float(h.w));
   }
-  // Salts keep these hashes apart from the random sampler's (which has the sample index there).
-  const uvec4 scrambleSeeds = rng_hash4(uvec4(rng.pixel, 0x5eed0001u, dimensionBlock, rng.seed));
-  const uint shuffleSeed = rng_hash4(uvec4(rng.pixel, 0x5eed0002u, dimensionBlock, rng.seed)).x;
-  return rng_sobol4(rng.sampleIndex, scrambleSeeds, shuffleSeed);
+  const vec2 first = rng_blue_sobol2(rng.sampleIndex, rng.position, dimensionBlock << 1u, rng.seed);
+  const vec2 second = rng_blue_sobol2(rng.sampleIndex, rng.position, (dimensionBlock << 1u) | 1u, rng.seed);
+  return vec4(first.x, first.y, second.x, second.y);
 }
 
 #endif
