@@ -2,10 +2,13 @@
 """Error against samples per pixel and efficiency, Sobol against the random sampler.
 
 For each scene: a high-spp reference (hipr, Sobol, its own seed), then renders at a few spp
-with each sampler and two seeds; RMSE against the reference (hipr compare --metric rmse),
+with each sampler and --seeds seeds (two by default); RMSE against the reference (hipr compare --metric rmse),
 render time from `hipr render --stats-json` (CPU seconds of all threads, robust to a busy
-machine) and efficiency 1 / (RMSE^2 x time). Writes OUTDIR/sampler.json and OUTDIR/sampler.md
-(the tables of BENCHMARKS.md, "Sampler").
+machine) and efficiency 1 / (RMSE^2 x time). At 1 and 4 spp, how blue the noise is: the RMSE
+seen through an 8x8 box filter (render and reference reduced by `oiiotool --resize:filter=box`),
+and at 1 spp its ratio to the full-resolution RMSE (white noise keeps about 1/8 of its error
+through the filter, blue noise less). Writes OUTDIR/sampler.json and OUTDIR/sampler.md (the
+tables of BENCHMARKS.md, "Sampler").
 
 usage: python3 tools/sampler_bench.py [OUTDIR] [--size N] [--ref-spp N] [--spp 4,16,64,256]
        [--seeds N] [--scenes name,...]   (default OUTDIR: bench-results)
@@ -35,6 +38,8 @@ SCENES = [
     ("GlassVaseFlowers", os.path.join(SHARED, "GlassVaseFlowers/GlassVaseFlowers.glb"), ["--env", STUDIO]),
 ]
 SAMPLERS = ["random", "sobol"]
+BLUE_NOISE_SPP = [1, 4]  # 1 must be there (the ratio column)
+BOX = 8
 
 
 def render(scene, flags, size, spp, sampler, seed, out_exr, depth):
@@ -52,6 +57,13 @@ def rmse(image, reference):
                         tmp.name, "-q"], check=True)
         with open(tmp.name) as f:
             return json.load(f)["value"]
+
+
+def box_filtered(image, size):
+    out = image[:-len(".exr")] + "_box.exr"
+    subprocess.run(["oiiotool", image, "--resize:filter=box", "%dx%d" % (size // BOX, size // BOX), "-o", out],
+                   check=True)
+    return out
 
 
 def main():
@@ -93,6 +105,19 @@ def main():
                 row["points"].append({"spp": spp, "sampler": sampler, "rmse": math.sqrt(mse), "cpu_seconds": time,
                                       "efficiency": 1.0 / (mse * time) if mse > 0 else float("inf")})
                 print("  %-6s %5d spp  rmse %.5f  %.2f cpu s" % (sampler, spp, math.sqrt(mse), time), flush=True)
+        reference_box = box_filtered(reference, args.size)
+        for spp in BLUE_NOISE_SPP:
+            for sampler in SAMPLERS:
+                full_mse, box_mse = 0.0, 0.0
+                for seed in seeds:
+                    image = os.path.join(work, "%s_%s_%d_%d_blue.exr" % (name, sampler, spp, seed))
+                    render(scene, flags, args.size, spp, sampler, seed, image, args.max_depth)
+                    full_mse += rmse(image, reference) ** 2 / len(seeds)
+                    box_mse += rmse(box_filtered(image, args.size), reference_box) ** 2 / len(seeds)
+                row["points"].append({"spp": spp, "sampler": sampler, "rmse_full": math.sqrt(full_mse),
+                                      "rmse_box": math.sqrt(box_mse)})
+                print("  %-6s %5d spp  RMSE %.5f, through the box filter %.5f" %
+                      (sampler, spp, math.sqrt(full_mse), math.sqrt(box_mse)), flush=True)
         row["device"] = ref_stats["device"]
         results.append(row)
     name = "sampler" + ("_" + "_".join(sorted(wanted)) if wanted else "")
@@ -104,8 +129,8 @@ def main():
 
 
 def tables(results, spps):
-    def point(row, spp, sampler):
-        return next(p for p in row["points"] if p["spp"] == spp and p["sampler"] == sampler)
+    def point(row, spp, sampler, key="rmse"):
+        return next(p for p in row["points"] if p["spp"] == spp and p["sampler"] == sampler and key in p)
 
     out = "RMSE against the scene's own reference (random -> sobol):\n\n"
     out += "| scene | " + " | ".join("%d spp" % s for s in spps) + " |\n"
@@ -118,6 +143,19 @@ def tables(results, spps):
     out += "|---|" + "---|" * len(spps) + "\n"
     for row in results:
         cells = ["%.2fx" % (point(row, s, "sobol")["efficiency"] / point(row, s, "random")["efficiency"]) for s in spps]
+        out += "| %s | %s |\n" % (row["scene"], " | ".join(cells))
+    def box(row, spp, sampler):
+        return point(row, spp, sampler, "rmse_box")
+
+    out += "\nBlue noise: RMSE through a %dx%d box filter (random -> sobol), and at 1 spp its ratio to the\n" % (BOX, BOX)
+    out += "full-resolution RMSE (white noise keeps about %.3f; lower is bluer):\n\n" % (1.0 / BOX)
+    out += "| scene | " + " | ".join("%d spp, filtered" % s for s in BLUE_NOISE_SPP) + " | 1 spp, ratio |\n"
+    out += "|---|" + "---|" * (len(BLUE_NOISE_SPP) + 1) + "\n"
+    for row in results:
+        cells = ["%.4f -> %.4f" % (box(row, s, "random")["rmse_box"], box(row, s, "sobol")["rmse_box"])
+                 for s in BLUE_NOISE_SPP]
+        ratio = [box(row, 1, x)["rmse_box"] / box(row, 1, x)["rmse_full"] for x in SAMPLERS]
+        cells.append("%.3f -> %.3f" % tuple(ratio))
         out += "| %s | %s |\n" % (row["scene"], " | ".join(cells))
     return out
 

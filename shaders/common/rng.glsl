@@ -55,22 +55,29 @@ HIPR_FN uint rng_nested_uniform_scramble(uint x, uint seed) {
   return bitfieldReverse(rng_laine_karras(bitfieldReverse(x), seed));
 }
 
-// Dimension 1 of Sobol point `index` (dimension 0 is bitfieldReverse(index)): the XOR of the
-// direction numbers of its set bits, which follow the recurrence of the polynomial x + 1,
-// v_k = v_(k-1) ^ (v_(k-1) >> 1), in a register (a table indexed in a loop is slow on CPU
-// Vulkan devices).
-HIPR_FN uint rng_sobol1(uint index) {
-  uint result = 0u;
-  for (uint direction = 0x80000000u; index != 0u; index >>= 1u, direction ^= direction >> 1u)
-    if ((index & 1u) != 0u) result ^= direction;
-  return result;
+// Dimension 1 of Sobol point `index`, bit-reversed: bit k holds binary digit k + 1 after the
+// point (bitfieldReverse of this is the 32-bit fraction). The direction numbers are
+// v_k = (1 + z)^k v_0, z a right shift, so the point is I(1 + z) v_0 for the polynomial
+// I(t) = sum of t^k over the set bits k of the index. With I = L + t^h H and (1 + z)^h = 1 + z^h
+// (h a power of two, arithmetic mod 2), I(1 + z) = L(1 + z) + (1 + z^h) H(1 + z): five
+// butterfly steps instead of a loop over 32 bits (a loop is slow on CPU Vulkan devices).
+HIPR_FN uint rng_sobol1_reversed(uint index) {
+  index ^= (index >> 1u) & 0x55555555u;
+  index ^= (index >> 2u) & 0x33333333u;
+  index ^= (index >> 4u) & 0x0f0f0f0fu;
+  index ^= (index >> 8u) & 0x00ff00ffu;
+  index ^= (index >> 16u) & 0x0000ffffu;
+  return index;
 }
 
-// Dimensions 0 and 1 of Sobol point `index`, Owen-scrambled by the two seeds, as 32-bit
-// binary fractions.
-HIPR_FN uvec2 rng_scrambled_sobol2(uint index, uvec2 seeds) {
-  return uvec2(rng_nested_uniform_scramble(bitfieldReverse(index), seeds.x),
-               rng_nested_uniform_scramble(rng_sobol1(index), seeds.y));
+// Dimension 1 of Sobol point `index` (dimension 0 is bitfieldReverse(index)).
+HIPR_FN uint rng_sobol1(uint index) { return bitfieldReverse(rng_sobol1_reversed(index)); }
+
+// Dimensions 0 and 1 of Sobol point `index`, Owen-scrambled by the two seeds, bit-reversed
+// (the nested scramble of bitfieldReverse(v) is bitfieldReverse(rng_laine_karras(v)), so the
+// reversal waits until the caller has XORed what it needs).
+HIPR_FN uvec2 rng_scrambled_sobol2_reversed(uint index, uvec2 seeds) {
+  return uvec2(rng_laine_karras(index, seeds.x), rng_laine_karras(rng_sobol1_reversed(index), seeds.y));
 }
 
 // Z-order (Morton) index of a pixel: x in the even bits, y in the odd ones, so every aligned
@@ -102,12 +109,11 @@ HIPR_FN vec2 rng_blue_sobol2(uint index, uvec2 pixel, uint pair, uint seed) {
   // Salts keep these hashes apart from the random sampler's.
   const uvec4 sequenceSeeds = rng_hash4(uvec4(pair, 0x5eed0003u, seed, 0x9e3779b9u));
   const uvec4 shiftSeeds = rng_hash4(uvec4(pair, 0x5eed0004u, seed, 0x7f4a7c15u));
-  // Only the low 16 bits of the sample index are shuffled (within each run of 2^16 samples, a
-  // nested scramble still), so the Sobol loop stops at bit 16 for a pixel's first 65536 samples.
-  const uint i = (rng_nested_uniform_scramble(index, sequenceSeeds.x) & 0xffffu) | (index & 0xffff0000u);
-  const uvec2 x = rng_scrambled_sobol2(i, uvec2(sequenceSeeds.y, sequenceSeeds.z));
-  const uvec2 d = rng_scrambled_sobol2(rng_nested_uniform_scramble(rng_morton(pixel), shiftSeeds.x), uvec2(shiftSeeds.y, shiftSeeds.z));
-  return vec2(rng_unit_float(x.x ^ d.x), rng_unit_float(x.y ^ d.y));
+  const uint i = rng_nested_uniform_scramble(index, sequenceSeeds.x);
+  const uvec2 x = rng_scrambled_sobol2_reversed(i, uvec2(sequenceSeeds.y, sequenceSeeds.z));
+  const uint m = rng_nested_uniform_scramble(rng_morton(pixel), shiftSeeds.x);
+  const uvec2 d = rng_scrambled_sobol2_reversed(m, uvec2(shiftSeeds.y, shiftSeeds.z));
+  return vec2(rng_unit_float(bitfieldReverse(x.x ^ d.x)), rng_unit_float(bitfieldReverse(x.y ^ d.y)));
 }
 
 struct PathRng {
