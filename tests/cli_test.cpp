@@ -247,9 +247,10 @@ TEST(Info, ListsKernelFeaturesSkippedFeaturesAndRays) {
     EXPECT_NE(line(box.output, "skipped").find(skipped), std::string::npos) << skipped << "\n" << box.output;
   EXPECT_EQ(line(box.output, "rays"), "rays       every ray is needed");
 
-  // The unlit furnace sphere: nothing to sample, nothing emits, and the frame's corners are empty.
-  const test::CommandResult furnace =
-      test::run_hipr("info " + quoted(test::asset("furnace_sphere.gltf")) + " --width 128 --height 128 --tile 16");
+  // The unlit furnace sphere without the built-in studio: nothing to sample, nothing emits, and
+  // the frame's corners are empty.
+  const test::CommandResult furnace = test::run_hipr("info " + quoted(test::asset("furnace_sphere.gltf")) +
+                                                     " --env none --width 128 --height 128 --tile 16");
   ASSERT_EQ(furnace.exit_code, kExitOk) << furnace.output;
   EXPECT_EQ(line(furnace.output, "kernel"), "kernel     no other feature");
   const std::string rays = line(furnace.output, "rays");
@@ -257,6 +258,44 @@ TEST(Info, ListsKernelFeaturesSkippedFeaturesAndRays) {
   EXPECT_NE(rays.find(" of 64 tiles (background only at 128x128, tile 16)"), std::string::npos) << rays;
   const std::string bad_tile = "info " + quoted(test::asset("furnace_sphere.gltf")) + " --tile 0";
   EXPECT_EQ(test::run_hipr(bad_tile).exit_code, kExitBadInput);
+}
+
+// A scene that brings no light is lit by the built-in studio unless told otherwise, and says so;
+// a black render because nothing emits says so too.
+TEST(EnvironmentChoice, UnlitSceneGetsTheStudioAndSaysSo) {
+  const std::string scene = quoted(test::asset("furnace_sphere.gltf"));
+  const test::CommandResult info = test::run_hipr("info " + scene);
+  ASSERT_EQ(info.exit_code, kExitOk) << info.output;
+  EXPECT_NE(info.output.find("env        studio (built in)"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("brings no light: lit by the built-in studio"), std::string::npos) << info.output;
+  const test::CommandResult lit = test::run_hipr("info " + quoted(test::asset("cornell_box.gltf")));
+  EXPECT_NE(lit.output.find("env        none"), std::string::npos) << lit.output;
+
+  const auto dir = test::temp_dir("env_choice");
+  const std::string size = " --width 16 --height 16 --spp 2 -q";
+  const test::CommandResult studio = test::run_hipr("render " + scene + " -o " + quoted(dir / "studio.exr") + size);
+  ASSERT_EQ(studio.exit_code, kExitOk) << studio.output;
+  EXPECT_GT(test::mean(read_image(dir / "studio.exr")), 0.1);
+
+  const test::CommandResult none =
+      test::run_hipr("render " + scene + " -o " + quoted(dir / "none.exr") + size + " --env none");
+  ASSERT_EQ(none.exit_code, kExitOk) << none.output;
+  EXPECT_EQ(test::mean(read_image(dir / "none.exr")), 0.0);
+  const std::vector<std::string> lines = test::lines_of(none.output);
+  ASSERT_EQ(lines.size(), 1u) << none.output;
+  EXPECT_NE(lines[0].find("nothing in the scene emits light"), std::string::npos) << none.output;
+
+  const test::CommandResult sky = test::run_hipr("render " + scene + " -o " + quoted(dir / "sky.exr") + size +
+                                                 " --env sky --sun-elevation 20 --turbidity 4");
+  ASSERT_EQ(sky.exit_code, kExitOk) << sky.output;
+  EXPECT_GT(test::mean(read_image(dir / "sky.exr")), 1000.0);  // daylight, in nits
+  for (const char* bad : {" --turbidity 20", " --sun-elevation -5", " --sun-azimuth nan"}) {
+    const test::CommandResult result = test::run_hipr("render " + scene + " -o " + quoted(dir / "bad.exr") + size +
+                                                      " --env sky" + bad);
+    EXPECT_EQ(result.exit_code, kExitBadInput) << bad;
+    EXPECT_EQ(test::lines_of(result.output).size(), 1u) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad.exr"));
+  }
 }
 
 std::string scene_test_name(const testing::TestParamInfo<std::string>& param_info) {

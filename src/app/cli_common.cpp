@@ -19,7 +19,18 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
   app.add_option("--max-depth", o.render.max_depth, "Maximum number of bounces (0 = emitters only)")
       ->capture_default_str();
   app.add_option("--tile", o.render.tile_size, "Tile size n (tiles are n x n pixels)")->capture_default_str();
-  app.add_option("--env", o.load.environment, "Equirectangular environment map (.hdr or .exr)");
+  o.load.environment = kAutoEnvironment;
+  app.add_option("--env", o.load.environment,
+                 "Environment light: auto (the built-in studio when the scene has no light), studio, sky (daylight "
+                 "with a sun), none, or an equirectangular .hdr/.exr")
+      ->capture_default_str();
+  app.add_option("--sun-elevation", o.load.sky.sun_elevation_degrees, "--env sky: sun above the horizon, degrees (0-90)")
+      ->capture_default_str();
+  app.add_option("--sun-azimuth", o.load.sky.sun_azimuth_degrees,
+                 "--env sky: sun azimuth, degrees (0: behind the default camera, 90: toward +X)")
+      ->capture_default_str();
+  app.add_option("--turbidity", o.load.sky.turbidity, "--env sky: haze, 1.7 (clear) to 10 (murky)")
+      ->capture_default_str();
   app.add_option("--env-intensity", o.load.environment_intensity, "Environment radiance multiplier")
       ->capture_default_str();
   app.add_option("--env-rotation", o.load.environment_rotation_degrees, "Environment rotation about +Y, degrees")
@@ -56,6 +67,7 @@ void validate_common_options(CommonOptions& o) {
   require(std::isfinite(o.load.environment_intensity) && o.load.environment_intensity >= 0.0f,
           "--env-intensity must be a finite non-negative number");
   require(std::isfinite(o.load.environment_rotation_degrees), "--env-rotation must be finite");
+  validate_sky(o.load.sky);
   HiprParameters& h = o.render.hipr;
   require(std::isfinite(h.w_occlusion) && h.w_occlusion >= 0.0f, "--w-occlusion must be finite and non-negative");
   require(std::isfinite(h.depth_epsilon) && h.depth_epsilon > 0.0f && h.depth_epsilon < 1.0f,
@@ -63,6 +75,13 @@ void validate_common_options(CommonOptions& o) {
   apply_hipr_preset(o.preset, h);
   if (!o.w_lobe.empty()) set_hipr_weights(o.w_lobe, h.w_lobe, "--w-lobe");
   if (!o.w_path.empty()) set_hipr_weights(o.w_path, h.w_path, "--w-path");
+}
+
+void validate_sky(const SkyParameters& sky) {
+  if (!(sky.sun_elevation_degrees >= 0.0f && sky.sun_elevation_degrees <= 90.0f))
+    throw InputError("--sun-elevation must be between 0 and 90 degrees");
+  if (!std::isfinite(sky.sun_azimuth_degrees)) throw InputError("--sun-azimuth must be finite");
+  if (!(sky.turbidity >= 1.7f && sky.turbidity <= 10.0f)) throw InputError("--turbidity must be between 1.7 and 10");
 }
 
 vk::ContextOptions context_options(const CommonOptions& o) {

@@ -34,6 +34,8 @@ void add_common_options(CLI::App& app, CommonOptions& options);
 
 // Checks ranges CLI11 cannot express and applies the HiPR preset/weights; throws InputError.
 void validate_common_options(CommonOptions& options);
+// --sun-elevation, --sun-azimuth, --turbidity in range (InputError otherwise).
+void validate_sky(const SkyParameters& sky);
 
 // The HiPR weight presets (--preset): names, and setting w_lobe / w_path from one (throws
 // InputError for an unknown name). The viewer offers the same presets.

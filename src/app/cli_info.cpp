@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "image/builtin_environments.h"
 #include "render/background_tiles.h"
 #include "render/kernel_features.h"
 #include "shaders/shared/abi.h"
@@ -36,6 +37,7 @@ const char* light_type_name(LightType type) {
 }
 
 int run_info(const InfoOptions& o) {
+  validate_sky(o.load.sky);
   const Scene scene = load_scene(o.scene, o.load);
   const std::vector<Instance> instances = scene.instances();
 
@@ -70,8 +72,8 @@ int run_info(const InfoOptions& o) {
                 (m.params.flags & abi::kMaterialDoubleSided) ? "  double-sided" : "");
   }
   std::printf("textures   %zu (on %zu images)\n", scene.textures.size(), scene.images.size());
-  std::printf("lights     %zu punctual, %zu emissive triangles%s\n", punctual, emissive_triangles,
-              scene.environment ? ", environment map" : "");
+  std::printf("lights     %zu punctual, %zu emissive triangles\n", punctual, emissive_triangles);
+  std::printf("env        %s\n", environment_description(scene).c_str());
   for (const Node& node : scene.nodes)
     if (node.light >= 0) {
       const PunctualLight& l = scene.lights[size_t(node.light)];
@@ -116,7 +118,14 @@ Command add_info_command(CLI::App& app) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand("info", "Print what a scene contains and what the renderer will use");
   cmd->add_option("scene", options->scene, "Scene file (.gltf or .glb)")->required();
-  cmd->add_option("--env", options->load.environment, "Equirectangular environment map (.hdr or .exr)");
+  options->load.environment = kAutoEnvironment;
+  cmd->add_option("--env", options->load.environment,
+                  "Environment light: auto (the built-in studio when the scene has no light), studio, sky (daylight "
+                  "with a sun), none, or an equirectangular .hdr/.exr")
+      ->capture_default_str();
+  cmd->add_option("--sun-elevation", options->load.sky.sun_elevation_degrees, "--env sky: sun elevation, degrees");
+  cmd->add_option("--sun-azimuth", options->load.sky.sun_azimuth_degrees, "--env sky: sun azimuth, degrees");
+  cmd->add_option("--turbidity", options->load.sky.turbidity, "--env sky: haze, 1.7 to 10");
   cmd->add_option("--width", options->render.width, "Image width in pixels (for background tiles)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 16384u));

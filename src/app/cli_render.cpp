@@ -10,6 +10,7 @@
 #include "core/file_util.h"
 #include "core/log.h"
 #include "core/timer.h"
+#include "image/builtin_environments.h"
 #include "render/gpu_scene.h"
 #include "image/image_io.h"
 
@@ -48,7 +49,8 @@ int run_render(RenderOptions& o) {
   const double setup_seconds = setup_timer.seconds();
   log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" +
             std::to_string(renderer.scene_stats().triangle_count) + " triangles, " +
-            std::to_string(renderer.scene_stats().light_count) + " lights)");
+            std::to_string(renderer.scene_stats().light_count) + " lights, environment " +
+            environment_description(scene) + ")");
 
   // Batches grow until one submission takes ~0.25 s: few submissions, steady progress.
   const Timer timer;

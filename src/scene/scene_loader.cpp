@@ -12,6 +12,7 @@
 #include "core/file_util.h"
 #include "core/log.h"
 #include "hipr/scene_loader.h"
+#include "image/builtin_environments.h"
 #include "image/environment_loader.h"
 #include "scene/default_camera.h"
 #include "scene/glb_container.h"
@@ -383,11 +384,27 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   Scene scene;
   scene.source = path;
   Converter(model, scene, name).run();
-  if (!options.environment.empty()) {
+  const std::string choice = options.environment.string();
+  const SceneLighting lighting = scene_lighting(scene);
+  if (choice == kStudioEnvironmentName || (choice == kAutoEnvironment && !lighting.lights_itself())) {
+    scene.environment = make_studio_environment();
+    if (choice == kAutoEnvironment)
+      log::info(name + (lighting.emits() ? " brings no light (its emission is 1 nit at most, a glow)"
+                                         : " brings no light") +
+                ": lit by the built-in studio environment (--env none for none)");
+  } else if (choice == kSkyEnvironmentName) {
+    scene.environment = make_sky_environment(options.sky);
+  } else if (!choice.empty() && choice != kNoEnvironment && choice != kAutoEnvironment) {
     scene.environment = load_environment(options.environment);
+  }
+  if (scene.environment) {
     scene.environment->intensity = options.environment_intensity;
     scene.environment->rotation = glm::radians(options.environment_rotation_degrees);
     sandbox.hasher().add(scene.environment->texels.data(), scene.environment->texels.size() * sizeof(glm::vec3));
+  } else if (choice == kNoEnvironment && !lighting.emits()) {
+    // (Only when asked for by name: the library's default, empty, is silent.)
+    log::warn(name + ": nothing in the scene emits light and there is no environment: the image will be black "
+              "(--env studio lights it)");
   }
   scene.content_hash = sandbox.hasher().hex();
   return scene;

@@ -10,6 +10,7 @@
 
 #include "app/cli_common.h"
 #include "core/error.h"
+#include "image/builtin_environments.h"
 
 namespace hipr::viewer {
 namespace {
@@ -224,6 +225,8 @@ void draw_status_line(const Session& session, const ViewerState& state, float x,
   add("%.1f s since edit", session.seconds_since_edit());
   add("%.2f Msamples/s", session.samples_per_second() * 1e-6);
   add("%.1f fps", state.fps);
+  // Which light from afar the image uses (the built-in studio lights a scene with no light).
+  if (session.scene().environment) add("env %s", environment_description(session.scene()).c_str());
   const auto& records = session.edit_records();
   if (!records.empty() && records.back().latency_seconds >= 0.0)
     add("latency %.0f ms", records.back().latency_seconds * 1e3);

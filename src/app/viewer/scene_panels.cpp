@@ -8,6 +8,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "app/viewer/panels.h"
+#include "image/builtin_environments.h"
 #include "scene/material_parameters.h"
 
 namespace hipr::viewer {
@@ -216,10 +217,10 @@ void environment_section(Session& session, ViewerState& state) {
   if (!ImGui::CollapsingHeader("Environment")) return;
   const Scene& scene = session.scene();
   if (!scene.environment) {
-    ImGui::TextDisabled("No environment map (start with --env FILE.hdr).");
+    ImGui::TextDisabled("No environment (start with --env studio or --env FILE.hdr).");
     return;
   }
-  ImGui::TextWrapped("%s", scene.environment->path.filename().string().c_str());
+  ImGui::TextWrapped("%s", environment_description(scene).c_str());
   float intensity = scene.environment->intensity;
   if (ImGui::DragFloat("intensity##env", &intensity, drag_speed(intensity, 0.01f), 0.0f, FLT_MAX,
                        "%.3f", ImGuiSliderFlags_AlwaysClamp))
