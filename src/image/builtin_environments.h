@@ -16,7 +16,7 @@ inline constexpr const char* kSkyEnvironmentName = "sky";
 // Radiance (nits, linear RGB, grey) of the neutral studio toward `direction` (unit, +Y up,
 // the camera's default view along -Z): a soft grey surround brighter above than below, a large
 // key light in front, above and to the left, a dimmer fill on the right and a rim light behind.
-// Low contrast (brightest to darkest about 6:1) and colour-neutral; a white diffuse surface
+// Low contrast (brightest to darkest about 8:1) and colour-neutral; a white diffuse surface
 // facing up reflects about 1 nit, so images come out well exposed at --exposure 0.
 glm::vec3 studio_radiance(glm::vec3 direction);
 
@@ -32,12 +32,13 @@ glm::vec3 sun_direction(const SkyParameters& sky);
 // scaled by the model's zenith luminance and chromaticity.
 glm::dvec3 preetham_sky_xyY(glm::vec3 direction, const SkyParameters& sky);
 
-// Linear Rec.709 radiance (nits) of the sky toward `direction`, sun excluded; below the horizon
-// a grey ground of albedo 0.2 lit by the sky and the sun.
+// A width x width/2 equirectangular map of linear Rec.709 radiance (nits): the sky above the
+// horizon, the sun in the texel that holds its centre, and below the horizon a grey ground of
+// albedo 0.2 lit by both.
 Environment make_sky_environment(const SkyParameters& sky, uint32_t width = 1024);
 
-// What lights the scene from afar, for logs and `hipr info`: "none", "studio (built in)" or the
-// map's file name.
+// What lights the scene from afar, for logs and `hipr info`: "none", "studio (built in)",
+// "sky (built in)" or the map's file name.
 std::string environment_description(const Scene& scene);
 
 // What the scene brings to light itself: punctual lights on nodes, and the brightest emissive
