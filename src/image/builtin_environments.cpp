@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include <glm/gtc/constants.hpp>
 
@@ -196,6 +197,28 @@ std::string environment_description(const Scene& scene) {
   if (scene.environment->path == kStudioEnvironmentName) return "studio (built in)";
   if (scene.environment->path == kSkyEnvironmentName) return "sky (built in)";
   return scene.environment->path.filename().string();
+}
+
+std::string environment_flags(const Scene& scene, const SceneLoadOptions& loaded) {
+  if (!scene.environment) return std::string("--env ") + kNoEnvironment;
+  const Environment& env = *scene.environment;
+  const auto number = [](float value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+  };
+  std::string flags = "--env ";
+  if (env.path == kSkyEnvironmentName)
+    flags += std::string(kSkyEnvironmentName) + " --sun-elevation " + number(loaded.sky.sun_elevation_degrees) +
+             " --sun-azimuth " + number(loaded.sky.sun_azimuth_degrees) + " --turbidity " +
+             number(loaded.sky.turbidity);
+  else if (env.path == kStudioEnvironmentName)
+    flags += kStudioEnvironmentName;
+  else
+    flags += env.path.string();
+  if (env.intensity != 1.0f) flags += " --env-intensity " + number(env.intensity);
+  if (env.rotation != 0.0f) flags += " --env-rotation " + number(glm::degrees(env.rotation));
+  return flags;
 }
 
 SceneLighting scene_lighting(const Scene& scene) {

@@ -41,6 +41,11 @@ Environment make_sky_environment(const SkyParameters& sky, uint32_t width = 1024
 // "sky (built in)" or the map's file name.
 std::string environment_description(const Scene& scene);
 
+// The command-line flags that bring the scene's environment back on reopening (glTF cannot hold
+// it): --env NAME|FILE, the sky's parameters (taken from `loaded`, what built the sky), and
+// --env-intensity / --env-rotation where they differ from the defaults. "--env none" without one.
+std::string environment_flags(const Scene& scene, const SceneLoadOptions& loaded);
+
 // What the scene brings to light itself: punctual lights on nodes, and the brightest emissive
 // material of a visible instance (the largest channel of emission_color x emission_luminance,
 // nits; textures not counted).

@@ -22,6 +22,7 @@
 #include "core/timer.h"
 #include "hipr/scene_loader.h"
 #include "hipr/scene_writer.h"
+#include "image/builtin_environments.h"
 #include "render/display_pass.h"
 #include "vk/image.h"
 #include "vk/swapchain.h"
@@ -276,14 +277,10 @@ void Viewer::save_scene_file() {
     save_scene(m_session->scene(), path);
     m_session->mark_saved();
     m_state.info("saved " + path.string());
-    // The environment map comes from --env, not from glTF: say how to get its edits back.
-    const auto& env = m_session->scene().environment;
-    const SceneLoadOptions& loaded = m_options.common.load;
-    if (env && (env->intensity != loaded.environment_intensity ||
-                env->rotation != glm::radians(loaded.environment_rotation_degrees)))
-      m_state.info("glTF has no environment: reopen with --env-intensity " +
-                   std::to_string(env->intensity) + " --env-rotation " +
-                   std::to_string(glm::degrees(env->rotation)));
+    // The environment comes from --env, not from glTF: say how to get it and its edits back.
+    if (m_session->scene().environment)
+      m_state.info("glTF has no environment: reopen with " +
+                   environment_flags(m_session->scene(), m_options.common.load));
   } catch (const std::exception& e) {
     m_state.error("cannot save " + path.string() + ": " + e.what());
   }
@@ -482,7 +479,11 @@ int Viewer::run() {
       failures += (failures.empty() ? "" : "; ") + std::string(e.what());
     }
   };
-  if (!m_options.save.empty()) attempt([&] { save_scene(m_session->scene(), m_options.save); });
+  if (!m_options.save.empty()) {
+    attempt([&] { save_scene(m_session->scene(), m_options.save); });
+    if (m_session->scene().environment)
+      log::info("glTF has no environment: reopen with " + environment_flags(m_session->scene(), m_options.common.load));
+  }
   if (!m_options.screenshot.empty())
     attempt([&] { save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed()); });
   if (!m_options.stats_json.empty()) attempt([&] { write_stats(seconds); });
