@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "shaders/shared/abi.h"
@@ -49,7 +50,7 @@ TEST(Sobol, DimensionOneFollowsTheJoeKuoRecurrence) {
     uint32_t expected = 0;
     for (int k = 0; k < 32; ++k)
       if ((index >> k) & 1u) expected ^= columns[k];
-    EXPECT_EQ(sh::rng_sobol1(index), expected) << index;
+    EXPECT_EQ(glm::bitfieldReverse(sh::rng_sobol1_reversed(index)), expected) << index;
   }
 }
 
@@ -105,8 +106,11 @@ TEST(Sampler, EveryPowerOfTwoRunOfAPixelIsAnElementaryNet) {
           // The first n samples, and the next n (the second batch of a progressive render).
           for (uint32_t first : {0u, n}) {
             const std::vector<glm::vec4> points = pixel_samples(pixel, first, n, bounce, block);
-            EXPECT_TRUE(is_02_net(points, 0, 1)) << "pixel " << pixel.x << "," << pixel.y << " block " << block << " n " << n << " from " << first;
-            EXPECT_TRUE(is_02_net(points, 2, 3)) << "pixel " << pixel.x << "," << pixel.y << " block " << block << " n " << n << " from " << first;
+            const std::string where = "pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) +
+                                      " block " + std::to_string(block) + " n " + std::to_string(n) +
+                                      " from " + std::to_string(first);
+            EXPECT_TRUE(is_02_net(points, 0, 1)) << where;
+            EXPECT_TRUE(is_02_net(points, 2, 3)) << where;
             for (int d = 0; d < 4; ++d) EXPECT_TRUE(is_stratified_1d(points, d)) << "dimension " << d << " n " << n;
           }
         }
@@ -130,7 +134,8 @@ TEST(Sampler, AtOneSampleIndexEveryAlignedPixelBlockIsAnElementaryNet) {
   for (uint32_t sample : {0u, 1u, 7u, 100u}) {
     for (uint32_t block : {0u, 1u, 2u}) {
       for (uint32_t size : {2u, 4u, 8u, 16u}) {
-        for (glm::uvec2 corner : {glm::uvec2(0, 0), glm::uvec2(size, 0), glm::uvec2(3 * size, 5 * size), glm::uvec2(640, 368)}) {
+        for (glm::uvec2 corner :
+             {glm::uvec2(0, 0), glm::uvec2(size, 0), glm::uvec2(3 * size, 5 * size), glm::uvec2(640, 368)}) {
           const std::vector<glm::vec4> points = block_samples(corner, size, sample, 1, block);
           EXPECT_TRUE(is_02_net(points, 0, 1)) << "sample " << sample << " block " << block << " size " << size;
           EXPECT_TRUE(is_02_net(points, 2, 3)) << "sample " << sample << " block " << block << " size " << size;
@@ -147,7 +152,8 @@ TEST(Sampler, AtOneSampleIndexEveryAlignedPixelBlockIsAnElementaryNet) {
 TEST(Sampler, RandomSamplerIsNotStratified) {
   // The control: independent hashes miss cells (otherwise the test above proves nothing).
   int nets = 0;
-  for (uint32_t pixel = 0; pixel < 20; ++pixel) nets += is_02_net(pixel_samples({pixel, 0}, 0, 64, 0, 0, kSamplerRandom), 0, 1);
+  for (uint32_t pixel = 0; pixel < 20; ++pixel)
+    nets += is_02_net(pixel_samples({pixel, 0}, 0, 64, 0, 0, kSamplerRandom), 0, 1);
   EXPECT_EQ(nets, 0);
 }
 
@@ -174,7 +180,8 @@ double rmse(F f, double exact, uint32_t n, uint32_t sampler, int x = 0, int y = 
   double sum = 0.0;
   for (uint32_t pixel = 0; pixel < pixels; ++pixel) {
     double estimate = 0.0;
-    for (const glm::vec4& p : pixel_samples({pixel % 16, pixel / 16}, 0, n, 1, 0, sampler, pixel + 1)) estimate += f(p[x], p[y]);
+    for (const glm::vec4& p : pixel_samples({pixel % 16, pixel / 16}, 0, n, 1, 0, sampler, pixel + 1))
+      estimate += f(p[x], p[y]);
     estimate /= n;
     sum += (estimate - exact) * (estimate - exact);
   }

@@ -70,9 +70,6 @@ HIPR_FN uint rng_sobol1_reversed(uint index) {
   return index;
 }
 
-// Dimension 1 of Sobol point `index` (dimension 0 is bitfieldReverse(index)).
-HIPR_FN uint rng_sobol1(uint index) { return bitfieldReverse(rng_sobol1_reversed(index)); }
-
 // Dimensions 0 and 1 of Sobol point `index`, Owen-scrambled by the two seeds, bit-reversed
 // (the nested scramble of bitfieldReverse(v) is bitfieldReverse(rng_laine_karras(v)), so the
 // reversal waits until the caller has XORed what it needs).

@@ -12,6 +12,22 @@ namespace {
 
 constexpr float kPi = glm::pi<float>();
 
+// The centre of texel (column, row) of a width x height equirectangular map, in the kernels'
+// convention (shaders/common/environment.glsl, top row = +Y): u = atan2(x, -z) / 2pi + 1/2,
+// v = acos(y) / pi.
+glm::vec3 texel_direction(uint32_t width, uint32_t height, uint32_t column, uint32_t row) {
+  const float theta = kPi * (float(row) + 0.5f) / float(height);
+  const float phi = 2.0f * kPi * ((float(column) + 0.5f) / float(width) - 0.5f);
+  return {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+}
+
+// Solid angle of a texel of `row`.
+double texel_solid_angle(uint32_t width, uint32_t height, uint32_t row) {
+  return (2.0 * kPi / width) * (kPi / height) * std::sin(kPi * (row + 0.5) / height);
+}
+
+double luminance(glm::dvec3 rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
+
 // A soft area light as seen from the centre: a smooth bump around `axis`, `radiance` at its
 // centre, falling to half at about `half_angle_degrees` (a power of the cosine, so no edge).
 float soft_light(glm::vec3 direction, glm::vec3 axis, float radiance, float half_angle_degrees) {
@@ -40,16 +56,10 @@ Environment make_studio_environment(uint32_t width) {
   env.width = width;
   env.height = width / 2;
   env.texels.resize(size_t(env.width) * env.height);
-  // The kernels' equirectangular convention (shaders/common/environment.glsl, top row = +Y):
-  // u = atan2(x, -z) / 2pi + 1/2, v = acos(y) / pi.
-  for (uint32_t row = 0; row < env.height; ++row) {
-    const float theta = kPi * (float(row) + 0.5f) / float(env.height);
-    for (uint32_t column = 0; column < env.width; ++column) {
-      const float phi = 2.0f * kPi * ((float(column) + 0.5f) / float(env.width) - 0.5f);
-      const glm::vec3 direction(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
-      env.texels[size_t(row) * env.width + column] = studio_radiance(direction);
-    }
-  }
+  for (uint32_t row = 0; row < env.height; ++row)
+    for (uint32_t column = 0; column < env.width; ++column)
+      env.texels[size_t(row) * env.width + column] =
+          studio_radiance(texel_direction(env.width, env.height, column, row));
   return env;
 }
 
@@ -105,9 +115,10 @@ glm::dvec3 xyY_to_rec709(glm::dvec3 xyY) {
   return glm::max(xyz_to_rec709({xyY.x * scale, xyY.z, (1.0 - xyY.x - xyY.y) * scale}), glm::dvec3(0.0));
 }
 
-// The sun: 128,000 lux outside the atmosphere (taken as white); through the atmosphere, Rayleigh and aerosol optical depths at 680, 550 and 440 nm
-// (Angstrom: beta = 0.04608 T - 0.04586, alpha 1.3, as Preetham et al. relate haze to
-// turbidity) along Kasten and Young's relative air mass.
+// The sun: 128,000 lux outside the atmosphere (taken as white); through the atmosphere,
+// Rayleigh and aerosol optical depths at 680, 550 and 440 nm (Angstrom: beta = 0.04608 T -
+// 0.04586, alpha 1.3, as Preetham et al. relate haze to turbidity) along Kasten and Young's
+// relative air mass.
 constexpr double kSunIlluminance = 128000.0;
 
 glm::dvec3 sun_illuminance(const SkyParameters& sky) {
@@ -155,22 +166,14 @@ Environment make_sky_environment(const SkyParameters& sky, uint32_t width) {
   env.width = width;
   env.height = width / 2;
   env.texels.assign(size_t(env.width) * env.height, glm::vec3(0.0f));
-  const auto solid_angle = [&](uint32_t row) {
-    return (2.0 * kPi / env.width) * (kPi / env.height) * std::sin(kPi * (row + 0.5) / env.height);
-  };
-  const auto direction = [&](uint32_t column, uint32_t row) {
-    const float theta = kPi * (float(row) + 0.5f) / float(env.height);
-    const float phi = 2.0f * kPi * ((float(column) + 0.5f) / float(env.width) - 0.5f);
-    return glm::vec3(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
-  };
   // Sky above the horizon; its irradiance on the ground on the way.
   double ground_irradiance = 0.0;
   for (uint32_t row = 0; row < env.height / 2; ++row) {
     for (uint32_t column = 0; column < env.width; ++column) {
-      const glm::vec3 d = direction(column, row);
+      const glm::vec3 d = texel_direction(env.width, env.height, column, row);
       const glm::dvec3 rgb = xyY_to_rec709(preetham_sky_xyY(d, sky));
       env.texels[size_t(row) * env.width + column] = glm::vec3(rgb);
-      ground_irradiance += (0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b) * d.y * solid_angle(row);
+      ground_irradiance += luminance(rgb) * d.y * texel_solid_angle(env.width, env.height, row);
     }
   }
   // The sun's disc (0.53 degrees) is smaller than a texel at any useful resolution: its
@@ -182,8 +185,8 @@ Environment make_sky_environment(const SkyParameters& sky, uint32_t width) {
     const float u = std::atan2(sun.x, -sun.z) / (2.0f * kPi) + 0.5f, v = std::acos(sun.y) / kPi;
     const uint32_t column = std::min(uint32_t(u * float(env.width)), env.width - 1);
     const uint32_t row = std::min(uint32_t(v * float(env.height)), env.height - 1);
-    env.texels[size_t(row) * env.width + column] += glm::vec3(sun_rgb / solid_angle(row));
-    ground_irradiance += (0.2126 * sun_rgb.r + 0.7152 * sun_rgb.g + 0.0722 * sun_rgb.b) * double(sun.y);
+    env.texels[size_t(row) * env.width + column] += glm::vec3(sun_rgb / texel_solid_angle(env.width, env.height, row));
+    ground_irradiance += luminance(sun_rgb) * double(sun.y);
   }
   // Ground: grey, albedo 0.2, Lambertian under that irradiance.
   const glm::vec3 ground(float(0.2 * ground_irradiance / kPi));
