@@ -213,14 +213,14 @@ TEST(EnvironmentChoice, FlagsBringTheEnvironmentBack) {
   options.sky.sun_elevation_degrees = 25.0f;
   options.sky.turbidity = 4.5f;
   Scene scene = load_scene(test::asset("furnace_sphere.gltf"), options);
-  EXPECT_EQ(environment_flags(scene, options), "--env sky --sun-elevation 25 --sun-azimuth 30 --turbidity 4.5");
+  EXPECT_EQ(environment_flags(scene), "--env sky --sun-elevation 25 --sun-azimuth 30 --turbidity 4.5");
   scene.environment->intensity = 2.0f;
   scene.environment->rotation = kPi / 2.0f;
-  EXPECT_EQ(environment_flags(scene, options),
+  EXPECT_EQ(environment_flags(scene),
             "--env sky --sun-elevation 25 --sun-azimuth 30 --turbidity 4.5 --env-intensity 2 --env-rotation 90");
   options.environment = kAutoEnvironment;
-  EXPECT_EQ(environment_flags(load_scene(test::asset("furnace_sphere.gltf"), options), options), "--env studio");
-  EXPECT_EQ(environment_flags(load_scene(test::asset("cornell_box.gltf"), options), options), "--env none");
+  EXPECT_EQ(environment_flags(load_scene(test::asset("furnace_sphere.gltf"), options)), "--env studio");
+  EXPECT_EQ(environment_flags(load_scene(test::asset("cornell_box.gltf"), options)), "--env none");
 }
 
 TEST(EnvironmentChoice, StudioFurnace) {

@@ -333,6 +333,30 @@ TEST(Replay, PoliciesEndInTheSameFinalImage) {
     EXPECT_TRUE(fs::exists(dir / "hipr" / file)) << file;
 }
 
+// An edit that switches the environment (studio -> sky with its sun) is re-rendered like any
+// other: every policy ends on the full-frame render of the scene loaded with that sky.
+TEST(Replay, EnvironmentSwitchEndsOnARenderOfTheNewLight) {
+  const fs::path dir = test::temp_dir("replay_env");
+  const fs::path script = dir / "sky.json";
+  std::ofstream(script) << R"({"edits": [{"op": "environment", "source": "sky",
+                                          "set": {"sun_elevation": 25, "intensity": 0.0005}}]})";
+  const std::string size = " --width 32 --height 32 --spp 2 --tile 8 --max-depth 4 -q";
+  const fs::path rendered = dir / "sky.exr";
+  ASSERT_EQ(test::run_hipr("render " + quoted(test::asset("furnace_sphere.gltf")) + " --env sky --sun-elevation 25" +
+                           " --env-intensity 0.0005 -o " + quoted(rendered) + size)
+                .exit_code,
+            kExitOk);
+  const ImageRGB expected = read_image(rendered);
+  for (const char* policy : {"hipr", "full"}) {
+    const fs::path out = dir / policy;
+    const test::CommandResult result = test::run_hipr("replay " + quoted(test::asset("furnace_sphere.gltf")) + " " +
+                                                      quoted(script) + " --env studio -o " + quoted(out) +
+                                                      " --policy " + policy + size);
+    ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+    EXPECT_EQ(read_image(out / "final.exr").rgb, expected.rgb) << policy;
+  }
+}
+
 TEST(Replay, BadPolicyOrUnknownNameWritesNothing) {
   const fs::path dir = test::temp_dir("replay-bad");
   const fs::path script = dir / "edits.json";

@@ -185,16 +185,120 @@ TEST(EditScript, BadEnvironmentEditsNameTheProblem) {
 TEST(SceneDiff, EnvironmentEditRestartsEverythingAndRebuildsLightTables) {
   const Scene base = sky_scene();
   Scene s = base;
-  apply_edit(s, EnvironmentEdit{std::nullopt, 0.5f});
+  apply_edit(s, EnvironmentEdit{.rotation = 0.5f});
   ChangeSet c = diff_scenes(base, s);
   EXPECT_TRUE(c.environment);
   EXPECT_TRUE(c.light_tables);  // the environment's share of light selection follows its power
   EXPECT_TRUE(c.instances.empty());
   EXPECT_FALSE(c.empty());
   s = base;
-  apply_edit(s, EnvironmentEdit{3.0f, std::nullopt});
+  apply_edit(s, EnvironmentEdit{.intensity = 3.0f});
   EXPECT_TRUE(diff_scenes(base, s).environment);
   EXPECT_FALSE(diff_scenes(base, base).environment);
+}
+
+TEST(EditScript, EnvironmentSourceAndSun) {
+  const auto edits = parse_edit_script(R"({"edits": [
+      {"op": "environment", "source": "sky", "set": {"sun_elevation": 20, "turbidity": 4}},
+      {"op": "environment", "set": {"sun_azimuth": -45}},
+      {"op": "environment", "source": "maps/room.hdr"},
+      {"op": "environment", "source": "/abs/room.exr"},
+      {"op": "environment", "source": "none"}]})",
+                                       "e", "/scripts");
+  ASSERT_EQ(edits.size(), 5u);
+  const auto& sky = std::get<EnvironmentEdit>(edits[0]);
+  EXPECT_EQ(sky.source, std::filesystem::path("sky"));  // built-in names are not paths
+  EXPECT_EQ(sky.sun_elevation_degrees, 20.0f);
+  EXPECT_EQ(sky.turbidity, 4.0f);
+  EXPECT_FALSE(sky.sun_azimuth_degrees.has_value());
+  EXPECT_EQ(describe(edits[0]), "environment sky");
+  EXPECT_EQ(std::get<EnvironmentEdit>(edits[1]).sun_azimuth_degrees, -45.0f);
+  EXPECT_EQ(describe(edits[1]), "environment sun");
+  // A file is relative to the script's folder; an absolute one stays.
+  EXPECT_EQ(std::get<EnvironmentEdit>(edits[2]).source, std::filesystem::path("/scripts/maps/room.hdr"));
+  EXPECT_EQ(std::get<EnvironmentEdit>(edits[3]).source, std::filesystem::path("/abs/room.exr"));
+  EXPECT_EQ(std::get<EnvironmentEdit>(edits[4]).source, std::filesystem::path("none"));
+}
+
+TEST(EditScript, BadEnvironmentSwitchesNameTheProblem) {
+  expect_input_error(R"({"edits": [{"op": "environment"}]})", "source");
+  expect_input_error(R"({"edits": [{"op": "environment", "source": ""}]})", "source");
+  expect_input_error(R"({"edits": [{"op": "environment", "source": 3}]})", "source");
+  expect_input_error(R"({"edits": [{"op": "environment", "source": "studio", "set": {"turbidity": 3}}]})",
+                     "sky");
+  expect_input_error(R"({"edits": [{"op": "environment", "source": "sky", "set": {"turbidity": 11}}]})",
+                     "turbidity");
+  expect_input_error(R"({"edits": [{"op": "environment", "source": "sky", "set": {"sun_elevation": 95}}]})",
+                     "sun_elevation");
+  expect_input_error(R"({"edits": [{"op": "environment", "source": "sky", "set": {"sun": 9}}]})", "sun");
+}
+
+// Switching what lights the scene: the new map, how bright and turned carries over, the diff
+// asks for a new upload, and the inverse puts the exact previous map back.
+TEST(Edits, EnvironmentSwitchAndItsUndo) {
+  const Scene studio = load_scene(test::asset("furnace_sphere.gltf"), {.environment = "studio"});
+  Scene scene = studio;
+  apply_edit(scene, EnvironmentEdit{.intensity = 2.0f});
+  EXPECT_FALSE(diff_scenes(studio, scene).environment_map);  // same map, brighter
+  const Scene bright = scene;
+
+  const EnvironmentEdit to_sky{.source = std::filesystem::path("sky"), .sun_elevation_degrees = 20.0f};
+  const Edit undo_sky = inverse_edit(scene, to_sky);
+  apply_edit(scene, to_sky);
+  ASSERT_TRUE(scene.environment);
+  EXPECT_EQ(scene.environment->path, "sky");
+  EXPECT_EQ(scene.environment->sky.sun_elevation_degrees, 20.0f);
+  EXPECT_EQ(scene.environment->sky.turbidity, SkyParameters{}.turbidity);
+  EXPECT_EQ(scene.environment->intensity, 2.0f);
+  ChangeSet changes = diff_scenes(bright, scene);
+  EXPECT_TRUE(changes.environment_map && changes.environment && changes.light_tables);
+
+  // The sun alone re-makes the sky, keeping what it does not set.
+  const Scene first_sky = scene;
+  const EnvironmentEdit sun{.sun_azimuth_degrees = 120.0f};
+  const Edit undo_sun = inverse_edit(scene, sun);
+  apply_edit(scene, sun);
+  EXPECT_EQ(scene.environment->sky.sun_elevation_degrees, 20.0f);
+  EXPECT_EQ(scene.environment->sky.sun_azimuth_degrees, 120.0f);
+  EXPECT_NE(scene.environment->texels, first_sky.environment->texels);
+  EXPECT_TRUE(diff_scenes(first_sky, scene).environment_map);
+  apply_edit(scene, undo_sun);
+  EXPECT_EQ(scene.environment->texels, first_sky.environment->texels);
+  EXPECT_TRUE(diff_scenes(first_sky, scene).empty());
+
+  const EnvironmentEdit off{.source = std::filesystem::path("none")};
+  const Edit undo_off = inverse_edit(scene, off);
+  apply_edit(scene, off);
+  EXPECT_FALSE(scene.environment.has_value());
+  EXPECT_TRUE(diff_scenes(first_sky, scene).environment_map);
+  apply_edit(scene, undo_off);
+  EXPECT_TRUE(diff_scenes(first_sky, scene).empty());
+
+  apply_edit(scene, undo_sky);
+  EXPECT_EQ(scene.environment->path, "studio");
+  EXPECT_EQ(scene.environment->texels, studio.environment->texels);
+  EXPECT_EQ(scene.environment->intensity, 2.0f);
+  EXPECT_TRUE(diff_scenes(bright, scene).empty());
+}
+
+TEST(Edits, EnvironmentEditsRefusedLeaveTheSceneAsItWas) {
+  Scene scene = load_scene(test::asset("furnace_sphere.gltf"), {.environment = "studio"});
+  const Scene before = scene;
+  const EnvironmentEdit sun{.turbidity = 5.0f};  // the studio has no sun
+  EXPECT_THROW(inverse_edit(scene, sun), InputError);
+  EXPECT_THROW(apply_edit(scene, sun), InputError);
+  const EnvironmentEdit murky{.source = std::filesystem::path("sky"), .turbidity = 20.0f};
+  EXPECT_THROW(inverse_edit(scene, murky), InputError);
+  EXPECT_THROW(apply_edit(scene, murky), InputError);
+  EXPECT_THROW(apply_edit(scene, EnvironmentEdit{.source = test::temp_dir("env") / "missing.hdr"}), InputError);
+  EXPECT_TRUE(diff_scenes(before, scene).empty());
+  EXPECT_EQ(scene.environment->texels, before.environment->texels);
+  // Without an environment there is nothing to brighten, but one can be switched on.
+  Scene dark = cornell();
+  EXPECT_THROW(apply_edit(dark, EnvironmentEdit{.intensity = 2.0f}), InputError);
+  apply_edit(dark, EnvironmentEdit{.source = std::filesystem::path("studio"), .intensity = 0.5f});
+  ASSERT_TRUE(dark.environment);
+  EXPECT_EQ(dark.environment->intensity, 0.5f);
 }
 
 // Every kind of edit followed by its inverse leaves the scene exactly as it was.
@@ -210,7 +314,7 @@ TEST(Edits, InverseRestoresTheSceneExactly) {
       LightEdit{"lamp", 7.0f, glm::vec3(0.1f, 0.2f, 0.3f), 4.0f},
       VisibilityEdit{"sphere", false},
       CameraEdit{glm::vec3(0.0f, 0.1f, -0.2f), std::nullopt},
-      EnvironmentEdit{0.25f, 1.5f},
+      EnvironmentEdit{.intensity = 0.25f, .rotation = 1.5f},
   };
   for (const Edit& edit : edits) {
     Scene scene = with_sky;
@@ -247,7 +351,7 @@ TEST(Edits, InverseRefusesWhatApplyRefuses) {
                InputError);
   EXPECT_THROW(inverse_edit(scene, LightEdit{"tall_block", 1.0f, std::nullopt, std::nullopt}),
                InputError);
-  EXPECT_THROW(inverse_edit(scene, EnvironmentEdit{1.0f, std::nullopt}), InputError);
+  EXPECT_THROW(inverse_edit(scene, EnvironmentEdit{.intensity = 1.0f}), InputError);
 }
 
 }  // namespace

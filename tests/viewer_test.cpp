@@ -11,12 +11,14 @@
 #include "app/viewer/overlays.h"
 #include "app/viewer/session.h"
 #include "app/viewer/view_layout.h"
+#include "app/viewer/viewer_state.h"
 #include "core/error.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
 #include "image/debug_images.h"
 #include "image/tonemap.h"
 #include "render/display_pass.h"
+#include "render/light_tables.h"
 #include "test_support.h"
 
 namespace hipr::viewer {
@@ -245,7 +247,10 @@ TEST(DiffSnapshot, ReportsWhatAFullDiffReports) {
       LightEdit{"lamp", 9.0f, std::nullopt, std::nullopt},
       VisibilityEdit{"tall_block", false},
       CameraEdit{glm::vec3(0.0f, 0.1f, 0.0f), std::nullopt},
-      EnvironmentEdit{2.0f, std::nullopt},
+      EnvironmentEdit{.intensity = 2.0f},
+      EnvironmentEdit{.source = std::filesystem::path("studio")},
+      EnvironmentEdit{.source = std::filesystem::path("sky"), .sun_elevation_degrees = 10.0f},
+      EnvironmentEdit{.source = std::filesystem::path("none")},
   };
   for (const Edit& edit : edits) {
     Scene after = base;
@@ -258,11 +263,41 @@ TEST(DiffSnapshot, ReportsWhatAFullDiffReports) {
     EXPECT_EQ(lean.light_tables, full.light_tables) << describe(edit);
     EXPECT_EQ(lean.camera, full.camera) << describe(edit);
     EXPECT_EQ(lean.environment, full.environment) << describe(edit);
+    EXPECT_EQ(lean.environment_map, full.environment_map) << describe(edit);
   }
   base.images.push_back({"texels", 2, 2, std::vector<uint8_t>(16, 200)});  // the sphere scene has none
   const Scene snapshot = diff_snapshot(base);
   EXPECT_TRUE(snapshot.images.empty());
   EXPECT_TRUE(snapshot.environment->texels.empty());
+}
+
+// ---- follow_environment (no GPU)
+
+// A switch to another map moves the exposure by the change of mean radiance (studio <-> sky is
+// about 14 stops); the sun, the intensity and a detour through "none" leave it alone.
+TEST(FollowEnvironment, ExposureFollowsASwitchOfMap) {
+  Scene scene = load_scene(test::asset("furnace_sphere.gltf"), {.environment = "studio"});
+  const float studio = environment_mean_luminance(*scene.environment);
+  ViewerState state;
+  state.exposure_ev = 1.0f;
+  follow_environment(scene, state);
+  EXPECT_EQ(state.exposure_ev, 1.0f) << "the first environment is taken as it is";
+  apply_edit(scene, EnvironmentEdit{.source = std::filesystem::path("sky")});
+  const float sky = environment_mean_luminance(*scene.environment);
+  follow_environment(scene, state);
+  EXPECT_NEAR(state.exposure_ev, 1.0f - std::log2(sky / studio), 1e-4f);
+  EXPECT_LT(state.exposure_ev, -10.0f);
+  const float at_noon = state.exposure_ev;
+  apply_edit(scene, EnvironmentEdit{.sun_elevation_degrees = 5.0f, .intensity = 3.0f});
+  follow_environment(scene, state);
+  EXPECT_EQ(state.exposure_ev, at_noon);
+  apply_edit(scene, EnvironmentEdit{.source = std::filesystem::path("none")});
+  follow_environment(scene, state);
+  EXPECT_EQ(state.exposure_ev, at_noon);
+  // Back to the studio: the exposure it had (the sun moved within the same map).
+  apply_edit(scene, EnvironmentEdit{.source = std::filesystem::path("studio")});
+  follow_environment(scene, state);
+  EXPECT_NEAR(state.exposure_ev, 1.0f, 1e-4f);
 }
 
 // ---- Session (headless GPU)
@@ -314,6 +349,36 @@ TEST(Session, UndoReRendersToTheOriginalImageBitForBit) {
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
   EXPECT_EQ(session.edit_records().size(), 3u);
   EXPECT_EQ(session.edit_records()[1].what, "undo material red");
+}
+
+// The Environment panel's switch and sun sliders are session edits: re-rendered to the image of
+// the new light, a slider drag is one undo step, and undo comes back to the studio bit for bit.
+TEST(Session, EnvironmentSwitchAndSunDragUndo) {
+  const SessionSettings s = small_settings();
+  Session session(test::context(), load_scene(test::asset("furnace_sphere.gltf"), {.environment = "studio"}), s);
+  converge(session);
+  const ImageRGB studio = session.displayed();
+  session.edit(EnvironmentEdit{.source = std::filesystem::path("sky"), .intensity = 0.0005f});
+  converge(session);
+  const ImageRGB sky = session.displayed();
+  EXPECT_NE(sky.rgb, studio.rgb);
+  EXPECT_EQ(sky.rgb, fresh_render(session.scene(), s).rgb);
+  session.begin_group();
+  for (int i = 1; i <= 4; ++i) {
+    session.edit(EnvironmentEdit{.sun_azimuth_degrees = 30.0f + 20.0f * float(i)});
+    session.render(1e9, 1);
+  }
+  session.end_group();
+  converge(session);
+  EXPECT_EQ(session.scene().environment->sky.sun_azimuth_degrees, 110.0f);
+  EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
+  ASSERT_TRUE(session.undo());  // the whole drag
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, sky.rgb);
+  ASSERT_TRUE(session.undo());
+  converge(session);
+  EXPECT_EQ(session.scene().environment->path, "studio");
+  EXPECT_EQ(session.displayed().rgb, studio.rgb);
 }
 
 TEST(Session, ARefusedEditKeepsTheSceneAndItsRender) {

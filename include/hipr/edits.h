@@ -4,6 +4,7 @@
 // "#index"; anything unknown is an InputError naming it, never silently ignored.
 #include <array>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -49,11 +50,27 @@ struct CameraEdit {
   std::optional<glm::mat4> matrix;
 };
 
-// The environment map's radiance multiplier and rotation. Scripts give the rotation in
+// What lights the scene from afar, and how bright and turned. Scripts give the rotation in
 // degrees; it is kept in radians here, as in Environment, so an undo restores it exactly.
 struct EnvironmentEdit {
+  bool sets_sun() const { return sun_elevation_degrees || sun_azimuth_degrees || turbidity; }
+
+  // Switches the environment: "studio" or "sky" (built in), "none", or an equirectangular
+  // .hdr/.exr file (relative to the current directory; load_edit_script makes a script's
+  // paths relative to the script). Intensity and rotation carry over unless set here (1 and 0
+  // after "none").
+  std::optional<std::filesystem::path> source;
+  // The sky's sun and haze (SkyParameters), each kept as it is when not set (the defaults when
+  // switching to the sky from another). Without a source they re-make the current sky: an
+  // InputError when the environment is not the sky, or a value is out of range.
+  std::optional<float> sun_elevation_degrees;
+  std::optional<float> sun_azimuth_degrees;
+  std::optional<float> turbidity;
   std::optional<float> intensity;
   std::optional<float> rotation;  // radians about +Y
+  // Made by inverse_edit only: the exact environment to put back (empty = none), so an undo
+  // neither reads a file again nor re-makes a sky. Takes the place of source and the sun.
+  std::shared_ptr<const std::optional<Environment>> restore;
 };
 
 // "emission" edits are material edits restricted to emission keys.
@@ -62,7 +79,9 @@ using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit
 
 // Parses an edit script; throws InputError (naming the file and the edit) on any problem.
 std::vector<Edit> load_edit_script(const std::filesystem::path& path);
-std::vector<Edit> parse_edit_script(const std::string& json_text, const std::string& name);
+// `base`: the folder an environment "source" file is relative to (empty: the current one).
+std::vector<Edit> parse_edit_script(const std::string& json_text, const std::string& name,
+                                    const std::filesystem::path& base = {});
 
 // The node an edit names: its glTF name (the first of that name) or "#index"; throws InputError.
 size_t find_node(const Scene& scene, const std::string& name);

@@ -88,8 +88,22 @@ struct Camera {
   float znear = 0.01f;
 };
 
+// The built-in daylight sky (--env sky, image/builtin_environments.h): where the sun is and how
+// hazy the air.
+struct SkyParameters {
+  float sun_elevation_degrees = 40.0f;  // above the horizon, 0..90
+  float sun_azimuth_degrees = 30.0f;    // 0: behind the default camera (+Z), 90: toward +X
+  float turbidity = 3.0f;               // haze: 2 clear, 6 hazy, 10 (the model's limit) murky
+
+  bool operator==(const SkyParameters&) const = default;
+};
+// The range Preetham's model was fitted over.
+inline constexpr float kMinTurbidity = 1.7f, kMaxTurbidity = 10.0f;
+
 struct Environment {
+  // The file it was read from, or the name of a built-in one ("studio", "sky").
   std::filesystem::path path;
+  SkyParameters sky;  // what made it when it is the built-in sky
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<glm::vec3> texels;  // linear RGB, equirectangular, top row = +Y

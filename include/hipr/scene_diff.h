@@ -16,9 +16,11 @@ struct ChangeSet {
   bool transforms = false;          // an instance moved, appeared or disappeared: rebuild the TLAS
   bool light_tables = false;        // emitters or punctual lights changed: rebuild light tables
   bool camera = false;              // the view changed: everything restarts
-  // The environment's intensity or rotation changed. Like a punctual light it reaches every
-  // tile without being visible in a G-buffer, so everything restarts.
+  // The environment changed (intensity, rotation or map). Like a punctual light it reaches
+  // every tile without being visible in a G-buffer, so everything restarts.
   bool environment = false;
+  // The map itself changed (switched, switched on or off, the sky re-made): upload it again.
+  bool environment_map = false;
 
   bool empty() const {
     return instances.empty() && lights.empty() && !materials && !transforms && !light_tables &&

@@ -12,13 +12,6 @@ namespace hipr {
 inline constexpr const char* kAutoEnvironment = "auto";  // the studio when nothing in the scene emits
 inline constexpr const char* kNoEnvironment = "none";
 
-// The built-in daylight sky (--env sky): where the sun is and how hazy the air.
-struct SkyParameters {
-  float sun_elevation_degrees = 40.0f;  // above the horizon, 0..90
-  float sun_azimuth_degrees = 30.0f;    // 0: behind the default camera (+Z), 90: toward +X
-  float turbidity = 3.0f;               // haze: 2 clear, 6 hazy, 10 (the model's limit) murky
-};
-
 struct SceneLoadOptions {
   // An equirectangular .hdr/.exr, "studio" or "sky" (built in: image/builtin_environments.h), "auto"
   // (the studio when the scene has no light, else none), or "none"; empty = none. (A file

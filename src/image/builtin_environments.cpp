@@ -6,6 +6,9 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "core/error.h"
+#include "image/environment_loader.h"
+
 namespace hipr {
 
 namespace {
@@ -143,6 +146,14 @@ glm::vec3 sun_direction(const SkyParameters& sky) {
   return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
 }
 
+void check_sky(const SkyParameters& sky) {
+  if (!(sky.sun_elevation_degrees >= 0.0f && sky.sun_elevation_degrees <= 90.0f))
+    throw InputError("the sun's elevation must be between 0 and 90 degrees");
+  if (!std::isfinite(sky.sun_azimuth_degrees)) throw InputError("the sun's azimuth must be finite");
+  if (!(sky.turbidity >= kMinTurbidity && sky.turbidity <= kMaxTurbidity))
+    throw InputError("the turbidity must be between 1.7 and 10");
+}
+
 glm::dvec3 preetham_sky_xyY(glm::vec3 direction, const SkyParameters& sky) {
   const glm::dvec3 d = glm::normalize(glm::dvec3(direction));
   const glm::dvec3 sun = glm::dvec3(sun_direction(sky));
@@ -163,6 +174,7 @@ glm::dvec3 preetham_sky_xyY(glm::vec3 direction, const SkyParameters& sky) {
 Environment make_sky_environment(const SkyParameters& sky, uint32_t width) {
   Environment env;
   env.path = kSkyEnvironmentName;
+  env.sky = sky;
   env.width = width;
   env.height = width / 2;
   env.texels.assign(size_t(env.width) * env.height, glm::vec3(0.0f));
@@ -202,7 +214,7 @@ std::string environment_description(const Scene& scene) {
   return scene.environment->path.filename().string();
 }
 
-std::string environment_flags(const Scene& scene, const SceneLoadOptions& loaded) {
+std::string environment_flags(const Scene& scene) {
   if (!scene.environment) return std::string("--env ") + kNoEnvironment;
   const Environment& env = *scene.environment;
   const auto number = [](float value) {
@@ -212,9 +224,9 @@ std::string environment_flags(const Scene& scene, const SceneLoadOptions& loaded
   };
   std::string flags = "--env ";
   if (env.path == kSkyEnvironmentName)
-    flags += std::string(kSkyEnvironmentName) + " --sun-elevation " + number(loaded.sky.sun_elevation_degrees) +
-             " --sun-azimuth " + number(loaded.sky.sun_azimuth_degrees) + " --turbidity " +
-             number(loaded.sky.turbidity);
+    flags += std::string(kSkyEnvironmentName) + " --sun-elevation " + number(env.sky.sun_elevation_degrees) +
+             " --sun-azimuth " + number(env.sky.sun_azimuth_degrees) + " --turbidity " +
+             number(env.sky.turbidity);
   else if (env.path == kStudioEnvironmentName)
     flags += kStudioEnvironmentName;
   else
@@ -222,6 +234,13 @@ std::string environment_flags(const Scene& scene, const SceneLoadOptions& loaded
   if (env.intensity != 1.0f) flags += " --env-intensity " + number(env.intensity);
   if (env.rotation != 0.0f) flags += " --env-rotation " + number(glm::degrees(env.rotation));
   return flags;
+}
+
+std::optional<Environment> make_environment(const std::filesystem::path& source, const SkyParameters& sky) {
+  if (source == kNoEnvironment) return std::nullopt;
+  if (source == kStudioEnvironmentName) return make_studio_environment();
+  if (source == kSkyEnvironmentName) return make_sky_environment(sky);
+  return load_environment(source);
 }
 
 SceneLighting scene_lighting(const Scene& scene) {

@@ -2,6 +2,8 @@
 // Environments made by hipr's own code, for scenes that bring no light (most glTF assets expect
 // a viewer's image-based lighting). Built as equirectangular maps so that they are sampled,
 // edited (intensity, rotation) and shown exactly as a loaded .hdr is.
+#include <filesystem>
+#include <optional>
 #include <string>
 
 #include "hipr/scene.h"
@@ -23,10 +25,14 @@ glm::vec3 studio_radiance(glm::vec3 direction);
 // studio_radiance sampled at the centres of a width x width/2 equirectangular map.
 Environment make_studio_environment(uint32_t width = 1024);
 
-// A clear daylight sky (SkyParameters, hipr/scene_loader.h): Preetham, Shirley and Smits, "A
+// A clear daylight sky (SkyParameters, hipr/scene.h): Preetham, Shirley and Smits, "A
 // Practical Analytic Model for Daylight" (SIGGRAPH 1999), and a sun attenuated by the same
 // atmosphere; physical units (nits).
 glm::vec3 sun_direction(const SkyParameters& sky);
+
+// Throws InputError unless the sun is 0-90 degrees above the horizon, its azimuth finite and the
+// turbidity within the model's range (kMinTurbidity..kMaxTurbidity).
+void check_sky(const SkyParameters& sky);
 
 // CIE xyY of the sky toward `direction` (above the horizon), Y in nits: the Perez distribution
 // scaled by the model's zenith luminance and chromaticity.
@@ -42,9 +48,13 @@ Environment make_sky_environment(const SkyParameters& sky, uint32_t width = 1024
 std::string environment_description(const Scene& scene);
 
 // The command-line flags that bring the scene's environment back on reopening (glTF cannot hold
-// it): --env NAME|FILE, the sky's parameters (taken from `loaded`, what built the sky), and
-// --env-intensity / --env-rotation where they differ from the defaults. "--env none" without one.
-std::string environment_flags(const Scene& scene, const SceneLoadOptions& loaded);
+// it): --env NAME|FILE, the sky's parameters, and --env-intensity / --env-rotation where they
+// differ from the defaults. "--env none" without one.
+std::string environment_flags(const Scene& scene);
+
+// The environment `source` names: "studio", "sky" (made with `sky`), "none" (nullopt) or an
+// equirectangular .hdr/.exr file (InputError when it cannot be read). Intensity 1, rotation 0.
+std::optional<Environment> make_environment(const std::filesystem::path& source, const SkyParameters& sky);
 
 // What the scene brings to light itself: punctual lights on nodes, and the brightest emissive
 // material of a visible instance (the largest channel of emission_color x emission_luminance,

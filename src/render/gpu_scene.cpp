@@ -25,8 +25,7 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene) : m_ctx(ctx) {
   upload_textures(scene);
   update_materials(scene);
   build_blases(scene);
-  environment = vk::make_storage_buffer(ctx, scene.environment ? build_environment_buffer(*scene.environment)
-                                                               : std::vector<float>{});
+  upload_environment(scene);
 
   // Records are fixed for the scene's lifetime: one per (instance, primitive), hidden included.
   const std::vector<Instance> instances = scene.instances();
@@ -177,6 +176,16 @@ void GpuScene::update_instances(const Scene& scene) {
   // An empty TLAS is valid and makes every ray miss.
   m_tlas = vk::build_tlas(m_ctx, tlas_instances);
   update_lights(scene);
+}
+
+void GpuScene::upload_environment(const Scene& scene) {
+  environment = vk::make_storage_buffer(m_ctx, scene.environment ? build_environment_buffer(*scene.environment)
+                                                                 : std::vector<float>{});
+}
+
+void GpuScene::update_environment(const Scene& scene) {
+  upload_environment(scene);
+  update_lights(scene);  // the environment's share of light selection; rebinds the set
 }
 
 void GpuScene::update_lights(const Scene& scene) {

@@ -31,6 +31,8 @@ class GpuScene {
   void update_instances(const Scene& scene);
   // Rebuilds the light tables alone (punctual lights, emission strengths).
   void update_lights(const Scene& scene);
+  // Uploads another environment map (or none) and its sampling tables, then the light tables.
+  void update_environment(const Scene& scene);
 
   // The frame parameters the kernels read (camera, image and tiles, HiPR weights).
   void set_frame(const abi::FrameParams& params);
@@ -59,6 +61,7 @@ class GpuScene {
   };
   void upload_geometry(const Scene& scene);
   void upload_textures(const Scene& scene);
+  void upload_environment(const Scene& scene);
   // (Re)builds the BLAS of every mesh whose per-primitive opacity flags differ from the built
   // ones; returns whether any was rebuilt.
   bool build_blases(const Scene& scene);

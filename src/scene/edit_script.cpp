@@ -9,6 +9,8 @@
 
 #include "core/error.h"
 #include "hipr/edits.h"
+#include "hipr/scene_loader.h"
+#include "image/builtin_environments.h"
 #include "scene/material_parameters.h"
 
 namespace hipr {
@@ -98,7 +100,7 @@ MaterialEdit read_material(const EditReader& r, bool emission_only) {
   return edit;
 }
 
-Edit read_edit(const EditReader& r) {
+Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
   if (!r.edit().is_object()) r.fail("an edit must be a JSON object");
   const std::string op = r.string("op");
   if (op == "transform") {
@@ -137,15 +139,33 @@ Edit read_edit(const EditReader& r) {
     return e;
   }
   if (op == "environment") {
-    r.only_keys({"op", "set"});
+    r.only_keys({"op", "source", "set"});
     EnvironmentEdit e;
-    for (const auto& [key, value] : r.set_object().items()) {
-      const auto v = r.numbers(value, key);
-      if (key == "intensity" && v.size() == 1 && v[0] >= 0) e.intensity = v[0];
-      else if (key == "rotation" && v.size() == 1) e.rotation = glm::radians(v[0]);  // as --env-rotation
-      else if (key != "intensity" && key != "rotation") r.fail("unknown environment parameter \"" + key + "\"");
-      else r.fail("invalid value for environment parameter \"" + key + "\"");
+    if (r.edit().contains("source")) {
+      const std::string source = r.string("source");
+      if (source.empty()) r.fail("\"source\" is empty (studio, sky, none or a file)");
+      const bool built_in = source == kStudioEnvironmentName || source == kSkyEnvironmentName || source == kNoEnvironment;
+      e.source = built_in ? std::filesystem::path(source) : base / std::filesystem::path(source);
+    } else if (!r.edit().contains("set")) {
+      r.fail("needs \"source\" or \"set\"");
     }
+    if (r.edit().contains("set")) {
+      for (const auto& [key, value] : r.set_object().items()) {
+        const auto v = r.numbers(value, key);
+        const bool one = v.size() == 1;
+        if (key == "intensity" && one && v[0] >= 0) e.intensity = v[0];
+        else if (key == "rotation" && one) e.rotation = glm::radians(v[0]);  // as --env-rotation
+        else if (key == "sun_elevation" && one && v[0] >= 0 && v[0] <= 90) e.sun_elevation_degrees = v[0];
+        else if (key == "sun_azimuth" && one) e.sun_azimuth_degrees = v[0];
+        else if (key == "turbidity" && one && v[0] >= kMinTurbidity && v[0] <= kMaxTurbidity) e.turbidity = v[0];
+        else if (key != "intensity" && key != "rotation" && key != "sun_elevation" && key != "sun_azimuth" &&
+                 key != "turbidity")
+          r.fail("unknown environment parameter \"" + key + "\"");
+        else r.fail("invalid value for environment parameter \"" + key + "\"");
+      }
+    }
+    if (e.sets_sun() && e.source && *e.source != kSkyEnvironmentName)
+      r.fail("the sun's parameters need \"source\": \"sky\"");
     return e;
   }
   r.fail("unknown op \"" + op + "\" (transform, material, light, emission, visibility, camera, environment)");
@@ -153,7 +173,8 @@ Edit read_edit(const EditReader& r) {
 
 }  // namespace
 
-std::vector<Edit> parse_edit_script(const std::string& text, const std::string& name) {
+std::vector<Edit> parse_edit_script(const std::string& text, const std::string& name,
+                                    const std::filesystem::path& base) {
   json doc;
   try {
     doc = json::parse(text);
@@ -166,7 +187,7 @@ std::vector<Edit> parse_edit_script(const std::string& text, const std::string& 
     throw InputError(name + ": an edit script is an object with an array \"edits\"");
   std::vector<Edit> edits;
   for (size_t i = 0; i < doc["edits"].size(); ++i)
-    edits.push_back(read_edit(EditReader(doc["edits"][i], name + ": edit " + std::to_string(i))));
+    edits.push_back(read_edit(EditReader(doc["edits"][i], name + ": edit " + std::to_string(i)), base));
   return edits;
 }
 
@@ -175,7 +196,7 @@ std::vector<Edit> load_edit_script(const std::filesystem::path& path) {
   if (!in) throw InputError("cannot read edit script " + path.string());
   std::stringstream text;
   text << in.rdbuf();
-  return parse_edit_script(text.str(), path.filename().string());
+  return parse_edit_script(text.str(), path.filename().string(), path.parent_path());
 }
 
 }  // namespace hipr

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "hipr/edits.h"
+#include "image/builtin_environments.h"
 #include "scene/default_camera.h"
 #include "scene/material_parameters.h"
 
@@ -36,6 +37,28 @@ size_t find_material(const Scene& scene, const std::string& name) {
 void move_node(glm::mat4& local, const std::optional<glm::vec3>& translate, const std::optional<glm::mat4>& matrix) {
   if (matrix) local = *matrix;
   else local[3] += glm::vec4(*translate, 0.0f);
+}
+
+// What apply_edit refuses of an environment edit (but a file that cannot be read): without a
+// source it changes the current environment, so there must be one; the sun needs the sky.
+void check_environment_edit(const Scene& scene, const EnvironmentEdit& e) {
+  if (e.restore) return;
+  if (!e.source && !scene.environment)
+    throw InputError("the scene has no environment to edit (switch one on with \"source\", or --env)");
+  const std::filesystem::path target = e.source ? *e.source : scene.environment->path;
+  if (e.sets_sun() && target != kSkyEnvironmentName)
+    throw InputError("the sun's parameters need the sky environment (\"source\": \"sky\")");
+}
+
+// The sky an edit asks for: its values over the current sky's (the defaults when there is none).
+SkyParameters edited_sky(const Scene& scene, const EnvironmentEdit& e) {
+  SkyParameters sky;
+  if (scene.environment && scene.environment->path == kSkyEnvironmentName) sky = scene.environment->sky;
+  if (e.sun_elevation_degrees) sky.sun_elevation_degrees = *e.sun_elevation_degrees;
+  if (e.sun_azimuth_degrees) sky.sun_azimuth_degrees = *e.sun_azimuth_degrees;
+  if (e.turbidity) sky.turbidity = *e.turbidity;
+  check_sky(sky);
+  return sky;
 }
 
 struct Applier {
@@ -83,8 +106,21 @@ struct Applier {
   }
 
   void operator()(const EnvironmentEdit& e) const {
-    if (!scene.environment)
-      throw InputError("the scene has no environment map to edit (load one with --env)");
+    if (e.restore) {
+      scene.environment = *e.restore;
+    } else {
+      check_environment_edit(scene, e);
+      const SkyParameters sky = edited_sky(scene, e);
+      if (e.source || (e.sets_sun() && sky != scene.environment->sky)) {
+        std::optional<Environment> next = make_environment(e.source.value_or(kSkyEnvironmentName), sky);
+        if (next && scene.environment) {  // a switch keeps how bright and turned
+          next->intensity = scene.environment->intensity;
+          next->rotation = scene.environment->rotation;
+        }
+        scene.environment = std::move(next);
+      }
+    }
+    if (!scene.environment) return;
     if (e.intensity) scene.environment->intensity = *e.intensity;
     if (e.rotation) scene.environment->rotation = *e.rotation;
   }
@@ -133,10 +169,15 @@ struct Inverter {
                                               : resolve_camera(scene).camera_to_world};
   }
 
-  Edit operator()(const EnvironmentEdit&) const {
-    if (!scene.environment)
-      throw InputError("the scene has no environment map to edit (load one with --env)");
-    return EnvironmentEdit{scene.environment->intensity, scene.environment->rotation};
+  Edit operator()(const EnvironmentEdit& e) const {
+    check_environment_edit(scene, e);
+    if (!e.restore) edited_sky(scene, e);
+    if (e.source || e.sets_sun() || e.restore) {
+      EnvironmentEdit inverse;
+      inverse.restore = std::make_shared<const std::optional<Environment>>(scene.environment);
+      return inverse;
+    }
+    return EnvironmentEdit{.intensity = scene.environment->intensity, .rotation = scene.environment->rotation};
   }
 };
 
@@ -159,7 +200,10 @@ std::string describe(const Edit& edit) {
     std::string operator()(const LightEdit& e) const { return "light " + e.node; }
     std::string operator()(const VisibilityEdit& e) const { return std::string(e.visible ? "show " : "hide ") + e.node; }
     std::string operator()(const CameraEdit&) const { return "camera"; }
-    std::string operator()(const EnvironmentEdit&) const { return "environment"; }
+    std::string operator()(const EnvironmentEdit& e) const {
+      if (e.source) return "environment " + e.source->filename().string();
+      return e.sets_sun() ? "environment sun" : "environment";
+    }
   };
   return std::visit(Describer{}, edit);
 }

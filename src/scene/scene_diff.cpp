@@ -65,10 +65,14 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
   const Camera new_camera = resolve_camera(after);
   changes.camera = old_camera.camera_to_world != new_camera.camera_to_world || old_camera.yfov != new_camera.yfov;
 
-  if (before.environment.has_value() != after.environment.has_value())
-    throw InternalError("scene diff between different scenes");
-  if (after.environment && (before.environment->intensity != after.environment->intensity ||
-                            before.environment->rotation != after.environment->rotation)) {
+  const std::optional<Environment>& a = before.environment;
+  const std::optional<Environment>& b = after.environment;
+  // Maps are told apart by what made them (the snapshot keeps no texels): a file, the studio, or
+  // the sky with its sun.
+  changes.environment_map = a.has_value() != b.has_value() ||
+                            (a && (a->path != b->path || a->sky != b->sky || a->width != b->width ||
+                                   a->height != b->height));
+  if (changes.environment_map || (a && (a->intensity != b->intensity || a->rotation != b->rotation))) {
     changes.environment = true;
     // The light-selection CDF weighs the environment by its mean radiance x intensity.
     changes.light_tables = true;
@@ -102,6 +106,9 @@ Scene diff_snapshot(const Scene& scene) {
   if (scene.environment) {
     Environment env;
     env.path = scene.environment->path;
+    env.sky = scene.environment->sky;
+    env.width = scene.environment->width;
+    env.height = scene.environment->height;
     env.intensity = scene.environment->intensity;
     env.rotation = scene.environment->rotation;
     s.environment = std::move(env);

@@ -13,7 +13,6 @@
 #include "core/log.h"
 #include "hipr/scene_loader.h"
 #include "image/builtin_environments.h"
-#include "image/environment_loader.h"
 #include "scene/default_camera.h"
 #include "scene/glb_container.h"
 #include "scene/gltf_accessors.h"
@@ -392,10 +391,8 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
       log::info(name + (lighting.emits() ? " brings no light (its emission is 1 nit at most, a glow)"
                                          : " brings no light") +
                 ": lit by the built-in studio environment (--env none for none)");
-  } else if (choice == kSkyEnvironmentName) {
-    scene.environment = make_sky_environment(options.sky);
-  } else if (!choice.empty() && choice != kNoEnvironment && choice != kAutoEnvironment) {
-    scene.environment = load_environment(options.environment);
+  } else if (!choice.empty() && choice != kAutoEnvironment) {
+    scene.environment = make_environment(options.environment, options.sky);
   }
   if (scene.environment) {
     scene.environment->intensity = options.environment_intensity;

@@ -158,7 +158,7 @@ void display_section(ViewerState& state) {
   const char* names[] = {"none", "object ids", "tile weights", "owed tiles"};
   ImGui::Combo("overlay (0-3)", &overlay, names, 4);
   state.overlay = Overlay(overlay);
-  ImGui::SliderFloat("exposure (EV)", &state.exposure_ev, -8.0f, 8.0f, "%.1f");
+  ImGui::SliderFloat("exposure (EV)", &state.exposure_ev, -20.0f, 20.0f, "%.1f");
   ImGui::Checkbox("status line", &state.show_status);
   float budget = float(state.frame_budget_ms);
   if (ImGui::SliderFloat("render ms/frame", &budget, 2.0f, 250.0f, "%.0f",

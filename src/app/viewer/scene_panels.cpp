@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <glm/trigonometric.hpp>
 
 #include "app/viewer/panels.h"
+#include "hipr/scene_loader.h"
 #include "image/builtin_environments.h"
 #include "scene/material_parameters.h"
 
@@ -213,21 +216,66 @@ void lights_section(Session& session, ViewerState& state) {
   if (!any) ImGui::TextDisabled("No lights or emissive materials.");
 }
 
+namespace {
+
+// The sky's sun and haze; each slider re-makes the sky (a drag is one undo step).
+void sun_controls(Session& session, ViewerState& state, const SkyParameters& sky) {
+  float elevation = sky.sun_elevation_degrees, azimuth = sky.sun_azimuth_degrees, turbidity = sky.turbidity;
+  if (ImGui::SliderFloat("sun elevation", &elevation, 0.0f, 90.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp))
+    ui_edit(session, state, EnvironmentEdit{.sun_elevation_degrees = elevation});
+  if (ImGui::SliderFloat("sun azimuth", &azimuth, -180.0f, 180.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp))
+    ui_edit(session, state, EnvironmentEdit{.sun_azimuth_degrees = azimuth});
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: behind the default camera, 90: toward +X");
+  if (ImGui::SliderFloat("turbidity", &turbidity, kMinTurbidity, kMaxTurbidity, "%.2f", ImGuiSliderFlags_AlwaysClamp))
+    ui_edit(session, state, EnvironmentEdit{.turbidity = turbidity});
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("haze: 2 clear, 6 hazy, 10 murky");
+}
+
+}  // namespace
+
 void environment_section(Session& session, ViewerState& state) {
   if (!ImGui::CollapsingHeader("Environment")) return;
   const Scene& scene = session.scene();
-  if (!scene.environment) {
-    ImGui::TextDisabled("No environment (start with --env studio or --env FILE.hdr).");
+  const std::optional<Environment>& env = scene.environment;
+  const std::string current = env ? env->path.string() : std::string(kNoEnvironment);
+  const bool built_in = current == kNoEnvironment || current == kStudioEnvironmentName || current == kSkyEnvironmentName;
+  if (!built_in) state.environment_file = current;  // offered again after switching away
+  ImGui::TextWrapped("%s", environment_description(scene).c_str());
+
+  // What lights the scene from afar: an undoable edit, HiPR re-renders.
+  std::vector<std::string> choices = {kNoEnvironment, kStudioEnvironmentName, kSkyEnvironmentName};
+  if (!state.environment_file.empty()) choices.push_back(state.environment_file);
+  const auto label = [](const std::string& choice) {
+    return choice == kNoEnvironment || choice == kStudioEnvironmentName || choice == kSkyEnvironmentName
+               ? choice
+               : std::filesystem::path(choice).filename().string();
+  };
+  if (ImGui::BeginCombo("source##env", label(current).c_str())) {
+    for (const std::string& choice : choices)
+      if (ImGui::Selectable(label(choice).c_str(), choice == current) && choice != current)
+        ui_edit(session, state, EnvironmentEdit{.source = std::filesystem::path(choice)});
+    ImGui::EndCombo();
+  }
+  char path[512] = {};
+  std::snprintf(path, sizeof path, "%s", state.environment_input.c_str());
+  if (ImGui::InputText("file##env", path, sizeof path)) state.environment_input = path;
+  ImGui::SameLine();
+  if (ImGui::Button("use") && !state.environment_input.empty())
+    ui_edit(session, state, EnvironmentEdit{.source = std::filesystem::path(state.environment_input)});
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("an equirectangular .hdr or .exr");
+
+  if (!env) {
+    ImGui::TextDisabled("Nothing lights the scene from afar.");
     return;
   }
-  ImGui::TextWrapped("%s", environment_description(scene).c_str());
-  float intensity = scene.environment->intensity;
+  if (env->path == kSkyEnvironmentName) sun_controls(session, state, env->sky);
+  float intensity = env->intensity;
   if (ImGui::DragFloat("intensity##env", &intensity, drag_speed(intensity, 0.01f), 0.0f, FLT_MAX,
                        "%.3f", ImGuiSliderFlags_AlwaysClamp))
-    ui_edit(session, state, EnvironmentEdit{std::max(intensity, 0.0f), std::nullopt});
-  float degrees = glm::degrees(scene.environment->rotation);
+    ui_edit(session, state, EnvironmentEdit{.intensity = std::max(intensity, 0.0f)});
+  float degrees = glm::degrees(env->rotation);
   if (ImGui::SliderFloat("rotation (deg)", &degrees, -180.0f, 180.0f))
-    ui_edit(session, state, EnvironmentEdit{std::nullopt, glm::radians(degrees)});
+    ui_edit(session, state, EnvironmentEdit{.rotation = glm::radians(degrees)});
 }
 
 }  // namespace hipr::viewer

@@ -280,7 +280,7 @@ void Viewer::save_scene_file() {
     // The environment comes from --env, not from glTF: say how to get it and its edits back.
     if (m_session->scene().environment)
       m_state.info("glTF has no environment: reopen with " +
-                   environment_flags(m_session->scene(), m_options.common.load));
+                   environment_flags(m_session->scene()));
   } catch (const std::exception& e) {
     m_state.error("cannot save " + path.string() + ": " + e.what());
   }
@@ -445,6 +445,7 @@ int Viewer::run() {
     const ViewLayout view = layout();
     draw_ui(view, keys);
     handle_requests();
+    follow_environment(m_session->scene(), m_state);
     render_steps();
     m_steps += m_state.steps_last_frame;
     if (m_state.show_status && m_spp_timer.seconds() > 0.25) {
@@ -482,7 +483,7 @@ int Viewer::run() {
   if (!m_options.save.empty()) {
     attempt([&] { save_scene(m_session->scene(), m_options.save); });
     if (m_session->scene().environment)
-      log::info("glTF has no environment: reopen with " + environment_flags(m_session->scene(), m_options.common.load));
+      log::info("glTF has no environment: reopen with " + environment_flags(m_session->scene()));
   }
   if (!m_options.screenshot.empty())
     attempt([&] { save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed()); });

@@ -1,6 +1,11 @@
 #include "app/viewer/viewer_state.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 #include "core/log.h"
+#include "render/light_tables.h"
 
 namespace hipr::viewer {
 
@@ -19,6 +24,23 @@ void ViewerState::error(const std::string& text) {
   ++message_count;
   if (messages.size() > kKeptMessages) messages.erase(messages.begin());
   log::warn(text);
+}
+
+void follow_environment(const Scene& scene, ViewerState& state) {
+  const std::optional<Environment>& env = scene.environment;
+  const std::string key = env ? env->path.string() + " " + std::to_string(env->width) : "none";
+  if (key == state.environment_key) return;
+  const float radiance = env ? environment_mean_luminance(*env) : 0.0f;
+  const float before = state.environment_radiance;
+  if (!state.environment_key.empty() && before > 0.0f && radiance > 0.0f && std::isfinite(before) &&
+      std::isfinite(radiance)) {
+    state.exposure_ev = std::clamp(state.exposure_ev - std::log2(radiance / before), -20.0f, 20.0f);
+    char text[64];
+    std::snprintf(text, sizeof text, "exposure %.1f EV for the new light", double(state.exposure_ev));
+    state.info(text);
+  }
+  state.environment_key = key;
+  if (radiance > 0.0f) state.environment_radiance = radiance;  // "none" in between keeps the last
 }
 
 }  // namespace hipr::viewer

@@ -29,6 +29,8 @@ struct ViewerState {
   uint32_t steps_per_frame = 0;   // > 0: a fixed number of steps instead (scripts, tests)
 
   std::string open_path, save_path, screenshot_path;
+  std::string environment_file;   // the last environment file shown, offered in the Environment panel
+  std::string environment_input;  // the Environment panel's file field
   bool request_open = false;
   bool request_save = false;
   bool request_screenshot = false;
@@ -58,6 +60,17 @@ struct ViewerState {
   uint64_t messages_shown = 0;  // message_count when the panel last drew (it scrolls to a new one)
   void info(const std::string& text);
   void error(const std::string& text);  // also printed on stderr as a warning
+
+  // The environment map last seen (file or built-in name, and size; not the sun) and the mean
+  // radiance of the last one that was not black, for follow_environment.
+  std::string environment_key;
+  float environment_radiance = 0.0f;
 };
+
+// Called every frame: when another environment map lights the scene (a switch, its undo or
+// redo, a script), the exposure moves by the change in the maps' mean radiance, so a switch
+// between the studio (about 1 nit) and the daylight sky (thousands) stays viewable. Intensity
+// and the sun are left to show as they are.
+void follow_environment(const Scene& scene, ViewerState& state);
 
 }  // namespace hipr::viewer
