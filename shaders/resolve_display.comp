@@ -78,6 +78,8 @@ void capture(uvec2 origin, uint tilePixels) {
     b_display[index].stale = b_display[index].shown;
     b_display[index].staleSamples = b_display[index].shownSamples;
     b_display[index].staleRecord = b_display[index].shownRecord;
+    // The light groups of what was shown become those of the stale estimate (relight.comp).
+    b_display[index].grouped = (b_display[index].grouped & kShownGrouped) != 0u ? kShownGrouped | kStaleGrouped : 0u;
   }
 }
 
@@ -181,6 +183,7 @@ void main() {
     const vec3 fresh = accum.sum / float(n);
     DisplayTexel texel = b_display[index];
     const float alpha = resurfaced(index, texel) ? 1.0 : tileAlpha;
+    texel.grouped &= ~kShownGrouped;  // what is shown now is not the stale estimate alone
     if (alpha == 1.0) {
       texel.shown = fresh;
       texel.shownSamples = n;

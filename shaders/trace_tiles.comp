@@ -2,8 +2,8 @@
 // Path-tracing megakernel over a list of tiles.
 // Reads:  scene buffers (geometry, materials, textures, lights, environment), the TLAS,
 //         the tile list (tile ids in render order), the background-tile mask and FrameParams.
-// Writes: per-pixel accumulation (radiance sum, sum of squares, sample count) and the ray/sample
-//         counters.
+// Writes: per-pixel accumulation (radiance sum, sum of squares, sample count), each light group's
+//         share of the sum (HIPR_LIGHT_GROUPS > 0) and the ray/sample counters.
 // One invocation owns one pixel for the whole dispatch and adds `samplesPerPixel` samples
 // whose indices continue the pixel's count, so results never depend on tile order.
 #extension GL_GOOGLE_include_directive : require
@@ -22,6 +22,8 @@ layout(scalar, binding = kTraceAccumulation) buffer Accumulation { PixelAccum b_
 layout(scalar, binding = kTraceStats) buffer Stats { RenderStats b_stats; };
 layout(scalar, binding = kTraceTileFlags) buffer TileFlags { uint b_tile_flags[]; };
 layout(scalar, binding = kTraceTileBackground) readonly buffer TileBackground { uint b_tile_background[]; };
+layout(scalar, binding = kTraceGroupSums) buffer GroupSums { vec3 b_group_sums[]; };
+layout(scalar, binding = kTraceMaterialGroups) readonly buffer MaterialGroups { uint b_material_groups[]; };
 
 #include "common/rng.glsl"
 #include "common/sampling.glsl"
@@ -51,6 +53,14 @@ layout(push_constant, scalar) uniform Push { TracePush u_push; };
 
 #ifndef HIPR_LIGHT_SAMPLING
 #define HIPR_LIGHT_SAMPLING kLightSamplingMis
+#endif
+
+// Light groups (src/render/light_groups.h): how many groups' shares of the radiance are kept.
+#ifndef HIPR_LIGHT_GROUPS
+#define HIPR_LIGHT_GROUPS 0
+#endif
+#if HIPR_LIGHT_GROUPS > 0
+vec3 g_sampleGroups[HIPR_LIGHT_GROUPS];  // the current sample's radiance by group (per invocation)
 #endif
 
 // Weight of radiance found by BSDF sampling, given the light-sampling pdf of the same direction.
@@ -115,8 +125,9 @@ vec3 leave_surface(vec3 position, vec3 geometricNormal, vec3 direction) {
   return offset_ray_origin(position, dot(direction, geometricNormal) >= 0.0 ? geometricNormal : -geometricNormal);
 }
 
-vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWeight, inout uint rays) {
+vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWeight, inout uint rays, out uint group) {
   const LightSample ls = sample_light(surface.position, u);
+  group = ls.group;
   if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
   const vec3 f = bsdf_eval(bsdf, ls.direction);
   if (max3(f) <= 0.0) return vec3(0.0);
@@ -165,6 +176,20 @@ struct PathState {
   bool specularSinceFirst;    // every lobe after x_0 so far was specular or transmission
 };
 
+// Adds a contribution to the path's radiance and to its light group's share. The share is what
+// the radiance sum grew by, not `value` itself: radiance then comes from the same operations with
+// or without groups (a second use of `value` could stop a compiler fusing its multiply into the
+// add), so images are the same bit for bit.
+void add_radiance(inout PathState p, uint group, vec3 value) {
+#if HIPR_LIGHT_GROUPS > 0
+  const vec3 before = p.radiance;
+  p.radiance += value;
+  if (group < HIPR_LIGHT_GROUPS) g_sampleGroups[group] += p.radiance - before;
+#else
+  p.radiance += value;
+#endif
+}
+
 PathState start_path(uvec2 pixel, uint sampleIndex) {
   PathState p;
   p.rng = PathRng(pixel.y * u_frame.width + pixel.x, pixel, sampleIndex, u_frame.seed, u_frame.sampleSequence);
@@ -177,6 +202,9 @@ PathState start_path(uvec2 pixel, uint sampleIndex) {
   p.depth = 0u;
   p.firstLobe = kLobeDiffuse;
   p.specularSinceFirst = true;
+#if HIPR_LIGHT_GROUPS > 0
+  for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g) g_sampleGroups[g] = vec3(0.0);
+#endif
   return p;
 }
 
@@ -201,7 +229,7 @@ bool path_step(inout PathState p, bool backgroundTile, inout uint rays) {
       float weight = 1.0;
       if (!p.previousDelta)
         weight = bsdf_hit_weight(p.previousPdf, light_selection_pdf(u_frame.environmentLight) * env_pdf(p.direction));
-      p.radiance += p.throughput * env_radiance(p.direction) * weight;
+      add_radiance(p, b_lights[u_frame.environmentLight].group, p.throughput * env_radiance(p.direction) * weight);
     }
     return true;
   }
@@ -215,14 +243,18 @@ bool path_step(inout PathState p, bool backgroundTile, inout uint rays) {
   if (!surface.frontFacing && max3(shading.absorption) > 0.0) p.throughput *= exp(-shading.absorption * hit.t);
   if (HIPR_FEATURE_EMISSION != 0 && max3(shading.emission) > 0.0) {
     const float weight = p.previousDelta ? 1.0 : emitter_hit_weight(surface, hit.t, p.direction, p.previousPdf);
-    p.radiance += p.throughput * shading.emission * weight;
+    add_radiance(p, b_material_groups[b_geometries[surface.geometry].materialIndex],
+                 p.throughput * shading.emission * weight);
   }
   if (p.depth >= u_frame.maxDepth) return true;
 
   const BsdfPoint bsdf = bsdf_point(params, BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent), wo);
-  if (HIPR_HAS_LIGHTS && u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly)
+  if (HIPR_HAS_LIGHTS && u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly) {
     // sample_light takes the choice of light in x and the point in y,z (rng_uniform4's layout).
-    p.radiance += p.throughput * direct_light(surface, bsdf, rng_uniform4(p.rng, p.depth, 1u).zxyw, luminance(p.throughput), rays);
+    uint group;
+    const vec3 direct = direct_light(surface, bsdf, rng_uniform4(p.rng, p.depth, 1u).zxyw, luminance(p.throughput), rays, group);
+    add_radiance(p, group, p.throughput * direct);
+  }
 
   const vec4 u = rng_uniform4(p.rng, p.depth, 0u);
   const BsdfSample bs = bsdf_sample(bsdf, u.xyz);
@@ -271,7 +303,13 @@ void main() {
   const bool backgroundTile =
       b_tile_background[(pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize] != 0u;
   PixelAccum accum = b_accum[pixelIndex];
-  if ((accum.count & kPixelOwed) != 0u) accum = PixelAccum(vec3(0.0), 0u, vec3(0.0));  // first visit since an edit
+  const bool restart = (accum.count & kPixelOwed) != 0u;  // first visit since an edit
+  if (restart) accum = PixelAccum(vec3(0.0), 0u, vec3(0.0));
+#if HIPR_LIGHT_GROUPS > 0
+  vec3 groupSums[HIPR_LIGHT_GROUPS];
+  for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g)
+    groupSums[g] = restart ? vec3(0.0) : b_group_sums[pixelIndex * HIPR_LIGHT_GROUPS + g];
+#endif
   uint rays = 0u;
   uint nonFinite = 0u;
   // Samples finish in index order, so the sum is the same whatever the dispatch size.
@@ -284,12 +322,18 @@ void main() {
     else {
       accum.sum += value;
       accum.sumSquares += value * value;
+#if HIPR_LIGHT_GROUPS > 0
+      for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g) groupSums[g] += g_sampleGroups[g];
+#endif
     }
     finished += 1u;
     if (finished < u_push.samplesPerPixel) path = start_path(pixel, accum.count + finished);
   }
   accum.count += u_push.samplesPerPixel;
   b_accum[pixelIndex] = accum;
+#if HIPR_LIGHT_GROUPS > 0
+  for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g) b_group_sums[pixelIndex * HIPR_LIGHT_GROUPS + g] = groupSums[g];
+#endif
 
   atomicAdd(b_stats.rays, uint64_t(rays));
   atomicAdd(b_stats.samples, uint64_t(u_push.samplesPerPixel));

@@ -67,6 +67,10 @@ class ProgressiveRenderer {
   virtual void resolve_display_all(DisplayRule rule) = 0;
   virtual void capture_stale_display() = 0;
   virtual ImageRGB displayed_image() const = 0;
+  // At an edit that only scaled emitters (ChangeSet::emitter_scales), after the capture: the
+  // stale estimate becomes the converged image relit by linearity, shown at once. Returns false
+  // (nothing done) where the renderer cannot (an emitter it does not keep apart).
+  virtual bool relight(const std::vector<EmitterScale>& /*scales*/) { return false; }
   // Renders the G-buffer of the scene as it is now (the display rules read which surface each
   // pixel shows), leaving the previous one and the tile flags alone.
   virtual void refresh_gbuffer() = 0;

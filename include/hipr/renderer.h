@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -49,6 +50,10 @@ struct RenderSettings {
   // CPU. true: every kernel is dispatched once over no tile as soon as it is made, so no later
   // step (the first edit in the viewer, a timed benchmark step) pays for a compilation.
   bool compile_kernels_early = false;
+  // Light groups kept apart in the film (at most abi::kMaxLightGroups = 8; 0: none), so that an
+  // edit of an emitter's intensity or colour relights the converged image at once (HiPR policy).
+  // Costs 24 bytes per pixel and group; radiance is the same bit for bit with or without.
+  uint32_t light_groups = 8;
   HiprParameters hipr;
 };
 
@@ -72,6 +77,7 @@ struct SceneStats {
 struct RenderSnapshot {
   std::vector<uint8_t> accumulation;
   std::vector<uint8_t> display;
+  std::vector<uint8_t> light_groups;  // the accumulation's and the stale estimate's group shares
 };
 
 class Renderer final : public ProgressiveRenderer {
@@ -111,6 +117,7 @@ class Renderer final : public ProgressiveRenderer {
   void resolve_display_all(DisplayRule rule) override;
   void capture_stale_display() override;
   ImageRGB displayed_image() const override;
+  bool relight(const std::vector<EmitterScale>& scales) override;
   RenderSnapshot snapshot() const;
   void restore(const RenderSnapshot& snapshot);
 
@@ -133,6 +140,11 @@ class Renderer final : public ProgressiveRenderer {
   // Per tile: how many of its pixels still show radiance from before the last edit (they owe
   // a restart at their next visit).
   std::vector<uint32_t> owed_tiles() const;
+  // The light groups (names, in group order; emitters over the budget are pooled) and one group's
+  // share of image().
+  std::vector<std::string> light_group_names() const;
+  std::vector<std::string> pooled_emitters() const;
+  ImageRGB light_group_image(uint32_t group) const;
 
  private:
   struct Impl;

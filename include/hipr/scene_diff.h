@@ -9,6 +9,15 @@
 
 namespace hipr {
 
+// An emitter whose radiance an edit scaled, per channel, leaving everything else about it as it
+// was: a punctual light's intensity or colour, a material's emission, the environment's intensity.
+struct EmitterScale {
+  enum class Kind { PunctualLight, Material, Environment };
+  Kind kind = Kind::PunctualLight;
+  uint32_t index = 0;  // the light's node, the material; 0 for the environment
+  glm::vec3 factor{1.0f};
+};
+
 struct ChangeSet {
   std::vector<uint32_t> instances;  // indices into Scene::instances() (the changed set E)
   std::vector<uint32_t> lights;     // node indices of punctual lights that changed
@@ -21,6 +30,10 @@ struct ChangeSet {
   bool environment = false;
   // The map itself changed (switched, switched on or off, the sky re-made): upload it again.
   bool environment_map = false;
+  // When the edit changed nothing but emitters' brightness and colour, each by a finite factor
+  // per channel (radiance is linear in them: the converged image can be relit, docs/method.md).
+  // Empty for any other edit.
+  std::vector<EmitterScale> emitter_scales;
 
   bool empty() const {
     return instances.empty() && lights.empty() && !materials && !transforms && !light_tables &&

@@ -30,6 +30,11 @@ class Scheduler {
   // fresh estimate must beat the converged stale one). Whole-pass policies ignore it.
   void set_first_visit_spp(uint32_t spp) { m_first_visit_spp = spp < 1 ? 1 : spp; }
   DisplayRule display_rule() const { return m_display; }
+  // Relighting by linearity at edits that only scale emitters (policies that relight: hipr).
+  // On by default; off for comparison (the estimator's ablation).
+  void set_relight(bool relight) { m_relight = relight; }
+  // Whether the last edit was relit (its stale estimate is the relit converged image).
+  bool relit() const { return m_relit; }
 
   // The scene changed (already edited in `scene`): update the renderer and plan a new
   // schedule. Tiles still owed to earlier edits stay owed: every pixel restarts at its next visit.
@@ -68,6 +73,8 @@ class Scheduler {
   uint32_t m_first_visit_spp;
   uint32_t m_cursor = 0;       // next schedule entry
   bool m_edited = false;       // an edit happened: the display rule applies
+  bool m_relight = true;
+  bool m_relit = false;
   bool m_first_round = false;  // still in the first pass over the schedule since the edit
   uint32_t m_leading = 0;          // schedule entries [0, m_leading) are the policy's own steps
   uint32_t m_leading_cursor = 0;   // the next of them

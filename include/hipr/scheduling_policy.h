@@ -42,6 +42,9 @@ class SchedulingPolicy {
   // Every tile restarts at the edit and the display changes only when a pass over all tiles
   // completes (what full-frame progressive viewers show); tiles get no extra first-visit samples.
   virtual bool whole_passes() const { return false; }
+  // At an edit that only scales emitters, the stale image is relit by linearity
+  // (ProgressiveRenderer::relight) before fresh samples come.
+  virtual bool relights() const { return false; }
 
   // Before any edit, on the scene as loaded (HiPR: the first G-buffer).
   virtual void start(ProgressiveRenderer& renderer) { (void)renderer; }

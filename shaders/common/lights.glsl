@@ -13,6 +13,7 @@ struct LightSample {
   float pdf;        // solid-angle pdf including the selection probability; 0 = no sample
   bool isDelta;     // point/spot/directional: no MIS
   vec3 lightNormal; // triangle: the sampled point's normal facing the shading point
+  uint group;       // the light's group (Light::group)
 };
 
 float light_selection_pdf(uint index) { return b_light_cdf[index + 1u] - b_light_cdf[index]; }
@@ -48,11 +49,13 @@ LightSample sample_light(vec3 position, vec4 u) {
   s.distance = kFloatMax;
   s.radiance = vec3(0.0);
   s.lightNormal = vec3(0.0);
+  s.group = kInvalidIndex;
   if (u_frame.lightCount == 0u) return s;
   const uint index = select_light(u.x);
   const float selection = light_selection_pdf(index);
   if (selection <= 0.0) return s;
   const Light light = b_lights[index];
+  s.group = light.group;
 
   // Light kinds the kernel was compiled without are never in the table (features.glsl).
   if (HIPR_FEATURE_EMISSION != 0 && light.type == kLightTriangle) {

@@ -184,7 +184,7 @@ struct Light {
   vec3 edge2;           // triangle: v2 - v0
   float range;          // point/spot: 0 = infinite
   vec3 direction;       // spot/directional: direction the light travels
-  float padding;
+  uint group;           // light group its contribution is kept in, kInvalidIndex: pooled
   vec3 intensity;       // point/spot: candela * colour; directional: lux * colour
   float padding2;
 };
@@ -208,6 +208,22 @@ struct DisplayTexel {
   uint shownSamples;  // samples behind `shown` (of the stale estimate while it has any weight)
   uint shownRecord;   // the G-buffer record (surface) `shown` depicts, kRecordUnknown if not known
   uint staleRecord;   // the same for `stale`
+  uint grouped;       // kShownGrouped, kStaleGrouped: the value's light groups are known (relight.comp)
+};
+
+// Light groups (relight.comp): each group's share of a pixel's radiance is kept apart, so an edit
+// of an emitter's intensity or colour rescales it. At most this many groups.
+HIPR_CONST uint kMaxLightGroups = 8u;
+// DisplayTexel::grouped bits: the per-group parts of `shown` / `stale` are in the stale-groups
+// buffer (shown only while it equals stale).
+HIPR_CONST uint kShownGrouped = 1u;
+HIPR_CONST uint kStaleGrouped = 2u;
+
+// Parameters of relight.comp: per light group, the factor (per channel) its radiance is scaled by.
+struct RelightPush {
+  vec3 factors[kMaxLightGroups];
+  uint pixelCount;
+  uint groupCount;
 };
 
 // resolve_display.comp rules (ResolvePush::rule).

@@ -49,6 +49,7 @@ struct BenchOptions {
   fs::path ref_cache;
   bool no_ref_cache = false;
   double drag = 0.0;  // > 0: the edits are one drag, this much work apart (full-frame passes)
+  bool no_relight = false;
 };
 
 // The edits' own JSON text, one per edit: with the scene's hash it names a scene state.
@@ -169,6 +170,7 @@ int run_bench(BenchOptions& o) {
       o.tiles_per_step ? o.tiles_per_step : default_tiles_per_step(renderer.tile_count());
   run_options.visit_spp = o.visit_spp;
   run_options.first_visit_spp = o.first_visit_spp;
+  run_options.relight = !o.no_relight;
   run_options.target_spp = o.common.spp;
   run_options.max_steps = o.steps;
 
@@ -181,6 +183,8 @@ int run_bench(BenchOptions& o) {
                                    {"visit_spp", run_options.visit_spp},
                                    {"first_visit_spp", run_options.first_visit_spp},
                                    {"display_hipr_oracle", display_rule_name(ordered_display)},
+                                   {"relight", run_options.relight},
+                                   {"light_groups", settings.light_groups},
                                    {"steps", o.steps},
                                    {"drag_work_per_edit", o.drag},
                                    {"max_depth", settings.max_depth},
@@ -273,6 +277,8 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--drag", options->drag,
                   "Apply the edits as one drag, this much work apart in full-frame passes (as a viewer applies "
                   "one per frame), measuring against the scene as it is at each step");
+  cmd->add_flag("--no-relight", options->no_relight,
+                "hipr: re-render light edits without relighting the converged image (for comparison)");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_bench(*options); }};
 }

@@ -10,6 +10,7 @@
 #include "image/builtin_environments.h"
 #include "render/background_tiles.h"
 #include "render/kernel_features.h"
+#include "render/light_groups.h"
 #include "shaders/shared/abi.h"
 
 namespace hipr::app {
@@ -79,6 +80,10 @@ int run_info(const InfoOptions& o) {
       const PunctualLight& l = scene.lights[size_t(node.light)];
       std::printf("  %-24s %s, intensity %g\n", node.name.c_str(), light_type_name(l.type), l.intensity);
     }
+  // Emitters whose light edits the hipr policy relights at once (render/light_groups.h).
+  const LightGroups groups = assign_light_groups(scene, RenderSettings{}.light_groups);
+  std::printf("groups     %s%s\n", joined(groups.names, "none").c_str(),
+              groups.pooled.empty() ? "" : ("; pooled, not relit: " + joined(groups.pooled, "")).c_str());
   const int camera = scene.camera_node();
   std::printf("camera     %s\n", camera >= 0 ? scene.nodes[size_t(camera)].name.c_str() : "none (a default camera frames the scene)");
   std::string extensions;

@@ -45,7 +45,10 @@ int run_render(RenderOptions& o) {
 
   const Timer setup_timer;
   const vk::Context ctx(context_options(o.common));
-  Renderer renderer(ctx, scene, o.common.render);
+  // A render is never edited: no light groups to relight with (the pixels are the same bits).
+  RenderSettings settings = o.common.render;
+  settings.light_groups = 0;
+  Renderer renderer(ctx, scene, settings);
   const double setup_seconds = setup_timer.seconds();
   log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" +
             std::to_string(renderer.scene_stats().triangle_count) + " triangles, " +

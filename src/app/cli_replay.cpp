@@ -30,6 +30,7 @@ struct ReplayOptions {
   uint32_t tiles_per_step = 0;  // 0 = default_tiles_per_step
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp = 0;  // 0 = visit_spp
+  bool no_relight = false;
   std::string display;           // empty = the policy's own rule
 };
 
@@ -79,6 +80,7 @@ int run_replay(ReplayOptions& o) {
   Scheduler scheduler(renderer, policy, per_step, o.visit_spp);
   scheduler.set_display_rule(display);
   if (o.first_visit_spp) scheduler.set_first_visit_spp(o.first_visit_spp);
+  scheduler.set_relight(!o.no_relight);
   // Converge the scene as loaded; the last 1-spp pass is timed: the unit of the overhead share.
   for (uint32_t done = 0; done + 1 < o.common.spp; done += 16) renderer.add_samples_full_frame(std::min(16u, o.common.spp - 1 - done));
   const Timer pass_timer;
@@ -152,6 +154,8 @@ Command add_replay_command(CLI::App& app) {
   cmd->add_option("--display", options->display,
                   "How re-rendered tiles are shown: immediate, switch or blend (default: blend for hipr, immediate "
                   "for the others)");
+  cmd->add_flag("--no-relight", options->no_relight,
+                "hipr: re-render light edits without relighting the converged image first");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_replay(*options); }};
 }

@@ -36,6 +36,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
   Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step, options.visit_spp);
   if (options.display) scheduler.set_display_rule(*options.display);
   scheduler.set_first_visit_spp(options.first_visit_spp);
+  scheduler.set_relight(options.relight);
 
   PolicyRun run;
   const ImageRGB stale = scheduler.displayed_image();
@@ -49,13 +50,16 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
       run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
     return shown;
   };
-  evaluate(0, 0.0);
-
   double wall = 0.0;  // only scheduling and rendering: evaluation and read-backs are left out
   {
     const Timer timer;
     scheduler.on_edit(after, changes);
     wall += timer.seconds();
+  }
+  // What the screen shows at the edit, before any sample: the stale image, or the relit one.
+  if (evaluate(0, wall).rgb != stale.rgb) {
+    run.first_feedback_work = 0.0;
+    run.first_feedback_ms = wall * 1e3;
   }
   for (uint32_t step = 1; options.max_steps == 0 || step <= options.max_steps; ++step) {
     const Timer timer;
@@ -95,6 +99,7 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
                       options.visit_spp);
   if (options.display) scheduler.set_display_rule(*options.display);
   scheduler.set_first_visit_spp(options.first_visit_spp);
+  scheduler.set_relight(options.relight);
 
   PolicyRun run;
   double wall = 0.0, overhead = 0.0, work_before = 0.0;  // work_before: of the edits before the current one
@@ -106,7 +111,6 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
     while (run.captures.size() < options.capture_work.size() && work >= options.capture_work[run.captures.size()])
       run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
   };
-  evaluate(0.0);  // the image before the drag, against the scene after its first edit
   for (size_t e = 0; e < changes.size(); ++e) {
     if (e > 0) {
       work_before += scheduler.work_since_edit();
@@ -119,6 +123,7 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
       scheduler.on_edit(states[e + 1], changes[e]);
       wall += timer.seconds();
     }
+    if (e == 0) evaluate(0.0);  // what the first edit shows before any sample (stale or relit)
     const bool last = e + 1 == changes.size();
     if (last) run.drag_work = work_before;
     for (;;) {

@@ -18,6 +18,7 @@ struct PolicyRunOptions {
   uint32_t tiles_per_step = 1;
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp = 1;  // samples of a tile's first visit after the edit (not for `full`)
+  bool relight = true;           // relighting by linearity (policies that relight; Scheduler::set_relight)
   uint32_t target_spp = 1;       // converged: every pixel has this many samples since the edit
   uint32_t max_steps = 0;        // 0: until converged
   double dense_until = 16.0;     // evaluate after every step until this much work, then sparser
@@ -29,7 +30,8 @@ struct PolicyRunOptions {
 
 struct PolicyRun {
   ErrorCurve curve;
-  // Work and time when the display first changed anywhere, and when every changed tile
+  // Work and time when the display first changed anywhere (0 work: at the edit itself, relit),
+  // and when every changed tile
   // (stage 1's active set) had shown its fresh estimate (at weight 1/2 or more: kTileShown);
   // -1 when it never happened.
   double first_feedback_work = -1.0, first_feedback_ms = -1.0;

@@ -69,6 +69,7 @@ HiprStageRunner& stages_of(ProgressiveRenderer& renderer) {
 class HiprPolicy final : public SchedulingPolicy {
  public:
   Policy id() const override { return Policy::Hipr; }
+  bool relights() const override { return true; }
   void start(ProgressiveRenderer& renderer) override { stages_of(renderer).stage1_visibility({}); }
   uint32_t plan(ProgressiveRenderer& renderer, const ChangeSet& changes) override {
     HiprStageRunner& stages = stages_of(renderer);

@@ -37,6 +37,8 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   else if (!m_policy->whole_passes())
     m_renderer.resolve_display_all(m_display);
   m_renderer.capture_stale_display();
+  // Before the pixels owe this edit's restart: the relight reads which estimates are current.
+  m_relit = m_relight && m_policy->relights() && m_renderer.relight(changes.emitter_scales);
   m_overhead_seconds += timer.seconds();
   m_renderer.update_scene(scene, changes);
   const Timer schedule_timer;

@@ -1,5 +1,9 @@
 #include "render/film.h"
 
+#include <algorithm>
+#include <string>
+
+#include "core/error.h"
 #include "shaders/shared/bindings/film.h"
 
 namespace hipr {
@@ -11,12 +15,14 @@ vk::Buffer storage(const vk::Context& ctx, size_t bytes) { return vk::Buffer(ctx
 
 uint32_t groups_for(uint32_t items) { return (items + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize; }
 
-Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, const vk::DescriptorSet& scene,
-           const vk::Buffer& tile_flags)
+Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups,
+           const vk::DescriptorSet& scene, const vk::Buffer& tile_flags)
     : accumulation(storage(ctx, size_t(width) * height * sizeof(abi::PixelAccum))),
       stats(storage(ctx, sizeof(abi::RenderStats))),
+      group_sums(storage(ctx, std::max<size_t>(size_t(width) * height * light_groups, 1) * sizeof(glm::vec3))),
       m_width(width),
       m_height(height),
+      m_light_groups(light_groups),
       m_mark_owed(ctx, "mark_owed.comp", {},
                   {{abi::kOwedAccumulation, &accumulation}, {abi::kOwedTileFlags, &tile_flags}}, 0, &scene) {
   clear();
@@ -31,6 +37,18 @@ ImageRGB Film::image() const {
     const uint32_t count = a.count & abi::kPixelCountMask;
     return count ? a.sum * (1.0f / float(count)) : glm::vec3(0.0f);
   });
+}
+
+ImageRGB Film::group_image(uint32_t group) const {
+  if (group >= m_light_groups) throw InternalError("no light group " + std::to_string(group));
+  const auto accum = accumulation.download_all<abi::PixelAccum>();
+  const auto sums = group_sums.download_all<glm::vec3>();
+  std::vector<glm::vec3> mean(accum.size(), glm::vec3(0.0f));
+  for (size_t i = 0; i < accum.size(); ++i) {
+    const uint32_t count = accum[i].count & abi::kPixelCountMask;
+    if (count) mean[i] = sums[i * m_light_groups + group] * (1.0f / float(count));
+  }
+  return image_of(m_width, m_height, mean, [](const glm::vec3& v) { return v; });
 }
 
 std::vector<uint32_t> Film::sample_counts() const {
@@ -55,6 +73,7 @@ RenderCounters Film::counters() const {
 
 void Film::clear() {
   accumulation.clear();
+  group_sums.clear();
   stats.clear();
 }
 

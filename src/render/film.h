@@ -1,7 +1,8 @@
 #pragma once
 // The film: per-pixel accumulation (radiance sum, sum of squares, sample count and the owed
-// bit) and the ray/sample counters the trace kernels add to. Owed pixels (mark_owed.comp) keep
-// their old samples until their next visit restarts them.
+// bit), each light group's share of the sum (render/light_groups.h), and the ray/sample counters
+// the trace kernels add to. Owed pixels (mark_owed.comp) keep their old samples until their next
+// visit restarts them.
 #include <cstdint>
 #include <vector>
 
@@ -16,13 +17,15 @@ namespace hipr {
 class Film {
  public:
   // `scene`: the scene's descriptor set (the kernel reads the frame parameters from it).
-  Film(const vk::Context& ctx, uint32_t width, uint32_t height, const vk::DescriptorSet& scene,
-       const vk::Buffer& tile_flags);
+  Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups,
+       const vk::DescriptorSet& scene, const vk::Buffer& tile_flags);
 
   // Every pixel owes a restart; also forgets which tiles have shown their fresh estimate.
   void record_mark_all_owed(VkCommandBuffer cmd) const;
 
   ImageRGB image() const;  // per-pixel mean radiance
+  // Light group `group`'s share of image() (black where the pixel has no sample).
+  ImageRGB group_image(uint32_t group) const;
   std::vector<uint32_t> sample_counts() const;
   // Per pixel: whether it still holds samples from before the last edit.
   std::vector<bool> owed_pixels() const;
@@ -31,9 +34,10 @@ class Film {
   void clear();                             // samples and counters
 
   vk::Buffer accumulation, stats;
+  vk::Buffer group_sums;  // vec3 per pixel and group (pixel-major); one vec3 without groups
 
  private:
-  uint32_t m_width, m_height;
+  uint32_t m_width, m_height, m_light_groups;
   vk::ComputePipeline m_mark_owed;
 };
 

@@ -20,7 +20,12 @@ std::array<float, 12> row_major_3x4(const glm::mat4& m) {
 
 }  // namespace
 
-GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene) : m_ctx(ctx) {
+GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_group_budget)
+    : m_ctx(ctx), m_groups(assign_light_groups(scene, light_group_budget)) {
+  // Never empty: a buffer of no bytes cannot be bound.
+  std::vector<uint32_t> material_group_table = m_groups.material;
+  if (material_group_table.empty()) material_group_table.push_back(abi::kInvalidIndex);
+  material_groups = vk::make_storage_buffer(ctx, material_group_table);
   upload_geometry(scene);
   upload_textures(scene);
   update_materials(scene);
@@ -189,7 +194,8 @@ void GpuScene::update_environment(const Scene& scene) {
 }
 
 void GpuScene::update_lights(const Scene& scene) {
-  m_lights = build_light_tables(scene, scene.instances(), m_record_base, uint32_t(m_records.size()), m_info.scene_radius);
+  m_lights = build_light_tables(scene, scene.instances(), m_record_base, uint32_t(m_records.size()),
+                                m_info.scene_radius, &m_groups);
   for (size_t r = 0; r < m_records.size(); ++r) m_records[r].lightOffset = m_lights.record_light_offset[r];
   geometries.upload(m_records.data(), m_records.size() * sizeof(abi::GeometryRecord));
   m_info.light_count = m_lights.lights.size();

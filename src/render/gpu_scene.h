@@ -9,6 +9,7 @@
 
 #include "hipr/renderer.h"
 #include "hipr/scene.h"
+#include "render/light_groups.h"
 #include "render/light_tables.h"
 #include "vk/acceleration.h"
 #include "vk/buffer.h"
@@ -19,7 +20,8 @@ namespace hipr {
 
 class GpuScene {
  public:
-  GpuScene(const vk::Context& ctx, const Scene& scene);
+  // `light_group_budget`: see RenderSettings::light_groups.
+  GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_group_budget = 0);
   GpuScene(const GpuScene&) = delete;
   GpuScene& operator=(const GpuScene&) = delete;
 
@@ -33,6 +35,10 @@ class GpuScene {
   void update_lights(const Scene& scene);
   // Uploads another environment map (or none) and its sampling tables, then the light tables.
   void update_environment(const Scene& scene);
+
+  // The light groups, chosen when the scene was uploaded; their material table (uint per material).
+  const LightGroups& light_groups() const { return m_groups; }
+  vk::Buffer material_groups;
 
   // The frame parameters the kernels read (camera, image and tiles, HiPR weights).
   void set_frame(const abi::FrameParams& params);
@@ -71,6 +77,7 @@ class GpuScene {
   const vk::Context& m_ctx;
   SceneStats m_info;
   LightTables m_lights;
+  LightGroups m_groups;
   std::vector<std::vector<PrimitiveRange>> m_ranges;  // per mesh, per primitive
   std::vector<vk::AccelerationStructure> m_blas;      // one per mesh (empty meshes: none)
   std::vector<bool> m_has_blas;

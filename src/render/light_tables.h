@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "hipr/scene.h"
+#include "render/light_groups.h"
 #include "shaders/shared/abi.h"
 
 namespace hipr {
@@ -16,10 +17,11 @@ struct LightTables {
 };
 
 // `record_base[i]` is the first GeometryRecord of instances[i]; records follow the mesh's
-// primitive order. `scene_radius` sizes the power estimate of lights at infinity.
+// primitive order. `scene_radius` sizes the power estimate of lights at infinity. Each light
+// carries its group (`groups`; kInvalidIndex where pooled or without groups).
 LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& instances,
                                const std::vector<uint32_t>& record_base, uint32_t record_count,
-                               float scene_radius);
+                               float scene_radius, const LightGroups* groups = nullptr);
 
 // Mean luminance of the environment's texels weighted by solid angle.
 float environment_mean_luminance(const Environment& env);

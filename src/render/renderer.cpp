@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "hipr/hipr_stages.h"
+#include "hipr/relight_pass.h"
 #include "hipr/resolve_pass.h"
 #include "render/background_tiles.h"
 #include "render/film.h"
@@ -41,14 +42,15 @@ struct Renderer::Impl {
   Impl(const vk::Context& c, const Scene& scene, const RenderSettings& s)
       : ctx(c),
         settings(s),
-        gpu(c, scene),
+        gpu(c, scene, s.light_groups),
         tiles(c, s),
         features(s.specialize_kernel ? hipr::kernel_features(scene) : all_kernel_features()),
-        film(c, s.width, s.height, gpu.descriptor_set(), tiles.flags),
+        film(c, s.width, s.height, gpu.light_groups().count, gpu.descriptor_set(), tiles.flags),
         // The display pass reads the G-buffer from the start (which surface a pixel shows), so
         // the G-buffers exist even in renders that never run HiPR's stages.
         gbuffers(c, gpu, s.width, s.height),
         resolve(c, gpu, tiles, film, gbuffers, s.width, s.height),
+        relight(c, film, resolve, gpu.light_groups().count, s.width, s.height),
         trace(c, gpu, tiles, film, s, features),
         background(scene) {
     update_background(scene);
@@ -108,6 +110,7 @@ struct Renderer::Impl {
   Film film;
   GBufferPass gbuffers;
   ResolvePass resolve;
+  RelightPass relight;
   TracePass trace;
   BackgroundTiles background;
   std::unique_ptr<HiprStages> hipr;  // made on first use
@@ -181,6 +184,15 @@ void Renderer::reset_counters() { m->film.reset_counters(); }
 void Renderer::reset() {
   m->film.clear();
   m->resolve.clear();
+  m->relight.clear();
+}
+
+bool Renderer::relight(const std::vector<EmitterScale>& scales) {
+  if (scales.empty()) return false;
+  const std::optional<std::vector<glm::vec3>> factors = m->gpu.light_groups().factors(scales);
+  if (!factors) return false;
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->relight.record(cmd, *factors); });
+  return true;
 }
 
 void Renderer::resolve_display_all(DisplayRule rule) {
@@ -194,14 +206,22 @@ void Renderer::capture_stale_display() {
 ImageRGB Renderer::displayed_image() const { return m->resolve.displayed_image(); }
 
 RenderSnapshot Renderer::snapshot() const {
-  return {bytes_of<abi::PixelAccum>(m->film.accumulation), bytes_of<abi::DisplayTexel>(m->resolve.display)};
+  std::vector<uint8_t> groups = bytes_of<glm::vec3>(m->film.group_sums);
+  const std::vector<uint8_t> stale_groups = bytes_of<glm::vec3>(m->relight.stale_groups);
+  groups.insert(groups.end(), stale_groups.begin(), stale_groups.end());
+  return {bytes_of<abi::PixelAccum>(m->film.accumulation), bytes_of<abi::DisplayTexel>(m->resolve.display),
+          std::move(groups)};
 }
 
 void Renderer::restore(const RenderSnapshot& snapshot) {
-  if (snapshot.accumulation.size() != m->film.accumulation.size() || snapshot.display.size() != m->resolve.display.size())
+  const size_t film_groups = m->film.group_sums.size();
+  if (snapshot.accumulation.size() != m->film.accumulation.size() || snapshot.display.size() != m->resolve.display.size() ||
+      snapshot.light_groups.size() != film_groups + m->relight.stale_groups.size())
     throw InternalError("a snapshot of another image size");
   m->film.accumulation.upload(snapshot.accumulation.data(), snapshot.accumulation.size());
   m->resolve.display.upload(snapshot.display.data(), snapshot.display.size());
+  m->film.group_sums.upload(snapshot.light_groups.data(), film_groups);
+  m->relight.stale_groups.upload(snapshot.light_groups.data() + film_groups, m->relight.stale_groups.size());
 }
 
 HiprStageRunner* Renderer::hipr_stages() { return &m->stages(); }
@@ -240,6 +260,10 @@ std::vector<uint32_t> Renderer::tile_flags() const {
 std::vector<double> Renderer::tile_weights() const { return m->stages().tile_weights(); }
 
 std::vector<uint32_t> Renderer::schedule() const { return m->tiles.schedule.download_all<uint32_t>(); }
+
+std::vector<std::string> Renderer::light_group_names() const { return m->gpu.light_groups().names; }
+std::vector<std::string> Renderer::pooled_emitters() const { return m->gpu.light_groups().pooled; }
+ImageRGB Renderer::light_group_image(uint32_t group) const { return m->film.group_image(group); }
 
 std::vector<uint32_t> Renderer::owed_tiles() const {
   const std::vector<bool> owed = m->film.owed_pixels();

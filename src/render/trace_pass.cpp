@@ -26,7 +26,9 @@ TracePass::TracePass(const vk::Context& ctx, const GpuScene& scene, const TileSt
                  {abi::kTraceAccumulation, &film.accumulation},
                  {abi::kTraceStats, &film.stats},
                  {abi::kTraceTileFlags, &tiles.flags},
-                 {abi::kTraceTileBackground, &tiles.background}},
+                 {abi::kTraceTileBackground, &tiles.background},
+                 {abi::kTraceGroupSums, &film.group_sums},
+                 {abi::kTraceMaterialGroups, &scene.material_groups}},
       m_discovery(!discovery.empty()) {
   m_bindings.insert(m_bindings.end(), discovery.begin(), discovery.end());
   compile();
@@ -36,6 +38,7 @@ void TracePass::compile() {
   vk::ShaderDefines defines = kernel_feature_defines(m_features);
   defines.emplace_back("HIPR_LIGHT_SAMPLING", std::to_string(int(m_settings.light_sampling)));
   defines.emplace_back("HIPR_DISCOVERY", m_discovery ? "1" : "0");
+  defines.emplace_back("HIPR_LIGHT_GROUPS", std::to_string(m_scene.light_groups().count));
   m_pipeline = std::make_unique<vk::ComputePipeline>(m_ctx, "trace_tiles.comp", defines, m_bindings,
                                                      sizeof(abi::TracePush), &m_scene.descriptor_set());
 }

@@ -1,7 +1,9 @@
 #include "hipr/scene_diff.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "core/error.h"
 #include "scene/default_camera.h"
@@ -20,6 +22,41 @@ bool same_light(const PunctualLight& a, const PunctualLight& b) {
          a.inner_cone == b.inner_cone && a.outer_cone == b.outer_cone;
 }
 
+// Per channel after / before, where that is a finite number (a channel that stays 0 scales by 1);
+// nullopt where radiance does not follow by a factor (from 0 to more, non-finite values).
+std::optional<glm::vec3> channel_factor(glm::vec3 before, glm::vec3 after) {
+  glm::vec3 factor(1.0f);
+  for (int c = 0; c < 3; ++c) {
+    if (!std::isfinite(before[c]) || !std::isfinite(after[c]) || before[c] < 0.0f || after[c] < 0.0f) return std::nullopt;
+    if (before[c] == 0.0f) {
+      if (after[c] != 0.0f) return std::nullopt;
+      continue;
+    }
+    factor[c] = after[c] / before[c];
+    if (!std::isfinite(factor[c])) return std::nullopt;
+  }
+  return factor;
+}
+
+// The material's emission scaled and nothing else changed.
+std::optional<glm::vec3> emission_factor(const MaterialParameters& before, const MaterialParameters& after) {
+  MaterialParameters rest = after;
+  rest.emission_color = before.emission_color;
+  rest.emission_luminance = before.emission_luminance;
+  if (!same_bytes(rest, before)) return std::nullopt;
+  return channel_factor(before.emission_color * before.emission_luminance,
+                        after.emission_color * after.emission_luminance);
+}
+
+// The light's intensity or colour scaled and nothing else changed.
+std::optional<glm::vec3> light_factor(const PunctualLight& before, const PunctualLight& after) {
+  PunctualLight rest = after;
+  rest.color = before.color;
+  rest.intensity = before.intensity;
+  if (!same_light(rest, before)) return std::nullopt;
+  return channel_factor(before.color * before.intensity, after.color * after.intensity);
+}
+
 }  // namespace
 
 ChangeSet diff_scenes(const Scene& before, const Scene& after) {
@@ -30,12 +67,18 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
       before.lights.size() != after.lights.size())
     throw InternalError("scene diff between different scenes");
 
+  // Whether every change so far is an emitter scaled by a factor (emitter_scales).
+  bool linear = true;
+  std::vector<EmitterScale> scales;
   std::vector<bool> material_changed(after.materials.size(), false);
   for (size_t m = 0; m < after.materials.size(); ++m) {
     if (same_bytes(before.materials[m].params, after.materials[m].params)) continue;
     material_changed[m] = true;
     changes.materials = true;
     if (is_emissive(before.materials[m].params) || is_emissive(after.materials[m].params)) changes.light_tables = true;
+    const std::optional<glm::vec3> factor = emission_factor(before.materials[m].params, after.materials[m].params);
+    if (factor) scales.push_back({EmitterScale::Kind::Material, uint32_t(m), *factor});
+    else linear = false;
   }
 
   for (size_t i = 0; i < new_instances.size(); ++i) {
@@ -43,6 +86,7 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     const Instance& b = new_instances[i];
     bool changed = a.world != b.world || a.visible != b.visible;
     if (changed) {
+      linear = false;
       changes.transforms = true;
       for (const MeshPrimitive& p : after.meshes[b.mesh].primitives)
         if (is_emissive(after.materials[p.material].params)) changes.light_tables = true;
@@ -58,12 +102,17 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     if (moved || !same_light(before.lights[size_t(light)], after.lights[size_t(light)])) {
       changes.lights.push_back(n);
       changes.light_tables = true;
+      const std::optional<glm::vec3> factor =
+          moved ? std::nullopt : light_factor(before.lights[size_t(light)], after.lights[size_t(light)]);
+      if (factor) scales.push_back({EmitterScale::Kind::PunctualLight, n, *factor});
+      else linear = false;
     }
   }
 
   const Camera old_camera = resolve_camera(before);
   const Camera new_camera = resolve_camera(after);
   changes.camera = old_camera.camera_to_world != new_camera.camera_to_world || old_camera.yfov != new_camera.yfov;
+  if (changes.camera) linear = false;
 
   const std::optional<Environment>& a = before.environment;
   const std::optional<Environment>& b = after.environment;
@@ -76,7 +125,14 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     changes.environment = true;
     // The light-selection CDF weighs the environment by its mean radiance x intensity.
     changes.light_tables = true;
+    const std::optional<glm::vec3> factor =
+        changes.environment_map || a->rotation != b->rotation
+            ? std::nullopt
+            : channel_factor(glm::vec3(a->intensity), glm::vec3(b->intensity));
+    if (factor) scales.push_back({EmitterScale::Kind::Environment, 0, *factor});
+    else linear = false;
   }
+  if (linear) changes.emitter_scales = std::move(scales);
   return changes;
 }
 

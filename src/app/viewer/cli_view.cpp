@@ -112,6 +112,8 @@ Command add_view_command(CLI::App& app) {
                   "Tiles per scheduling step (default: 1/64 of the frame)");
   cmd->add_option("--visit-spp", v.visit_spp, "Samples per pixel a tile gets per visit")
       ->capture_default_str();
+  cmd->add_flag_function("--no-relight", [&v](int64_t) { v.relight = false; },
+                "hipr: re-render light edits without relighting the converged image first");
   cmd->add_option("--first-visit-spp", v.first_visit_spp,
                   "Samples per pixel of a tile's first visit after an edit (default: 2, within "
                   "[--visit-spp, --spp])");

@@ -110,6 +110,10 @@ void hipr_section(Session& session, ViewerState& state) {
         state.request_display_rule = std::optional<DisplayRule>(r);
     ImGui::EndCombo();
   }
+  bool relight = settings.relight;
+  if (ImGui::Checkbox("relight light edits", &relight)) session.set_relight(relight);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("hipr: an edit of a light's intensity or colour shows the converged image relit at once");
   ImGui::InputInt("n (tile px)", &state.tile_size_input);
   state.tile_size_input = std::clamp(state.tile_size_input, 1, 256);
   ImGui::SameLine();

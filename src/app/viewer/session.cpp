@@ -33,6 +33,7 @@ std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy po
   scheduler->set_display_rule(m_settings.display.value_or(default_display_rule(policy)));
   scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp
                                                             : default_first_visit_spp(m_settings));
+  scheduler->set_relight(m_settings.relight);
   return scheduler;
 }
 
@@ -167,6 +168,11 @@ void Session::set_policy(Policy policy) {
 void Session::set_display_rule(std::optional<DisplayRule> rule) {
   m_settings.display = rule;
   m_scheduler->set_display_rule(rule.value_or(default_display_rule(m_settings.policy)));
+}
+
+void Session::set_relight(bool relight) {
+  m_settings.relight = relight;
+  m_scheduler->set_relight(relight);
 }
 
 void Session::set_tile_size(uint32_t tile_size) {

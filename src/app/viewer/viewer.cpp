@@ -79,6 +79,7 @@ class Viewer {
     settings.tiles_per_step = options.tiles_per_step;
     settings.visit_spp = options.visit_spp;
     settings.first_visit_spp = options.first_visit_spp;
+    settings.relight = options.relight;
     settings.display = options.display_rule;
     settings.spp = options.common.spp;
     m_state.open_path = scene.source.string();

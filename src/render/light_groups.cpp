@@ -1,0 +1,58 @@
+#include "render/light_groups.h"
+
+#include <algorithm>
+
+#include "shaders/shared/abi.h"
+
+namespace hipr {
+namespace {
+
+bool emits(const MaterialParameters& m) {
+  return m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f)));
+}
+
+}  // namespace
+
+LightGroups assign_light_groups(const Scene& scene, uint32_t budget) {
+  budget = std::min(budget, abi::kMaxLightGroups);
+  LightGroups groups;
+  groups.environment = abi::kInvalidIndex;
+  groups.node.assign(scene.nodes.size(), abi::kInvalidIndex);
+  groups.material.assign(scene.materials.size(), abi::kInvalidIndex);
+  const auto add = [&](uint32_t& slot, std::string name) {
+    if (groups.count < budget) {
+      slot = groups.count++;
+      groups.names.push_back(std::move(name));
+    } else {
+      groups.pooled.push_back(std::move(name));
+    }
+  };
+  if (scene.environment) add(groups.environment, "environment");
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    if (scene.nodes[n].light >= 0)
+      add(groups.node[n], "light " + (scene.nodes[n].name.empty() ? "#" + std::to_string(n) : scene.nodes[n].name));
+  // Emissive materials that some instance (shown or hidden) uses.
+  std::vector<bool> used(scene.materials.size(), false);
+  for (const Instance& instance : scene.instances())
+    for (const MeshPrimitive& p : scene.meshes[instance.mesh].primitives) used[p.material] = true;
+  for (size_t m = 0; m < scene.materials.size(); ++m)
+    if (used[m] && emits(scene.materials[m].params))
+      add(groups.material[m],
+          "emission " + (scene.materials[m].name.empty() ? "#" + std::to_string(m) : scene.materials[m].name));
+  return groups;
+}
+
+std::optional<std::vector<glm::vec3>> LightGroups::factors(const std::vector<EmitterScale>& scales) const {
+  std::vector<glm::vec3> result(count, glm::vec3(1.0f));
+  for (const EmitterScale& s : scales) {
+    uint32_t group = abi::kInvalidIndex;
+    if (s.kind == EmitterScale::Kind::Environment) group = environment;
+    else if (s.kind == EmitterScale::Kind::PunctualLight && s.index < node.size()) group = node[s.index];
+    else if (s.kind == EmitterScale::Kind::Material && s.index < material.size()) group = material[s.index];
+    if (group == abi::kInvalidIndex) return std::nullopt;
+    result[group] *= s.factor;
+  }
+  return result;
+}
+
+}  // namespace hipr

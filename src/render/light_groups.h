@@ -1,0 +1,33 @@
+#pragma once
+// Light groups (relighting by linearity, docs/method.md#relighting): the emitters whose share of
+// every pixel's radiance the film keeps apart, so that an edit of their intensity or colour
+// rescales the converged image exactly. Chosen once, when the renderer is made, from what emits
+// then: the environment, each punctual light, each emissive material, in that order, up to the
+// budget (RenderSettings::light_groups); the rest are pooled (never rescaled: their edits
+// re-render as any other). An emitter that appears later is pooled too.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hipr/scene.h"
+#include "hipr/scene_diff.h"
+
+namespace hipr {
+
+struct LightGroups {
+  uint32_t count = 0;
+  uint32_t environment;            // group of the environment, or kInvalidIndex
+  std::vector<uint32_t> node;      // per node: group of its punctual light, or kInvalidIndex
+  std::vector<uint32_t> material;  // per material: group of its emission, or kInvalidIndex
+  std::vector<std::string> names;  // per group: "environment", "light lamp", "emission light"
+  std::vector<std::string> pooled; // emitters over the budget, named alike
+
+  // Per group, the factor an edit scales its radiance by (1 for groups the edit left alone);
+  // nullopt when an emitter the edit scaled is pooled.
+  std::optional<std::vector<glm::vec3>> factors(const std::vector<EmitterScale>& scales) const;
+};
+
+LightGroups assign_light_groups(const Scene& scene, uint32_t budget);
+
+}  // namespace hipr
