@@ -47,13 +47,15 @@ double max_relative_difference(const ImageRGB& a, const ImageRGB& b) {
 TEST(LightGroups, EachEmitterHasAGroupAndTheSharesSumToTheImage) {
   Renderer renderer(test::context(), sphere_box(), settings());
   renderer.add_samples_full_frame(8);
-  EXPECT_EQ(renderer.light_group_names(), (std::vector<std::string>{"light lamp", "emission light"}));
+  EXPECT_EQ(renderer.light_group_names(),
+            (std::vector<std::string>{"light lamp", "emission light", "environment (none yet)"}));
   EXPECT_TRUE(renderer.pooled_emitters().empty());
   const ImageRGB image = renderer.image();
   const ImageRGB lamp = renderer.light_group_image(0), ceiling = renderer.light_group_image(1);
   double lamp_total = 0.0, ceiling_total = 0.0;
   for (size_t i = 0; i < image.rgb.size(); ++i) {
     EXPECT_NEAR(lamp.rgb[i] + ceiling.rgb[i], image.rgb[i], 1e-5 + 1e-5 * image.rgb[i]) << i;
+    EXPECT_EQ(renderer.light_group_image(2).rgb[i], 0.0f) << "no environment";
     lamp_total += lamp.rgb[i];
     ceiling_total += ceiling.rgb[i];
   }
@@ -136,6 +138,24 @@ TEST(Relight, EditsInARowCompose) {
     renderer.mark_all_owed();  // as the scheduler does: the accumulation is no longer current
   }
   EXPECT_LT(max_relative_difference(renderer.displayed_image(), render(scene, settings(), 16)), 1e-4);
+}
+
+// The viewer's flow for a scene loaded without light: switch the studio on, then turn its
+// intensity: the group kept for an environment makes the second edit a relight.
+TEST(Relight, AnEnvironmentSwitchedOnLaterIsRelitToo) {
+  Scene scene = load_scene(test::asset("furnace_sphere.gltf"), {.environment = "none"});
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Hipr, 4);
+  Scene before = scene;
+  apply_edit(scene, EnvironmentEdit{.source = std::filesystem::path("studio")});
+  scheduler.on_edit(scene, diff_scenes(before, scene));
+  EXPECT_FALSE(scheduler.relit());
+  while (scheduler.work_since_edit() < 16.0) scheduler.step();
+  before = scene;
+  apply_edit(scene, EnvironmentEdit{.intensity = 0.25f});
+  scheduler.on_edit(scene, diff_scenes(before, scene));
+  ASSERT_TRUE(scheduler.relit());
+  EXPECT_LT(max_relative_difference(scheduler.displayed_image(), render(scene, settings(), 16)), 1e-4);
 }
 
 TEST(Relight, OnlyLinearEditsScaleEmitters) {

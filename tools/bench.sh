@@ -53,6 +53,26 @@ if [ -d "$shared" ]; then
   drag CornellBox "$shared/CornellBox/cornellBox.gltf" tools/bench/CornellBox.drag.json
 fi
 
+# Light edits (tools/bench/*.lights.json, a lamp slider dragged): hipr relights them at once from
+# its light groups; again with --no-relight for the comparison. Results in OUTDIR/lights_*.
+lights() {
+  local name=$1
+  shift
+  for relight in relight no-relight; do
+    echo "== lights $name ($relight)"
+    rm -rf "${out:?}/lights_${name}_$relight"
+    build/hipr bench "$@" -o "$out/lights_${name}_$relight" --width "$size" --height "$size" --spp "$spp" \
+      --policies hipr,full $([ $relight = no-relight ] && echo --no-relight)
+  done
+}
+lights cornell_sphere assets/scenes/cornell_sphere.glb tools/bench/cornell_sphere.lights.json
+lights cornell_sphere_drag assets/scenes/cornell_sphere.glb tools/bench/cornell_sphere.lightdrag.json \
+  --drag 0.0625 --tiles-per-step $(((size / 8) * (size / 8) / 64 > 0 ? (size / 8) * (size / 8) / 64 : 1)) --ref-spp 256
+if [ -d "$shared" ]; then
+  lights LightsPunctualLamp "$shared/LightsPunctualLamp/LightsPunctualLamp.gltf" tools/bench/LightsPunctualLamp.lights.json
+  lights SheenChair "$shared/SheenChair/SheenChair.gltf" tools/bench/SheenChair.lights.json --env "$studio"
+fi
+
 # Throughput: three interleaved rounds, so a noisy neighbour hits every configuration alike.
 render() {
   local name=$1 scene=$2

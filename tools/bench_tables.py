@@ -94,6 +94,27 @@ def drag_table(drags):
     return lines
 
 
+def lights_table(lights):
+    """Light edits with relighting (hipr) and without (--no-relight): relMSE and FLIP AUC(1)."""
+    lines = ["#### Light edits: hipr relit at once (light groups) against full and hipr --no-relight", "",
+             "| scene | edit | hipr relMSE | --no-relight | full | hipr / full | hipr FLIP | --no-relight | full |"
+             " hipr / full |", "|---|---|" + "---:|" * 8]
+    for name, runs in sorted(lights.items()):
+        if "relight" not in runs or "no-relight" not in runs:
+            continue
+        for edit, off in zip(runs["relight"]["edits"], runs["no-relight"]["edits"]):
+            p, q = edit["policies"], off["policies"]
+            drag = "drag_work" in p["hipr"]
+            cells = []
+            for metric in ["relmse", "flip"]:
+                key = f"auc_{metric}_during_drag" if drag else f"auc_{metric}"
+                h, n, f = num(p["hipr"][key]), num(q["hipr"][key]), num(p["full"][key])
+                cells += [f"{h:.4g}", f"{n:.4g}", f"{f:.4g}", f"{h / f:.3f}" if f else ""]
+            label = edit["name"] + (" (mean during the drag)" if drag else "")
+            lines.append(f"| {name} | {label} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def throughput_lines(folder):
     runs = {}
     for path in sorted(glob.glob(os.path.join(folder, "throughput", "*.json"))):
@@ -123,11 +144,15 @@ def throughput_lines(folder):
 def main(argv):
     if len(argv) != 2:
         sys.exit(__doc__)
-    summaries, drags = [], []
+    summaries, drags, lights = [], [], {}
     for path in sorted(glob.glob(os.path.join(argv[1], "*", "summary.json"))):
         with open(path) as f:
             name = os.path.basename(os.path.dirname(path))
-            (drags if name.startswith("drag_") else summaries).append((name.removeprefix("drag_"), json.load(f)))
+            if name.startswith("lights_"):
+                scene, _, variant = name.removeprefix("lights_").rpartition("_")
+                lights.setdefault(scene, {})[variant] = json.load(f)
+            else:
+                (drags if name.startswith("drag_") else summaries).append((name.removeprefix("drag_"), json.load(f)))
     out = []
     if summaries:
         out += auc_table(summaries, "auc_relmse", "relMSE AUC over the first work unit (lower is better)") + [""]
@@ -137,6 +162,8 @@ def main(argv):
         out += feedback_table(summaries) + [""]
     if drags:
         out += drag_table(drags) + [""]
+    if lights:
+        out += lights_table(lights) + [""]
     out += throughput_lines(argv[1])
     print("\n".join(out))
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "core/error.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr::app {
 
@@ -45,6 +46,9 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
                "the scene uses");
   app.add_flag("--trace-background-tiles", o.trace_background_tiles,
                "Trace the camera rays of tiles that can only see background too (for comparison)");
+  app.add_option("--light-groups", o.light_groups,
+                 "Light groups kept apart so that light edits are relit at once (0-8, 24 bytes per pixel each; "
+                 "default 8, render 0)");
   app.add_flag("--validate", o.validate, "Enable Vulkan validation layers; any validation error fails the run");
   app.add_option("--device", o.device, "Use the Vulkan device whose name contains this text");
   app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors and warnings");
@@ -68,6 +72,8 @@ void validate_common_options(CommonOptions& o) {
           "--env-intensity must be a finite non-negative number");
   require(std::isfinite(o.load.environment_rotation_degrees), "--env-rotation must be finite");
   validate_sky(o.load.sky);
+  require(o.light_groups >= -1 && o.light_groups <= int(abi::kMaxLightGroups), "--light-groups must be between 0 and 8");
+  if (o.light_groups >= 0) o.render.light_groups = uint32_t(o.light_groups);
   HiprParameters& h = o.render.hipr;
   require(std::isfinite(h.w_occlusion) && h.w_occlusion >= 0.0f, "--w-occlusion must be finite and non-negative");
   require(std::isfinite(h.depth_epsilon) && h.depth_epsilon > 0.0f && h.depth_epsilon < 1.0f,

@@ -26,6 +26,7 @@ struct CommonOptions {
   bool trace_background_tiles = false;  // RenderSettings::skip_background_tiles off
   bool quiet = false;
   std::string device;
+  int light_groups = -1;  // --light-groups; -1: the command's default (RenderSettings' 8; render: 0)
 };
 
 // Adds --width --height --spp --seed --sampler --max-depth --tile --env --env-intensity --env-rotation

@@ -45,9 +45,10 @@ int run_render(RenderOptions& o) {
 
   const Timer setup_timer;
   const vk::Context ctx(context_options(o.common));
-  // A render is never edited: no light groups to relight with (the pixels are the same bits).
+  // A render is never edited: by default no light groups to relight with (the pixels are the
+  // same bits either way).
   RenderSettings settings = o.common.render;
-  settings.light_groups = 0;
+  if (o.common.light_groups < 0) settings.light_groups = 0;
   Renderer renderer(ctx, scene, settings);
   const double setup_seconds = setup_timer.seconds();
   log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" +

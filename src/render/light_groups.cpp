@@ -39,6 +39,12 @@ LightGroups assign_light_groups(const Scene& scene, uint32_t budget) {
     if (used[m] && emits(scene.materials[m].params))
       add(groups.material[m],
           "emission " + (scene.materials[m].name.empty() ? "#" + std::to_string(m) : scene.materials[m].name));
+  // A scene without an environment may get one by an edit (the viewer's Environment panel): a
+  // group left over is kept for it, so that its intensity is relit too.
+  if (!scene.environment && groups.count < budget) {
+    groups.environment = groups.count++;
+    groups.names.push_back("environment (none yet)");
+  }
   return groups;
 }
 

@@ -4,7 +4,8 @@
 // rescales the converged image exactly. Chosen once, when the renderer is made, from what emits
 // then: the environment, each punctual light, each emissive material, in that order, up to the
 // budget (RenderSettings::light_groups); the rest are pooled (never rescaled: their edits
-// re-render as any other). An emitter that appears later is pooled too.
+// re-render as any other). An emitter that appears later is pooled too, but for the environment:
+// a scene without one keeps a group for it when the budget allows (an edit may switch one on).
 #include <cstdint>
 #include <optional>
 #include <string>
