@@ -143,6 +143,19 @@ Environment banded_environment() {
   return env;
 }
 
+// Applies `edit`, updates the renderer, restarts it: it must render what a fresh upload of the
+// edited scene renders, and that must differ from the scene before.
+void expect_update_matches_fresh(Renderer& renderer, Scene& scene, const Edit& edit) {
+  const Scene before = scene;
+  apply_edit(scene, edit);
+  renderer.update_scene(scene, diff_scenes(before, scene));
+  renderer.reset();
+  renderer.add_samples_full_frame(2);
+  const ImageRGB fresh = fresh_render(scene, 2);
+  EXPECT_EQ(renderer.image().rgb, fresh.rgb) << describe(edit);
+  EXPECT_NE(fresh_render(before, 2).rgb, fresh.rgb) << describe(edit) << " changed nothing visible";
+}
+
 // Intensity and rotation reach the kernels through the frame parameters and the light
 // selection table: after the update the renderer matches a fresh upload bit for bit.
 TEST(IncrementalUpdate, EnvironmentEditMatchesAFreshUpload) {
@@ -150,18 +163,8 @@ TEST(IncrementalUpdate, EnvironmentEditMatchesAFreshUpload) {
   scene.environment = banded_environment();
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(1);
-  for (const Edit& edit :
-       {Edit{EnvironmentEdit{.rotation = 2.0f}}, Edit{EnvironmentEdit{.intensity = 3.0f}}}) {
-    const Scene before = scene;
-    apply_edit(scene, edit);
-    renderer.update_scene(scene, diff_scenes(before, scene));
-    renderer.reset();
-    renderer.add_samples_full_frame(2);
-    const ImageRGB fresh = fresh_render(scene, 2);
-    EXPECT_EQ(renderer.image().rgb, fresh.rgb);
-    EXPECT_NE(fresh_render(before, 2).rgb, fresh.rgb)
-        << "the environment edit changed nothing visible";
-  }
+  for (const Edit& edit : {Edit{EnvironmentEdit{.rotation = 2.0f}}, Edit{EnvironmentEdit{.intensity = 3.0f}}})
+    expect_update_matches_fresh(renderer, scene, edit);
 }
 
 // Switching the environment on, to another map, re-making the sky and switching it off upload
@@ -178,16 +181,7 @@ TEST(IncrementalUpdate, EnvironmentSwitchMatchesAFreshUpload) {
       EnvironmentEdit{.sun_azimuth_degrees = 150.0f},
       EnvironmentEdit{.source = std::filesystem::path("none")},
   };
-  for (const Edit& edit : edits) {
-    const Scene before = scene;
-    apply_edit(scene, edit);
-    renderer.update_scene(scene, diff_scenes(before, scene));
-    renderer.reset();
-    renderer.add_samples_full_frame(2);
-    const ImageRGB fresh = fresh_render(scene, 2);
-    EXPECT_EQ(renderer.image().rgb, fresh.rgb) << describe(edit);
-    EXPECT_NE(fresh_render(before, 2).rgb, fresh.rgb) << describe(edit) << " changed nothing visible";
-  }
+  for (const Edit& edit : edits) expect_update_matches_fresh(renderer, scene, edit);
 }
 
 // Stage 1 cannot see the environment in the G-buffer: its edit makes every tile active.

@@ -21,6 +21,7 @@ packages=(
   libopenimageio-dev openimageio-tools libimath-dev libopenexr-dev
   libimgui-dev libcli11-dev libgtest-dev
   xvfb xauth python3-matplotlib
+  clang libclang-rt-14-dev
 )
 
 have_all() {

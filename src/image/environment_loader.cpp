@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -15,28 +16,39 @@ Environment load_environment(const std::filesystem::path& path) {
   auto input = OIIO::ImageInput::open(path.string());
   if (!input) throw InputError("cannot read environment map " + path.string() + ": " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input->spec();
-  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 || int64_t(spec.width) * spec.height > (int64_t(1) << 28))
+  // Up to 16384 x 8192 texels (the largest HDRIs offered), whatever the header claims.
+  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 || int64_t(spec.width) * spec.height > (int64_t(1) << 27))
     throw InputError("environment map " + path.string() + " has an unusable size");
-  std::vector<float> pixels(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
-  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
-    throw InputError("cannot decode environment map " + path.string() + ": " + input->geterror());
-
+  // A header may claim any size: no real file holds more than about a thousand texels per byte
+  // (the best compression of a constant image), so a claim beyond that is refused before the
+  // texels are allocated.
+  const uintmax_t bytes = std::filesystem::file_size(path, ec);
+  if (ec || uintmax_t(spec.width) * uintmax_t(spec.height) > std::max<uintmax_t>(bytes, 4096) * 1024)
+    throw InputError("environment map " + path.string() + " claims more texels (" + std::to_string(spec.width) + "x" +
+                     std::to_string(spec.height) + ") than its " + std::to_string(bytes) + " bytes can hold");
+  // Only the first three channels (RGB; one is grey) are read, straight into the texels: a header
+  // naming many channels costs nothing more.
+  const int channels = std::min(spec.nchannels, 3);
   Environment env;
   env.path = path;
   env.width = uint32_t(spec.width);
   env.height = uint32_t(spec.height);
   env.texels.resize(size_t(spec.width) * size_t(spec.height));
+  static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "texels are read as packed RGB floats");
+  float* pixels = &env.texels[0].x;
+  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels, 3 * sizeof(float)))
+    throw InputError("cannot decode environment map " + path.string() + ": " + input->geterror());
+
   size_t repaired = 0;
-  for (size_t i = 0; i < env.texels.size(); ++i) {
-    const float* p = &pixels[i * size_t(spec.nchannels)];
-    glm::vec3 c = spec.nchannels >= 3 ? glm::vec3(p[0], p[1], p[2]) : glm::vec3(p[0]);
+  for (glm::vec3& texel : env.texels) {
+    glm::vec3 c = channels == 3 ? texel : glm::vec3(texel[0]);  // grey (or grey + alpha) maps
     for (int k = 0; k < 3; ++k) {
       if (!std::isfinite(c[k]) || c[k] < 0.0f) {
         c[k] = 0.0f;
         ++repaired;
       }
     }
-    env.texels[i] = c;
+    texel = c;
   }
   if (repaired) log::warn(path.string() + ": " + std::to_string(repaired) + " negative or non-finite texel values set to 0");
   return env;

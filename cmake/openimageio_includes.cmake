@@ -1,0 +1,16 @@
+# Debian's OpenImageIO config names /usr/include/opencv4 even when OpenCV is not installed;
+# drop include paths that do not exist instead of pulling in OpenCV.
+foreach(target OpenImageIO::OpenImageIO OpenImageIO::OpenImageIO_Util)
+  if(TARGET ${target})
+    get_target_property(dirs ${target} INTERFACE_INCLUDE_DIRECTORIES)
+    if(dirs)
+      set(existing "")
+      foreach(dir IN LISTS dirs)
+        if(EXISTS "${dir}")
+          list(APPEND existing "${dir}")
+        endif()
+      endforeach()
+      set_target_properties(${target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${existing}")
+    endif()
+  endif()
+endforeach()

@@ -1,0 +1,89 @@
+// The edit soak (tools/soak.sh): N random edits of every op on a scene, one scheduling step each
+// (edits in a row, as a viewer's drags make them), then converged: the displayed image must be
+// the full-frame render of the final scene bit for bit, and the process's memory must stay flat.
+// On lavapipe device memory is host memory, so the resident set size counts both.
+// usage: hipr_soak [EDITS] [SEED]   (prints one JSON object; exit 1 when the image differs)
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "hipr/edit_pipeline.h"
+#include "hipr/edits.h"
+#include "hipr/renderer.h"
+#include "hipr/scene_loader.h"
+#include "hipr/scheduler.h"
+#include "core/log.h"
+#include "vk/context.h"
+
+namespace {
+
+using namespace hipr;
+
+long resident_kib() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmRSS:", 0) == 0) return std::stol(line.substr(6));
+  return -1;
+}
+
+// One edit of a random op with random values in range (names of the shipped cornell_sphere).
+Edit random_edit(std::mt19937& rng) {
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const auto pick = [&](std::initializer_list<const char*> names) {
+    return std::string(names.begin()[rng() % names.size()]);
+  };
+  const glm::vec3 step = (glm::vec3(u(rng), u(rng), u(rng)) - 0.5f) * 0.02f;
+  switch (rng() % 9) {
+    case 0: return TransformEdit{pick({"sphere", "tall_block", "light", "lamp"}), step, std::nullopt};
+    case 1: return MaterialEdit{pick({"white", "red", "green"}), {{"base_color", {u(rng), u(rng), u(rng)}}}};
+    case 2: return MaterialEdit{pick({"white", "red", "green"}), {{"specular_roughness", {u(rng)}}}};
+    case 3: return LightEdit{"lamp", 0.05f + u(rng), glm::vec3(0.2f + u(rng), 0.2f + u(rng), 0.2f + u(rng)), std::nullopt};
+    case 4: return MaterialEdit{"light", {{"emission_luminance", {1.0f + 30.0f * u(rng)}}}};
+    case 5: return VisibilityEdit{pick({"sphere", "tall_block", "light"}), u(rng) < 0.7f};
+    case 6: return CameraEdit{step * 0.5f, std::nullopt};
+    case 7: return EnvironmentEdit{.intensity = 0.01f * u(rng), .rotation = 6.0f * u(rng)};
+    default:
+      return EnvironmentEdit{.source = std::filesystem::path(pick({"studio", "sky", "studio"})),
+                             .intensity = 0.001f + 0.01f * u(rng)};
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int edits = argc > 1 ? std::stoi(argv[1]) : 10000;
+  const unsigned seed = argc > 2 ? unsigned(std::stoul(argv[2])) : 1u;
+  log::set_quiet(true);
+  const vk::Context ctx(vk::ContextOptions{});
+  Scene scene = load_scene(std::string(HIPR_ASSETS_DIR) + "/cornell_sphere.glb", {.environment = "studio"});
+  RenderSettings settings;
+  settings.width = settings.height = 32;
+  settings.tile_size = 8;
+  settings.max_depth = 4;
+  const uint32_t spp = 4;
+  Renderer renderer(ctx, scene, settings);
+  renderer.add_samples_full_frame(spp);
+  Scheduler scheduler(renderer, Policy::Hipr, 4);
+  EditPipeline pipeline(scene, scheduler);
+  std::mt19937 rng(seed);
+  std::string samples;  // resident KiB every tenth of the run
+  long first = 0, last = 0;
+  for (int e = 1; e <= edits; ++e) {
+    pipeline.apply(random_edit(rng));
+    scheduler.step();
+    if (e % std::max(edits / 10, 1) == 0) {
+      last = resident_kib();
+      if (!first) first = last;
+      samples += (samples.empty() ? "" : ", ") + std::to_string(last);
+    }
+  }
+  while (scheduler.work_since_edit() < double(spp)) scheduler.step();
+  Renderer fresh(ctx, scene, settings);
+  fresh.add_samples_full_frame(spp);
+  const bool same = scheduler.displayed_image().rgb == fresh.image().rgb;
+  std::printf("{\"edits\": %d, \"seed\": %u, \"bit_identical\": %s, \"resident_kib\": [%s], "
+              "\"growth_kib_after_first_tenth\": %ld}\n",
+              edits, seed, same ? "true" : "false", samples.c_str(), last - first);
+  return same ? 0 : 1;
+}

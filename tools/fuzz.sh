@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/: glTF/GLB scenes, edit scripts, environment images; clang
+# with AddressSanitizer and UBSan) and runs each for SECONDS (default 60), starting from the
+# shipped scenes and scripts, the shared scenes when ../shared is beside the repository, small
+# generated images, and every input kept in tests/data/fuzz/<target>/. A crash, a sanitizer
+# report or an input slower than 10 s fails the run and leaves the input in
+# build-fuzz/findings/<target>/: fix it, then keep it in tests/data/fuzz/<target>/, which the
+# ordinary test suite replays (tests/fuzz_regression_test.cpp). Memory is limited to 4 GB: the
+# OpenEXR library takes 2 GB while refusing some malformed headers
+# (tests/data/fuzz/environment/exr_huge_data_window.exr; hipr then says the file cannot be decoded).
+# usage: bash tools/fuzz.sh [SECONDS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+cmake -S fuzz -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build build-fuzz -j"$(nproc)"
+
+corpus=build-fuzz/corpus
+rm -rf "$corpus" build-fuzz/findings
+mkdir -p "$corpus"/{gltf,edit_script,environment}
+small() { find "$@" -maxdepth 2 -type f -size -256k 2>/dev/null || true; }
+for f in $(small assets/scenes ../shared/scenes -name '*.gltf' -o -name '*.glb'); do
+  cp "$f" "$corpus/gltf/$(echo "$f" | tr '/' '_')"
+done
+for f in assets/scenes/*.edits.json tools/bench/*.json; do cp "$f" "$corpus/edit_script/$(basename "$f")"; done
+oiiotool --pattern fill:top=1,0.5,0.25:bottom=0,0.1,0.2 8x4 3 -d half -o "$corpus/environment/gradient.exr"
+oiiotool --pattern checker:color1=2,2,2:color2=0,0,0 8x4 3 -o "$corpus/environment/checker.hdr"
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
+for target in gltf edit_script environment; do
+  mkdir -p "build-fuzz/findings/$target"
+  seeds=("$corpus/$target")
+  [ -d "tests/data/fuzz/$target" ] && seeds+=("tests/data/fuzz/$target")
+  echo "== fuzz $target for ${seconds}s"
+  build-fuzz/fuzz_$target -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -max_len=262144 \
+    -close_fd_mask=2 -print_final_stats=1 -artifact_prefix="build-fuzz/findings/$target/" "${seeds[@]}" 2>&1 |
+    grep -E "^#[0-9]+ *DONE|stat::number_of_executed_units|ERROR|SUMMARY|Test unit written" || true
+  if [ -n "$(ls -A "build-fuzz/findings/$target")" ]; then
+    echo "fuzz: $target found inputs that fail (build-fuzz/findings/$target)" >&2
+    exit 1
+  fi
+done
+echo "fuzz: no crash, sanitizer report or hang"
