@@ -18,8 +18,8 @@ cmake --build build-fuzz -j"$(nproc)"
 corpus=build-fuzz/corpus
 rm -rf "$corpus" build-fuzz/findings
 mkdir -p "$corpus"/{gltf,edit_script,environment}
-small() { find "$@" -maxdepth 2 -type f -size -256k 2>/dev/null || true; }
-for f in $(small assets/scenes ../shared/scenes -name '*.gltf' -o -name '*.glb'); do
+scenes() { find assets/scenes ../shared/scenes -maxdepth 2 -type f -size -256k \( -name '*.gltf' -o -name '*.glb' \) 2>/dev/null || true; }
+for f in $(scenes); do
   cp "$f" "$corpus/gltf/$(echo "$f" | tr '/' '_')"
 done
 for f in assets/scenes/*.edits.json tools/bench/*.json; do cp "$f" "$corpus/edit_script/$(basename "$f")"; done
