@@ -10,6 +10,7 @@
 #include "hipr/edits.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
+#include "image/builtin_environments.h"
 #include "image/environment_loader.h"
 
 namespace hipr::fuzz {
@@ -31,7 +32,7 @@ bool starts_with(const uint8_t* data, size_t size, const char* magic, size_t len
 void apply_all(Scene scene, const std::vector<Edit>& edits) {
   for (const Edit& edit : edits) {
     if (const auto* e = std::get_if<EnvironmentEdit>(&edit))
-      if (e->source && *e->source != "studio" && *e->source != "sky" && *e->source != "none") continue;
+      if (e->source && !is_environment_name(*e->source)) continue;
     try {
       const Scene before = scene;
       const Edit inverse = inverse_edit(scene, edit);

@@ -38,14 +38,15 @@ fi
 
 # Drags: 20 small moves in a row, one every 1/16 of a frame's work, in steps of 1/64 of the frame
 # (as the viewer spends a frame's budget), for hipr and full.
+drag_tiles=$(((size / 8) * (size / 8) / 64))
+drag_tiles=$((drag_tiles > 0 ? drag_tiles : 1))
 drag() {
   local name=$1
   shift
   echo "== drag $name"
   rm -rf "${out:?}/drag_$name"
-  local tiles=$(((size / 8) * (size / 8) / 64))
   build/hipr bench "$@" -o "$out/drag_$name" --width "$size" --height "$size" --spp "$spp" --drag 0.0625 \
-    --tiles-per-step $((tiles > 0 ? tiles : 1)) --policies hipr,full --ref-spp 256
+    --tiles-per-step "$drag_tiles" --policies hipr,full --ref-spp 256
 }
 drag cornell_box assets/scenes/cornell_box.gltf tools/bench/cornell_box.drag.json
 drag cornell_sphere assets/scenes/cornell_sphere.glb tools/bench/cornell_sphere.drag.json
@@ -67,7 +68,7 @@ lights() {
 }
 lights cornell_sphere assets/scenes/cornell_sphere.glb tools/bench/cornell_sphere.lights.json
 lights cornell_sphere_drag assets/scenes/cornell_sphere.glb tools/bench/cornell_sphere.lightdrag.json \
-  --drag 0.0625 --tiles-per-step $(((size / 8) * (size / 8) / 64 > 0 ? (size / 8) * (size / 8) / 64 : 1)) --ref-spp 256
+  --drag 0.0625 --tiles-per-step "$drag_tiles" --ref-spp 256
 if [ -d "$shared" ]; then
   lights LightsPunctualLamp "$shared/LightsPunctualLamp/LightsPunctualLamp.gltf" tools/bench/LightsPunctualLamp.lights.json
   lights SheenChair "$shared/SheenChair/SheenChair.gltf" tools/bench/SheenChair.lights.json --env "$studio"

@@ -118,6 +118,10 @@ MaterialParameters default_material_params();
 // acceleration structures then mark them VK_GEOMETRY_OPAQUE_BIT_KHR).
 bool material_is_opaque(const MaterialParameters& m);
 
+// Whether the material emits: a positive emission luminance and a colour that is not black (an
+// emission texture only multiplies them). NaN counts as not emitting.
+bool material_emits(const MaterialParameters& m);
+
 struct Scene {
   std::filesystem::path source;
   std::string content_hash;  // of every byte read to build the scene

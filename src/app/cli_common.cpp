@@ -87,7 +87,7 @@ void validate_sky(const SkyParameters& sky) {
   if (!(sky.sun_elevation_degrees >= 0.0f && sky.sun_elevation_degrees <= 90.0f))
     throw InputError("--sun-elevation must be between 0 and 90 degrees");
   if (!std::isfinite(sky.sun_azimuth_degrees)) throw InputError("--sun-azimuth must be finite");
-  if (!(sky.turbidity >= 1.7f && sky.turbidity <= 10.0f)) throw InputError("--turbidity must be between 1.7 and 10");
+  if (!(sky.turbidity >= kMinTurbidity && sky.turbidity <= kMaxTurbidity)) throw InputError("--turbidity must be between 1.7 and 10");
 }
 
 vk::ContextOptions context_options(const CommonOptions& o) {

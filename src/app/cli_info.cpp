@@ -52,7 +52,7 @@ int run_info(const InfoOptions& o) {
       scene_triangles += p.indices.size() / 3;
       used_materials.insert(p.material);
       const MaterialParameters& m = scene.materials[p.material].params;
-      if (m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f))))
+      if (material_emits(m))
         emissive_triangles += p.indices.size() / 3;
     }
   }
@@ -69,7 +69,7 @@ int run_info(const InfoOptions& o) {
     const Material& m = scene.materials[index];
     std::printf("  %-24s base_color %.3g %.3g %.3g  metalness %.3g  roughness %.3g%s%s\n", m.name.c_str(),
                 m.params.base_color.x, m.params.base_color.y, m.params.base_color.z, m.params.base_metalness,
-                m.params.specular_roughness, m.params.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.params.emission_color, glm::vec3(0))) ? "  emissive" : "",
+                m.params.specular_roughness, material_emits(m.params) ? "  emissive" : "",
                 (m.params.flags & abi::kMaterialDoubleSided) ? "  double-sided" : "");
   }
   std::printf("textures   %zu (on %zu images)\n", scene.textures.size(), scene.images.size());

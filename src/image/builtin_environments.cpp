@@ -236,6 +236,10 @@ std::string environment_flags(const Scene& scene) {
   return flags;
 }
 
+bool is_environment_name(const std::filesystem::path& source) {
+  return source == kStudioEnvironmentName || source == kSkyEnvironmentName || source == kNoEnvironment;
+}
+
 std::optional<Environment> make_environment(const std::filesystem::path& source, const SkyParameters& sky) {
   if (source == kNoEnvironment) return std::nullopt;
   if (source == kStudioEnvironmentName) return make_studio_environment();

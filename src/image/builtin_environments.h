@@ -52,6 +52,9 @@ std::string environment_description(const Scene& scene);
 // differ from the defaults. "--env none" without one.
 std::string environment_flags(const Scene& scene);
 
+// Whether `source` names no file: "studio", "sky" or "none".
+bool is_environment_name(const std::filesystem::path& source);
+
 // The environment `source` names: "studio", "sky" (made with `sky`), "none" (nullopt) or an
 // equirectangular .hdr/.exr file (InputError when it cannot be read). Intensity 1, rotation 0.
 std::optional<Environment> make_environment(const std::filesystem::path& source, const SkyParameters& sky);

@@ -190,12 +190,12 @@ void GpuScene::upload_environment(const Scene& scene) {
 
 void GpuScene::update_environment(const Scene& scene) {
   upload_environment(scene);
-  update_lights(scene);  // the environment's share of light selection; rebinds the set
+  bind_set();
 }
 
 void GpuScene::update_lights(const Scene& scene) {
   m_lights = build_light_tables(scene, scene.instances(), m_record_base, uint32_t(m_records.size()),
-                                m_info.scene_radius, &m_groups);
+                                m_info.scene_radius, m_groups);
   for (size_t r = 0; r < m_records.size(); ++r) m_records[r].lightOffset = m_lights.record_light_offset[r];
   geometries.upload(m_records.data(), m_records.size() * sizeof(abi::GeometryRecord));
   m_info.light_count = m_lights.lights.size();

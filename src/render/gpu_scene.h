@@ -33,7 +33,8 @@ class GpuScene {
   void update_instances(const Scene& scene);
   // Rebuilds the light tables alone (punctual lights, emission strengths).
   void update_lights(const Scene& scene);
-  // Uploads another environment map (or none) and its sampling tables, then the light tables.
+  // Uploads another environment map (or none) and its sampling tables. Its entry in the light
+  // tables follows with update_lights (a new map is a light-table change: ChangeSet::light_tables).
   void update_environment(const Scene& scene);
 
   // The light groups, chosen when the scene was uploaded; their material table (uint per material).

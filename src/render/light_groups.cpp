@@ -5,20 +5,12 @@
 #include "shaders/shared/abi.h"
 
 namespace hipr {
-namespace {
-
-bool emits(const MaterialParameters& m) {
-  return m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f)));
-}
-
-}  // namespace
-
 LightGroups assign_light_groups(const Scene& scene, uint32_t budget) {
+  static_assert(kNoLightGroup == abi::kInvalidIndex, "the kernels read kInvalidIndex as no group");
   budget = std::min(budget, abi::kMaxLightGroups);
   LightGroups groups;
-  groups.environment = abi::kInvalidIndex;
-  groups.node.assign(scene.nodes.size(), abi::kInvalidIndex);
-  groups.material.assign(scene.materials.size(), abi::kInvalidIndex);
+  groups.node.assign(scene.nodes.size(), kNoLightGroup);
+  groups.material.assign(scene.materials.size(), kNoLightGroup);
   const auto add = [&](uint32_t& slot, std::string name) {
     if (groups.count < budget) {
       slot = groups.count++;
@@ -36,7 +28,7 @@ LightGroups assign_light_groups(const Scene& scene, uint32_t budget) {
   for (const Instance& instance : scene.instances())
     for (const MeshPrimitive& p : scene.meshes[instance.mesh].primitives) used[p.material] = true;
   for (size_t m = 0; m < scene.materials.size(); ++m)
-    if (used[m] && emits(scene.materials[m].params))
+    if (used[m] && material_emits(scene.materials[m].params))
       add(groups.material[m],
           "emission " + (scene.materials[m].name.empty() ? "#" + std::to_string(m) : scene.materials[m].name));
   // A scene without an environment may get one by an edit (the viewer's Environment panel): a
@@ -51,11 +43,10 @@ LightGroups assign_light_groups(const Scene& scene, uint32_t budget) {
 std::optional<std::vector<glm::vec3>> LightGroups::factors(const std::vector<EmitterScale>& scales) const {
   std::vector<glm::vec3> result(count, glm::vec3(1.0f));
   for (const EmitterScale& s : scales) {
-    uint32_t group = abi::kInvalidIndex;
-    if (s.kind == EmitterScale::Kind::Environment) group = environment;
-    else if (s.kind == EmitterScale::Kind::PunctualLight && s.index < node.size()) group = node[s.index];
-    else if (s.kind == EmitterScale::Kind::Material && s.index < material.size()) group = material[s.index];
-    if (group == abi::kInvalidIndex) return std::nullopt;
+    const uint32_t group = s.kind == EmitterScale::Kind::Environment     ? environment
+                           : s.kind == EmitterScale::Kind::PunctualLight ? of_node(s.index)
+                                                                          : of_material(s.index);
+    if (group == kNoLightGroup) return std::nullopt;
     result[group] *= s.factor;
   }
   return result;

@@ -16,13 +16,19 @@
 
 namespace hipr {
 
+// Group indices; kNoLightGroup (abi::kInvalidIndex) for an emitter that has none.
+inline constexpr uint32_t kNoLightGroup = 0xffffffffu;
+
 struct LightGroups {
   uint32_t count = 0;
-  uint32_t environment;            // group of the environment, or kInvalidIndex
-  std::vector<uint32_t> node;      // per node: group of its punctual light, or kInvalidIndex
-  std::vector<uint32_t> material;  // per material: group of its emission, or kInvalidIndex
+  uint32_t environment = kNoLightGroup;  // group of the environment
+  std::vector<uint32_t> node;      // per node: group of its punctual light
+  std::vector<uint32_t> material;  // per material: group of its emission
   std::vector<std::string> names;  // per group: "environment", "light lamp", "emission light"
   std::vector<std::string> pooled; // emitters over the budget, named alike
+
+  uint32_t of_node(size_t n) const { return n < node.size() ? node[n] : kNoLightGroup; }
+  uint32_t of_material(size_t m) const { return m < material.size() ? material[m] : kNoLightGroup; }
 
   // Per group, the factor an edit scales its radiance by (1 for groups the edit left alone);
   // nullopt when an emitter the edit scaled is pooled.

@@ -35,10 +35,7 @@ float environment_mean_luminance(const Environment& env) {
 
 LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& instances,
                                const std::vector<uint32_t>& record_base, uint32_t record_count,
-                               float scene_radius, const LightGroups* groups) {
-  const auto group_of = [](const std::vector<uint32_t>* table, size_t i) {
-    return table && i < table->size() ? (*table)[i] : abi::kInvalidIndex;
-  };
+                               float scene_radius, const LightGroups& groups) {
   LightTables t;
   t.record_light_offset.assign(record_count, abi::kInvalidIndex);
   std::vector<double> power;
@@ -64,7 +61,7 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
         light.type = abi::kLightTriangle;
         light.geometryRecord = record_base[i] + uint32_t(p);
         light.primitive = uint32_t(tri);
-        light.group = group_of(groups ? &groups->material : nullptr, prim.material);
+        light.group = groups.of_material(prim.material);
         light.position = a;
         light.edge1 = b - a;
         light.edge2 = c - a;
@@ -87,7 +84,7 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
     light.direction = light_direction(world);
     light.intensity = src.color * src.intensity;
     light.range = src.range;
-    light.group = group_of(groups ? &groups->node : nullptr, n);
+    light.group = groups.of_node(n);
     const float lum = luminance(light.intensity);
     switch (src.type) {
       case LightType::Point:
@@ -111,7 +108,7 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
   if (scene.environment) {
     abi::Light light{};
     light.type = abi::kLightEnvironment;
-    light.group = groups ? groups->environment : abi::kInvalidIndex;
+    light.group = groups.environment;
     t.environment_index = uint32_t(t.lights.size());
     t.lights.push_back(light);
     const double mean = environment_mean_luminance(*scene.environment) * scene.environment->intensity;

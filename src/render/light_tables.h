@@ -18,10 +18,10 @@ struct LightTables {
 
 // `record_base[i]` is the first GeometryRecord of instances[i]; records follow the mesh's
 // primitive order. `scene_radius` sizes the power estimate of lights at infinity. Each light
-// carries its group (`groups`; kInvalidIndex where pooled or without groups).
+// carries its group (`groups`; none where pooled or without groups).
 LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& instances,
                                const std::vector<uint32_t>& record_base, uint32_t record_count,
-                               float scene_radius, const LightGroups* groups = nullptr);
+                               float scene_radius, const LightGroups& groups = {});
 
 // Mean luminance of the environment's texels weighted by solid angle.
 float environment_mean_luminance(const Environment& env);

@@ -150,9 +150,9 @@ void Renderer::add_samples_full_frame(uint32_t samples_per_pixel) { add_samples(
 void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
   if (changes.materials) m->gpu.update_materials(scene);
   m->ensure_features(scene);  // materials, lights: anything may bring in a feature
+  if (changes.environment_map) m->gpu.update_environment(scene);  // its light entry follows below
   if (changes.transforms) m->gpu.update_instances(scene);  // includes the light tables
-  if (changes.environment_map) m->gpu.update_environment(scene);  // includes the light tables
-  else if (changes.light_tables && !changes.transforms) m->gpu.update_lights(scene);
+  else if (changes.light_tables) m->gpu.update_lights(scene);
   if (changes.transforms || changes.camera) m->update_background(scene);
   if (!changes.empty()) m->gbuffers.set_stale();
   m->gpu.set_frame(make_frame_params(scene, m->gpu, m->settings));

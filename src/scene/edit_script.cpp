@@ -144,8 +144,7 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
     if (r.edit().contains("source")) {
       const std::string source = r.string("source");
       if (source.empty()) r.fail("\"source\" is empty (studio, sky, none or a file)");
-      const bool built_in = source == kStudioEnvironmentName || source == kSkyEnvironmentName || source == kNoEnvironment;
-      e.source = built_in ? std::filesystem::path(source) : base / std::filesystem::path(source);
+      e.source = is_environment_name(source) ? std::filesystem::path(source) : base / std::filesystem::path(source);
     } else if (!r.edit().contains("set")) {
       r.fail("needs \"source\" or \"set\"");
     }

@@ -53,6 +53,10 @@ bool material_is_opaque(const MaterialParameters& m) {
   return m.geometry_opacity >= 1.0f && !texture_alpha;
 }
 
+bool material_emits(const MaterialParameters& m) {
+  return m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f)));
+}
+
 glm::mat4 Scene::world_transform(uint32_t node) const {
   glm::mat4 world = nodes[node].local;
   // The loader guarantees the parent chain is acyclic.

@@ -13,10 +13,6 @@ namespace {
 
 bool same_bytes(const MaterialParameters& a, const MaterialParameters& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-bool is_emissive(const MaterialParameters& m) {
-  return m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f)));
-}
-
 bool same_light(const PunctualLight& a, const PunctualLight& b) {
   return a.type == b.type && a.color == b.color && a.intensity == b.intensity && a.range == b.range &&
          a.inner_cone == b.inner_cone && a.outer_cone == b.outer_cone;
@@ -75,7 +71,7 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     if (same_bytes(before.materials[m].params, after.materials[m].params)) continue;
     material_changed[m] = true;
     changes.materials = true;
-    if (is_emissive(before.materials[m].params) || is_emissive(after.materials[m].params)) changes.light_tables = true;
+    if (material_emits(before.materials[m].params) || material_emits(after.materials[m].params)) changes.light_tables = true;
     const std::optional<glm::vec3> factor = emission_factor(before.materials[m].params, after.materials[m].params);
     if (factor) scales.push_back({EmitterScale::Kind::Material, uint32_t(m), *factor});
     else linear = false;
@@ -89,7 +85,7 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
       linear = false;
       changes.transforms = true;
       for (const MeshPrimitive& p : after.meshes[b.mesh].primitives)
-        if (is_emissive(after.materials[p.material].params)) changes.light_tables = true;
+        if (material_emits(after.materials[p.material].params)) changes.light_tables = true;
     }
     for (const MeshPrimitive& p : after.meshes[b.mesh].primitives) changed = changed || material_changed[p.material];
     if (changed) changes.instances.push_back(uint32_t(i));

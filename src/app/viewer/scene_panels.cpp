@@ -185,9 +185,7 @@ void lights_section(Session& session, ViewerState& state) {
   // material luminance 1 and a black colour, which an emission texture only multiplies).
   for (uint32_t m = 0; m < scene.materials.size(); ++m) {
     const MaterialParameters& p = scene.materials[m].params;
-    if (p.emission_luminance > 0.0f &&
-        glm::any(glm::greaterThan(p.emission_color, glm::vec3(0.0f))))
-      state.emitters.insert(m);
+    if (material_emits(p)) state.emitters.insert(m);
   }
   for (uint32_t m : state.emitters) {
     any = true;
@@ -238,17 +236,14 @@ void environment_section(Session& session, ViewerState& state) {
   const Scene& scene = session.scene();
   const std::optional<Environment>& env = scene.environment;
   const std::string current = env ? env->path.string() : std::string(kNoEnvironment);
-  const bool built_in = current == kNoEnvironment || current == kStudioEnvironmentName || current == kSkyEnvironmentName;
-  if (!built_in) state.environment_file = current;  // offered again after switching away
+  if (!is_environment_name(current)) state.environment_file = current;  // offered again after switching away
   ImGui::TextWrapped("%s", environment_description(scene).c_str());
 
   // What lights the scene from afar: an undoable edit, HiPR re-renders.
   std::vector<std::string> choices = {kNoEnvironment, kStudioEnvironmentName, kSkyEnvironmentName};
   if (!state.environment_file.empty()) choices.push_back(state.environment_file);
   const auto label = [](const std::string& choice) {
-    return choice == kNoEnvironment || choice == kStudioEnvironmentName || choice == kSkyEnvironmentName
-               ? choice
-               : std::filesystem::path(choice).filename().string();
+    return is_environment_name(choice) ? choice : std::filesystem::path(choice).filename().string();
   };
   if (ImGui::BeginCombo("source##env", label(current).c_str())) {
     for (const std::string& choice : choices)
