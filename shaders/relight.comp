@@ -6,7 +6,9 @@
 // at once; fresh samples then take over by the display rule as after any edit.
 // Reads:  per-pixel accumulation and its light-group shares (the estimate of the scene before
 //         the edit, where it is current), RelightPush's factor per group.
-// Writes: the display texels (stale = shown = the relit value) and the stale estimate's shares.
+// Writes: the display texels (stale = shown = the relit value; no kept samples of its scene state
+//         for the difference estimate: the relit value is already the edited scene's estimate, a
+//         difference from the old scene would count the edit twice) and the stale estimate's shares.
 // Per pixel, the estimate relit is the accumulation when it holds samples of the scene as it
 // was and at least as many as the stale estimate, else the stale estimate when its groups are
 // known (an earlier relight: a slider dragged). Other pixels (owing an earlier, non-linear edit)
@@ -33,7 +35,7 @@ void main() {
   DisplayTexel texel = b_display[index];
   const uint n = accum.count & kPixelCountMask;
   const bool current = (accum.count & kPixelOwed) == 0u && n > 0u;
-  const bool staleGrouped = (texel.grouped & kStaleGrouped) != 0u;
+  const bool staleGrouped = (texel.flags & kStaleGrouped) != 0u;
   const bool fromAccumulation = current && (n >= texel.staleSamples || !staleGrouped);
   if (!fromAccumulation && !staleGrouped) return;
 
@@ -55,6 +57,6 @@ void main() {
   texel.staleSamples = fromAccumulation ? n : texel.staleSamples;
   texel.shownSamples = texel.staleSamples;
   texel.staleRecord = texel.shownRecord;
-  texel.grouped = kShownGrouped | kStaleGrouped;
+  texel.flags = kShownGrouped | kStaleGrouped | kShownCurrent | kStaleCurrent;
   b_display[index] = texel;
 }

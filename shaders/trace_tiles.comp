@@ -3,7 +3,9 @@
 // Reads:  scene buffers (geometry, materials, textures, lights, environment), the TLAS,
 //         the tile list (tile ids in render order), the background-tile mask and FrameParams.
 // Writes: per-pixel accumulation (radiance sum, sum of squares, sample count), each light group's
-//         share of the sum (HIPR_LIGHT_GROUPS > 0) and the ray/sample counters.
+//         share of the sum (HIPR_LIGHT_GROUPS > 0), the difference records (HIPR_DIFFERENCE 1: the
+//         first samples' values and, after an edit, their differences from the old scene's; reads
+//         the display's stale estimate for their weights) and the ray/sample counters.
 // One invocation owns one pixel for the whole dispatch and adds `samplesPerPixel` samples
 // whose indices continue the pixel's count, so results never depend on tile order.
 #extension GL_GOOGLE_include_directive : require
@@ -61,6 +63,33 @@ layout(push_constant, scalar) uniform Push { TracePush u_push; };
 #endif
 #if HIPR_LIGHT_GROUPS > 0
 vec3 g_sampleGroups[HIPR_LIGHT_GROUPS];  // the current sample's radiance by group (per invocation)
+#endif
+
+// The difference estimate (docs/method.md#the-difference-estimate): sample i < kDifferenceSamples
+// of a pixel is kept, and compared with the kept sample i of the scene before the edit.
+#ifndef HIPR_DIFFERENCE
+#define HIPR_DIFFERENCE 0
+#endif
+#if HIPR_DIFFERENCE
+layout(scalar, binding = kTraceDifference) buffer Difference { DifferenceRecord b_difference[]; };
+layout(scalar, binding = kTraceDisplay) readonly buffer Display { DisplayTexel b_display[]; };
+#include "common/difference.glsl"
+
+// Sample `index` of the scene as it is now has `value`: compared with the old scene's sample
+// `index` where the record holds it (the same random numbers drew both), then kept in its place.
+void note_sample(inout DifferenceRecord record, uint index, vec3 value, uint valid, vec3 stale) {
+  const vec3 fresh = half_rounded(value);
+  if (index < valid) {
+    const vec3 old = record_vec3(record, 3u * index);
+    const vec3 d = fresh - old;
+    const vec3 w = relmse_weight(stale) * kDifferenceSumScale;
+    set_record_vec3(record, kDifferenceSumHalf, record_vec3(record, kDifferenceSumHalf) + d);
+    set_record_vec3(record, kDifferenceCrossHalf, record_vec3(record, kDifferenceCrossHalf) + w * d * (old - stale));
+    set_record_vec3(record, kDifferenceOldHalf, record_vec3(record, kDifferenceOldHalf) + w * (old - stale) * (old - stale));
+    set_record_half(record, kDifferenceSquaresHalf, record_half(record, kDifferenceSquaresHalf) + dot(w, d * d));
+  }
+  set_record_vec3(record, 3u * index, fresh);
+}
 #endif
 
 // Weight of radiance found by BSDF sampling, given the light-sampling pdf of the same direction.
@@ -310,6 +339,19 @@ void main() {
   for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g)
     groupSums[g] = restart ? vec3(0.0) : b_group_sums[pixelIndex * HIPR_LIGHT_GROUPS + g];
 #endif
+#if HIPR_DIFFERENCE
+  // Records change only at a restart (the sums start over) and for the first samples.
+  const bool noteSamples = restart || accum.count < kDifferenceSamples;
+  DifferenceRecord record;
+  vec3 stale = vec3(0.0);
+  uint valid = 0u;
+  if (noteSamples) {
+    record = b_difference[pixelIndex];
+    stale = b_display[pixelIndex].stale;
+    valid = texel_valid(b_display[pixelIndex].flags);
+    if (restart) clear_record_sums(record);
+  }
+#endif
   uint rays = 0u;
   uint nonFinite = 0u;
   // Samples finish in index order, so the sum is the same whatever the dispatch size.
@@ -318,7 +360,13 @@ void main() {
   while (finished < u_push.samplesPerPixel) {
     if (!path_step(path, backgroundTile, rays)) continue;
     const vec3 value = path.radiance;
-    if (any(isnan(value)) || any(isinf(value))) nonFinite += 1u;  // dropped, and counted
+    const bool finite = !any(isnan(value)) && !any(isinf(value));
+#if HIPR_DIFFERENCE
+    // A dropped sample adds nothing to the sum: it counts as black here too.
+    if (accum.count + finished < kDifferenceSamples)
+      note_sample(record, accum.count + finished, finite ? value : vec3(0.0), valid, stale);
+#endif
+    if (!finite) nonFinite += 1u;  // dropped, and counted
     else {
       accum.sum += value;
       accum.sumSquares += value * value;
@@ -331,6 +379,9 @@ void main() {
   }
   accum.count += u_push.samplesPerPixel;
   b_accum[pixelIndex] = accum;
+#if HIPR_DIFFERENCE
+  if (noteSamples) b_difference[pixelIndex] = record;
+#endif
 #if HIPR_LIGHT_GROUPS > 0
   for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g) b_group_sums[pixelIndex * HIPR_LIGHT_GROUPS + g] = groupSums[g];
 #endif

@@ -135,7 +135,7 @@ TEST_P(StatisticalRules, AMajorChangeIsShownAtOnce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Rules, StatisticalRules,
-                         ::testing::Values(DisplayRule::Switch, DisplayRule::Blend),
+                         ::testing::Values(DisplayRule::Switch, DisplayRule::Blend, DisplayRule::Difference),
                          [](const auto& case_info) { return display_rule_name(case_info.param); });
 
 // Where an object moved in or out, the stale value is of another surface: those pixels show

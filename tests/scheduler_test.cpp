@@ -65,11 +65,12 @@ TEST_P(EveryPolicy, ConvergesToTheFullFrameImageOfTheEditedScene) {
 
 INSTANTIATE_TEST_SUITE_P(
     Policies, EveryPolicy,
-    ::testing::Values(PolicyCase{Policy::Hipr, DisplayRule::Blend, 2}, PolicyCase{Policy::Hipr, DisplayRule::Switch, 2},
+    ::testing::Values(PolicyCase{Policy::Hipr, DisplayRule::Difference, 2}, PolicyCase{Policy::Hipr, DisplayRule::Blend, 2},
+                      PolicyCase{Policy::Hipr, DisplayRule::Switch, 2},
                       PolicyCase{Policy::Hipr, DisplayRule::Immediate, 1}, PolicyCase{Policy::Full, DisplayRule::Immediate, 1},
                       PolicyCase{Policy::Scanline, DisplayRule::Immediate, 2},
                       PolicyCase{Policy::Spiral, DisplayRule::Blend, 1}, PolicyCase{Policy::Random, DisplayRule::Immediate, 1},
-                      PolicyCase{Policy::Oracle, DisplayRule::Blend, 2}),
+                      PolicyCase{Policy::Oracle, DisplayRule::Difference, 2}, PolicyCase{Policy::Hipr, DisplayRule::Difference, 1}),
     [](const auto& case_info) {
       return policy_name(case_info.param.policy) + "_" + display_rule_name(case_info.param.display) + "_first" +
              std::to_string(case_info.param.first_visit_spp);

@@ -36,6 +36,27 @@ else
   echo "(no $shared: the real-scene benchmarks are skipped)"
 fi
 
+# The difference estimate's ablation: hipr with the blend display rule (what it refines) on the
+# same edits. Results in OUTDIR/blend_<scene>.
+ablate() {
+  local name=$1
+  shift
+  echo "== blend $name"
+  rm -rf "${out:?}/blend_$name"
+  build/hipr bench "$@" -o "$out/blend_$name" --width "$size" --height "$size" --spp "$spp" --policies hipr \
+    --display blend
+}
+ablate cornell_box assets/scenes/cornell_box.gltf assets/scenes/cornell_box.edits.json
+ablate cornell_sphere assets/scenes/cornell_sphere.glb assets/scenes/cornell_sphere.edits.json
+if [ -d "$shared" ]; then
+  ablate CornellBox "$shared/CornellBox/cornellBox.gltf" tools/bench/CornellBox.edits.json
+  ablate GlassVaseFlowers "$shared/GlassVaseFlowers/GlassVaseFlowers.glb" tools/bench/GlassVaseFlowers.edits.json \
+    --env "$studio"
+  ablate SheenChair "$shared/SheenChair/SheenChair.gltf" tools/bench/SheenChair.edits.json --env "$studio"
+  ablate LightsPunctualLamp "$shared/LightsPunctualLamp/LightsPunctualLamp.gltf" \
+    tools/bench/LightsPunctualLamp.edits.json
+fi
+
 # Drags: 20 small moves in a row, one every 1/16 of a frame's work, in steps of 1/64 of the frame
 # (as the viewer spends a frame's budget), for hipr and full.
 drag_tiles=$(((size / 8) * (size / 8) / 64))

@@ -115,6 +115,39 @@ def lights_table(lights):
     return lines
 
 
+def difference_table(summaries, blends):
+    """hipr with its difference estimate (the default display) against hipr with blend (the
+    ablation, OUTDIR/blend_<scene>) and full: relMSE and FLIP AUC(1), relMSE AUC(4)."""
+    keys = [("auc_relmse", "relMSE AUC(1)"), ("auc_flip", "FLIP AUC(1)"), ("auc_relmse_4", "relMSE AUC(4)")]
+    lines = ["#### After an edit: hipr (difference estimate) against hipr with blend and full", "",
+             "| scene | edit | " + " | ".join(f"{t}: hipr | blend | full | hipr / full | blend / full"
+                                            for _, t in keys) + " |",
+             "|---|---|" + "---:|" * (5 * len(keys))]
+    ratios = {key: ([], []) for key, _ in keys}
+    for scene, summary in summaries:
+        if scene not in blends:
+            continue
+        for edit, ablated in zip(summary["edits"], blends[scene]["edits"]):
+            p, q = edit["policies"], ablated["policies"]
+            if "hipr" not in p or "full" not in p or "hipr" not in q:
+                continue
+            cells = []
+            for key, _ in keys:
+                h, b, f = num(p["hipr"][key]), num(q["hipr"][key]), num(p["full"][key])
+                cells += [f"{h:.4g}", f"{b:.4g}", f"{f:.4g}", f"{h / f:.3f}", f"{b / f:.3f}"]
+                ratios[key][0].append(h / f)
+                ratios[key][1].append(b / f)
+            lines.append(f"| {scene} | {edit['name']} | " + " | ".join(cells) + " |")
+    lines.append("")
+    for key, title in keys:
+        with_diff, with_blend = ratios[key]
+        if with_diff:
+            lines.append(f"- {title} hipr / full, geometric mean over {len(with_diff)} edits: "
+                         f"{geomean(with_diff):.3f} (blend: {geomean(with_blend):.3f}); "
+                         f"worst {max(with_diff):.3f}")
+    return lines
+
+
 def throughput_lines(folder):
     runs = {}
     for path in sorted(glob.glob(os.path.join(folder, "throughput", "*.json"))):
@@ -144,11 +177,13 @@ def throughput_lines(folder):
 def main(argv):
     if len(argv) != 2:
         sys.exit(__doc__)
-    summaries, drags, lights = [], [], {}
+    summaries, drags, lights, blends = [], [], {}, {}
     for path in sorted(glob.glob(os.path.join(argv[1], "*", "summary.json"))):
         with open(path) as f:
             name = os.path.basename(os.path.dirname(path))
-            if name.startswith("lights_"):
+            if name.startswith("blend_"):
+                blends[name.removeprefix("blend_")] = json.load(f)
+            elif name.startswith("lights_"):
                 scene, _, variant = name.removeprefix("lights_").rpartition("_")
                 lights.setdefault(scene, {})[variant] = json.load(f)
             else:
@@ -159,6 +194,8 @@ def main(argv):
         out += auc_table(summaries, "auc_flip", "FLIP AUC over the first work unit") + [""]
         out += auc_table(summaries, "auc_relmse_4", "relMSE AUC over the first 4 work units") + [""]
         out += ratio_lines(summaries) + [""]
+    if summaries and blends:
+        out += difference_table(summaries, blends) + [""]
         out += feedback_table(summaries) + [""]
     if drags:
         out += drag_table(drags) + [""]

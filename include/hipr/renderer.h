@@ -54,6 +54,10 @@ struct RenderSettings {
   // edit of an emitter's intensity or colour relights the converged image at once (HiPR policy).
   // Costs 24 bytes per pixel and group; radiance is the same bit for bit with or without.
   uint32_t light_groups = 8;
+  // Keep each pixel's first samples (32 bytes per pixel), so that after an edit the display can
+  // show the converged image plus the change, estimated with the same random numbers
+  // (DisplayRule::Difference). Radiance is the same bit for bit with or without.
+  bool difference_estimate = true;
   HiprParameters hipr;
 };
 
@@ -72,12 +76,21 @@ struct SceneStats {
   float scene_radius = 1.0f;
 };
 
+// Per pixel, the difference estimate C = stale + sum_i d_i / c after an edit (docs/method.md#the-difference-estimate):
+// the stale estimate where a pixel has no difference (c = 0).
+struct DifferenceEstimates {
+  ImageRGB image;
+  std::vector<uint32_t> differenced;  // c: samples compared with the old scene's
+  std::vector<uint8_t> changed;       // 1: some difference is not zero
+};
+
 // The per-pixel state of a render (accumulation and display, in the GPU's layout), to start
 // several runs from one state.
 struct RenderSnapshot {
   std::vector<uint8_t> accumulation;
   std::vector<uint8_t> display;
   std::vector<uint8_t> light_groups;  // the accumulation's and the stale estimate's group shares
+  std::vector<uint8_t> difference;    // the difference records
 };
 
 class Renderer final : public ProgressiveRenderer {
@@ -145,6 +158,9 @@ class Renderer final : public ProgressiveRenderer {
   std::vector<std::string> light_group_names() const;
   std::vector<std::string> pooled_emitters() const;
   ImageRGB light_group_image(uint32_t group) const;
+  // The difference estimates of the samples since the last edit (empty without
+  // RenderSettings::difference_estimate).
+  DifferenceEstimates difference_estimates() const;
 
  private:
   struct Impl;

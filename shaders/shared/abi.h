@@ -208,16 +208,50 @@ struct DisplayTexel {
   uint shownSamples;  // samples behind `shown` (of the stale estimate while it has any weight)
   uint shownRecord;   // the G-buffer record (surface) `shown` depicts, kRecordUnknown if not known
   uint staleRecord;   // the same for `stale`
-  uint grouped;       // kShownGrouped, kStaleGrouped: the value's light groups are known (relight.comp)
+  uint flags;         // kShownGrouped, kStaleGrouped, kShownCurrent, kStaleCurrent
+};
+
+// The difference estimate (docs/method.md#the-difference-estimate): per pixel, the values of the
+// first kDifferenceSamples samples of the last scene state that reached them, so that after an
+// edit sample i of the new state, drawn with the same random numbers, is compared with sample i of
+// the old one. Values are kept as halves (packHalf2x16): a value the edit did not change rounds
+// the same on both sides, so its difference is exactly zero.
+HIPR_CONST uint kDifferenceSamples = 2u;
+// DifferenceRecord::halves, three per colour: the kept samples (slot j at 3j), then since the
+// last edit, for the differenced samples i (d_i = new_i - old_i; w = 1 / (stale^2 + 0.01), the
+// weights relMSE gives errors): the sum of d_i, the sums of w d_i (old_i - stale) and of
+// w (old_i - stale)^2 (per channel: their ratio over a tile estimates how much of the old samples'
+// noise the new ones replaced) and, last, one half: the sum over channels of w d_i^2.
+HIPR_CONST uint kDifferenceSumHalf = 6u;
+HIPR_CONST uint kDifferenceCrossHalf = 9u;
+HIPR_CONST uint kDifferenceOldHalf = 12u;
+HIPR_CONST uint kDifferenceSquaresHalf = 15u;
+HIPR_CONST uint kDifferenceHalves = 16u;
+// The weighted sums (cross, old, squares) are kept times this scale, so a weight of up to 100
+// times a bright sample's square stays in half's range; a sum that reaches half's largest value
+// marks a sample too bright to judge (resolve_display.comp keeps the pixel's stale value).
+HIPR_CONST float kDifferenceSumScale = 1.0f / 256.0f;
+// DisplayTexel::flags bits 4-5: how many kept samples are of the scene state the stale estimate
+// is of (0: no difference estimate). Set by the capture, cleared by a relight.
+HIPR_CONST uint kDifferenceValidShift = 4u;
+HIPR_CONST uint kDifferenceValidMask = 3u;
+
+// 32 bytes per pixel (resolve_display.comp reads it; trace_tiles.comp writes it).
+struct DifferenceRecord {
+  uint halves[kDifferenceHalves / 2u];
 };
 
 // Light groups (relight.comp): each group's share of a pixel's radiance is kept apart, so an edit
 // of an emitter's intensity or colour rescales it. At most this many groups.
 HIPR_CONST uint kMaxLightGroups = 8u;
-// DisplayTexel::grouped bits: the per-group parts of `shown` / `stale` are in the stale-groups
-// buffer (shown only while it equals stale).
+// DisplayTexel::flags: the per-group parts of `shown` / `stale` are in the stale-groups buffer
+// (shown only while it equals stale; relight.comp); `shown` is an estimate of the scene as it is
+// since the last edit (not the stale estimate of an earlier one: the difference estimate needs to
+// know which scene state a captured value is of).
 HIPR_CONST uint kShownGrouped = 1u;
 HIPR_CONST uint kStaleGrouped = 2u;
+HIPR_CONST uint kShownCurrent = 4u;
+HIPR_CONST uint kStaleCurrent = 8u;  // `stale` is an estimate of the scene since the last edit too (relit, or a difference estimate)
 
 // Parameters of relight.comp: per light group, the factor (per channel) its radiance is scaled by.
 struct RelightPush {
@@ -231,6 +265,7 @@ HIPR_CONST uint kDisplayImmediate = 0u;  // a pixel shows its fresh estimate fro
 HIPR_CONST uint kDisplaySwitch = 1u;     // a tile shows its fresh estimate once it is expected closer to the truth
 HIPR_CONST uint kDisplayBlend = 2u;      // a tile shows the blend of stale and fresh with the least expected error
 HIPR_CONST uint kDisplayCapture = 3u;    // at an edit: what is shown becomes the stale estimate
+HIPR_CONST uint kDisplayDifference = 4u; // blend, where a pixel's stale estimate is corrected by its difference estimate
 
 // Counters the kernels add to. 64-bit so long renders never wrap.
 struct RenderStats {
@@ -297,6 +332,7 @@ struct ResolvePush {
   uint rule;        // kDisplay*
   float threshold;  // switch: show the fresh estimate when D > threshold * V (see the shader)
   uint useGBuffer;  // 1: the G-buffer describes the current scene (stage 1 ran since the last edit)
+  uint difference;  // 1: the film keeps DifferenceRecords (the capture maintains them)
 };
 
 // Per-dispatch parameters of display.comp: the rendered image is drawn into the window at

@@ -45,7 +45,7 @@ struct BenchOptions {
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp =
       0;                // 0 = 2 (measured best with blend on the Cornell edits), at most --spp
-  std::string display;  // hipr and oracle: blend (default), switch or immediate
+  std::string display;  // hipr and oracle: difference (default), blend, switch or immediate
   fs::path ref_cache;
   bool no_ref_cache = false;
   double drag = 0.0;  // > 0: the edits are one drag, this much work apart (full-frame passes)
@@ -269,7 +269,7 @@ Command add_bench_command(CLI::App& app) {
       "Samples per pixel of a tile's first visit after an edit, all policies but full (default 2)");
   cmd->add_option(
       "--display", options->display,
-      "How hipr and oracle show re-rendered tiles: blend (default), switch or immediate");
+      "How hipr and oracle show re-rendered tiles: difference (default), blend, switch or immediate");
   cmd->add_option("--ref-cache", options->ref_cache,
                   "Folder of cached references (default: beside the shader cache)");
   cmd->add_flag("--no-ref-cache", options->no_ref_cache,

@@ -45,10 +45,11 @@ int run_render(RenderOptions& o) {
 
   const Timer setup_timer;
   const vk::Context ctx(context_options(o.common));
-  // A render is never edited: by default no light groups to relight with (the pixels are the
-  // same bits either way).
+  // A render is never edited: by default no light groups to relight with and no samples kept
+  // for difference estimates (the pixels are the same bits either way).
   RenderSettings settings = o.common.render;
   if (o.common.light_groups < 0) settings.light_groups = 0;
+  settings.difference_estimate = false;
   Renderer renderer(ctx, scene, settings);
   const double setup_seconds = setup_timer.seconds();
   log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" +

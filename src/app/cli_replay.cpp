@@ -152,8 +152,8 @@ Command add_replay_command(CLI::App& app) {
   cmd->add_option("--first-visit-spp", options->first_visit_spp,
                   "Samples per pixel of a tile's first visit after an edit (default: --visit-spp)");
   cmd->add_option("--display", options->display,
-                  "How re-rendered tiles are shown: immediate, switch or blend (default: blend for hipr, immediate "
-                  "for the others)");
+                  "How re-rendered tiles are shown: immediate, switch, blend or difference (default: difference for "
+                  "hipr, immediate for the others)");
   cmd->add_flag("--no-relight", options->no_relight,
                 "hipr: re-render light edits without relighting the converged image first");
   add_common_options(*cmd, options->common);

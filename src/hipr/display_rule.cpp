@@ -5,9 +5,9 @@
 namespace hipr {
 
 DisplayRule parse_display_rule(const std::string& name) {
-  for (DisplayRule rule : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend})
+  for (DisplayRule rule : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend, DisplayRule::Difference})
     if (display_rule_name(rule) == name) return rule;
-  throw InputError("unknown display rule '" + name + "' (immediate, switch, blend)");
+  throw InputError("unknown display rule '" + name + "' (immediate, switch, blend, difference)");
 }
 
 std::string display_rule_name(DisplayRule rule) {
@@ -15,6 +15,7 @@ std::string display_rule_name(DisplayRule rule) {
     case DisplayRule::Immediate: return "immediate";
     case DisplayRule::Switch: return "switch";
     case DisplayRule::Blend: return "blend";
+    case DisplayRule::Difference: return "difference";
   }
   return "?";
 }

@@ -17,7 +17,7 @@ HiprStages::HiprStages(const RenderParts& parts, uint32_t kernel_features)
       m_tile_weights(parts.ctx, size_t(parts.tiles.count()) * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_active(parts.ctx, parts.scene, parts.tiles, parts.film, parts.gbuffers, parts.resolve.display, m_tile_weights,
                parts.settings.width * parts.settings.height),
-      m_discovery(parts.ctx, parts.scene, parts.tiles, parts.film, parts.settings, kernel_features,
+      m_discovery(parts.ctx, parts.scene, parts.tiles, parts.film, parts.resolve.display, parts.settings, kernel_features,
                   {{abi::kTraceGBuffer, &parts.gbuffers.current},
                    {abi::kTraceChangedRecords, &m_active.changed_records},
                    {abi::kTraceTileWeights, &m_tile_weights}}),

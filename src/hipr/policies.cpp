@@ -35,7 +35,7 @@ std::string policy_name(Policy policy) {
 }
 
 DisplayRule default_display_rule(Policy policy) {
-  return policy == Policy::Hipr || policy == Policy::Oracle ? DisplayRule::Blend : DisplayRule::Immediate;
+  return policy == Policy::Hipr || policy == Policy::Oracle ? DisplayRule::Difference : DisplayRule::Immediate;
 }
 
 std::vector<uint32_t> tile_order(Policy policy, uint32_t tiles_x, uint32_t tiles_y, uint32_t seed) {

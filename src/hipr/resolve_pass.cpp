@@ -9,6 +9,17 @@ namespace {
 // (resolve_display.comp): 2 means the stale estimate's squared error B = D - V exceeds V.
 constexpr float kSwitchThreshold = 2.0f;
 
+// The kernel's rule (abi::kDisplay*). Without difference records the difference rule is blend.
+uint32_t kernel_rule(DisplayRule rule, bool difference) {
+  switch (rule) {
+    case DisplayRule::Immediate: return abi::kDisplayImmediate;
+    case DisplayRule::Switch: return abi::kDisplaySwitch;
+    case DisplayRule::Blend: return abi::kDisplayBlend;
+    case DisplayRule::Difference: return difference ? abi::kDisplayDifference : abi::kDisplayBlend;
+  }
+  return abi::kDisplayBlend;
+}
+
 }  // namespace
 
 ResolvePass::ResolvePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
@@ -17,12 +28,14 @@ ResolvePass::ResolvePass(const vk::Context& ctx, const GpuScene& scene, const Ti
       m_gbuffers(gbuffers),
       m_width(width),
       m_height(height),
+      m_difference(film.keeps_difference()),
       m_resolve(ctx, "resolve_display.comp", {},
                 {{abi::kResolveTileList, &tiles.schedule},
                  {abi::kResolveAccumulation, &film.accumulation},
                  {abi::kResolveTileFlags, &tiles.flags},
                  {abi::kResolveDisplay, &display},
-                 {abi::kResolveGBuffer, &gbuffers.current}},
+                 {abi::kResolveGBuffer, &gbuffers.current},
+                 {abi::kResolveDifference, &film.difference}},
                 sizeof(abi::ResolvePush), &scene.descriptor_set()) {
   clear();
 }
@@ -35,7 +48,7 @@ void ResolvePass::clear() {
 }
 
 void ResolvePass::record(VkCommandBuffer cmd, const Tiles& tiles, DisplayRule rule) const {
-  record_pass(cmd, tiles, uint32_t(rule));
+  record_pass(cmd, tiles, kernel_rule(rule, m_difference));
 }
 
 void ResolvePass::record_capture_stale(VkCommandBuffer cmd, uint32_t tile_count) const {
@@ -43,8 +56,14 @@ void ResolvePass::record_capture_stale(VkCommandBuffer cmd, uint32_t tile_count)
 }
 
 void ResolvePass::record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t rule) const {
-  const abi::ResolvePush push{tiles.offset,     tiles.count, tiles.require_flags, tiles.skip_flags, rule,
-                              kSwitchThreshold, m_gbuffers.is_current() ? 1u : 0u};
+  const abi::ResolvePush push{tiles.offset,
+                              tiles.count,
+                              tiles.require_flags,
+                              tiles.skip_flags,
+                              rule,
+                              kSwitchThreshold,
+                              m_gbuffers.is_current() ? 1u : 0u,
+                              m_difference ? 1u : 0u};
   vk::compute_to_compute_barrier(cmd);
   m_resolve.dispatch(cmd, &push, tiles.count);
 }

@@ -44,6 +44,7 @@ class ResolvePass {
 
   const GBufferPass& m_gbuffers;
   uint32_t m_width, m_height;
+  bool m_difference;  // the film keeps difference records
   vk::ComputePipeline m_resolve;
 };
 

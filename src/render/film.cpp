@@ -15,14 +15,16 @@ vk::Buffer storage(const vk::Context& ctx, size_t bytes) { return vk::Buffer(ctx
 
 uint32_t groups_for(uint32_t items) { return (items + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize; }
 
-Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups,
+Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups, bool keep_difference,
            const vk::DescriptorSet& scene, const vk::Buffer& tile_flags)
     : accumulation(storage(ctx, size_t(width) * height * sizeof(abi::PixelAccum))),
       stats(storage(ctx, sizeof(abi::RenderStats))),
       group_sums(storage(ctx, std::max<size_t>(size_t(width) * height * light_groups, 1) * sizeof(glm::vec3))),
+      difference(storage(ctx, (keep_difference ? size_t(width) * height : 1) * sizeof(abi::DifferenceRecord))),
       m_width(width),
       m_height(height),
       m_light_groups(light_groups),
+      m_difference(keep_difference),
       m_mark_owed(ctx, "mark_owed.comp", {},
                   {{abi::kOwedAccumulation, &accumulation}, {abi::kOwedTileFlags, &tile_flags}}, 0, &scene) {
   clear();
@@ -74,6 +76,7 @@ RenderCounters Film::counters() const {
 void Film::clear() {
   accumulation.clear();
   group_sums.clear();
+  difference.clear();
   stats.clear();
 }
 

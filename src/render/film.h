@@ -1,7 +1,8 @@
 #pragma once
 // The film: per-pixel accumulation (radiance sum, sum of squares, sample count and the owed
 // bit), each light group's share of the sum (render/light_groups.h), and the ray/sample counters
-// the trace kernels add to. Owed pixels (mark_owed.comp) keep their old samples until their next
+// the trace kernels add to, and the difference records (the first samples kept for the
+// difference estimate, abi::DifferenceRecord). Owed pixels (mark_owed.comp) keep their old samples until their next
 // visit restarts them.
 #include <cstdint>
 #include <vector>
@@ -17,8 +18,10 @@ namespace hipr {
 class Film {
  public:
   // `scene`: the scene's descriptor set (the kernel reads the frame parameters from it).
-  Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups,
+  Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups, bool keep_difference,
        const vk::DescriptorSet& scene, const vk::Buffer& tile_flags);
+
+  bool keeps_difference() const { return m_difference; }
 
   // Every pixel owes a restart; also forgets which tiles have shown their fresh estimate.
   void record_mark_all_owed(VkCommandBuffer cmd) const;
@@ -35,9 +38,11 @@ class Film {
 
   vk::Buffer accumulation, stats;
   vk::Buffer group_sums;  // vec3 per pixel and group (pixel-major); one vec3 without groups
+  vk::Buffer difference;  // abi::DifferenceRecord per pixel; one record without
 
  private:
   uint32_t m_width, m_height, m_light_groups;
+  bool m_difference;
   vk::ComputePipeline m_mark_owed;
 };
 

@@ -9,6 +9,7 @@
 #include "hipr/relight_pass.h"
 #include "hipr/resolve_pass.h"
 #include "render/background_tiles.h"
+#include "render/difference_records.h"
 #include "render/film.h"
 #include "render/frame_params.h"
 #include "render/gbuffer_pass.h"
@@ -45,13 +46,13 @@ struct Renderer::Impl {
         gpu(c, scene, s.light_groups),
         tiles(c, s),
         features(s.specialize_kernel ? hipr::kernel_features(scene) : all_kernel_features()),
-        film(c, s.width, s.height, gpu.light_groups().count, gpu.descriptor_set(), tiles.flags),
+        film(c, s.width, s.height, gpu.light_groups().count, s.difference_estimate, gpu.descriptor_set(), tiles.flags),
         // The display pass reads the G-buffer from the start (which surface a pixel shows), so
         // the G-buffers exist even in renders that never run HiPR's stages.
         gbuffers(c, gpu, s.width, s.height),
         resolve(c, gpu, tiles, film, gbuffers, s.width, s.height),
         relight(c, film, resolve, gpu.light_groups().count, s.width, s.height),
-        trace(c, gpu, tiles, film, s, features),
+        trace(c, gpu, tiles, film, resolve.display, s, features),
         background(scene) {
     update_background(scene);
     gpu.set_frame(make_frame_params(scene, gpu, settings));
@@ -210,18 +211,20 @@ RenderSnapshot Renderer::snapshot() const {
   const std::vector<uint8_t> stale_groups = bytes_of<glm::vec3>(m->relight.stale_groups);
   groups.insert(groups.end(), stale_groups.begin(), stale_groups.end());
   return {bytes_of<abi::PixelAccum>(m->film.accumulation), bytes_of<abi::DisplayTexel>(m->resolve.display),
-          std::move(groups)};
+          std::move(groups), bytes_of<abi::DifferenceRecord>(m->film.difference)};
 }
 
 void Renderer::restore(const RenderSnapshot& snapshot) {
   const size_t film_groups = m->film.group_sums.size();
   if (snapshot.accumulation.size() != m->film.accumulation.size() || snapshot.display.size() != m->resolve.display.size() ||
-      snapshot.light_groups.size() != film_groups + m->relight.stale_groups.size())
+      snapshot.light_groups.size() != film_groups + m->relight.stale_groups.size() ||
+      snapshot.difference.size() != m->film.difference.size())
     throw InternalError("a snapshot of another image size");
   m->film.accumulation.upload(snapshot.accumulation.data(), snapshot.accumulation.size());
   m->resolve.display.upload(snapshot.display.data(), snapshot.display.size());
   m->film.group_sums.upload(snapshot.light_groups.data(), film_groups);
   m->relight.stale_groups.upload(snapshot.light_groups.data() + film_groups, m->relight.stale_groups.size());
+  m->film.difference.upload(snapshot.difference.data(), snapshot.difference.size());
 }
 
 HiprStageRunner* Renderer::hipr_stages() { return &m->stages(); }
@@ -264,6 +267,14 @@ std::vector<uint32_t> Renderer::schedule() const { return m->tiles.schedule.down
 std::vector<std::string> Renderer::light_group_names() const { return m->gpu.light_groups().names; }
 std::vector<std::string> Renderer::pooled_emitters() const { return m->gpu.light_groups().pooled; }
 ImageRGB Renderer::light_group_image(uint32_t group) const { return m->film.group_image(group); }
+
+DifferenceEstimates Renderer::difference_estimates() const {
+  if (!m->film.keeps_difference()) return {};
+  return hipr::difference_estimates(m->settings.width, m->settings.height,
+                                    m->film.accumulation.download_all<abi::PixelAccum>(),
+                                    m->film.difference.download_all<abi::DifferenceRecord>(),
+                                    m->resolve.display.download_all<abi::DisplayTexel>());
+}
 
 std::vector<uint32_t> Renderer::owed_tiles() const {
   const std::vector<bool> owed = m->film.owed_pixels();

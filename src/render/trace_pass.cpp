@@ -17,7 +17,8 @@ uint32_t scatter_stride(uint32_t count) {
 }
 
 TracePass::TracePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
-                     const RenderSettings& settings, uint32_t features, std::vector<vk::BufferBinding> discovery)
+                     const vk::Buffer& display, const RenderSettings& settings, uint32_t features,
+                     std::vector<vk::BufferBinding> discovery)
     : m_ctx(ctx),
       m_scene(scene),
       m_settings(settings),
@@ -28,7 +29,10 @@ TracePass::TracePass(const vk::Context& ctx, const GpuScene& scene, const TileSt
                  {abi::kTraceTileFlags, &tiles.flags},
                  {abi::kTraceTileBackground, &tiles.background},
                  {abi::kTraceGroupSums, &film.group_sums},
-                 {abi::kTraceMaterialGroups, &scene.material_groups}},
+                 {abi::kTraceMaterialGroups, &scene.material_groups},
+                 {abi::kTraceDifference, &film.difference},
+                 {abi::kTraceDisplay, &display}},
+      m_difference(film.keeps_difference()),
       m_discovery(!discovery.empty()) {
   m_bindings.insert(m_bindings.end(), discovery.begin(), discovery.end());
   compile();
@@ -39,6 +43,7 @@ void TracePass::compile() {
   defines.emplace_back("HIPR_LIGHT_SAMPLING", std::to_string(int(m_settings.light_sampling)));
   defines.emplace_back("HIPR_DISCOVERY", m_discovery ? "1" : "0");
   defines.emplace_back("HIPR_LIGHT_GROUPS", std::to_string(m_scene.light_groups().count));
+  defines.emplace_back("HIPR_DIFFERENCE", m_difference ? "1" : "0");
   m_pipeline = std::make_unique<vk::ComputePipeline>(m_ctx, "trace_tiles.comp", defines, m_bindings,
                                                      sizeof(abi::TracePush), &m_scene.descriptor_set());
 }

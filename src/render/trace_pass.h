@@ -19,8 +19,11 @@ class TracePass {
  public:
   // `features`: the kernel features (render/kernel_features.h) to compile with. `discovery`:
   // stage 2's extra buffers (shaders/shared/bindings/trace.h), empty for plain progressive tracing.
+  // `display`: the display texels (DisplayTexel per pixel), whose stale estimates weigh the
+  // difference records' sums.
   TracePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
-            const RenderSettings& settings, uint32_t features, std::vector<vk::BufferBinding> discovery = {});
+            const vk::Buffer& display, const RenderSettings& settings, uint32_t features,
+            std::vector<vk::BufferBinding> discovery = {});
 
   // Recompiles the kernel with other features (an edit brought in a new one).
   void set_features(uint32_t features);
@@ -37,6 +40,7 @@ class TracePass {
   RenderSettings m_settings;
   uint32_t m_features;
   std::vector<vk::BufferBinding> m_bindings;
+  bool m_difference;
   bool m_discovery;
   std::unique_ptr<vk::ComputePipeline> m_pipeline;
 };

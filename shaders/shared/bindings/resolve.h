@@ -15,6 +15,7 @@ HIPR_CONST uint kResolveAccumulation = 1u;  // PixelAccum per pixel (read)
 HIPR_CONST uint kResolveTileFlags = 2u;     // uint per tile: kTileShown and kTileSettled are set here
 HIPR_CONST uint kResolveDisplay = 3u;       // DisplayTexel per pixel: what the screen shows
 HIPR_CONST uint kResolveGBuffer = 4u;       // GBufferTexel per pixel: which surface a pixel shows
+HIPR_CONST uint kResolveDifference = 5u;    // DifferenceRecord per pixel (read)
 
 #ifdef __cplusplus
 }  // namespace hipr::abi

@@ -118,9 +118,8 @@ Command add_view_command(CLI::App& app) {
                   "Samples per pixel of a tile's first visit after an edit (default: 2, within "
                   "[--visit-spp, --spp])");
   cmd->add_option("--display", options->display,
-                  "How re-rendered tiles are shown: immediate, switch or blend (default: blend for "
-                  "hipr, immediate "
-                  "for the others)");
+                  "How re-rendered tiles are shown: immediate, switch, blend or difference (default: "
+                  "difference for hipr, immediate for the others)");
   cmd->add_option("--frame-budget-ms", v.frame_budget_ms,
                   "Time spent on scheduling steps per frame")
       ->capture_default_str();

@@ -105,7 +105,7 @@ void hipr_section(Session& session, ViewerState& state) {
   if (ImGui::BeginCombo("display rule", rule_label.c_str())) {
     if (ImGui::Selectable("default", !rule))
       state.request_display_rule = std::optional<DisplayRule>();
-    for (DisplayRule r : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend})
+    for (DisplayRule r : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend, DisplayRule::Difference})
       if (ImGui::Selectable(display_rule_name(r).c_str(), rule == r))
         state.request_display_rule = std::optional<DisplayRule>(r);
     ImGui::EndCombo();
