@@ -114,7 +114,7 @@ TEST(SchedulingInterface, HiprRendersItsActiveTilesAsLeadingStepsThenTheSortedRe
   EXPECT_EQ(renderer.stages->schedule_builds, 2u);  // stage 3 after the last active tile
   scheduler.step();
   EXPECT_EQ(renderer.rendered, (std::vector<uint32_t>{8, 7}));  // entries 3 and 4 of the order
-  for (const auto& rule : renderer.step_rules) EXPECT_EQ(rule, DisplayRule::Blend);
+  for (const auto& rule : renderer.step_rules) EXPECT_EQ(rule, DisplayRule::Difference);  // hipr's own rule
 }
 
 TEST(SchedulingInterface, HiprNeedsARendererWithItsStages) {
