@@ -43,9 +43,10 @@
 //      X  = s + b (C' - s)              b = Bd / (Bd + Vd), Bd = max(Dd - Vd, 0) from Dd = sum
 //                                       w (C' - s)^2 and Vd = sum w var(r) / n over the tile,
 //                                       r_i = d_i + a (old_i - s) (C' - s is their mean)
-//    and shows X. A pixel none of whose differences is non-zero has C = s; one whose weighted sums overflowed
-//    half's range (a sample too bright to judge) keeps X = s. Past the kept samples, and for
-//    pixels without (relit, never rendered, or showing an older scene at the capture), blend.
+//    and shows X. A pixel none of whose differences is non-zero has C = s; one whose weighted
+//    sums reached half's range (a sample too bright to judge) keeps X = s. Past the kept samples,
+//    and for pixels without (relit, never rendered, or showing an older scene at the capture),
+//    blend.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -73,7 +74,7 @@ shared uint s_single[64];        // pixels with one fresh sample (no variance ye
 shared uint s_short[64];         // pixels with fewer fresh samples than their stale estimate
 shared uint s_resurfaced[64];    // rendered pixels whose surface changed since their stale estimate
 shared uint s_judged[64];        // pixels D and V judge (blend's pixels)
-shared uint s_differenced[64];    // difference rule: pixels shown by their difference estimate
+shared uint s_differenced[64];   // difference rule: pixels shown by their difference estimate
 shared vec3 s_cross[64];         // difference rule: sum of w d (old - s) over changed pixels
 shared vec3 s_old[64];           // difference rule: sum of w (old - s)^2 over changed pixels
 shared float s_alpha;            // weight of the fresh estimate in what the tile shows (blend's pixels)
@@ -142,7 +143,6 @@ float corrected_noise(DifferenceRecord record, vec3 shift, vec3 stale, uint c, v
   if (c < 2u) return max(squares, 0.0);
   return max(squares - float(c) * dot(relmse_weight(stale), shift * shift), 0.0) / float((c - 1u) * c);
 }
-
 
 // C' = C + a (f - C) of a changed pixel with c differenced samples (all of its samples).
 vec3 corrected_estimate(DifferenceRecord record, vec3 stale, vec3 fresh, uint c) {
@@ -356,7 +356,7 @@ void main() {
       texel.shown = mix(texel.stale, fresh, alpha);
       texel.shownSamples = texel.staleSamples;
       texel.shownRecord = texel.staleRecord;
-      // Of the edited scene when the stale estimate is (relit, or a difference estimate).
+      // Of the edited scene when the stale estimate is (relit).
       texel.flags = (texel.flags & kStaleCurrent) != 0u ? texel.flags | kShownCurrent : texel.flags & ~kShownCurrent;
     }
     b_display[index] = texel;

@@ -76,8 +76,8 @@ struct SceneStats {
   float scene_radius = 1.0f;
 };
 
-// Per pixel, the difference estimate C = stale + sum_i d_i / c after an edit (docs/method.md#the-difference-estimate):
-// the stale estimate where a pixel has no difference (c = 0).
+// Per pixel, the difference estimate C = stale + sum_i d_i / c after an edit
+// (docs/method.md#the-difference-estimate): the stale estimate where a pixel has none (c = 0).
 struct DifferenceEstimates {
   ImageRGB image;
   std::vector<uint32_t> differenced;  // c: samples compared with the old scene's

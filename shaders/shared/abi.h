@@ -251,7 +251,7 @@ HIPR_CONST uint kMaxLightGroups = 8u;
 HIPR_CONST uint kShownGrouped = 1u;
 HIPR_CONST uint kStaleGrouped = 2u;
 HIPR_CONST uint kShownCurrent = 4u;
-HIPR_CONST uint kStaleCurrent = 8u;  // `stale` is an estimate of the scene since the last edit too (relit, or a difference estimate)
+HIPR_CONST uint kStaleCurrent = 8u;  // `stale` is an estimate of the scene since the last edit too (relit)
 
 // Parameters of relight.comp: per light group, the factor (per channel) its radiance is scaled by.
 struct RelightPush {
