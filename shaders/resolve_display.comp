@@ -152,7 +152,7 @@ vec3 corrected_estimate(DifferenceRecord record, vec3 stale, vec3 fresh, uint c)
 
 // X = s + b (C' - s) (s itself where no difference is non-zero, or one is too bright to judge).
 vec3 difference_display(DifferenceRecord record, vec3 stale, vec3 fresh, uint c) {
-  if (!record_changed(record) || record_saturated(record) || s_shrink == 0.0) return stale;
+  if (!record_judges(record) || s_shrink == 0.0) return stale;
   return max(stale + s_shrink * (corrected_estimate(record, stale, fresh, c) - stale), vec3(0.0));
 }
 
@@ -194,7 +194,7 @@ void judge_change(uvec2 origin, uint tilePixels) {
     const uint c = differenced_samples(texel, n);
     if (c == 0u || resurfaced(index, texel)) continue;
     const DifferenceRecord record = b_difference[index];
-    if (!record_changed(record) || record_saturated(record)) continue;
+    if (!record_judges(record)) continue;
     const vec3 shift = corrected_estimate(record, texel.stale, accum.sum / float(n), c) - texel.stale;
     change += dot(relmse_weight(texel.stale), shift * shift);
     noise += corrected_noise(record, shift, texel.stale, c, s_regression);
@@ -254,7 +254,7 @@ void main() {
     if (differenced_samples(texel, n) > 0u) {
       const DifferenceRecord record = b_difference[index];
       differenced += 1u;
-      if (record_changed(record) && !record_saturated(record)) {
+      if (record_judges(record)) {
         cross += record_sums(record, kDifferenceCrossHalf);
         spread += record_sums(record, kDifferenceOldHalf);
       }
@@ -267,7 +267,7 @@ void main() {
     }
     const vec3 mean = accum.sum / float(n);
     const vec3 variance = max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u);
-    const vec3 weight = 1.0 / (texel.stale * texel.stale + 0.01);
+    const vec3 weight = relmse_weight(texel.stale);
     // Var(f - s) with shared random streams: sample i of a pixel draws the same random numbers
     // before and after an edit, so where paths miss the change f and s share their first n
     // samples' noise and Var(f - s) = var (1/n - 1/n_stale) (no stale count known: 1/n).
@@ -336,7 +336,7 @@ void main() {
     if (!tileSettled && !surfaceChanged && c > 0u) {
       const DifferenceRecord record = b_difference[index];
       // An unchanged pixel: C = s exactly, shown as it is; so is one with a sample too bright to judge.
-      const bool changed = record_changed(record) && !record_saturated(record);
+      const bool changed = record_judges(record);
       texel.shown = difference_display(record, texel.stale, fresh, c);
       const float a = changed ? s_shrink * (s_regression.x + s_regression.y + s_regression.z) / 3.0 : 0.0;
       texel.shownSamples = mixed_samples(a, n, texel.staleSamples);

@@ -347,8 +347,9 @@ void main() {
   uint valid = 0u;
   if (noteSamples) {
     record = b_difference[pixelIndex];
-    stale = b_display[pixelIndex].stale;
-    valid = texel_valid(b_display[pixelIndex].flags);
+    const DisplayTexel texel = b_display[pixelIndex];
+    stale = texel.stale;
+    valid = texel_valid(texel.flags);
     if (restart) clear_record_sums(record);
   }
 #endif

@@ -60,6 +60,10 @@ bool record_changed(DifferenceRecord record) {
   return record_half(record, kDifferenceSquaresHalf) > 0.0 || any(notEqual(record_vec3(record, kDifferenceSumHalf), vec3(0.0)));
 }
 
+// The pixel's difference estimate judges it: some difference is not zero, and none was too
+// bright for the record.
+bool record_judges(DifferenceRecord record) { return record_changed(record) && !record_saturated(record); }
+
 // How many kept samples belong to the stale estimate's scene state (DisplayTexel::flags).
 uint texel_valid(uint flags) { return (flags >> kDifferenceValidShift) & kDifferenceValidMask; }
 

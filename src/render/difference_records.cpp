@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <glm/glm.hpp>
+
 #include <glm/gtc/packing.hpp>
 
 namespace hipr {
@@ -12,7 +14,11 @@ float half_at(const abi::DifferenceRecord& record, uint32_t h) {
   return (h & 1) == 0 ? pair.x : pair.y;
 }
 
-}  // namespace
+struct DecodedDifference {
+  glm::vec3 sum{0.0f};  // sum of d_i over the differenced samples
+  uint32_t valid = 0;   // kept samples of the stale estimate's scene state
+  bool changed = false;
+};
 
 DecodedDifference decode_difference(const abi::DifferenceRecord& record, const abi::DisplayTexel& texel) {
   DecodedDifference d;
@@ -21,6 +27,8 @@ DecodedDifference decode_difference(const abi::DifferenceRecord& record, const a
   d.changed = half_at(record, abi::kDifferenceSquaresHalf) > 0.0f || d.sum != glm::vec3(0.0f);
   return d;
 }
+
+}  // namespace
 
 DifferenceEstimates difference_estimates(uint32_t width, uint32_t height, const std::vector<abi::PixelAccum>& accum,
                                          const std::vector<abi::DifferenceRecord>& records,
