@@ -4,9 +4,11 @@
 // the tile has not been re-rendered since (its pixels still owe the restart that edit asked
 // for): such a tile still shows what an earlier scene looked like, so it keeps its rank (active,
 // or discovered with its weight) whatever the new edit changes. Edits in a row (a drag) leave
-// no tile behind.
+// no tile behind. A plan for a new focus (no edit) keeps what the display knows of each tile
+// (kTileShown, kTileSettled: they belong to the last edit). The focus score always restarts:
+// mark_active.comp marks the focus anew at every plan.
 // Reads: the accumulation (the owed bit of each tile's first pixel: tiles render whole),
-// FrameParams. Writes: per tile the flags, weight and change score stage 1 starts from.
+// FrameParams. Writes: per tile the flags, weight, change and focus score stage 1 starts from.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -21,7 +23,8 @@ layout(scalar, binding = kCarryAccumulation) readonly buffer Accumulation { Pixe
 layout(scalar, binding = kCarryTileFlags) buffer TileFlags { uint b_tile_flags[]; };
 layout(scalar, binding = kCarryTileWeights) buffer TileWeights { uint64_t b_tile_weights[]; };
 layout(scalar, binding = kCarryTileChange) buffer TileChange { uint b_tile_change[]; };
-layout(push_constant) uniform Push { uint u_everything; };  // 1: the edit makes every tile active
+layout(scalar, binding = kCarryTileFocus) writeonly buffer TileFocus { uint b_tile_focus[]; };
+layout(push_constant) uniform Push { uint u_mode; };  // kCarryEdit, kCarryEverything or kCarryRefocus
 
 void main() {
   const uint tile = dispatch_index();
@@ -30,7 +33,10 @@ void main() {
   const bool owed = (b_accum[origin.y * u_frame.width + origin.x].count & kPixelOwed) != 0u;
   const uint ranked = b_tile_flags[tile] & (kTileActive | kTileDiscovered);
   const bool carried = owed && ranked != 0u;
-  b_tile_flags[tile] = (u_everything != 0u ? kTileActive : 0u) | (carried ? ranked : 0u);
+  const uint everything = u_mode == kCarryEverything ? kTileActive : 0u;
+  const uint kept = u_mode == kCarryRefocus ? b_tile_flags[tile] & (kTileShown | kTileSettled) : 0u;
+  b_tile_flags[tile] = everything | kept | (carried ? ranked : 0u);
+  b_tile_focus[tile] = 0u;
   if (!carried) {
     b_tile_weights[tile] = 0ul;
     b_tile_change[tile] = 0u;

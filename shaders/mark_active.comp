@@ -8,6 +8,10 @@
 // tiles: 1 per pixel showing a changed element, 2 where the pixel shows another surface than
 // before or than the screen shows (an object moved in or out: the largest changes on screen,
 // while a moved object's own inside often looks much as it did).
+// The focus (docs/method.md#focus) is marked here too: a pixel whose surface now is a focus
+// record, or which lies in a focus disc, makes its tile active and adds its focus weight to the
+// tile's focus score. The focus orders tiles after the edit's (schedule_keys.comp) and
+// restarts nothing.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -24,18 +28,40 @@ layout(scalar, binding = kMarkActiveChangedRecords) readonly buffer Changed { ui
 layout(scalar, binding = kMarkActiveTileFlags) buffer TileFlags { uint b_tile_flags[]; };
 layout(scalar, binding = kMarkActiveTileChange) buffer TileChange { uint b_tile_change[]; };
 layout(scalar, binding = kMarkActiveDisplay) readonly buffer Display { DisplayTexel b_display[]; };
+layout(scalar, binding = kMarkActiveFocusDiscs) readonly buffer FocusDiscs { FocusDisc b_focus_discs[]; };
+layout(scalar, binding = kMarkActiveTileFocus) buffer TileFocus { uint b_tile_focus[]; };
+// u_everything: the edit activates every tile (carry_tiles.comp did); a surface shown wrongly
+// then scores nothing: it is everywhere (a camera move), and would bury the focus's order.
+layout(push_constant) uniform Push {
+  uint u_focusDiscs;
+  uint u_everything;
+};
 
-bool changed(uint record) { return record != kInvalidIndex && b_changed_records[record] != 0u; }
+bool changed(uint record) { return record != kInvalidIndex && (b_changed_records[record] & kRecordChanged) != 0u; }
+
+// The summed focus weight of a pixel: its surface's, and every disc's it lies in.
+uint focus_weight(uvec2 pixel, uint record) {
+  uint weight = record != kInvalidIndex ? b_changed_records[record] >> kFocusWeightShift : 0u;
+  const vec2 centre = vec2(pixel) + 0.5;
+  for (uint i = 0u; i < min(u_focusDiscs, kMaxFocusDiscs); ++i) {
+    const FocusDisc disc = b_focus_discs[i];
+    if (distance(centre, disc.center) <= disc.radius) weight += disc.weight;
+  }
+  return min(weight, kFocusPixelMax);
+}
 
 void main() {
   const uint index = dispatch_index();
   if (index >= u_frame.width * u_frame.height) return;
   const uint now = b_gbuffer[index].record, before = b_previous[index].record;
   const uint shown = b_display[index].shownRecord;
-  const bool wrongSurface = shown != kRecordUnknown && shown != now;
-  if (!changed(now) && !changed(before) && !wrongSurface) return;
+  const bool wrongSurface = u_everything == 0u && shown != kRecordUnknown && shown != now;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
+  const bool edited = changed(now) || changed(before) || wrongSurface;
+  const uint focus = focus_weight(pixel, now);
+  if (!edited && focus == 0u) return;
   const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
   atomicOr(b_tile_flags[tile], kTileActive);
-  atomicAdd(b_tile_change[tile], now != before || wrongSurface ? 2u : 1u);
+  if (edited) atomicAdd(b_tile_change[tile], now != before || wrongSurface ? 2u : 1u);
+  if (focus != 0u) atomicAdd(b_tile_focus[tile], focus);
 }

@@ -6,8 +6,9 @@
 //         share of the sum (HIPR_LIGHT_GROUPS > 0), the difference records (HIPR_DIFFERENCE 1: the
 //         first samples' values and, after an edit, their differences from the old scene's; reads
 //         the display's stale estimate for their weights) and the ray/sample counters.
-// One invocation owns one pixel for the whole dispatch and adds `samplesPerPixel` samples
-// whose indices continue the pixel's count, so results never depend on tile order.
+// One invocation owns one pixel for the whole dispatch and adds `samplesPerPixel` samples (or,
+// with a `sampleTarget`, what the pixel lacks of it) whose indices continue the pixel's count,
+// so results never depend on tile order.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_ray_query : require
 #extension GL_EXT_scalar_block_layout : require
@@ -333,6 +334,12 @@ void main() {
       b_tile_background[(pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize] != 0u;
   PixelAccum accum = b_accum[pixelIndex];
   const bool restart = (accum.count & kPixelOwed) != 0u;  // first visit since an edit
+  // With a round target the visit adds what the pixel lacks of it: a round the scheduler
+  // re-planned midway (a new focus) still leaves every pixel with the same count.
+  const uint have = restart ? 0u : accum.count;
+  const uint samples = u_push.sampleTarget == 0u ? u_push.samplesPerPixel
+                                                 : (have >= u_push.sampleTarget ? 0u : u_push.sampleTarget - have);
+  if (samples == 0u) return;
   if (restart) accum = PixelAccum(vec3(0.0), 0u, vec3(0.0));
 #if HIPR_LIGHT_GROUPS > 0
   vec3 groupSums[HIPR_LIGHT_GROUPS];
@@ -358,7 +365,7 @@ void main() {
   // Samples finish in index order, so the sum is the same whatever the dispatch size.
   uint finished = 0u;
   PathState path = start_path(pixel, accum.count);
-  while (finished < u_push.samplesPerPixel) {
+  while (finished < samples) {
     if (!path_step(path, backgroundTile, rays)) continue;
     const vec3 value = path.radiance;
     const bool finite = !any(isnan(value)) && !any(isinf(value));
@@ -376,9 +383,9 @@ void main() {
 #endif
     }
     finished += 1u;
-    if (finished < u_push.samplesPerPixel) path = start_path(pixel, accum.count + finished);
+    if (finished < samples) path = start_path(pixel, accum.count + finished);
   }
-  accum.count += u_push.samplesPerPixel;
+  accum.count += samples;
   b_accum[pixelIndex] = accum;
 #if HIPR_DIFFERENCE
   if (noteSamples) b_difference[pixelIndex] = record;
@@ -388,6 +395,6 @@ void main() {
 #endif
 
   atomicAdd(b_stats.rays, uint64_t(rays));
-  atomicAdd(b_stats.samples, uint64_t(u_push.samplesPerPixel));
+  atomicAdd(b_stats.samples, uint64_t(samples));
   if (nonFinite > 0u) atomicAdd(b_stats.nonFiniteSamples, nonFinite);
 }

@@ -357,6 +357,43 @@ TEST(Replay, EnvironmentSwitchEndsOnARenderOfTheNewLight) {
   }
 }
 
+// Focus ops (docs/method.md#focus) order the re-render of the edits after them and change
+// nothing else: hipr with a focus ends on the image every other policy ends on.
+TEST(Replay, FocusOpsChangeTheOrderOnly) {
+  const fs::path dir = test::temp_dir("replay_focus");
+  const fs::path script = dir / "focus.json";
+  std::ofstream(script) << R"({"edits": [
+      {"op": "focus", "node": "tall_block"},
+      {"op": "transform", "node": "short_block", "translate": [0.05, 0, 0]},
+      {"op": "focus", "pixel": [20, 8], "radius": 6, "weight": 2},
+      {"op": "material", "material": "red", "set": {"base_color": [0.1, 0.2, 0.7]}},
+      {"op": "focus", "clear": true}]})";
+  const std::string common = quoted(test::asset("cornell_box.gltf")) + " " + quoted(script) +
+                             " --width 32 --height 32 --spp 2 --tile 8 --max-depth 4 -q";
+  std::vector<float> reference;
+  for (const char* policy : {"hipr", "full"}) {
+    const fs::path out = dir / policy;
+    const test::CommandResult result = test::run_hipr("replay " + common + " -o " + quoted(out) + " --policy " + policy);
+    ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+    const ImageRGB final_image = read_image(out / "final.exr");
+    if (reference.empty()) reference = final_image.rgb;
+    EXPECT_EQ(final_image.rgb, reference) << policy;
+    std::ifstream summary_file(out / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(summary_file);
+    ASSERT_EQ(summary.at("edits").size(), 5u);
+    EXPECT_EQ(summary["edits"][0].at("focus"), "tall_block");
+    EXPECT_EQ(summary["edits"][2].at("focus"), "tall_block; disc (20, 8) r 6 x2");
+    EXPECT_EQ(summary["edits"][4].at("focus"), "none");
+  }
+  const fs::path bad = dir / "bad.json";
+  std::ofstream(bad) << R"({"edits": [{"op": "focus", "node": "teapot"}]})";
+  const test::CommandResult result =
+      test::run_hipr("replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(bad) + " -o " + quoted(dir / "x"));
+  expect_one_error_line(result);
+  EXPECT_NE(result.output.find("teapot"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "x"));
+}
+
 TEST(Replay, BadPolicyOrUnknownNameWritesNothing) {
   const fs::path dir = test::temp_dir("replay-bad");
   const fs::path script = dir / "edits.json";
@@ -425,7 +462,7 @@ TEST(Bench, WritesCurvesSummaryAndPlot) {
   std::ifstream curves_file(dir / "a" / "curves.csv");
   std::string header;
   std::getline(curves_file, header);
-  EXPECT_EQ(header, "edit,policy,step,work,wall_ms,relmse,flip");
+  EXPECT_EQ(header, "edit,policy,step,work,wall_ms,relmse,flip,focus_relmse");
 
   // Again, with the references from the cache: the same errors (wall times aside).
   ASSERT_EQ(test::run_hipr(command + quoted(dir / "b")).exit_code, kExitOk);
@@ -465,6 +502,46 @@ TEST(Bench, DragMeasuresDuringAndAfterTheDrag) {
                            quoted(test::asset("cornell_box.edits.json")) + " --drag -1 -o " + quoted(dir / "bad"))
                 .exit_code,
             kExitBadInput);
+}
+
+// `hipr bench --cold-start` with a focus: the scene from nothing, then a camera edit, each
+// measured for hipr with and without the focus, the focus region's error beside the frame's.
+TEST(Bench, ColdStartAndCameraEditWithAFocus) {
+  const fs::path dir = test::temp_dir("bench_focus");
+  const fs::path script = dir / "focus.json";
+  std::ofstream(script) << R"({"edits": [{"op": "focus", "node": "tall_block"},
+                                         {"op": "camera", "translate": [0.02, 0, 0]}]})";
+  const std::string flags = " --policies hipr,full --width 24 --height 24 --tile 8 --spp 2 --ref-spp 8 --max-depth 3 -q"
+                            " --no-ref-cache";
+  const test::CommandResult result = test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " +
+                                                    quoted(script) + " --cold-start" + flags + " -o " + quoted(dir / "a"));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  std::ifstream summary_file(dir / "a" / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(summary_file);
+  ASSERT_EQ(summary.at("edits").size(), 2u);
+  EXPECT_EQ(summary["edits"][0].at("name"), "cold start");
+  EXPECT_EQ(summary["edits"][1].at("name"), "camera");
+  for (const auto& edit : summary.at("edits")) {
+    const auto& policies = edit.at("policies");
+    ASSERT_EQ(policies.size(), 3u);
+    const double final_relmse = policies.at("hipr").at("final_relmse");
+    for (const char* name : {"hipr", "full", "hipr+focus"}) {
+      const auto& p = policies.at(name);
+      EXPECT_TRUE(p.at("converged").get<bool>()) << name;
+      EXPECT_GE(p.at("auc_focus_relmse").get<double>(), 0.0) << name;
+      EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse) << name << ": the focus changes the order only";
+    }
+  }
+  EXPECT_GT(summary.at("ratios").at("hipr+focus_vs_hipr_auc_focus_relmse").get<double>(), 0.0);
+  // A drag measures edits only; a script of focus ops alone measures nothing without --cold-start.
+  expect_one_error_line(test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(script) +
+                                       " --drag 0.5" + flags + " -o " + quoted(dir / "b")));
+  const fs::path only_focus = dir / "only.json";
+  std::ofstream(only_focus) << R"({"edits": [{"op": "focus", "node": "tall_block"}]})";
+  expect_one_error_line(test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(only_focus) +
+                                       flags + " -o " + quoted(dir / "c")));
+  EXPECT_FALSE(fs::exists(dir / "b"));
+  EXPECT_FALSE(fs::exists(dir / "c"));
 }
 
 // ---- hipr compare: for screenshot-regression suites

@@ -182,6 +182,51 @@ TEST(EditScript, BadEnvironmentEditsNameTheProblem) {
   EXPECT_THROW(apply_edit(scene, edits[0]), InputError);
 }
 
+// Focus ops (docs/method.md#focus): seeds for HiPR's order, not changes of the scene.
+TEST(EditScript, FocusOpsParseAndChangeNoScene) {
+  const auto edits = parse_edit_script(R"({"edits": [
+      {"op": "focus", "node": "tall_block"},
+      {"op": "focus", "pixel": [12, 40.5], "radius": 8, "weight": 2.5},
+      {"op": "focus", "node": "short_block", "pixel": [1, 2], "radius": 3},
+      {"op": "focus", "clear": true}]})",
+                                       "e");
+  ASSERT_EQ(edits.size(), 4u);
+  const auto& node = std::get<FocusEdit>(edits[0]);
+  EXPECT_EQ(node.node, "tall_block");
+  EXPECT_FALSE(node.pixel);
+  EXPECT_EQ(node.weight, 1.0f);
+  const auto& disc = std::get<FocusEdit>(edits[1]);
+  EXPECT_EQ(disc.pixel, glm::vec2(12.0f, 40.5f));
+  EXPECT_EQ(disc.radius, 8.0f);
+  EXPECT_EQ(disc.weight, 2.5f);
+  EXPECT_TRUE(std::get<FocusEdit>(edits[3]).clear);
+  EXPECT_EQ(describe(edits[0]), "focus tall_block");
+  EXPECT_EQ(describe(edits[1]), "focus pixel (12, 40.5) radius 8");
+  EXPECT_EQ(describe(edits[3]), "focus clear");
+  const Scene base = cornell();
+  Scene scene = base;
+  for (const Edit& edit : edits) {
+    EXPECT_TRUE(is_focus(edit));
+    apply_edit(scene, inverse_edit(scene, edit));
+    apply_edit(scene, edit);
+    EXPECT_TRUE(diff_scenes(base, scene).empty()) << describe(edit);
+  }
+  EXPECT_THROW(apply_edit(scene, FocusEdit{.node = "nowhere"}), InputError);
+}
+
+TEST(EditScript, BadFocusOpsNameTheProblem) {
+  expect_input_error(R"({"edits": [{"op": "focus"}]})", "needs");
+  expect_input_error(R"({"edits": [{"op": "focus", "pixel": [1, 2]}]})", "radius");
+  expect_input_error(R"({"edits": [{"op": "focus", "pixel": [1, 2], "radius": 0}]})", "radius");
+  expect_input_error(R"({"edits": [{"op": "focus", "pixel": [1], "radius": 3}]})", "pixel");
+  expect_input_error(R"({"edits": [{"op": "focus", "radius": 3, "node": "a"}]})", "radius");
+  expect_input_error(R"({"edits": [{"op": "focus", "node": "a", "weight": 0}]})", "weight");
+  expect_input_error(R"({"edits": [{"op": "focus", "node": "a", "weight": 1e9}]})", "weight");
+  expect_input_error(R"({"edits": [{"op": "focus", "clear": false}]})", "clear");
+  expect_input_error(R"({"edits": [{"op": "focus", "clear": true, "node": "a"}]})", "clear");
+  expect_input_error(R"({"edits": [{"op": "focus", "node": "a", "zoom": 2}]})", "zoom");
+}
+
 TEST(SceneDiff, EnvironmentEditRestartsEverythingAndRebuildsLightTables) {
   const Scene base = sky_scene();
   Scene s = base;

@@ -15,14 +15,20 @@
 namespace hipr {
 namespace {
 
-// HiPR's stages as calls: stage 1 reports `active` tiles.
+// HiPR's stages as calls: stage 1 reports `active` tiles (stage1_focus `focus_active`).
 struct FakeStages final : HiprStageRunner {
-  uint32_t active = 3;
-  uint32_t stage1_calls = 0, schedule_builds = 0;
+  uint32_t active = 3, focus_active = 2;
+  uint32_t stage1_calls = 0, focus_calls = 0, schedule_builds = 0;
   std::vector<std::pair<uint32_t, uint32_t>> stage2;  // (offset, count) per call
+  Focus focus;
   uint32_t stage1_visibility(const ChangeSet&) override {
     ++stage1_calls;
     return active;
+  }
+  void set_focus(const Focus& f) override { focus = f; }
+  uint32_t stage1_focus() override {
+    ++focus_calls;
+    return focus_active;
   }
   void stage2_discover(uint32_t offset, uint32_t count, uint32_t, std::optional<DisplayRule>) override {
     stage2.emplace_back(offset, count);
@@ -30,9 +36,14 @@ struct FakeStages final : HiprStageRunner {
   void build_schedule() override { ++schedule_builds; }
 };
 
-// A renderer that renders nothing: it keeps the schedule and logs the calls.
+// A renderer that renders nothing: it keeps the schedule and per tile a sample count (as the
+// trace kernel counts: a restart at the first visit after an edit, the round target), and logs
+// the calls.
 struct FakeRenderer final : ProgressiveRenderer {
   TileGrid grid{32, 24, 8, 4, 3, 5};
+  std::vector<uint32_t> tile_samples = std::vector<uint32_t>(12, 0);
+  std::vector<bool> tile_owed = std::vector<bool>(12, false);
+  uint32_t target = 0;
   std::vector<uint32_t> order;
   std::vector<uint32_t> rendered;       // tile ids, in the order rendered
   std::vector<uint32_t> samples_given;  // spp per render_schedule call
@@ -48,12 +59,31 @@ struct FakeRenderer final : ProgressiveRenderer {
   void render_schedule(uint32_t offset, uint32_t count, uint32_t spp, bool,
                        std::optional<DisplayRule> then_resolve) override {
     count = std::min(count, grid.tile_count() - offset);
-    for (uint32_t i = offset; i < offset + count; ++i) rendered.push_back(order[i]);
-    samples += uint64_t(count) * grid.tile_size * grid.tile_size * spp;
+    for (uint32_t i = offset; i < offset + count; ++i) {
+      const uint32_t tile = order[i];
+      rendered.push_back(tile);
+      const uint32_t have = tile_owed[tile] ? 0 : tile_samples[tile];
+      const uint32_t add = target == 0 ? spp : (have >= target ? 0 : target - have);
+      tile_samples[tile] = have + add;
+      tile_owed[tile] = false;
+      samples += uint64_t(add) * grid.tile_size * grid.tile_size;
+    }
     samples_given.push_back(spp);
     step_rules.push_back(then_resolve);
   }
-  void mark_all_owed() override { ++owed_marks; }
+  void mark_all_owed() override {
+    ++owed_marks;
+    tile_owed.assign(tile_owed.size(), true);
+  }
+  void set_sample_target(uint32_t t) override { target = t; }
+  std::pair<uint32_t, uint32_t> sample_count_range() const override {
+    uint32_t fewest = UINT32_MAX, most = 0;
+    for (size_t t = 0; t < tile_samples.size(); ++t) {
+      fewest = std::min(fewest, tile_owed[t] ? 0 : tile_samples[t]);
+      most = std::max(most, tile_owed[t] ? 0 : tile_samples[t]);
+    }
+    return {fewest, most};
+  }
   void resolve_display_all(DisplayRule rule) override { whole_resolves.push_back(rule); }
   void capture_stale_display() override { ++captures; }
   ImageRGB displayed_image() const override { return {grid.width, grid.height, {}}; }
@@ -115,6 +145,41 @@ TEST(SchedulingInterface, HiprRendersItsActiveTilesAsLeadingStepsThenTheSortedRe
   scheduler.step();
   EXPECT_EQ(renderer.rendered, (std::vector<uint32_t>{8, 7}));  // entries 3 and 4 of the order
   for (const auto& rule : renderer.step_rules) EXPECT_EQ(rule, DisplayRule::Difference);  // hipr's own rule
+}
+
+// A focus (docs/method.md#focus) re-plans at once without capturing, restarting or updating
+// anything; its stage-2 steps lead; the round under way ends with every tile at one count.
+TEST(SchedulingInterface, AFocusReplansWithoutRestartingAndEndsTheRoundEven) {
+  FakeRenderer renderer;
+  renderer.stages.emplace();
+  std::vector<uint32_t> sorted(12);
+  std::iota(sorted.begin(), sorted.end(), 0u);
+  Scheduler scheduler(renderer, Policy::Hipr, 5);
+  renderer.set_schedule(sorted);
+  scheduler.step();  // 5 tiles of a pass before any focus: no round target yet, 1 sample each
+  EXPECT_EQ(renderer.target, 0u);
+  const Focus focus{{FocusSeed{.pixel = glm::vec2(3.0f, 4.0f), .radius = 2.0f}}};
+  scheduler.set_focus(focus);
+  EXPECT_EQ(renderer.stages->focus, focus);
+  EXPECT_EQ(renderer.stages->focus_calls, 1u);
+  EXPECT_EQ(renderer.stages->schedule_builds, 1u);
+  EXPECT_EQ(renderer.captures, 0u);
+  EXPECT_EQ(renderer.owed_marks, 0u);
+  EXPECT_EQ(renderer.scene_updates, 0u);
+  EXPECT_EQ(renderer.target, 1u);  // counts 0 and 1: the round under way is the one to 1
+  EXPECT_TRUE(scheduler.leading_steps_pending());
+  scheduler.step();  // stage 2 over the focus's two tiles
+  EXPECT_EQ(renderer.stages->stage2.back(), (std::pair<uint32_t, uint32_t>{0, 2}));
+  EXPECT_FALSE(scheduler.leading_steps_pending());
+  EXPECT_EQ(renderer.stages->schedule_builds, 2u);
+  for (int s = 0; s < 2; ++s) scheduler.step();  // the rest of the round: tiles 2..11
+  for (uint32_t t = 2; t < 12; ++t) EXPECT_EQ(renderer.tile_samples[t], 1u) << t;  // none ran ahead
+  EXPECT_EQ(renderer.target, 2u);  // the next round
+  // The scheduler keeps the focus; an empty one clears it (and plans again).
+  EXPECT_EQ(scheduler.focus(), focus);
+  scheduler.set_focus({});
+  EXPECT_TRUE(renderer.stages->focus.empty());
+  EXPECT_EQ(renderer.stages->focus_calls, 2u);
 }
 
 TEST(SchedulingInterface, HiprNeedsARendererWithItsStages) {

@@ -462,6 +462,40 @@ TEST(Session, ViewerSettingsKeepTheScene) {
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), session.settings()).rgb);
 }
 
+// The selected object is the focus by default (docs/method.md#focus): the scheduler follows
+// the view's seeds and a script's focus ops, a new focus restarts nothing and is not an undo
+// step, and the render still ends on the full-frame image.
+TEST(Session, FollowsTheSelectionAsItsFocus) {
+  const SessionSettings s = small_settings();
+  Session session(test::context(), cornell(), s);
+  session.render(1e9, 3);  // part of the first pass, from nothing
+  ViewerState state;
+  state.selected_node = int(node_index(session.scene(), "tall_block"));
+  session.set_view_focus(view_focus(session.scene(), state, std::nullopt));
+  ASSERT_EQ(session.focus().seeds.size(), 1u);
+  EXPECT_FALSE(session.focus().seeds[0].instances.empty());
+  state.focus_cursor = true;
+  state.focus_radius = 5.0f;
+  session.set_view_focus(view_focus(session.scene(), state, glm::vec2(10.5f, 12.5f)));
+  ASSERT_EQ(session.focus().seeds.size(), 2u);
+  EXPECT_EQ(session.focus().seeds[1].pixel, glm::vec2(10.5f, 12.5f));
+  state.focus_selection = false;
+  EXPECT_EQ(view_focus(session.scene(), state, std::nullopt).seeds.size(), 0u);
+  session.edit(FocusEdit{.node = "short_block"});  // a script's op: kept beside the view's seeds
+  EXPECT_EQ(session.focus().seeds.size(), 3u);
+  EXPECT_FALSE(session.history().can_undo()) << "a focus is not an edit of the scene";
+  EXPECT_TRUE(session.edit_records().empty());
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
+  // A new policy keeps the focus; an edit re-renders with it and still ends exactly.
+  session.set_policy(Policy::Full);
+  session.set_policy(Policy::Hipr);
+  EXPECT_EQ(session.focus().seeds.size(), 3u);
+  session.edit(TransformEdit{"short_block", glm::vec3(0.04f, 0.0f, 0.0f), std::nullopt});
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
+}
+
 // A scene without a camera gets one, so moving an object does not move the framing camera.
 TEST(Session, ASceneWithoutACameraGetsItsDefaultCamera) {
   Session session(test::context(), test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f),

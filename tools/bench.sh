@@ -95,6 +95,24 @@ if [ -d "$shared" ]; then
   lights SheenChair "$shared/SheenChair/SheenChair.gltf" tools/bench/SheenChair.lights.json --env "$studio"
 fi
 
+# Attention-guided rendering (tools/bench/*.focus.json): the scene from nothing (--cold-start)
+# and camera edits, hipr with and without the script's focus, the focus region measured.
+# Results in OUTDIR/focus_*.
+focus() {
+  local name=$1
+  shift
+  echo "== focus $name"
+  rm -rf "${out:?}/focus_$name"
+  build/hipr bench "$@" -o "$out/focus_$name" --width "$size" --height "$size" --spp "$spp" --cold-start \
+    --policies hipr,full
+}
+focus cornell_box assets/scenes/cornell_box.gltf tools/bench/cornell_box.focus.json
+focus cornell_sphere assets/scenes/cornell_sphere.glb tools/bench/cornell_sphere.focus.json
+if [ -d "$shared" ]; then
+  focus CornellBox "$shared/CornellBox/cornellBox.gltf" tools/bench/CornellBox.focus.json
+  focus SheenChair "$shared/SheenChair/SheenChair.gltf" tools/bench/SheenChair.focus.json --env "$studio"
+fi
+
 # Throughput: three interleaved rounds, so a noisy neighbour hits every configuration alike.
 render() {
   local name=$1 scene=$2

@@ -115,6 +115,27 @@ def lights_table(lights):
     return lines
 
 
+def focus_table(focuses):
+    """Attention-guided rendering (focus ops, --cold-start): the focus region's relMSE AUC(1)."""
+    lines = ["#### Focus: relMSE of the focus region over the first work unit, hipr with and without the focus", "",
+             "| scene | measured | hipr+focus | hipr | full | hipr+focus / hipr | frame: hipr+focus | frame: hipr |",
+             "|---|---|" + "---:|" * 6]
+    ratios = []
+    for scene, summary in focuses:
+        for edit in summary["edits"]:
+            p = edit["policies"]
+            if "hipr+focus" not in p:
+                continue
+            f, h = num(p["hipr+focus"]["auc_focus_relmse"]), num(p["hipr"]["auc_focus_relmse"])
+            full = num(p["full"]["auc_focus_relmse"]) if "full" in p else float("nan")
+            ratios.append(f / h if h else float("nan"))
+            lines.append(f"| {scene} | {edit['name']} | {f:.4g} | {h:.4g} | {full:.4g} | {f / h:.3f} "
+                         f"| {num(p['hipr+focus']['auc_relmse']):.4g} | {num(p['hipr']['auc_relmse']):.4g} |")
+    if ratios:
+        lines += ["", f"hipr+focus / hipr in the focus region, geometric mean: {geomean(ratios):.3f}"]
+    return lines
+
+
 def difference_table(summaries, blends):
     """hipr with its difference estimate (the default display) against hipr with blend (the
     ablation, OUTDIR/blend_<scene>) and full: relMSE and FLIP AUC(1), relMSE AUC(4)."""
@@ -177,12 +198,14 @@ def throughput_lines(folder):
 def main(argv):
     if len(argv) != 2:
         sys.exit(__doc__)
-    summaries, drags, lights, blends = [], [], {}, {}
+    summaries, drags, lights, blends, focuses = [], [], {}, {}, []
     for path in sorted(glob.glob(os.path.join(argv[1], "*", "summary.json"))):
         with open(path) as f:
             name = os.path.basename(os.path.dirname(path))
             if name.startswith("blend_"):
                 blends[name.removeprefix("blend_")] = json.load(f)
+            elif name.startswith("focus_"):
+                focuses.append((name.removeprefix("focus_"), json.load(f)))
             elif name.startswith("lights_"):
                 scene, _, variant = name.removeprefix("lights_").rpartition("_")
                 lights.setdefault(scene, {})[variant] = json.load(f)
@@ -201,6 +224,8 @@ def main(argv):
         out += drag_table(drags) + [""]
     if lights:
         out += lights_table(lights) + [""]
+    if focuses:
+        out += focus_table(focuses) + [""]
     out += throughput_lines(argv[1])
     print("\n".join(out))
 

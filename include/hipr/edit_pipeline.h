@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "hipr/edits.h"
+#include "hipr/focus.h"
 #include "hipr/scene.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scheduler.h"
@@ -21,14 +22,18 @@ class EditPipeline {
   EditPipeline(Scene& scene, Scheduler& scheduler) : m_scene(scene), m_scheduler(scheduler) {}
 
   // Applies the edit (InputError for an unknown name or key, the scene then unchanged) and,
-  // when it changed anything, lets the scheduler re-render. Returns what changed.
+  // when it changed anything, lets the scheduler re-render. Returns what changed. A focus op
+  // changes nothing: it updates the focus the scheduler follows (Scheduler::set_focus).
   ChangeSet apply(const Edit& edit);
   // The same for any change of the scene (an undo or redo of the viewer's history).
   ChangeSet apply(const std::function<void(Scene&)>& change);
+  // The focus the script's focus ops have made so far.
+  const Focus& focus() const { return m_focus; }
 
  private:
   Scene& m_scene;
   Scheduler& m_scheduler;
+  Focus m_focus;
 };
 
 }  // namespace hipr

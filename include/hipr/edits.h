@@ -73,9 +73,24 @@ struct EnvironmentEdit {
   std::shared_ptr<const std::optional<Environment>> restore;
 };
 
+// Not a change of the scene: where the user looks (docs/method.md#focus), a seed for HiPR's
+// order. A script's focus ops add seeds (a node and its subtree, or a disc on screen, weighted)
+// until one clears them; EditPipeline hands them to the scheduler. Applying one to a scene
+// changes nothing (it checks the node's name), so its inverse is itself.
+struct FocusEdit {
+  std::optional<std::string> node;
+  std::optional<glm::vec2> pixel;  // a disc's centre in pixels (x right, y down)
+  float radius = 0.0f;             // the disc's radius in pixels
+  float weight = 1.0f;
+  bool clear = false;  // drops every seed (and adds none)
+};
+
 // "emission" edits are material edits restricted to emission keys.
 using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit, CameraEdit,
-                          EnvironmentEdit>;
+                          EnvironmentEdit, FocusEdit>;
+
+// Whether the edit is a focus op (no change of the scene).
+inline bool is_focus(const Edit& edit) { return std::holds_alternative<FocusEdit>(edit); }
 
 // Parses an edit script; throws InputError (naming the file and the edit) on any problem.
 std::vector<Edit> load_edit_script(const std::filesystem::path& path);

@@ -5,9 +5,11 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "hipr/display_rule.h"
+#include "hipr/focus.h"
 #include "hipr/image.h"
 #include "hipr/scene.h"
 #include "hipr/scene_diff.h"
@@ -39,9 +41,16 @@ class HiprStageRunner {
   // submission.
   virtual void stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
                                std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
-  // Stage 3: the schedule, sorted on the GPU: active tiles by change score, then discovered
-  // tiles by weight, then the rest by distance to the active set.
+  // Stage 3: the schedule, sorted on the GPU: active tiles by change score (those of the focus
+  // after the edit's, by focus score), then discovered tiles by weight, then the rest by
+  // distance to the seeds.
   virtual void build_schedule() = 0;
+  // The focus every later stage 1 marks besides the edit's changes (docs/method.md#focus).
+  virtual void set_focus(const Focus& focus) = 0;
+  // Stage 1 without an edit (the focus changed): the same tile state as stage1_visibility
+  // (tiles an edit left unrendered keep their rank, the focus's tiles are active), from the
+  // G-buffer as it is; nothing is rendered. Returns |A|.
+  virtual uint32_t stage1_focus() = 0;
 };
 
 class ProgressiveRenderer {
@@ -61,6 +70,13 @@ class ProgressiveRenderer {
                                std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
   // Every pixel owes a restart: its next visit drops its old samples.
   virtual void mark_all_owed() = 0;
+  // The scheduler's round target: from now on a visit brings each pixel to `target` samples
+  // since its last restart, adding none where it has them (0: a visit adds samples_per_pixel,
+  // whatever the pixel has). A round re-planned midway then still ends uniform.
+  virtual void set_sample_target(uint32_t target) = 0;
+  // The fewest and the most samples a pixel has since its last restart (owed pixels count as
+  // 0).
+  virtual std::pair<uint32_t, uint32_t> sample_count_range() const = 0;
 
   // The display: what every pixel shows. At an edit it becomes the stale estimate fresh samples
   // are weighed against; resolves let fresh estimates take over by the display rule.

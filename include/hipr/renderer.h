@@ -119,6 +119,8 @@ class Renderer final : public ProgressiveRenderer {
   void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
                        std::optional<DisplayRule> then_resolve = std::nullopt) override;
   void mark_all_owed() override;
+  void set_sample_target(uint32_t target) override;
+  std::pair<uint32_t, uint32_t> sample_count_range() const override;  // reads the accumulation back
   ImageRGB image() const;                       // per-pixel mean radiance
   std::vector<uint32_t> sample_counts() const;  // per pixel
   RenderCounters counters() const;

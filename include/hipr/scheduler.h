@@ -42,6 +42,15 @@ class Scheduler {
   // Renders one step. Before any edit, steps are ordinary full-frame progressive passes.
   void step();
 
+  // What the user looks at (docs/method.md#focus): from now on, and at every later edit after
+  // the edit's own changes, HiPR starts from where the focus is seen and spreads outward. A new
+  // focus re-plans at once without restarting any pixel: the round under way is completed in
+  // the new order (tiles it already visited get nothing more in it, so every pixel still ends
+  // the round with the same samples), then rounds follow that order. An empty focus clears it.
+  // Policies other than hipr keep their order.
+  void set_focus(const Focus& focus);
+  const Focus& focus() const { return m_focus; }
+
   ImageRGB displayed_image() const { return m_renderer.displayed_image(); }
   // Samples rendered since the last edit, in full-frame 1-spp passes (the work unit of
   // docs/method.md, "Measuring run time against error"). The counters restart at each edit.
@@ -54,7 +63,7 @@ class Scheduler {
   Policy policy() const { return m_policy->id(); }
   // The policy still renders leading steps of its own since the last edit (HiPR: stage 2, whose
   // weights are partial until it ends).
-  bool leading_steps_pending() const { return m_edited && m_leading_cursor < m_leading; }
+  bool leading_steps_pending() const { return m_leading_cursor < m_leading; }
 
  private:
   // How the tiles a step renders are shown (resolved in the step's own submission); none for
@@ -62,6 +71,8 @@ class Scheduler {
   std::optional<DisplayRule> step_display_rule() const;
   // The last schedule entry was rendered: the next step starts a new round at the first.
   void end_round();
+  // The renderer's round target: a visit brings each pixel to it.
+  void set_round_target(uint32_t target);
 
   ProgressiveRenderer& m_renderer;
   std::unique_ptr<SchedulingPolicy> m_policy;
@@ -79,6 +90,10 @@ class Scheduler {
   uint32_t m_leading = 0;          // schedule entries [0, m_leading) are the policy's own steps
   uint32_t m_leading_cursor = 0;   // the next of them
   double m_overhead_seconds = 0.0;
+  // The samples every pixel has when the round under way ends; unknown before the first edit
+  // or focus (the renderer may have been given samples outside the scheduler).
+  std::optional<uint32_t> m_round_target;
+  Focus m_focus;
 };
 
 // Tiles per step when none is given: a sixteenth of the frame, as `hipr replay` and `hipr

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hipr/display_rule.h"
+#include "hipr/focus.h"
 #include "hipr/progressive_renderer.h"
 #include "hipr/scene_diff.h"
 
@@ -60,6 +61,13 @@ class SchedulingPolicy {
   }
   // After the last leading entry: orders the rest (HiPR: stage 3, from stage 2's weights).
   virtual void finish_leading(ProgressiveRenderer& renderer) { (void)renderer; }
+  // The user's focus changed (docs/method.md#focus; no edit: nothing restarts). A policy that
+  // follows it keeps it for every later plan, re-plans now and returns its leading entries as
+  // plan() does; the others return nothing and keep their order.
+  virtual std::optional<uint32_t> refocus(ProgressiveRenderer& renderer, const Focus& focus) {
+    (void)renderer, (void)focus;
+    return std::nullopt;
+  }
 };
 
 // hipr, full, scanline, spiral or random; the oracle needs a reference image and throws

@@ -28,6 +28,14 @@ HIPR_CONST uint kTileDiscovered = 2u;  // reached by a secondary vertex or occlu
 HIPR_CONST uint kTileShown = 4u;       // since the last edit, the display has shown this tile's fresh estimate (weight >= 1/2)
 HIPR_CONST uint kTileSettled = 8u;     // the display shows the fresh estimate alone, until the next edit
 HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
+// Stage 1's changed-record flags: bit 0 the record is in the changed set E, the bits above
+// its focus weight (kFocusWeightScale units; 0: not a focus).
+HIPR_CONST uint kRecordChanged = 1u;
+HIPR_CONST uint kFocusWeightShift = 1u;
+HIPR_CONST float kFocusWeightScale = 16.0f;
+HIPR_CONST uint kFocusWeightMax = 16000u;       // a seed's weight, fixed point (1000 x the scale)
+HIPR_CONST uint kFocusPixelMax = 0x7fffu;       // a pixel's summed focus weight (tile sums stay in 32 bits)
+HIPR_CONST uint kMaxFocusDiscs = 16u;
 HIPR_CONST uint kSortBlock = 256u;     // keys per workgroup in the radix sort
 HIPR_CONST uint kSortRadix = 256u;     // 8-bit digits
 
@@ -320,6 +328,17 @@ struct TracePush {
   uint groupsPerTile;    // workgroups needed to cover one tile
   uint requireFlags;     // render only tiles whose flags have all of these bits
   uint skipFlags;        // skip tiles whose flags have any of these bits
+  // 0: every pixel gets samplesPerPixel more. Otherwise the scheduler's round target: a pixel
+  // gets what it lacks of this many samples (none when it has them), so a re-planned round
+  // leaves every pixel with the same count (docs/method.md#focus).
+  uint sampleTarget;
+};
+
+// Stage 1's focus (docs/method.md#focus): a disc on screen whose pixels are seeds.
+struct FocusDisc {
+  vec2 center;  // pixels, x right, y down (a pixel's centre is at + 0.5)
+  float radius;  // pixels
+  uint weight;   // fixed point, kFocusWeightScale units
 };
 
 // Per-dispatch parameters of resolve_display.comp: which schedule entries to resolve (as

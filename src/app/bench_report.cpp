@@ -35,6 +35,8 @@ nlohmann::json policy_summary(const bench::PolicyRun& run) {
     j[auc_key("relmse", h)] = bench::error_auc(run.curve, bench::Metric::RelMse, h);
     j[auc_key("flip", h)] = bench::error_auc(run.curve, bench::Metric::Flip, h);
   }
+  if (!run.curve.empty() && run.curve.front().focus_relmse >= 0.0)  // the focus region's own error
+    for (double h : kHorizons) j[auc_key("focus_relmse", h)] = bench::error_auc(run.curve, bench::Metric::FocusRelMse, h);
   const auto or_null = [](double v) {
     return v < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(v);
   };
@@ -63,14 +65,18 @@ nlohmann::json policy_summary(const bench::PolicyRun& run) {
   return j;
 }
 
-// Geometric mean over edits of a / b for one summary key; null when a policy is missing.
+// Geometric mean over edits of a / b for one summary key; null when a policy is missing (with
+// `only_where_run`: over the edits that ran both).
 nlohmann::json ratio(const nlohmann::json& edits, const std::string& a, const std::string& b,
-                     const std::string& key) {
+                     const std::string& key, bool only_where_run = false) {
   double log_sum = 0.0;
   int count = 0;
   for (const auto& edit : edits) {
     const auto& p = edit.at("policies");
-    if (!p.contains(a) || !p.contains(b)) return nullptr;
+    if (!p.contains(a) || !p.contains(b) || !p.at(a).contains(key) || !p.at(b).contains(key)) {
+      if (only_where_run) continue;
+      return nullptr;
+    }
     const double x = p.at(a).at(key), y = p.at(b).at(key);
     if (!(x > 0.0) || !(y > 0.0)) continue;  // an exact image has no ratio to speak of
     log_sum += std::log(x / y);
@@ -113,17 +119,24 @@ nlohmann::json BenchReport::summary() const {
         if (drag) ratios[std::string("hipr_vs_") + other + "_" + key] = ratio(edits, "hipr", other, key);
       }
     }
+  // Attention-guided rendering: the focus region's error with the focus against without.
+  for (double h : kHorizons) {
+    const std::string key = auc_key("focus_relmse", h);
+    bool measured = false;
+    for (const auto& edit : edits) measured = measured || edit.at("policies").contains(kFocusedHipr);
+    if (measured) ratios[std::string(kFocusedHipr) + "_vs_hipr_" + key] = ratio(edits, kFocusedHipr, "hipr", key, true);
+  }
   return {{"scene", m_scene}, {"settings", m_settings}, {"edits", edits}, {"ratios", ratios}};
 }
 
 void BenchReport::write_curves(const fs::path& path) const {
-  std::string csv = "edit,policy,step,work,wall_ms,relmse,flip\n";
+  std::string csv = "edit,policy,step,work,wall_ms,relmse,flip,focus_relmse\n";
   char line[256];
   for (size_t e = 0; e < m_edits.size(); ++e)
     for (const auto& [name, run] : m_edits[e].runs)
       for (const bench::CurvePoint& p : run.curve) {
-        std::snprintf(line, sizeof line, "%zu,%s,%u,%.6f,%.3f,%.8g,%.8g\n", e + 1, name.c_str(),
-                      p.step, p.work, p.wall_ms, p.relmse, p.flip);
+        std::snprintf(line, sizeof line, "%zu,%s,%u,%.6f,%.3f,%.8g,%.8g,%.8g\n", e + 1, name.c_str(),
+                      p.step, p.work, p.wall_ms, p.relmse, p.flip, p.focus_relmse);
         csv += line;
       }
   write_text_atomically(path, csv);

@@ -10,6 +10,9 @@
 
 namespace hipr::app {
 
+// The name of the run of the hipr policy that follows the focus (the plain "hipr" run has none).
+inline constexpr const char* kFocusedHipr = "hipr+focus";
+
 struct BenchEdit {
   std::string name;
   ImageRGB reference;

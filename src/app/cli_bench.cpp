@@ -20,6 +20,7 @@
 #include "core/log.h"
 #include "core/timer.h"
 #include "hipr/edits.h"
+#include "hipr/focus.h"
 #include "hipr/scene_diff.h"
 #include "shaders/shared/abi.h"
 
@@ -50,6 +51,7 @@ struct BenchOptions {
   bool no_ref_cache = false;
   double drag = 0.0;  // > 0: the edits are one drag, this much work apart (full-frame passes)
   bool no_relight = false;
+  bool cold_start = false;  // measure the render of the scene as loaded, from nothing, first
 };
 
 // The edits' own JSON text, one per edit: with the scene's hash it names a scene state.
@@ -59,6 +61,54 @@ std::vector<std::string> edit_texts(const fs::path& path) {
   std::vector<std::string> texts;
   for (const auto& edit : doc.at("edits")) texts.push_back(edit.dump());
   return texts;
+}
+
+struct PlannedRun {
+  std::string name;
+  Policy policy;
+  Focus focus;
+};
+
+// The listed policies (none follows the focus), then hipr with the focus when there is one
+// and hipr is listed.
+std::vector<PlannedRun> planned_runs(const std::vector<Policy>& policies, const Focus& focus) {
+  std::vector<PlannedRun> runs;
+  for (Policy policy : policies) runs.push_back({policy_name(policy), policy, {}});
+  if (!focus.empty() && std::find(policies.begin(), policies.end(), Policy::Hipr) != policies.end())
+    runs.push_back({kFocusedHipr, Policy::Hipr, focus});
+  return runs;
+}
+
+void log_run(const std::string& name, const bench::PolicyRun& run) {
+  std::string line = "  " + name + ": relMSE AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::RelMse, 1.0)) +
+                     ", FLIP AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::Flip, 1.0));
+  if (!run.curve.empty() && run.curve.front().focus_relmse >= 0.0)
+    line += ", focus region relMSE AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::FocusRelMse, 1.0));
+  log::info(line + ", " + std::to_string(run.wall_seconds) + " s");
+}
+
+// The scene as loaded, rendered from nothing by every policy (and hipr with the focus the
+// script's first ops set): what a user sees after opening it, the focus region measured.
+void run_cold_start_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& renderer, const Scene& scene,
+                          const Focus& focus, const fs::path& cache, const std::vector<Policy>& policies,
+                          bench::PolicyRunOptions run_options, BenchReport& report) {
+  const RenderSettings& settings = o.common.render;
+  const bench::Reference reference = bench::converged_reference(
+      ctx, scene, bench::reference_key(scene, "", settings, o.ref_spp), settings, o.ref_spp, cache);
+  renderer.refresh_gbuffer();
+  run_options.focus_region =
+      focus.empty() ? std::vector<uint8_t>()
+                    : focus_pixels(focus, renderer.gbuffer_instances(), settings.width, settings.height);
+  log::info("cold start" + (focus.empty() ? std::string() : ", the focus " + describe(scene, focus)));
+  BenchEdit& edit_report = report.add_edit("cold start", reference.image, 0, renderer.tile_count());
+  for (const PlannedRun& planned : planned_runs(policies, focus)) {
+    if (planned.policy == Policy::Oracle) continue;  // its order needs an edit to rank
+    run_options.policy = planned.policy;
+    run_options.focus = planned.focus;
+    const bench::PolicyRun run = bench::run_cold_start(renderer, reference.image, run_options);
+    log_run(planned.name, run);
+    edit_report.add_run(planned.name, run);
+  }
 }
 
 // Stage 1's active set for this edit (the tiles where a changed element is visible now or
@@ -149,7 +199,16 @@ int run_bench(BenchOptions& o) {
   if (edits.empty()) throw InputError(o.edits.string() + ": the edit script has no edits");
   {
     Scene probe = scene;  // every name checked before anything renders or is written
-    for (const Edit& edit : edits) apply_edit(probe, edit);
+    Focus focus;
+    for (const Edit& edit : edits) {
+      apply_edit(probe, edit);
+      if (const auto* focus_edit = std::get_if<FocusEdit>(&edit)) focus = with_focus_edit(probe, focus, *focus_edit);
+    }
+    if (std::all_of(edits.begin(), edits.end(), is_focus) && !o.cold_start)
+      throw InputError(o.edits.string() + ": the edit script has only focus ops: nothing to measure without --cold-start");
+    if (o.drag && std::any_of(edits.begin(), edits.end(), is_focus))
+      throw InputError(o.edits.string() + ": --drag takes no focus ops (a drag measures edits only)");
+    if (o.drag && o.cold_start) throw InputError("--cold-start and --drag measure different things: use one");
   }
   const std::vector<std::string> texts = edit_texts(o.edits);
   std::error_code ec;
@@ -201,8 +260,22 @@ int run_bench(BenchOptions& o) {
     report.write();
     return kExitOk;
   }
+  // The focus (docs/method.md#focus) the script's focus ops have made so far: an edit measured
+  // while there is one also runs hipr with it, and every run measures the focus region's error.
+  Focus focus;
+  if (o.cold_start) {
+    for (size_t e = 0; e < edits.size() && is_focus(edits[e]); ++e)  // the focus before any edit
+      focus = with_focus_edit(scene, focus, std::get<FocusEdit>(edits[e]));
+    run_cold_start_bench(o, ctx, renderer, scene, focus, cache, policies, run_options, report);
+  }
+  focus = {};
   std::string state;  // the edits applied so far
   for (size_t e = 0; e < edits.size(); ++e) {
+    if (const auto* focus_edit = std::get_if<FocusEdit>(&edits[e])) {
+      focus = with_focus_edit(scene, focus, *focus_edit);
+      log::info("edit " + std::to_string(e + 1) + ": the focus is " + describe(scene, focus));
+      continue;
+    }
     const Scene before = scene;
     apply_edit(scene, edits[e]);
     state += texts[e];
@@ -223,20 +296,23 @@ int run_bench(BenchOptions& o) {
     const RenderSnapshot start = renderer.snapshot();
     const std::vector<uint32_t> changed =
         changed_tiles_and_warm_up(renderer, start, scene, changes);
+    // The focus region: where the focus is seen in the edited scene (the probe's G-buffer).
+    run_options.focus_region =
+        focus.empty() ? std::vector<uint8_t>()
+                      : focus_pixels(focus, renderer.gbuffer_instances(), settings.width, settings.height);
     BenchEdit& edit_report =
         report.add_edit(name, reference.image, changed.size(), renderer.tile_count());
-    for (Policy policy : policies) {
+    for (const PlannedRun& planned : planned_runs(policies, focus)) {
       renderer.update_scene(before, undo);
-      run_options.policy = policy;
-      run_options.display = display_of(policy);
+      run_options.policy = planned.policy;
+      run_options.display = display_of(planned.policy);
+      run_options.focus = planned.focus;
       const bench::PolicyRun run =
           bench::run_policy(renderer, scene, changes, start, reference.image, changed, run_options);
-      edit_report.add_run(policy_name(policy), run);
-      log::info("  " + policy_name(policy) + ": relMSE AUC(1) " +
-                std::to_string(error_auc(run.curve, bench::Metric::RelMse, 1.0)) +
-                ", FLIP AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::Flip, 1.0)) +
-                ", " + std::to_string(run.wall_seconds) + " s");
+      log_run(planned.name, run);
+      edit_report.add_run(planned.name, run);
     }
+    run_options.focus = {};
   }
   check_validation(ctx);
   report.write();
@@ -279,6 +355,9 @@ Command add_bench_command(CLI::App& app) {
                   "one per frame), measuring against the scene as it is at each step");
   cmd->add_flag("--no-relight", options->no_relight,
                 "hipr: re-render light edits without relighting the converged image (for comparison)");
+  cmd->add_flag("--cold-start", options->cold_start,
+                "First measure the scene as loaded rendered from nothing (with the focus of the script's first "
+                "focus ops, if any)");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_bench(*options); }};
 }

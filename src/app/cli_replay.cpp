@@ -1,6 +1,7 @@
 // `hipr replay SCENE EDITS.json -o OUTDIR --policy P [--dump-steps 1,2,4] [--steps K]`:
 // converges the scene, then applies each edit and runs the policy's scheduling steps,
-// writing the displayed image after chosen steps, the final image and debug images.
+// writing the displayed image after chosen steps, the final image and debug images. Focus ops
+// set the focus (docs/method.md#focus) the edits after them are planned with.
 #include <nlohmann/json.hpp>
 
 #include <set>
@@ -101,6 +102,13 @@ int run_replay(ReplayOptions& o) {
   EditPipeline pipeline(scene, scheduler);
   for (size_t e = 0; e < edits.size(); ++e) {
     non_finite += renderer.counters().non_finite_samples;
+    if (is_focus(edits[e])) {  // no change of the scene: the focus later edits start from
+      pipeline.apply(edits[e]);
+      const std::string focus = describe(scene, pipeline.focus());
+      summary["edits"].push_back({{"edit", describe(edits[e])}, {"focus", focus}, {"steps", 0}});
+      log::info("edit " + std::to_string(e + 1) + " (" + describe(edits[e]) + "): the focus is " + focus);
+      continue;
+    }
     const Timer timer;
     // An edit that changes nothing (a move by zero) re-renders nothing.
     const bool changed = !pipeline.apply(edits[e]).empty();

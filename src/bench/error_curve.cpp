@@ -7,7 +7,12 @@
 namespace hipr::bench {
 
 double metric_of(const CurvePoint& point, Metric metric) {
-  return metric == Metric::RelMse ? point.relmse : point.flip;
+  switch (metric) {
+    case Metric::RelMse: return point.relmse;
+    case Metric::Flip: return point.flip;
+    case Metric::FocusRelMse: return point.focus_relmse;
+  }
+  return point.relmse;
 }
 
 double error_auc(const ErrorCurve& curve, Metric metric, double horizon) {

@@ -16,6 +16,13 @@ bool all_shown(const std::vector<uint32_t>& flags, const std::vector<uint32_t>& 
   return true;
 }
 
+CurvePoint measured(uint32_t step, double work, double wall_seconds, const ImageRGB& shown, const ImageRGB& reference,
+                    const PolicyRunOptions& options) {
+  CurvePoint point{step, work, wall_seconds * 1e3, relmse(shown, reference), flip_mean(shown, reference, options.flip)};
+  if (!options.focus_region.empty()) point.focus_relmse = relmse_masked(shown, reference, options.focus_region);
+  return point;
+}
+
 // The run's totals and the image it ends on; captures not reached take that image.
 void finish(PolicyRun& run, const Scheduler& scheduler, double overhead_seconds, double wall_seconds,
             uint32_t non_finite_samples, const PolicyRunOptions& options) {
@@ -37,14 +44,14 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
   if (options.display) scheduler.set_display_rule(*options.display);
   scheduler.set_first_visit_spp(options.first_visit_spp);
   scheduler.set_relight(options.relight);
+  if (!options.focus.empty()) scheduler.set_focus(options.focus);  // what the user looked at before the edit
 
   PolicyRun run;
   const ImageRGB stale = scheduler.displayed_image();
   const auto evaluate = [&](uint32_t step, double wall_seconds) {
     ImageRGB shown = scheduler.displayed_image();
     const double work = step == 0 ? 0.0 : scheduler.work_since_edit();
-    run.curve.push_back({step, work, wall_seconds * 1e3, relmse(shown, reference),
-                         flip_mean(shown, reference, options.flip)});
+    run.curve.push_back(measured(step, work, wall_seconds, shown, reference, options));
     while (run.captures.size() < options.capture_work.size() &&
            work >= options.capture_work[run.captures.size()])
       run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
@@ -82,6 +89,40 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
       run.changed_tiles_shown_work = work;
       run.changed_tiles_shown_ms = wall * 1e3;
     }
+    if (run.converged) break;
+  }
+  finish(run, scheduler, scheduler.overhead_seconds(), wall, renderer.counters().non_finite_samples, options);
+  return run;
+}
+
+PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const PolicyRunOptions& options) {
+  renderer.reset();
+  renderer.reset_counters();
+  Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step, options.visit_spp);
+  PolicyRun run;
+  double wall = 0.0;
+  const auto evaluate = [&](uint32_t step) {
+    const ImageRGB shown = scheduler.displayed_image();
+    const double work = scheduler.work_since_edit();
+    run.curve.push_back(measured(step, work, wall, shown, reference, options));
+    while (run.captures.size() < options.capture_work.size() && work >= options.capture_work[run.captures.size()])
+      run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
+  };
+  if (!options.focus.empty()) {
+    const Timer timer;
+    scheduler.set_focus(options.focus);
+    wall += timer.seconds();
+  }
+  evaluate(0);
+  for (uint32_t step = 1; options.max_steps == 0 || step <= options.max_steps; ++step) {
+    const Timer timer;
+    scheduler.step();
+    wall += timer.seconds();
+    const double work = scheduler.work_since_edit();
+    run.converged = work >= double(options.target_spp);
+    if (work <= options.dense_until || run.converged || step == options.max_steps ||
+        step % std::max(options.sparse_every, 1u) == 0)
+      evaluate(step);
     if (run.converged) break;
   }
   finish(run, scheduler, scheduler.overhead_seconds(), wall, renderer.counters().non_finite_samples, options);

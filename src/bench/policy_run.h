@@ -26,6 +26,10 @@ struct PolicyRunOptions {
   FlipOptions flip;
   std::vector<double> capture_work = {0.25,
                                       1.0};  // keep the displayed image at these amounts of work
+  Focus focus;  // handed to the scheduler before the edit (docs/method.md#focus); empty: none
+  // One entry per pixel, non-zero in the region whose error is also measured (focus_relmse);
+  // empty: none.
+  std::vector<uint8_t> focus_region;
 };
 
 struct PolicyRun {
@@ -52,6 +56,11 @@ struct PolicyRun {
 PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes,
                      const RenderSnapshot& start, const ImageRGB& reference,
                      const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options);
+
+// From nothing: the renderer's film and display cleared, the scene it holds (`scene`, with
+// its converged render `reference`) rendered by the policy's scheduler with no edit, the focus
+// set first when there is one. Work counts from the empty film.
+PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const PolicyRunOptions& options);
 
 // A drag: the edits one after another, `work_per_edit` apart (steps run until the current
 // edit has that much work: a viewer applies one per frame, and a frame has a budget), then

@@ -1,6 +1,7 @@
 #include "hipr/active_tiles_pass.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "render/film.h"
 #include "shaders/shared/bindings/visibility.h"
@@ -12,13 +13,16 @@ ActiveTilesPass::ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, 
                                  const vk::Buffer& tile_weights, uint32_t pixels)
     : changed_records(ctx, std::max<size_t>(scene.record_count(), 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       tile_change(ctx, size_t(tiles.count()) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      tile_focus(ctx, size_t(tiles.count()) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      m_focus_discs(ctx, sizeof(abi::FocusDisc) * abi::kMaxFocusDiscs, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_pixels(pixels),
       m_tiles(tiles.count()),
       m_carry(ctx, "carry_tiles.comp", {},
               {{abi::kCarryAccumulation, &film.accumulation},
                {abi::kCarryTileFlags, &tiles.flags},
                {abi::kCarryTileWeights, &tile_weights},
-               {abi::kCarryTileChange, &tile_change}},
+               {abi::kCarryTileChange, &tile_change},
+               {abi::kCarryTileFocus, &tile_focus}},
               sizeof(uint32_t), &scene.descriptor_set()),
       m_mark_active(ctx, "mark_active.comp", {},
                     {{abi::kMarkActiveGBuffer, &gbuffers.current},
@@ -26,30 +30,60 @@ ActiveTilesPass::ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, 
                      {abi::kMarkActiveChangedRecords, &changed_records},
                      {abi::kMarkActiveTileFlags, &tiles.flags},
                      {abi::kMarkActiveTileChange, &tile_change},
-                     {abi::kMarkActiveDisplay, &display}},
-                    0, &scene.descriptor_set()) {
+                     {abi::kMarkActiveDisplay, &display},
+                     {abi::kMarkActiveFocusDiscs, &m_focus_discs},
+                     {abi::kMarkActiveTileFocus, &tile_focus}},
+                    2 * sizeof(uint32_t), &scene.descriptor_set()) {
   tile_change.clear();
+  tile_focus.clear();
+  m_focus_discs.clear();
 }
 
-void ActiveTilesPass::record_carry(VkCommandBuffer cmd, bool everything) const {
-  const uint32_t push = everything ? 1u : 0u;
-  m_carry.dispatch(cmd, &push, groups_for(m_tiles));
+void ActiveTilesPass::record_carry(VkCommandBuffer cmd, uint32_t mode) const {
+  m_carry.dispatch(cmd, &mode, groups_for(m_tiles));
 }
 
-void ActiveTilesPass::set_changed(const GpuScene& scene, const ChangeSet& changes) {
-  // One pass over the records: a flag per instance, then each record looks up its own.
+namespace {
+
+// A seed's weight in the kernels' fixed point (at least one unit: a seed never weighs nothing).
+uint32_t fixed_focus_weight(float weight) {
+  const float scaled = std::round(weight * abi::kFocusWeightScale);
+  return uint32_t(std::clamp(scaled, 1.0f, float(abi::kFocusWeightMax)));
+}
+
+}  // namespace
+
+void ActiveTilesPass::set_changed(const GpuScene& scene, const ChangeSet& changes, const Focus& focus) {
+  // One pass over the records: per instance whether it is in E and its summed focus weight,
+  // then each record looks up its own.
   const std::vector<uint32_t>& record_instance = scene.record_instance();
-  std::vector<bool> instance_changed;
-  for (uint32_t instance : changes.instances) {
-    if (instance >= instance_changed.size()) instance_changed.resize(instance + 1, false);
-    instance_changed[instance] = true;
+  const size_t instances = std::max<size_t>(record_instance.empty() ? 0 : *std::max_element(record_instance.begin(),
+                                                                                           record_instance.end()) + 1,
+                                            1);
+  std::vector<uint8_t> in_changed_set(instances, 0);
+  std::vector<uint32_t> focus_weight(instances, 0);
+  for (uint32_t instance : changes.instances)
+    if (instance < instances) in_changed_set[instance] = 1;
+  std::vector<abi::FocusDisc> discs;
+  for (const FocusSeed& seed : focus.seeds) {
+    const uint32_t weight = fixed_focus_weight(seed.weight);
+    for (uint32_t instance : seed.instances)
+      if (instance < instances) focus_weight[instance] = std::min(focus_weight[instance] + weight, abi::kFocusPixelMax);
+    if (seed.pixel && discs.size() < abi::kMaxFocusDiscs)
+      discs.push_back({*seed.pixel, seed.radius, weight});
   }
-  std::vector<uint32_t> changed(std::max<size_t>(record_instance.size(), 1), 0);
+  std::vector<uint32_t> records(std::max<size_t>(record_instance.size(), 1), 0);
   for (size_t r = 0; r < record_instance.size(); ++r)
-    changed[r] = record_instance[r] < instance_changed.size() && instance_changed[record_instance[r]] ? 1 : 0;
-  changed_records.upload(changed.data(), changed.size() * 4);
+    records[r] = (in_changed_set[record_instance[r]] ? abi::kRecordChanged : 0u) |
+                 focus_weight[record_instance[r]] << abi::kFocusWeightShift;
+  changed_records.upload(records.data(), records.size() * 4);
+  m_disc_count = uint32_t(discs.size());
+  if (!discs.empty()) m_focus_discs.upload(discs.data(), discs.size() * sizeof(abi::FocusDisc));
 }
 
-void ActiveTilesPass::record(VkCommandBuffer cmd) const { m_mark_active.dispatch(cmd, nullptr, groups_for(m_pixels)); }
+void ActiveTilesPass::record(VkCommandBuffer cmd, bool everything) const {
+  const uint32_t push[2] = {m_disc_count, everything ? 1u : 0u};
+  m_mark_active.dispatch(cmd, push, groups_for(m_pixels));
+}
 
 }  // namespace hipr

@@ -4,10 +4,12 @@
 // the G-buffer of the edited scene and the one before: a tile is active where an element of the
 // changed set E is visible in either, or where the screen shows a surface the pixel no longer
 // sees; each active tile gets a change score (pixels showing a changed element, twice where
-// the pixel's surface changed).
+// the pixel's surface changed). The focus (docs/method.md#focus) makes the tiles where it is
+// seen active too, with a focus score of its own.
 #include <cstdint>
 #include <vector>
 
+#include "hipr/focus.h"
 #include "hipr/scene_diff.h"
 #include "render/film.h"
 #include "render/gbuffer_pass.h"
@@ -22,18 +24,26 @@ class ActiveTilesPass {
   ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
                   const GBufferPass& gbuffers, const vk::Buffer& display, const vk::Buffer& tile_weights, uint32_t pixels);
 
-  // Marks the GeometryRecords of the changed instances (the set E the kernels test).
-  void set_changed(const GpuScene& scene, const ChangeSet& changes);
-  // Records the tile state the edit starts from (before the G-buffer is rendered); with
-  // `everything` every tile is active (an edit no G-buffer can localize).
-  void record_carry(VkCommandBuffer cmd, bool everything) const;
-  // Records the marking (after the G-buffer of the edited scene is rendered).
-  void record(VkCommandBuffer cmd) const;
+  // Marks the GeometryRecords of the changed instances (the set E the kernels test) and the
+  // focus's records and discs with their weights.
+  void set_changed(const GpuScene& scene, const ChangeSet& changes, const Focus& focus);
+  // Records the tile state the plan starts from (before the G-buffer is rendered): `mode` is
+  // kCarryEdit, kCarryEverything (every tile active: an edit no G-buffer can localize) or
+  // kCarryRefocus (no edit).
+  void record_carry(VkCommandBuffer cmd, uint32_t mode) const;
+  // Records the marking (after the G-buffer of the edited scene is rendered); `everything` as
+  // record_carry's kCarryEverything (a surface shown wrongly then scores nothing).
+  void record(VkCommandBuffer cmd, bool everything) const;
 
-  vk::Buffer changed_records;  // uint per GeometryRecord: 1 = in E (stage 2 reads it too)
-  vk::Buffer tile_change;      // uint per tile: the change score (stage 3 orders by it)
+  // uint per GeometryRecord: kRecordChanged = in E, above it the focus weight (stage 2's
+  // occlusion test reads it too: a focus's shadows are discovered as an edit's are)
+  vk::Buffer changed_records;
+  vk::Buffer tile_change;  // uint per tile: the change score (stage 3 orders by it)
+  vk::Buffer tile_focus;   // uint per tile: the focus score (stage 3 orders by it after the change)
 
  private:
+  vk::Buffer m_focus_discs;  // abi::FocusDisc[kMaxFocusDiscs]
+  uint32_t m_disc_count = 0;
   uint32_t m_pixels, m_tiles;
   vk::ComputePipeline m_carry, m_mark_active;
 };

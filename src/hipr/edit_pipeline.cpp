@@ -9,6 +9,11 @@ ChangeSet change_scene(Scene& scene, const std::function<void(Scene&)>& change) 
 }
 
 ChangeSet EditPipeline::apply(const Edit& edit) {
+  if (const auto* focus = std::get_if<FocusEdit>(&edit)) {
+    m_focus = with_focus_edit(m_scene, m_focus, *focus);
+    m_scheduler.set_focus(m_focus);
+    return {};
+  }
   return apply([&](Scene& scene) { apply_edit(scene, edit); });
 }
 

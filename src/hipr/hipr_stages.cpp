@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "shaders/shared/bindings/trace.h"
+#include "shaders/shared/bindings/visibility.h"
 
 namespace hipr {
 
@@ -21,23 +22,37 @@ HiprStages::HiprStages(const RenderParts& parts, uint32_t kernel_features)
                   {{abi::kTraceGBuffer, &parts.gbuffers.current},
                    {abi::kTraceChangedRecords, &m_active.changed_records},
                    {abi::kTraceTileWeights, &m_tile_weights}}),
-      m_schedule(parts.ctx, parts.scene, parts.tiles, m_tile_weights, m_active.tile_change) {
+      m_schedule(parts.ctx, parts.scene, parts.tiles, m_tile_weights, m_active.tile_change, m_active.tile_focus) {
   m_tile_weights.clear();
   parts.gbuffers.render();
 }
 
 uint32_t HiprStages::stage1_visibility(const ChangeSet& changes) {
-  m_active.set_changed(m_parts.scene, changes);
   // What no G-buffer shows (a moved camera, a punctual light's or the environment's reach) makes
   // every tile active.
   const bool everything = changes.camera || !changes.lights.empty() || changes.environment;
+  return mark_tiles(changes, everything ? abi::kCarryEverything : abi::kCarryEdit, true);
+}
+
+uint32_t HiprStages::stage1_focus() {
+  // The G-buffer shows the scene as it is unless a policy without stage 1 left it behind.
+  if (!m_parts.gbuffers.is_current()) m_parts.gbuffers.render();
+  return mark_tiles({}, abi::kCarryRefocus, false);
+}
+
+void HiprStages::set_focus(const Focus& focus) { m_focus = focus; }
+
+uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer) {
+  m_active.set_changed(m_parts.scene, changes, m_focus);
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    m_parts.gbuffers.record_keep_previous(cmd);
-    vk::transfer_to_compute_barrier(cmd);
-    m_active.record_carry(cmd, everything);
-    m_parts.gbuffers.record(cmd);
+    if (render_gbuffer) {
+      m_parts.gbuffers.record_keep_previous(cmd);
+      vk::transfer_to_compute_barrier(cmd);
+    }
+    m_active.record_carry(cmd, carry_mode);
+    if (render_gbuffer) m_parts.gbuffers.record(cmd);
     vk::compute_to_compute_barrier(cmd);
-    m_active.record(cmd);
+    m_active.record(cmd, carry_mode == abi::kCarryEverything);
   });
   // The one number the CPU needs: stage 2 is split into steps of equal work over |A| tiles.
   const std::vector<uint32_t> flags = m_parts.tiles.flags.download_all<uint32_t>();
@@ -50,6 +65,7 @@ void HiprStages::stage2_discover(uint32_t offset, uint32_t count, uint32_t sampl
   if (offset >= tiles || count == 0) return;
   abi::TracePush push = m_discovery.push(offset, std::min(count, tiles - offset), samples_per_pixel);
   push.requireFlags = abi::kTileActive;
+  push.sampleTarget = m_parts.sample_target;
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     m_discovery.record(cmd, push);
     if (then_resolve) m_parts.resolve.record(cmd, {push.listOffset, push.tileCount, push.requireFlags, 0}, *then_resolve);

@@ -24,6 +24,7 @@ struct RenderParts {
   Film& film;
   GBufferPass& gbuffers;
   const ResolvePass& resolve;
+  const uint32_t& sample_target;  // the scheduler's round target (ProgressiveRenderer::set_sample_target)
 };
 
 class HiprStages final : public HiprStageRunner {
@@ -35,6 +36,8 @@ class HiprStages final : public HiprStageRunner {
   void stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
                        std::optional<DisplayRule> then_resolve = std::nullopt) override;
   void build_schedule() override;
+  void set_focus(const Focus& focus) override;
+  uint32_t stage1_focus() override;
 
   // Recompiles stage 2's kernel with other kernel features.
   void set_kernel_features(uint32_t features) { m_discovery.set_features(features); }
@@ -44,11 +47,15 @@ class HiprStages final : public HiprStageRunner {
   std::vector<double> tile_weights() const;
 
  private:
+  // Records stage 1's carry (kCarry* mode) and marking, then counts the active tiles.
+  uint32_t mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer);
+
   RenderParts m_parts;
   vk::Buffer m_tile_weights;  // uint64 per tile: W(T) x abi::kWeightScale
   ActiveTilesPass m_active;
   TracePass m_discovery;
   SchedulePass m_schedule;
+  Focus m_focus;  // marked by every stage 1
 };
 
 // A trace push that lets every workgroup leave at once (bit 31 is no kTile* flag): a dispatch

@@ -70,7 +70,11 @@ class HiprPolicy final : public SchedulingPolicy {
  public:
   Policy id() const override { return Policy::Hipr; }
   bool relights() const override { return true; }
-  void start(ProgressiveRenderer& renderer) override { stages_of(renderer).stage1_visibility({}); }
+  void start(ProgressiveRenderer& renderer) override {
+    HiprStageRunner& stages = stages_of(renderer);
+    stages.set_focus({});  // the stages outlive schedulers: no focus of an earlier one stays
+    stages.stage1_visibility({});
+  }
   uint32_t plan(ProgressiveRenderer& renderer, const ChangeSet& changes) override {
     HiprStageRunner& stages = stages_of(renderer);
     const uint32_t active = stages.stage1_visibility(changes);
@@ -82,6 +86,15 @@ class HiprPolicy final : public SchedulingPolicy {
     stages_of(renderer).stage2_discover(offset, count, samples_per_pixel, then_resolve);
   }
   void finish_leading(ProgressiveRenderer& renderer) override { stages_of(renderer).build_schedule(); }
+  // The focus is a changed set for ordering only: stage 1 marks where it is seen (after what
+  // an edit left unrendered), stage 2 discovers from there, stage 3 orders the rest outward.
+  std::optional<uint32_t> refocus(ProgressiveRenderer& renderer, const Focus& focus) override {
+    HiprStageRunner& stages = stages_of(renderer);
+    stages.set_focus(focus);
+    const uint32_t active = stages.stage1_focus();
+    stages.build_schedule();
+    return active;
+  }
 };
 
 // Full-frame restart, as full-frame progressive viewers do.

@@ -6,7 +6,8 @@
 namespace hipr {
 
 SchedulePass::SchedulePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles,
-                           const vk::Buffer& tile_weights, const vk::Buffer& tile_change)
+                           const vk::Buffer& tile_weights, const vk::Buffer& tile_change,
+                           const vk::Buffer& tile_focus)
     : m_tiles(tiles),
       m_row_distance(ctx, size_t(tiles.count()) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_sorter(ctx, tiles.count()),
@@ -16,7 +17,8 @@ SchedulePass::SchedulePass(const vk::Context& ctx, const GpuScene& scene, const 
               {abi::kKeysRowDistance, &m_row_distance},
               {abi::kKeysTileChange, &tile_change},
               {abi::kKeysSortKeys, &m_sorter.keys},
-              {abi::kKeysSortValues, &m_sorter.values}},
+              {abi::kKeysSortValues, &m_sorter.values},
+              {abi::kKeysTileFocus, &tile_focus}},
              sizeof(uint32_t), &scene.descriptor_set()) {}
 
 void SchedulePass::record_sort(VkCommandBuffer cmd) const {

@@ -19,6 +19,7 @@ Scheduler::Scheduler(ProgressiveRenderer& renderer, std::unique_ptr<SchedulingPo
       m_visit_spp(std::max(visit_spp, 1u)),
       m_first_visit_spp(m_visit_spp) {
   const TileGrid grid = renderer.tile_grid();
+  renderer.set_sample_target(0);  // an earlier scheduler's rounds are not this one's
   renderer.set_schedule(tile_order(Policy::Scanline, grid.tiles_x, grid.tiles_y, 0));
   renderer.resolve_display_all(DisplayRule::Immediate);
   m_policy->start(renderer);
@@ -45,6 +46,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   m_edited = true;
   m_cursor = 0;
   m_first_round = true;
+  set_round_target(m_policy->whole_passes() ? m_visit_spp : m_first_visit_spp);
   // Planned while the pixels' owed bits still say which tiles earlier edits left unrendered
   // (HiPR keeps those ranked), then every pixel owes a restart. With no leading step (HiPR when
   // nothing visible changed) the schedule starts at once.
@@ -86,9 +88,35 @@ void Scheduler::step() {
 void Scheduler::end_round() {
   m_cursor = 0;
   m_first_round = false;
+  if (m_round_target) set_round_target(*m_round_target + m_visit_spp);
   // A whole-pass policy shows a whole pass when it completes, as a full-frame progressive viewer
   // presents each frame. Like every policy's per-step display pass, this counts as rendering.
   if (m_policy->whole_passes()) m_renderer.resolve_display_all(DisplayRule::Immediate);
+}
+
+void Scheduler::set_round_target(uint32_t target) {
+  m_round_target = target;
+  m_renderer.set_sample_target(target);
+}
+
+void Scheduler::set_focus(const Focus& focus) {
+  m_focus = focus;
+  const Timer timer;
+  const std::optional<uint32_t> leading = m_policy->refocus(m_renderer, m_focus);
+  if (!leading) return;  // the policy keeps its order
+  // The round under way goes on in the new order: a visit brings a pixel to the round's target,
+  // so tiles it already visited get nothing more and every pixel ends it with the same count
+  // (no pixel may run ahead: the work since the edit tells when a render has converged). Before
+  // the first edit the scheduler knows no round: the counts are read back, and the round is
+  // the one they are in (uniform counts: the next).
+  if (!m_round_target) {
+    const auto [fewest, most] = m_renderer.sample_count_range();
+    set_round_target(fewest == most ? most + m_visit_spp : most);
+  }
+  m_cursor = 0;
+  m_leading = std::min(*leading, m_tile_count);
+  m_leading_cursor = 0;
+  m_overhead_seconds += timer.seconds();
 }
 
 double Scheduler::work_since_edit() const { return double(m_renderer.samples_since_reset()) / double(m_pixels); }

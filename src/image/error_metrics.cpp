@@ -81,6 +81,19 @@ double relmse(const ImageRGB& test, const ImageRGB& reference) {
   return sum / double(values);
 }
 
+double relmse_masked(const ImageRGB& test, const ImageRGB& reference, const std::vector<uint8_t>& mask) {
+  check_same_size(test, reference, "relmse_masked");
+  if (mask.size() * 3 != test.rgb.size()) throw InternalError("relmse_masked: the mask is not one entry per pixel");
+  double sum = 0.0;
+  size_t pixels = 0;
+  for (size_t p = 0; p < mask.size(); ++p)
+    if (mask[p]) {
+      sum += relmse_pixel(&test.rgb[p * 3], &reference.rgb[p * 3]);
+      ++pixels;
+    }
+  return pixels ? sum / double(pixels * 3) : 0.0;
+}
+
 std::vector<double> relmse_tile_sums(const ImageRGB& test, const ImageRGB& reference,
                                      uint32_t tile) {
   check_same_size(test, reference, "relmse_tile_sums");

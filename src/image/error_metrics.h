@@ -14,6 +14,11 @@ namespace hipr {
 // infinite value makes the result non-finite, so a broken render never looks converged.
 double relmse(const ImageRGB& test, const ImageRGB& reference);
 
+// relmse() over the pixels whose `mask` entry is non-zero (row-major, one per pixel): the error
+// of a region (a focus, docs/method.md#focus). 0 when the mask selects no pixel; InternalError
+// when the sizes differ.
+double relmse_masked(const ImageRGB& test, const ImageRGB& reference, const std::vector<uint8_t>& mask);
+
 // The same per-pixel terms, (x-y)^2 / (y^2 + 0.01) / 2 summed over RGB, summed over each
 // tile x tile block (row-major tile ids, tiles_x = ceil(width / tile)); partial tiles at the
 // edges included. The sum over all tiles divided by 3 * width * height is relmse(). Used to rank

@@ -2,6 +2,7 @@
 // its own bindings (shaders/shared/bindings/); the scene's set is GpuScene's.
 #include "hipr/renderer.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/error.h"
@@ -61,7 +62,8 @@ struct Renderer::Impl {
 
   HiprStages& stages() {
     if (!hipr) {
-      hipr = std::make_unique<HiprStages>(RenderParts{ctx, settings, gpu, tiles, film, gbuffers, resolve}, features);
+      hipr = std::make_unique<HiprStages>(RenderParts{ctx, settings, gpu, tiles, film, gbuffers, resolve, sample_target},
+                                          features);
       if (settings.compile_kernels_early) ctx.submit_and_wait([&](VkCommandBuffer cmd) { hipr->record_warm_up(cmd); });
     }
     return *hipr;
@@ -115,6 +117,7 @@ struct Renderer::Impl {
   TracePass trace;
   BackgroundTiles background;
   std::unique_ptr<HiprStages> hipr;  // made on first use
+  uint32_t sample_target = 0;        // the scheduler's round target (set_sample_target)
 };
 
 Renderer::Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
@@ -167,10 +170,25 @@ void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples
   count = std::min(count, tile_count() - offset);
   abi::TracePush push = m->trace.push(offset, count, samples_per_pixel);
   push.skipFlags = skip_active ? abi::kTileActive : 0u;
+  push.sampleTarget = m->sample_target;
   m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     m->trace.record(cmd, push);
     if (then_resolve) m->resolve.record(cmd, {offset, count, 0, push.skipFlags}, *then_resolve);
   });
+}
+
+void Renderer::set_sample_target(uint32_t target) { m->sample_target = target; }
+
+std::pair<uint32_t, uint32_t> Renderer::sample_count_range() const {
+  const std::vector<bool> owed = m->film.owed_pixels();
+  const std::vector<uint32_t> counts = m->film.sample_counts();
+  uint32_t fewest = UINT32_MAX, most = 0;
+  for (size_t i = 0; i < counts.size(); ++i) {
+    const uint32_t count = owed[i] ? 0 : counts[i];
+    fewest = std::min(fewest, count);
+    most = std::max(most, count);
+  }
+  return {counts.empty() ? 0 : fewest, most};
 }
 
 void Renderer::mark_all_owed() {

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "hipr/edits.h"
+#include "hipr/focus.h"
 #include "hipr/scene_loader.h"
 #include "image/builtin_environments.h"
 #include "scene/material_parameters.h"
@@ -100,6 +101,40 @@ MaterialEdit read_material(const EditReader& r, bool emission_only) {
   return edit;
 }
 
+// {"op": "focus", "node": N} or {"op": "focus", "pixel": [x, y], "radius": r} (both may be
+// given: one seed), with an optional "weight"; or {"op": "focus", "clear": true}.
+FocusEdit read_focus(const EditReader& r) {
+  r.only_keys({"op", "node", "pixel", "radius", "weight", "clear"});
+  const json& e = r.edit();
+  FocusEdit focus;
+  if (e.contains("clear")) {
+    if (!e["clear"].is_boolean() || !e["clear"].get<bool>()) r.fail("\"clear\" must be true");
+    if (e.size() != 2) r.fail("a focus that clears takes nothing else");
+    focus.clear = true;
+    return focus;
+  }
+  if (e.contains("node")) focus.node = r.string("node");
+  if (e.contains("pixel")) {
+    const auto v = r.numbers(e["pixel"], "pixel");
+    if (v.size() != 2) r.fail("\"pixel\" needs 2 numbers (x, y)");
+    focus.pixel = glm::vec2(v[0], v[1]);
+    if (!e.contains("radius")) r.fail("a focus pixel needs a \"radius\" in pixels");
+    const auto radius = r.numbers(e["radius"], "radius");
+    if (radius.size() != 1 || radius[0] <= 0.0f) r.fail("\"radius\" must be one positive number (pixels)");
+    focus.radius = radius[0];
+  } else if (e.contains("radius")) {
+    r.fail("\"radius\" goes with \"pixel\"");
+  }
+  if (!focus.node && !focus.pixel) r.fail("a focus needs \"node\", \"pixel\" or \"clear\"");
+  if (e.contains("weight")) {
+    const auto weight = r.numbers(e["weight"], "weight");
+    if (weight.size() != 1 || weight[0] <= 0.0f || weight[0] > kMaxFocusWeight)
+      r.fail("\"weight\" must be one number in (0, " + std::to_string(int(kMaxFocusWeight)) + "]");
+    focus.weight = weight[0];
+  }
+  return focus;
+}
+
 Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
   if (!r.edit().is_object()) r.fail("an edit must be a JSON object");
   const std::string op = r.string("op");
@@ -167,7 +202,8 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
       r.fail("the sun's parameters need \"source\": \"sky\"");
     return e;
   }
-  r.fail("unknown op \"" + op + "\" (transform, material, light, emission, visibility, camera, environment)");
+  if (op == "focus") return read_focus(r);
+  r.fail("unknown op \"" + op + "\" (transform, material, light, emission, visibility, camera, environment, focus)");
 }
 
 }  // namespace

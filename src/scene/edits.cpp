@@ -1,5 +1,6 @@
 // Applying edits to the scene model, and their inverses (undo).
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -124,6 +125,10 @@ struct Applier {
     if (e.intensity) scene.environment->intensity = *e.intensity;
     if (e.rotation) scene.environment->rotation = *e.rotation;
   }
+
+  void operator()(const FocusEdit& e) const {
+    if (e.node) find_node(scene, *e.node);  // an unknown name is refused like any edit's
+  }
 };
 
 // Builds the inverse of an edit from the scene before it (see inverse_edit).
@@ -179,6 +184,11 @@ struct Inverter {
     }
     return EnvironmentEdit{.intensity = scene.environment->intensity, .rotation = scene.environment->rotation};
   }
+
+  Edit operator()(const FocusEdit& e) const {
+    if (e.node) find_node(scene, *e.node);
+    return e;  // the scene is the same before and after
+  }
 };
 
 }  // namespace
@@ -203,6 +213,17 @@ std::string describe(const Edit& edit) {
     std::string operator()(const EnvironmentEdit& e) const {
       if (e.source) return "environment " + e.source->filename().string();
       return e.sets_sun() ? "environment sun" : "environment";
+    }
+    std::string operator()(const FocusEdit& e) const {
+      if (e.clear) return "focus clear";
+      std::string text = "focus";
+      if (e.node) text += " " + *e.node;
+      if (e.pixel) {
+        char disc[96];
+        std::snprintf(disc, sizeof disc, " pixel (%g, %g) radius %g", e.pixel->x, e.pixel->y, e.radius);
+        text += disc;
+      }
+      return text;
     }
   };
   return std::visit(Describer{}, edit);

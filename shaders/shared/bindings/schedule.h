@@ -13,10 +13,11 @@ namespace hipr::abi {
 // schedule_keys.comp
 HIPR_CONST uint kKeysTileFlags = 0u;    // uint per tile: kTileActive | kTileDiscovered
 HIPR_CONST uint kKeysTileWeights = 1u;  // uint64 per tile: discovery weight x kWeightScale
-HIPR_CONST uint kKeysRowDistance = 2u;  // uint per tile: columns to the nearest active tile in its row
+HIPR_CONST uint kKeysRowDistance = 2u;  // uint per tile: columns to the nearest seed tile in its row
 HIPR_CONST uint kKeysTileChange = 3u;   // uint per tile: stage 1's change score
 HIPR_CONST uint kKeysSortKeys = 4u;     // uint keys (the sort's ping buffer)
 HIPR_CONST uint kKeysSortValues = 5u;   // uint values: tile ids
+HIPR_CONST uint kKeysTileFocus = 6u;    // uint per tile: stage 1's focus score
 // radix_sort.comp (RadixSorter)
 HIPR_CONST uint kSortKeys = 0u;         // uint keys, ping
 HIPR_CONST uint kSortValues = 1u;       // uint values, ping

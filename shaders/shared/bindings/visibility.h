@@ -16,15 +16,22 @@ HIPR_CONST uint kVisibilityGBuffer = 0u;         // GBufferTexel per pixel (writ
 // mark_active.comp
 HIPR_CONST uint kMarkActiveGBuffer = 0u;         // GBufferTexel per pixel, this scene state
 HIPR_CONST uint kMarkActivePrevious = 1u;        // GBufferTexel per pixel, before the edit
-HIPR_CONST uint kMarkActiveChangedRecords = 2u;  // uint per GeometryRecord: 1 = in the changed set E
+HIPR_CONST uint kMarkActiveChangedRecords = 2u;  // uint per GeometryRecord: kRecordChanged = in E, above it the focus weight
 HIPR_CONST uint kMarkActiveTileFlags = 3u;       // uint per tile: kTileActive is set here
 HIPR_CONST uint kMarkActiveTileChange = 4u;      // uint per tile: how much of it stage 1 saw change
 HIPR_CONST uint kMarkActiveDisplay = 5u;         // DisplayTexel per pixel: which surface the screen shows
+HIPR_CONST uint kMarkActiveFocusDiscs = 6u;      // FocusDisc[kMaxFocusDiscs]: screen discs of the focus
+HIPR_CONST uint kMarkActiveTileFocus = 7u;       // uint per tile: summed focus weight of its pixels
 // carry_tiles.comp
 HIPR_CONST uint kCarryAccumulation = 0u;  // PixelAccum per pixel: the owed bit
 HIPR_CONST uint kCarryTileFlags = 1u;     // uint per tile: rewritten for the new edit
 HIPR_CONST uint kCarryTileWeights = 2u;   // uint64 per tile: kept where carried, else 0
 HIPR_CONST uint kCarryTileChange = 3u;    // uint per tile: kept where carried, else 0
+HIPR_CONST uint kCarryTileFocus = 4u;     // uint per tile: 0 (the focus is marked anew at every plan)
+// carry_tiles.comp's push constant: what the new plan is for.
+HIPR_CONST uint kCarryEdit = 0u;        // an edit stage 1 can localize
+HIPR_CONST uint kCarryEverything = 1u;  // an edit no G-buffer localizes: every tile active
+HIPR_CONST uint kCarryRefocus = 2u;     // no edit, a new focus: the display's tile state is kept
 
 #ifdef __cplusplus
 }  // namespace hipr::abi

@@ -114,6 +114,12 @@ void hipr_section(Session& session, ViewerState& state) {
   if (ImGui::Checkbox("relight light edits", &relight)) session.set_relight(relight);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("hipr: an edit of a light's intensity or colour shows the converged image relit at once");
+  ImGui::Checkbox("focus: selection", &state.focus_selection);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("hipr renders where the selected object is seen first, then where its light goes");
+  ImGui::SameLine();
+  ImGui::Checkbox("cursor", &state.focus_cursor);
+  if (state.focus_cursor) ImGui::SliderFloat("focus radius (px)", &state.focus_radius, 4.0f, 256.0f, "%.0f");
   ImGui::InputInt("n (tile px)", &state.tile_size_input);
   state.tile_size_input = std::clamp(state.tile_size_input, 1, 256);
   ImGui::SameLine();
@@ -234,6 +240,8 @@ void draw_status_line(const Session& session, const ViewerState& state, float x,
   const auto& records = session.edit_records();
   if (!records.empty() && records.back().latency_seconds >= 0.0)
     add("latency %.0f ms", records.back().latency_seconds * 1e3);
+  if (!session.focus().empty() && session.settings().policy == Policy::Hipr)
+    add("focus: %zu seed%s", session.focus().seeds.size(), session.focus().seeds.size() == 1 ? "" : "s");
   if (session.converged()) add("converged");
   // Items flow onto as many lines as the view's width needs (the view can be as narrow as
   // the render).

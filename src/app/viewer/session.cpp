@@ -51,6 +51,7 @@ void Session::rebuild() {
   m_ids_stale = true;
   m_gbuffer_stale = false;  // a new renderer's G-buffer is made from the scene as it is now
   m_since_edit = Timer();
+  update_focus();
 }
 
 void Session::changed(const std::function<void(Scene&)>& change, const std::string& what) {
@@ -79,6 +80,11 @@ float Session::radius() const {
 }
 
 void Session::edit(const Edit& edit) {
+  if (const auto* focus = std::get_if<FocusEdit>(&edit)) {
+    m_script_focus = with_focus_edit(m_scene, m_script_focus, *focus);
+    update_focus();
+    return;
+  }
   changed([&](Scene& scene) { m_history.apply(scene, edit); }, describe(edit));
 }
 
@@ -155,10 +161,24 @@ Renderer::PixelHit Session::pick(uint32_t x, uint32_t y) {
   return m_renderer->gbuffer_at(x, y);
 }
 
+void Session::set_view_focus(const Focus& focus) {
+  m_view_focus = focus;
+  update_focus();
+}
+
+void Session::update_focus() {
+  Focus focus = m_script_focus;
+  focus.seeds.insert(focus.seeds.end(), m_view_focus.seeds.begin(), m_view_focus.seeds.end());
+  if (focus == m_scheduler->focus()) return;
+  m_scheduler->set_focus(focus);
+  m_dirty_display = true;
+}
+
 void Session::set_policy(Policy policy) {
   if (policy == m_settings.policy) return;
   m_scheduler = make_scheduler(*m_renderer, policy);
   m_settings.policy = policy;
+  update_focus();
   // A HiPR scheduler starts with stage 1 of the scene as it is now.
   if (policy == Policy::Hipr) m_gbuffer_stale = false;
   m_ids_stale = true;

@@ -11,6 +11,7 @@
 
 #include "app/viewer/edit_history.h"
 #include "core/timer.h"
+#include "hipr/focus.h"
 #include "hipr/renderer.h"
 #include "hipr/scheduler.h"
 #include "vk/context.h"
@@ -54,8 +55,15 @@ class Session {
   const EditHistory& history() const { return m_history; }
 
   // Applies and records an edit and starts its re-render. Throws InputError (nothing changed)
-  // for an edit the scene refuses.
+  // for an edit the scene refuses. A focus op (a script's) changes the focus, not the scene:
+  // it is not recorded for undo.
   void edit(const Edit& edit);
+
+  // Where the user looks (docs/method.md#focus), as the viewer sees it: the selected object,
+  // the cursor. The scheduler follows these seeds together with those of a script's focus ops;
+  // a new focus re-plans at once and restarts nothing.
+  void set_view_focus(const Focus& focus);
+  const Focus& focus() const { return m_scheduler->focus(); }
   // Edits between these form one undo step (a drag).
   void begin_group() { m_history.begin_group(); }
   void end_group() { m_history.end_group(); }
@@ -104,6 +112,8 @@ class Session {
   std::unique_ptr<Scheduler> make_scheduler(Renderer& renderer, Policy policy) const;
   // Changes the scene through the edit pipeline and records the change as `what`.
   void changed(const std::function<void(Scene&)>& change, const std::string& what);
+  // Hands the scheduler the script's and the view's seeds when they differ from what it follows.
+  void update_focus();
 
   const vk::Context& m_ctx;
   SessionSettings m_settings;
@@ -121,6 +131,7 @@ class Session {
   bool m_gbuffer_stale = false;  // edits since stage 1 last ran (policies without stage 1)
   std::vector<uint32_t> m_ids;
   mutable std::optional<std::pair<glm::vec3, glm::vec3>> m_bounds;  // cache of bounds()
+  Focus m_script_focus, m_view_focus;
 };
 
 // The viewer's tiles per step unless set: 1/64 of the frame, at least one tile (smaller steps

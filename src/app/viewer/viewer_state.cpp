@@ -13,6 +13,15 @@ namespace {
 constexpr size_t kKeptMessages = 50;
 }
 
+Focus view_focus(const Scene& scene, const ViewerState& state, std::optional<glm::vec2> cursor) {
+  Focus focus;
+  if (state.focus_selection && state.selected_node >= 0 && size_t(state.selected_node) < scene.nodes.size())
+    focus.seeds.push_back(focus_on_node(scene, size_t(state.selected_node)));
+  if (state.focus_cursor && cursor)
+    focus.seeds.push_back({.pixel = *cursor, .radius = std::max(state.focus_radius, 1.0f)});
+  return focus;
+}
+
 void ViewerState::info(const std::string& text) {
   messages.push_back({text, false});
   ++message_count;

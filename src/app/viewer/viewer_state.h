@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/viewer/overlays.h"
+#include "hipr/focus.h"
 #include "hipr/renderer.h"
 #include "hipr/scheduler.h"
 
@@ -25,6 +26,11 @@ struct ViewerState {
   bool show_ui = true;      // panels and status line (Tab)
   bool show_status = true;  // the status line alone
   int selected_node = -1;
+  // Attention-guided rendering (docs/method.md#focus): HiPR starts from the selected object
+  // (on by default) and, when asked, from a disc around the cursor.
+  bool focus_selection = true;
+  bool focus_cursor = false;
+  float focus_radius = 32.0f;  // rendered pixels
   double frame_budget_ms = 30.0;  // time spent on scheduling steps per frame
   uint32_t steps_per_frame = 0;   // > 0: a fixed number of steps instead (scripts, tests)
 
@@ -66,6 +72,11 @@ struct ViewerState {
   std::string environment_key;
   float environment_radiance = 0.0f;
 };
+
+// The view's focus this frame: the selected object's subtree and the disc around `cursor` (the
+// rendered pixel under the mouse, none when it is off the image or over a panel), as the
+// state's toggles ask.
+Focus view_focus(const Scene& scene, const ViewerState& state, std::optional<glm::vec2> cursor);
 
 // Called every frame: when another environment map lights the scene (a switch, its undo or
 // redo, a script), the exposure moves by the change in the maps' mean radiance, so a switch
