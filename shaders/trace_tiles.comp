@@ -330,15 +330,17 @@ void main() {
   const uint pixelIndex = pixel.y * u_frame.width + pixel.x;
   // No camera ray of this tile can reach any instance's bounds (src/render/background_tiles.cpp):
   // its samples are what a miss gives, with the same random numbers, without a ray query.
-  const bool backgroundTile =
-      b_tile_background[(pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize] != 0u;
+  const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
+  const bool backgroundTile = b_tile_background[tile] != 0u;
   PixelAccum accum = b_accum[pixelIndex];
   const bool restart = (accum.count & kPixelOwed) != 0u;  // first visit since an edit
   // With a round target the visit adds what the pixel lacks of it: a round the scheduler
-  // re-planned midway (a new focus) still leaves every pixel with the same count.
+  // re-planned midway (a new focus) still leaves every pixel with the same count, and the
+  // focus's tiles run ahead to their own target (docs/method.md#focus).
+  const bool focusTile = u_push.focusTarget != 0u && (b_tile_flags[tile] & kTileFocus) != 0u;
+  const uint target = focusTile ? u_push.focusTarget : u_push.sampleTarget;
   const uint have = restart ? 0u : accum.count;
-  const uint samples = u_push.sampleTarget == 0u ? u_push.samplesPerPixel
-                                                 : (have >= u_push.sampleTarget ? 0u : u_push.sampleTarget - have);
+  const uint samples = target == 0u ? u_push.samplesPerPixel : (have >= target ? 0u : target - have);
   if (samples == 0u) return;
   if (restart) accum = PixelAccum(vec3(0.0), 0u, vec3(0.0));
 #if HIPR_LIGHT_GROUPS > 0

@@ -462,7 +462,7 @@ TEST(Bench, WritesCurvesSummaryAndPlot) {
   std::ifstream curves_file(dir / "a" / "curves.csv");
   std::string header;
   std::getline(curves_file, header);
-  EXPECT_EQ(header, "edit,policy,step,work,wall_ms,relmse,flip,focus_relmse");
+  EXPECT_EQ(header, "edit,policy,step,work,wall_ms,relmse,flip,focus_relmse,focus_flip");
 
   // Again, with the references from the cache: the same errors (wall times aside).
   ASSERT_EQ(test::run_hipr(command + quoted(dir / "b")).exit_code, kExitOk);
@@ -529,10 +529,12 @@ TEST(Bench, ColdStartAndCameraEditWithAFocus) {
       const auto& p = policies.at(name);
       EXPECT_TRUE(p.at("converged").get<bool>()) << name;
       EXPECT_GE(p.at("auc_focus_relmse").get<double>(), 0.0) << name;
+      EXPECT_GE(p.at("auc_focus_flip").get<double>(), 0.0) << name;
       EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse) << name << ": the focus changes the order only";
     }
   }
   EXPECT_GT(summary.at("ratios").at("hipr+focus_vs_hipr_auc_focus_relmse").get<double>(), 0.0);
+  EXPECT_GT(summary.at("ratios").at("hipr+focus_vs_hipr_auc_focus_flip").get<double>(), 0.0);
   // A drag measures edits only; a script of focus ops alone measures nothing without --cold-start.
   expect_one_error_line(test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(script) +
                                        " --drag 0.5" + flags + " -o " + quoted(dir / "b")));

@@ -226,6 +226,50 @@ TEST(Focus, OrdersACameraEditsTilesFromTheFocus) {
   EXPECT_EQ(scheduler.displayed_image().rgb, fresh(scene, 2).rgb);
 }
 
+// Knowing where the render converges, the focus's tiles run ahead of the round by the lead
+// (whole visits), never past that count: the focus converges first and every pixel ends with
+// the same samples, on the full-frame image.
+TEST(Focus, TheFocusRunsAheadButNeverPastTheConvergedCount) {
+  const Scene scene = cornell();
+  const RenderSettings s = settings();
+  for (const uint32_t spp : {4u, 2u}) {
+    Renderer renderer(test::context(), scene, s);
+    Scheduler scheduler(renderer, Policy::Hipr, 4);
+    scheduler.set_converged_spp(spp);
+    scheduler.set_focus_lead(2);
+    scheduler.set_focus(focus_on(scene, "tall_block"));
+    while (scheduler.leading_steps_pending()) scheduler.step();
+    std::vector<uint32_t> counts = renderer.sample_counts();
+    EXPECT_EQ(*std::max_element(counts.begin(), counts.end()), 1u) << "first one visit, where the focus is";
+    EXPECT_TRUE(scheduler.lead_pass_pending());
+    while (scheduler.lead_pass_pending()) scheduler.step();
+    const std::vector<uint32_t> flags = renderer.tile_flags();
+    counts = renderer.sample_counts();
+    uint32_t focus_pixels = 0;
+    for (uint32_t y = 0; y < s.height; ++y)
+      for (uint32_t x = 0; x < s.width; ++x) {
+        const uint32_t tile = (y / s.tile_size) * renderer.tiles_x() + x / s.tile_size;
+        const uint32_t count = counts[size_t(y) * s.width + x];
+        if (flags[tile] & abi::kTileFocus) {
+          EXPECT_EQ(count, std::min(1u + 2u, spp)) << "a focus pixel after its lead";
+          ++focus_pixels;
+        } else {
+          EXPECT_EQ(count, 0u) << "the rest waits its turn";
+        }
+      }
+    EXPECT_GT(focus_pixels, 0u);
+    for (int step = 0; step < 1000 && scheduler.work_since_edit() < double(spp); ++step) {
+      scheduler.step();
+      const std::vector<uint32_t> now = renderer.sample_counts();
+      ASSERT_LE(*std::max_element(now.begin(), now.end()), spp) << "no pixel passes the converged count";
+    }
+    const std::vector<uint32_t> final_counts = renderer.sample_counts();
+    EXPECT_TRUE(std::all_of(final_counts.begin(), final_counts.end(), [&](uint32_t c) { return c == spp; }));
+    renderer.resolve_display_all(DisplayRule::Immediate);
+    EXPECT_EQ(renderer.displayed_image().rgb, fresh(scene, spp).rgb) << spp;
+  }
+}
+
 // Policies other than hipr keep their order.
 TEST(Focus, BucketOrdersIgnoreIt) {
   const Scene scene = cornell();

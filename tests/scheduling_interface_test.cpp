@@ -43,7 +43,8 @@ struct FakeRenderer final : ProgressiveRenderer {
   TileGrid grid{32, 24, 8, 4, 3, 5};
   std::vector<uint32_t> tile_samples = std::vector<uint32_t>(12, 0);
   std::vector<bool> tile_owed = std::vector<bool>(12, false);
-  uint32_t target = 0;
+  uint32_t target = 0, focus_target = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> lead_calls;  // render_focus_lead (offset, count)
   std::vector<uint32_t> order;
   std::vector<uint32_t> rendered;       // tile ids, in the order rendered
   std::vector<uint32_t> samples_given;  // spp per render_schedule call
@@ -71,11 +72,17 @@ struct FakeRenderer final : ProgressiveRenderer {
     samples_given.push_back(spp);
     step_rules.push_back(then_resolve);
   }
+  void render_focus_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule>) override {
+    lead_calls.emplace_back(offset, count);
+  }
   void mark_all_owed() override {
     ++owed_marks;
     tile_owed.assign(tile_owed.size(), true);
   }
-  void set_sample_target(uint32_t t) override { target = t; }
+  void set_sample_target(uint32_t t, uint32_t focus) override {
+    target = t;
+    focus_target = focus;
+  }
   std::pair<uint32_t, uint32_t> sample_count_range() const override {
     uint32_t fewest = UINT32_MAX, most = 0;
     for (size_t t = 0; t < tile_samples.size(); ++t) {
@@ -180,6 +187,36 @@ TEST(SchedulingInterface, AFocusReplansWithoutRestartingAndEndsTheRoundEven) {
   scheduler.set_focus({});
   EXPECT_TRUE(renderer.stages->focus.empty());
   EXPECT_EQ(renderer.stages->focus_calls, 2u);
+}
+
+// Knowing the converged count, the focus takes its lead after its first visit: stage 2 visits
+// every leading tile at the round target, then lead steps over those entries bring the focus's
+// tiles ahead (never past the converged count), then the round goes on.
+TEST(SchedulingInterface, TheFocusTakesItsLeadAfterItsFirstVisit) {
+  FakeRenderer renderer;
+  renderer.stages.emplace();
+  renderer.stages->focus_active = 3;
+  Scheduler scheduler(renderer, Policy::Hipr, 2);
+  scheduler.set_converged_spp(4);
+  scheduler.set_focus_lead(5);
+  scheduler.set_focus({{FocusSeed{.pixel = glm::vec2(3.0f, 4.0f), .radius = 2.0f}}});
+  EXPECT_EQ(renderer.target, 1u);
+  EXPECT_EQ(renderer.focus_target, 0u) << "no lead before the first visit";
+  scheduler.step();  // stage 2: entries 0, 1
+  scheduler.step();  // stage 2: entry 2, then the sort
+  EXPECT_FALSE(scheduler.leading_steps_pending());
+  EXPECT_EQ(renderer.focus_target, 4u) << "1 + 5 visits, held at the converged count";
+  EXPECT_TRUE(renderer.lead_calls.empty());
+  scheduler.step();
+  scheduler.step();
+  EXPECT_EQ(renderer.lead_calls, (std::vector<std::pair<uint32_t, uint32_t>>{{0, 2}, {2, 1}}));
+  const size_t rendered = renderer.rendered.size();
+  scheduler.step();  // the rest of the round, from entry 3
+  EXPECT_EQ(renderer.rendered.size(), rendered + 2);
+  EXPECT_EQ(renderer.rendered[rendered], renderer.order[3]);
+  // Without a lead the focus only orders.
+  scheduler.set_focus_lead(0);
+  EXPECT_EQ(renderer.focus_target, 0u);
 }
 
 TEST(SchedulingInterface, HiprNeedsARendererWithItsStages) {

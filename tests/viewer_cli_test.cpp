@@ -299,6 +299,28 @@ TEST_F(ViewerWindow, SavedSceneReloadsToTheEditedScene) {
 }
 
 // Bad input is refused before a window opens: no display is needed to see the error.
+// The selected object is the focus (docs/method.md#focus): from a cold start hipr renders where
+// it is seen first, while --no-focus starts at the top row. Two steps of 4 of the 64 tiles.
+TEST_F(ViewerWindow, TheSelectedObjectIsRenderedFirst) {
+  const Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  const std::vector<uint32_t> ids = instance_ids(scene);
+  const uint32_t block = instance_of(scene, "short_block"), ceiling = instance_of(scene, "ceiling");
+  std::map<std::string, ImageRGB> shots;
+  for (const char* focus : {"", "--no-focus"}) {
+    const fs::path exr = s_dir / (std::string("focus") + focus + ".exr");
+    const test::CommandResult result = run_in_xvfb(
+        "view " + quoted(test::asset("cornell_box.gltf")) +
+        " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 4 --steps-per-frame 1 --no-ui -q"
+        " --select short_block --exit-after-frames 2 --screenshot " + quoted(exr) + " " + focus);
+    ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+    shots[focus] = read_image(exr);
+  }
+  const double block_focused = masked_mean(shots[""], ids, block, 0) + masked_mean(shots[""], ids, block, 1);
+  EXPECT_GT(block_focused, 0.01) << "the block's tiles were rendered first";
+  EXPECT_EQ(masked_mean(shots["--no-focus"], ids, block, 0), 0.0) << "scanline order has not reached the block";
+  EXPECT_GT(masked_mean(shots["--no-focus"], ids, ceiling, 0), 0.0) << "it starts at the top";
+}
+
 TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {
   const fs::path dir = test::temp_dir("viewer-bad");
   const fs::path bad_script =

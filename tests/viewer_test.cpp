@@ -487,10 +487,12 @@ TEST(Session, FollowsTheSelectionAsItsFocus) {
   EXPECT_TRUE(session.edit_records().empty());
   converge(session);
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
-  // A new policy keeps the focus; an edit re-renders with it and still ends exactly.
+  // A new policy keeps the focus and its lead; an edit re-renders with them and still ends exactly.
+  session.set_focus_lead(5);
   session.set_policy(Policy::Full);
   session.set_policy(Policy::Hipr);
   EXPECT_EQ(session.focus().seeds.size(), 3u);
+  EXPECT_EQ(session.scheduler().focus_lead(), 5u);
   session.edit(TransformEdit{"short_block", glm::vec3(0.04f, 0.0f, 0.0f), std::nullopt});
   converge(session);
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);

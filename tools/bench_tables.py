@@ -116,23 +116,28 @@ def lights_table(lights):
 
 
 def focus_table(focuses):
-    """Attention-guided rendering (focus ops, --cold-start): the focus region's relMSE AUC(1)."""
-    lines = ["#### Focus: relMSE of the focus region over the first work unit, hipr with and without the focus", "",
-             "| scene | measured | hipr+focus | hipr | full | hipr+focus / hipr | frame: hipr+focus | frame: hipr |",
-             "|---|---|" + "---:|" * 6]
-    ratios = []
+    """Attention-guided rendering (focus ops, --cold-start): the focus region's error AUC(1)."""
+    lines = ["#### Focus: error of the focus region over the first work unit, hipr with and without the focus", "",
+             "| scene | measured | relMSE hipr+focus | hipr | full | ratio | FLIP hipr+focus | hipr | full | ratio |",
+             "|---|---|" + "---:|" * 8]
+    ratios = {"relmse": [], "flip": []}
     for scene, summary in focuses:
         for edit in summary["edits"]:
             p = edit["policies"]
             if "hipr+focus" not in p:
                 continue
-            f, h = num(p["hipr+focus"]["auc_focus_relmse"]), num(p["hipr"]["auc_focus_relmse"])
-            full = num(p["full"]["auc_focus_relmse"]) if "full" in p else float("nan")
-            ratios.append(f / h if h else float("nan"))
-            lines.append(f"| {scene} | {edit['name']} | {f:.4g} | {h:.4g} | {full:.4g} | {f / h:.3f} "
-                         f"| {num(p['hipr+focus']['auc_relmse']):.4g} | {num(p['hipr']['auc_relmse']):.4g} |")
-    if ratios:
-        lines += ["", f"hipr+focus / hipr in the focus region, geometric mean: {geomean(ratios):.3f}"]
+            cells = []
+            for metric in ["relmse", "flip"]:
+                key = f"auc_focus_{metric}"
+                f, h = num(p["hipr+focus"][key]), num(p["hipr"][key])
+                full = num(p["full"][key]) if "full" in p else float("nan")
+                if h > 0:
+                    ratios[metric].append(f / h)
+                cells += [f"{f:.4g}", f"{h:.4g}", f"{full:.4g}", f"{f / h:.3f}" if h > 0 else ""]
+            lines.append(f"| {scene} | {edit['name']} | " + " | ".join(cells) + " |")
+    if ratios["relmse"]:
+        lines += ["", "hipr+focus / hipr in the focus region, geometric mean: " +
+                  ", ".join(f"{metric} {geomean(values):.3f}" for metric, values in ratios.items())]
     return lines
 
 

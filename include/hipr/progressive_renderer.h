@@ -68,12 +68,17 @@ class ProgressiveRenderer {
   // those stage 2 rendered) and, with `then_resolve`, resolves their display.
   virtual void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
                                std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
+  // Brings the focus's tiles among schedule entries [offset, offset + count) to the focus target
+  // (set_sample_target; the other tiles are left alone) and, with `then_resolve`, resolves them.
+  virtual void render_focus_lead(uint32_t offset, uint32_t count,
+                                 std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
   // Every pixel owes a restart: its next visit drops its old samples.
   virtual void mark_all_owed() = 0;
   // The scheduler's round target: from now on a visit brings each pixel to `target` samples
   // since its last restart, adding none where it has them (0: a visit adds samples_per_pixel,
-  // whatever the pixel has). A round re-planned midway then still ends uniform.
-  virtual void set_sample_target(uint32_t target) = 0;
+  // whatever the pixel has). A round re-planned midway then still ends uniform. The tiles where
+  // stage 1 saw the focus are brought to `focus_target` instead (0: `target`): they run ahead.
+  virtual void set_sample_target(uint32_t target, uint32_t focus_target = 0) = 0;
   // The fewest and the most samples a pixel has since its last restart (owed pixels count as
   // 0).
   virtual std::pair<uint32_t, uint32_t> sample_count_range() const = 0;

@@ -15,6 +15,9 @@
 
 namespace hipr {
 
+// Visits the focus's tiles run ahead of the round unless set (Scheduler::set_focus_lead).
+inline constexpr uint32_t kDefaultFocusLead = 3;
+
 class Scheduler {
  public:
   // `tiles_per_step`: the budget of one step; `visit_spp`: samples a tile gets per visit.
@@ -50,6 +53,13 @@ class Scheduler {
   // Policies other than hipr keep their order.
   void set_focus(const Focus& focus);
   const Focus& focus() const { return m_focus; }
+  // The samples per pixel the render converges to (where its user stops stepping: the work
+  // since the edit reaches it exactly when every pixel has it); 0, the default: unknown. Known,
+  // the focus's tiles run `focus_lead` visits ahead of the round, never past it: the focus
+  // converges first, and no pixel ever ends with more samples than the others.
+  void set_converged_spp(uint32_t spp);
+  void set_focus_lead(uint32_t visits);
+  uint32_t focus_lead() const { return m_focus_lead; }
 
   ImageRGB displayed_image() const { return m_renderer.displayed_image(); }
   // Samples rendered since the last edit, in full-frame 1-spp passes (the work unit of
@@ -64,6 +74,9 @@ class Scheduler {
   // The policy still renders leading steps of its own since the last edit (HiPR: stage 2, whose
   // weights are partial until it ends).
   bool leading_steps_pending() const { return m_leading_cursor < m_leading; }
+  // After the leading steps, the focus's tiles among them take their lead (set_focus_lead) in
+  // steps of their own before the round goes on; some are still to come.
+  bool lead_pass_pending() const { return m_lead_cursor < m_lead_end; }
 
  private:
   // How the tiles a step renders are shown (resolved in the step's own submission); none for
@@ -71,8 +84,12 @@ class Scheduler {
   std::optional<DisplayRule> step_display_rule() const;
   // The last schedule entry was rendered: the next step starts a new round at the first.
   void end_round();
-  // The renderer's round target: a visit brings each pixel to it.
+  // The renderer's round target: a visit brings each pixel to it (and the focus's tiles to
+  // theirs, once m_focus_ahead).
   void set_round_target(uint32_t target);
+  // A plan was made (an edit or a focus): the focus's lead waits for its first visit.
+  void planned();
+
 
   ProgressiveRenderer& m_renderer;
   std::unique_ptr<SchedulingPolicy> m_policy;
@@ -94,6 +111,12 @@ class Scheduler {
   // or focus (the renderer may have been given samples outside the scheduler).
   std::optional<uint32_t> m_round_target;
   Focus m_focus;
+  bool m_follows_focus = false;  // the policy ordered by the focus (its tiles may run ahead)
+  bool m_focus_ahead = false;    // the focus's tiles are brought to their lead (not before their first visit)
+  uint32_t m_lead_cursor = 0, m_lead_end = 0;  // the lead pass over schedule entries [0, m_lead_end)
+  uint32_t m_focus_target = 0;  // what the focus's tiles are brought to (0: the round target)
+  uint32_t m_converged_spp = 0;
+  uint32_t m_focus_lead = kDefaultFocusLead;
 };
 
 // Tiles per step when none is given: a sixteenth of the frame, as `hipr replay` and `hipr

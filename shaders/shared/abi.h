@@ -27,6 +27,7 @@ HIPR_CONST uint kTileActive = 1u;      // an element of E is visible in the tile
 HIPR_CONST uint kTileDiscovered = 2u;  // reached by a secondary vertex or occlusion (stage 2)
 HIPR_CONST uint kTileShown = 4u;       // since the last edit, the display has shown this tile's fresh estimate (weight >= 1/2)
 HIPR_CONST uint kTileSettled = 8u;     // the display shows the fresh estimate alone, until the next edit
+HIPR_CONST uint kTileFocus = 16u;      // the focus is seen in the tile (stage 1): it may run ahead of the round
 HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
 // Stage 1's changed-record flags: bit 0 the record is in the changed set E, the bits above
 // its focus weight (kFocusWeightScale units; 0: not a focus).
@@ -332,6 +333,9 @@ struct TracePush {
   // gets what it lacks of this many samples (none when it has them), so a re-planned round
   // leaves every pixel with the same count (docs/method.md#focus).
   uint sampleTarget;
+  // With a round target: the target of the tiles flagged kTileFocus (the focus runs ahead of the
+  // round, never past the count the render converges to); 0: sampleTarget.
+  uint focusTarget;
 };
 
 // Stage 1's focus (docs/method.md#focus): a disc on screen whose pixels are seeds.

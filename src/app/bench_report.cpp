@@ -36,7 +36,10 @@ nlohmann::json policy_summary(const bench::PolicyRun& run) {
     j[auc_key("flip", h)] = bench::error_auc(run.curve, bench::Metric::Flip, h);
   }
   if (!run.curve.empty() && run.curve.front().focus_relmse >= 0.0)  // the focus region's own error
-    for (double h : kHorizons) j[auc_key("focus_relmse", h)] = bench::error_auc(run.curve, bench::Metric::FocusRelMse, h);
+    for (double h : kHorizons) {
+      j[auc_key("focus_relmse", h)] = bench::error_auc(run.curve, bench::Metric::FocusRelMse, h);
+      j[auc_key("focus_flip", h)] = bench::error_auc(run.curve, bench::Metric::FocusFlip, h);
+    }
   const auto or_null = [](double v) {
     return v < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(v);
   };
@@ -120,23 +123,25 @@ nlohmann::json BenchReport::summary() const {
       }
     }
   // Attention-guided rendering: the focus region's error with the focus against without.
-  for (double h : kHorizons) {
-    const std::string key = auc_key("focus_relmse", h);
-    bool measured = false;
-    for (const auto& edit : edits) measured = measured || edit.at("policies").contains(kFocusedHipr);
-    if (measured) ratios[std::string(kFocusedHipr) + "_vs_hipr_" + key] = ratio(edits, kFocusedHipr, "hipr", key, true);
-  }
+  bool focused = false;
+  for (const auto& edit : edits) focused = focused || edit.at("policies").contains(kFocusedHipr);
+  for (const char* metric : {"focus_relmse", "focus_flip"})
+    for (double h : kHorizons)
+      if (focused) {
+        const std::string key = auc_key(metric, h);
+        ratios[std::string(kFocusedHipr) + "_vs_hipr_" + key] = ratio(edits, kFocusedHipr, "hipr", key, true);
+      }
   return {{"scene", m_scene}, {"settings", m_settings}, {"edits", edits}, {"ratios", ratios}};
 }
 
 void BenchReport::write_curves(const fs::path& path) const {
-  std::string csv = "edit,policy,step,work,wall_ms,relmse,flip,focus_relmse\n";
+  std::string csv = "edit,policy,step,work,wall_ms,relmse,flip,focus_relmse,focus_flip\n";
   char line[256];
   for (size_t e = 0; e < m_edits.size(); ++e)
     for (const auto& [name, run] : m_edits[e].runs)
       for (const bench::CurvePoint& p : run.curve) {
-        std::snprintf(line, sizeof line, "%zu,%s,%u,%.6f,%.3f,%.8g,%.8g,%.8g\n", e + 1, name.c_str(),
-                      p.step, p.work, p.wall_ms, p.relmse, p.flip, p.focus_relmse);
+        std::snprintf(line, sizeof line, "%zu,%s,%u,%.6f,%.3f,%.8g,%.8g,%.8g,%.8g\n", e + 1, name.c_str(),
+                      p.step, p.work, p.wall_ms, p.relmse, p.flip, p.focus_relmse, p.focus_flip);
         csv += line;
       }
   write_text_atomically(path, csv);

@@ -52,6 +52,7 @@ struct BenchOptions {
   double drag = 0.0;  // > 0: the edits are one drag, this much work apart (full-frame passes)
   bool no_relight = false;
   bool cold_start = false;  // measure the render of the scene as loaded, from nothing, first
+  uint32_t focus_lead = kDefaultFocusLead;
 };
 
 // The edits' own JSON text, one per edit: with the scene's hash it names a scene state.
@@ -87,6 +88,12 @@ void log_run(const std::string& name, const bench::PolicyRun& run) {
   log::info(line + ", " + std::to_string(run.wall_seconds) + " s");
 }
 
+// "the focus F: N pixels".
+std::string focus_line(const Scene& scene, const Focus& focus, const std::vector<uint8_t>& region) {
+  const auto pixels = std::count(region.begin(), region.end(), uint8_t(1));
+  return "the focus " + describe(scene, focus) + ": " + std::to_string(pixels) + " pixels";
+}
+
 // The scene as loaded, rendered from nothing by every policy (and hipr with the focus the
 // script's first ops set): what a user sees after opening it, the focus region measured.
 void run_cold_start_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& renderer, const Scene& scene,
@@ -99,7 +106,7 @@ void run_cold_start_bench(const BenchOptions& o, const vk::Context& ctx, Rendere
   run_options.focus_region =
       focus.empty() ? std::vector<uint8_t>()
                     : focus_pixels(focus, renderer.gbuffer_instances(), settings.width, settings.height);
-  log::info("cold start" + (focus.empty() ? std::string() : ", the focus " + describe(scene, focus)));
+  log::info("cold start" + (focus.empty() ? std::string() : ", " + focus_line(scene, focus, run_options.focus_region)));
   BenchEdit& edit_report = report.add_edit("cold start", reference.image, 0, renderer.tile_count());
   for (const PlannedRun& planned : planned_runs(policies, focus)) {
     if (planned.policy == Policy::Oracle) continue;  // its order needs an edit to rank
@@ -232,6 +239,7 @@ int run_bench(BenchOptions& o) {
   run_options.relight = !o.no_relight;
   run_options.target_spp = o.common.spp;
   run_options.max_steps = o.steps;
+  run_options.focus_lead = o.focus_lead;
 
   const nlohmann::json recorded = {{"width", settings.width},
                                    {"height", settings.height},
@@ -246,6 +254,7 @@ int run_bench(BenchOptions& o) {
                                    {"light_groups", settings.light_groups},
                                    {"steps", o.steps},
                                    {"drag_work_per_edit", o.drag},
+                                   {"focus_lead", o.focus_lead},
                                    {"max_depth", settings.max_depth},
                                    {"seed", settings.seed},
                                    {"sampler", sampler_name(settings.sampler)},
@@ -300,6 +309,7 @@ int run_bench(BenchOptions& o) {
     run_options.focus_region =
         focus.empty() ? std::vector<uint8_t>()
                       : focus_pixels(focus, renderer.gbuffer_instances(), settings.width, settings.height);
+    if (!focus.empty()) log::info("  " + focus_line(scene, focus, run_options.focus_region));
     BenchEdit& edit_report =
         report.add_edit(name, reference.image, changed.size(), renderer.tile_count());
     for (const PlannedRun& planned : planned_runs(policies, focus)) {
@@ -355,6 +365,9 @@ Command add_bench_command(CLI::App& app) {
                   "one per frame), measuring against the scene as it is at each step");
   cmd->add_flag("--no-relight", options->no_relight,
                 "hipr: re-render light edits without relighting the converged image (for comparison)");
+  cmd->add_option("--focus-lead", options->focus_lead,
+                  "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
+      ->capture_default_str();
   cmd->add_flag("--cold-start", options->cold_start,
                 "First measure the scene as loaded rendered from nothing (with the focus of the script's first "
                 "focus ops, if any)");

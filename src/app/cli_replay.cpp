@@ -33,6 +33,7 @@ struct ReplayOptions {
   uint32_t first_visit_spp = 0;  // 0 = visit_spp
   bool no_relight = false;
   std::string display;           // empty = the policy's own rule
+  uint32_t focus_lead = kDefaultFocusLead;
 };
 
 std::string step_name(size_t edit, uint32_t step) {
@@ -82,6 +83,8 @@ int run_replay(ReplayOptions& o) {
   scheduler.set_display_rule(display);
   if (o.first_visit_spp) scheduler.set_first_visit_spp(o.first_visit_spp);
   scheduler.set_relight(!o.no_relight);
+  scheduler.set_converged_spp(o.common.spp);
+  scheduler.set_focus_lead(o.focus_lead);
   // Converge the scene as loaded; the last 1-spp pass is timed: the unit of the overhead share.
   for (uint32_t done = 0; done + 1 < o.common.spp; done += 16) renderer.add_samples_full_frame(std::min(16u, o.common.spp - 1 - done));
   const Timer pass_timer;
@@ -164,6 +167,9 @@ Command add_replay_command(CLI::App& app) {
                   "hipr, immediate for the others)");
   cmd->add_flag("--no-relight", options->no_relight,
                 "hipr: re-render light edits without relighting the converged image first");
+  cmd->add_option("--focus-lead", options->focus_lead,
+                  "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
+      ->capture_default_str();
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_replay(*options); }};
 }

@@ -11,6 +11,7 @@ double metric_of(const CurvePoint& point, Metric metric) {
     case Metric::RelMse: return point.relmse;
     case Metric::Flip: return point.flip;
     case Metric::FocusRelMse: return point.focus_relmse;
+    case Metric::FocusFlip: return point.focus_flip;
   }
   return point.relmse;
 }

@@ -13,12 +13,13 @@ struct CurvePoint {
   double relmse = 0.0;
   double flip = 0.0;
   double focus_relmse = -1.0;  // relMSE over the focus region's pixels; -1: no region measured
+  double focus_flip = -1.0;    // FLIP over the focus region's pixels; -1: no region measured
 };
 
 using ErrorCurve = std::vector<CurvePoint>;
 
 // Which error a summary reads.
-enum class Metric { RelMse, Flip, FocusRelMse };
+enum class Metric { RelMse, Flip, FocusRelMse, FocusFlip };
 double metric_of(const CurvePoint& point, Metric metric);
 
 // Mean error over the first `horizon` work units after the edit. The image shown after point i

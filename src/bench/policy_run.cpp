@@ -18,9 +18,36 @@ bool all_shown(const std::vector<uint32_t>& flags, const std::vector<uint32_t>& 
 
 CurvePoint measured(uint32_t step, double work, double wall_seconds, const ImageRGB& shown, const ImageRGB& reference,
                     const PolicyRunOptions& options) {
-  CurvePoint point{step, work, wall_seconds * 1e3, relmse(shown, reference), flip_mean(shown, reference, options.flip)};
-  if (!options.focus_region.empty()) point.focus_relmse = relmse_masked(shown, reference, options.focus_region);
+  if (options.focus_region.empty())
+    return {step, work, wall_seconds * 1e3, relmse(shown, reference), flip_mean(shown, reference, options.flip)};
+  // One FLIP map for the frame's mean (summed as flip_mean sums) and the region's.
+  const std::vector<float> flip = flip_error_map(shown, reference, options.flip);
+  double sum = 0.0, region_sum = 0.0;
+  size_t region_pixels = 0;
+  for (size_t p = 0; p < flip.size(); ++p) {
+    sum += flip[p];
+    if (options.focus_region[p]) {
+      region_sum += flip[p];
+      ++region_pixels;
+    }
+  }
+  CurvePoint point{step, work, wall_seconds * 1e3, relmse(shown, reference), flip.empty() ? 0.0 : sum / double(flip.size())};
+  point.focus_relmse = relmse_masked(shown, reference, options.focus_region);
+  point.focus_flip = region_pixels ? region_sum / double(region_pixels) : 0.0;
   return point;
+}
+
+// One scheduling step, its time added to `wall`; returns the work since the edit.
+double timed_step(Scheduler& scheduler, double& wall) {
+  const Timer timer;
+  scheduler.step();
+  wall += timer.seconds();
+  return scheduler.work_since_edit();
+}
+
+// Every step while the work is small, then every sparse_every-th, and the last.
+bool evaluated_at(uint32_t step, double work, bool last, const PolicyRunOptions& options) {
+  return work <= options.dense_until || last || step % std::max(options.sparse_every, 1u) == 0;
 }
 
 // The run's totals and the image it ends on; captures not reached take that image.
@@ -44,6 +71,8 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
   if (options.display) scheduler.set_display_rule(*options.display);
   scheduler.set_first_visit_spp(options.first_visit_spp);
   scheduler.set_relight(options.relight);
+  scheduler.set_converged_spp(options.target_spp);
+  scheduler.set_focus_lead(options.focus_lead);
   if (!options.focus.empty()) scheduler.set_focus(options.focus);  // what the user looked at before the edit
 
   PolicyRun run;
@@ -69,14 +98,10 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
     run.first_feedback_ms = wall * 1e3;
   }
   for (uint32_t step = 1; options.max_steps == 0 || step <= options.max_steps; ++step) {
-    const Timer timer;
-    scheduler.step();
-    wall += timer.seconds();
-    const double work = scheduler.work_since_edit();
+    const double work = timed_step(scheduler, wall);
     run.converged = work >= double(options.target_spp);
     const bool tracking = run.first_feedback_work < 0.0 || run.changed_tiles_shown_work < 0.0;
-    const bool last = run.converged || step == options.max_steps;
-    const bool evaluated = work <= options.dense_until || last || step % std::max(options.sparse_every, 1u) == 0;
+    const bool evaluated = evaluated_at(step, work, run.converged || step == options.max_steps, options);
     if (!evaluated && !tracking) continue;
     const ImageRGB shown = evaluated
                                ? evaluate(step, wall)
@@ -99,6 +124,8 @@ PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const Po
   renderer.reset();
   renderer.reset_counters();
   Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step, options.visit_spp);
+  scheduler.set_converged_spp(options.target_spp);
+  scheduler.set_focus_lead(options.focus_lead);
   PolicyRun run;
   double wall = 0.0;
   const auto evaluate = [&](uint32_t step) {
@@ -115,14 +142,9 @@ PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const Po
   }
   evaluate(0);
   for (uint32_t step = 1; options.max_steps == 0 || step <= options.max_steps; ++step) {
-    const Timer timer;
-    scheduler.step();
-    wall += timer.seconds();
-    const double work = scheduler.work_since_edit();
+    const double work = timed_step(scheduler, wall);
     run.converged = work >= double(options.target_spp);
-    if (work <= options.dense_until || run.converged || step == options.max_steps ||
-        step % std::max(options.sparse_every, 1u) == 0)
-      evaluate(step);
+    if (evaluated_at(step, work, run.converged || step == options.max_steps, options)) evaluate(step);
     if (run.converged) break;
   }
   finish(run, scheduler, scheduler.overhead_seconds(), wall, renderer.counters().non_finite_samples, options);

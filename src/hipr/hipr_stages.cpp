@@ -65,7 +65,8 @@ void HiprStages::stage2_discover(uint32_t offset, uint32_t count, uint32_t sampl
   if (offset >= tiles || count == 0) return;
   abi::TracePush push = m_discovery.push(offset, std::min(count, tiles - offset), samples_per_pixel);
   push.requireFlags = abi::kTileActive;
-  push.sampleTarget = m_parts.sample_target;
+  push.sampleTarget = m_parts.sample_target.round;
+  push.focusTarget = m_parts.sample_target.focus;
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     m_discovery.record(cmd, push);
     if (then_resolve) m_parts.resolve.record(cmd, {push.listOffset, push.tileCount, push.requireFlags, 0}, *then_resolve);

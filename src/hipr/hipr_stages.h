@@ -15,6 +15,12 @@
 
 namespace hipr {
 
+// The scheduler's round targets (ProgressiveRenderer::set_sample_target): 0 for none.
+struct SampleTarget {
+  uint32_t round = 0;
+  uint32_t focus = 0;
+};
+
 // What the stages share with the rest of the renderer.
 struct RenderParts {
   const vk::Context& ctx;
@@ -24,7 +30,7 @@ struct RenderParts {
   Film& film;
   GBufferPass& gbuffers;
   const ResolvePass& resolve;
-  const uint32_t& sample_target;  // the scheduler's round target (ProgressiveRenderer::set_sample_target)
+  const SampleTarget& sample_target;
 };
 
 class HiprStages final : public HiprStageRunner {

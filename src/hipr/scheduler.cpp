@@ -52,6 +52,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   // nothing visible changed) the schedule starts at once.
   m_leading = std::min(m_policy->plan(m_renderer, changes), m_tile_count);
   m_leading_cursor = 0;
+  planned();
   m_renderer.mark_all_owed();
   m_overhead_seconds += schedule_timer.seconds();
 }
@@ -76,8 +77,21 @@ void Scheduler::step() {
       m_policy->finish_leading(m_renderer);
       m_overhead_seconds += timer.seconds();
       m_cursor = m_leading;
-      if (m_cursor == m_tile_count) end_round();  // every tile was a leading one
+      // Every leading tile has had its first visit: now the focus's among them take their lead
+      // (one visit first everywhere the stale image is wrong, then more where the user looks).
+      m_focus_ahead = true;
+      set_round_target(*m_round_target);
+      m_lead_cursor = 0;
+      m_lead_end = m_focus_target ? m_leading : 0;
+      if (!lead_pass_pending() && m_cursor == m_tile_count) end_round();  // every tile was a leading one
     }
+    return;
+  }
+  if (lead_pass_pending()) {
+    const uint32_t count = std::min(m_tiles_per_step, m_lead_end - m_lead_cursor);
+    m_renderer.render_focus_lead(m_lead_cursor, count, step_display_rule());
+    m_lead_cursor += count;
+    if (!lead_pass_pending() && m_cursor == m_tile_count) end_round();
     return;
   }
   m_renderer.render_schedule(m_cursor, m_tiles_per_step, spp, false, step_display_rule());
@@ -96,13 +110,35 @@ void Scheduler::end_round() {
 
 void Scheduler::set_round_target(uint32_t target) {
   m_round_target = target;
-  m_renderer.set_sample_target(target);
+  // The focus runs ahead by whole visits, up to the converged count (never past it: the work
+  // since the edit would then reach it before every pixel has).
+  m_focus_target = 0;
+  if (m_focus_ahead && m_follows_focus && !m_focus.empty() && m_focus_lead > 0 && m_converged_spp > target)
+    m_focus_target = std::min(target + m_focus_lead * m_visit_spp, m_converged_spp);
+  m_renderer.set_sample_target(target, m_focus_target);
+}
+
+void Scheduler::planned() {
+  m_focus_ahead = false;  // until the leading steps have visited the focus once
+  m_lead_cursor = m_lead_end = 0;
+  if (m_round_target) set_round_target(*m_round_target);
+}
+
+void Scheduler::set_converged_spp(uint32_t spp) {
+  m_converged_spp = spp;
+  if (m_round_target) set_round_target(*m_round_target);
+}
+
+void Scheduler::set_focus_lead(uint32_t visits) {
+  m_focus_lead = visits;
+  if (m_round_target) set_round_target(*m_round_target);
 }
 
 void Scheduler::set_focus(const Focus& focus) {
   m_focus = focus;
   const Timer timer;
   const std::optional<uint32_t> leading = m_policy->refocus(m_renderer, m_focus);
+  m_follows_focus = leading.has_value();
   if (!leading) return;  // the policy keeps its order
   // The round under way goes on in the new order: a visit brings a pixel to the round's target,
   // so tiles it already visited get nothing more and every pixel ends it with the same count
@@ -116,6 +152,7 @@ void Scheduler::set_focus(const Focus& focus) {
   m_cursor = 0;
   m_leading = std::min(*leading, m_tile_count);
   m_leading_cursor = 0;
+  planned();
   m_overhead_seconds += timer.seconds();
 }
 

@@ -117,7 +117,7 @@ struct Renderer::Impl {
   TracePass trace;
   BackgroundTiles background;
   std::unique_ptr<HiprStages> hipr;  // made on first use
-  uint32_t sample_target = 0;        // the scheduler's round target (set_sample_target)
+  SampleTarget sample_target;        // the scheduler's round targets (set_sample_target)
 };
 
 Renderer::Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
@@ -170,14 +170,30 @@ void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples
   count = std::min(count, tile_count() - offset);
   abi::TracePush push = m->trace.push(offset, count, samples_per_pixel);
   push.skipFlags = skip_active ? abi::kTileActive : 0u;
-  push.sampleTarget = m->sample_target;
+  push.sampleTarget = m->sample_target.round;
+  push.focusTarget = m->sample_target.focus;
   m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     m->trace.record(cmd, push);
     if (then_resolve) m->resolve.record(cmd, {offset, count, 0, push.skipFlags}, *then_resolve);
   });
 }
 
-void Renderer::set_sample_target(uint32_t target) { m->sample_target = target; }
+void Renderer::render_focus_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve) {
+  if (offset >= tile_count() || count == 0 || m->sample_target.focus == 0) return;
+  count = std::min(count, tile_count() - offset);
+  abi::TracePush push = m->trace.push(offset, count, 1);
+  push.requireFlags = abi::kTileFocus;
+  push.sampleTarget = m->sample_target.round;
+  push.focusTarget = m->sample_target.focus;
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m->trace.record(cmd, push);
+    if (then_resolve) m->resolve.record(cmd, {offset, count, push.requireFlags, 0}, *then_resolve);
+  });
+}
+
+void Renderer::set_sample_target(uint32_t target, uint32_t focus_target) {
+  m->sample_target = {target, focus_target};
+}
 
 std::pair<uint32_t, uint32_t> Renderer::sample_count_range() const {
   const std::vector<bool> owed = m->film.owed_pixels();

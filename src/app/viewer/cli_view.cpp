@@ -132,6 +132,11 @@ Command add_view_command(CLI::App& app) {
                   "At exit, write fps and per-edit feedback latency (JSON)");
   cmd->add_option("--save", v.save, "At exit, save the edited scene as glTF (.gltf or .glb)");
   cmd->add_option("--select", options->select, "Node selected at start (glTF name or #index)");
+  cmd->add_option("--focus-lead", v.focus_lead,
+                  "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
+      ->capture_default_str();
+  cmd->add_flag_function("--no-focus", [&v](int64_t) { v.focus_selection = false; },
+                         "hipr does not start from the selected object (the HiPR panel's \"focus: selection\")");
   add_common_options(*cmd, v.common);
   return {cmd, [options] { return run_view(*options); }};
 }

@@ -120,6 +120,9 @@ void hipr_section(Session& session, ViewerState& state) {
   ImGui::SameLine();
   ImGui::Checkbox("cursor", &state.focus_cursor);
   if (state.focus_cursor) ImGui::SliderFloat("focus radius (px)", &state.focus_radius, 4.0f, 256.0f, "%.0f");
+  int lead = int(settings.focus_lead);
+  if (ImGui::SliderInt("focus lead", &lead, 0, 16)) session.set_focus_lead(uint32_t(std::max(lead, 0)));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("visits the focus runs ahead of the rest (0: it only orders)");
   ImGui::InputInt("n (tile px)", &state.tile_size_input);
   state.tile_size_input = std::clamp(state.tile_size_input, 1, 256);
   ImGui::SameLine();

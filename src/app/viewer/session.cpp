@@ -34,6 +34,8 @@ std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy po
   scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp
                                                             : default_first_visit_spp(m_settings));
   scheduler->set_relight(m_settings.relight);
+  scheduler->set_converged_spp(m_settings.spp);  // rendering pauses there: the focus never passes it
+  scheduler->set_focus_lead(m_settings.focus_lead);
   return scheduler;
 }
 
@@ -159,6 +161,11 @@ const std::vector<uint32_t>& Session::instance_ids() {
 Renderer::PixelHit Session::pick(uint32_t x, uint32_t y) {
   ensure_gbuffer();
   return m_renderer->gbuffer_at(x, y);
+}
+
+void Session::set_focus_lead(uint32_t visits) {
+  m_settings.focus_lead = visits;
+  m_scheduler->set_focus_lead(visits);
 }
 
 void Session::set_view_focus(const Focus& focus) {

@@ -80,6 +80,7 @@ class Viewer {
     settings.visit_spp = options.visit_spp;
     settings.first_visit_spp = options.first_visit_spp;
     settings.relight = options.relight;
+    settings.focus_lead = options.focus_lead;
     settings.display = options.display_rule;
     settings.spp = options.common.spp;
     m_state.open_path = scene.source.string();
@@ -95,6 +96,7 @@ class Viewer {
     m_state.tile_size_input = int(options.common.render.tile_size);
     m_state.preset = options.common.preset.empty() ? "default" : options.common.preset;
     m_state.selected_node = options.select;
+    m_state.focus_selection = options.focus_selection;
     // The session compiles the kernels (lavapipe: up to minutes on a first start): say so.
     show_message("Preparing " + scene.source.filename().string() +
                  ":\ncompiling the path tracer (the first start with a scene can take a minute or "

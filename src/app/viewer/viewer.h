@@ -34,6 +34,8 @@ struct ViewerOptions {
   std::filesystem::path stats_json;  // fps and per-edit latency, written at exit
   std::filesystem::path save;        // the edited scene, saved as glTF at exit
   int select = -1;                   // node selected at start (-1: none)
+  bool focus_selection = true;       // hipr starts from the selected object (docs/method.md#focus)
+  uint32_t focus_lead = kDefaultFocusLead;  // visits the focus's tiles run ahead of the rest
 };
 
 // Runs the viewer on a loaded scene until the window closes or the frame count is reached.
