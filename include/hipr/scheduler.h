@@ -48,9 +48,9 @@ class Scheduler {
   // What the user looks at (docs/method.md#focus): from now on, and at every later edit after
   // the edit's own changes, HiPR starts from where the focus is seen and spreads outward. A new
   // focus re-plans at once without restarting any pixel: the round under way is completed in
-  // the new order (tiles it already visited get nothing more in it, so every pixel still ends
-  // the round with the same samples), then rounds follow that order. An empty focus clears it.
-  // Policies other than hipr keep their order.
+  // the new order (tiles it already visited get nothing more in it), then rounds follow that
+  // order; with a converged count, the focus's tiles also run ahead (set_converged_spp). An
+  // empty focus clears it. Policies other than hipr keep their order.
   void set_focus(const Focus& focus);
   const Focus& focus() const { return m_focus; }
   // The samples per pixel the render converges to (where its user stops stepping: the work

@@ -2,7 +2,9 @@
 // a converged reference of the edited scene (cached), then every policy from the same converged
 // pre-edit state at equal work per step, with the error of the displayed image after each step.
 // Writes DIR/curves.csv, DIR/summary.json, DIR/plot.png (docs/method.md#measuring-run-time-against-error)
-// and, per edit, the reference and what each policy shows after 0.25 and 1 work units.
+// and, per edit, the reference and what each policy shows after 0.25 and 1 work units. Focus
+// ops set the focus for the edits after them (hipr runs again with it, every run measures the
+// focus region); --cold-start first measures the scene rendered from nothing.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -84,7 +86,8 @@ void log_run(const std::string& name, const bench::PolicyRun& run) {
   std::string line = "  " + name + ": relMSE AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::RelMse, 1.0)) +
                      ", FLIP AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::Flip, 1.0));
   if (!run.curve.empty() && run.curve.front().focus_relmse >= 0.0)
-    line += ", focus region relMSE AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::FocusRelMse, 1.0));
+    line += ", focus region relMSE AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::FocusRelMse, 1.0)) +
+            ", FLIP AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::FocusFlip, 1.0));
   log::info(line + ", " + std::to_string(run.wall_seconds) + " s");
 }
 
@@ -206,7 +209,7 @@ int run_bench(BenchOptions& o) {
   if (edits.empty()) throw InputError(o.edits.string() + ": the edit script has no edits");
   {
     Scene probe = scene;  // every name checked before anything renders or is written
-    Focus focus;
+    Focus focus;          // and every focus op (a 17th disc is refused here too)
     for (const Edit& edit : edits) {
       apply_edit(probe, edit);
       if (const auto* focus_edit = std::get_if<FocusEdit>(&edit)) focus = with_focus_edit(probe, focus, *focus_edit);

@@ -243,10 +243,6 @@ void Viewer::run_script(uint32_t frame) {
 void Viewer::draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys) {
   const ImGuiIO& io = ImGui::GetIO();
   m_input.update(*m_session, m_state, layout, m_window.pixel_ratio(), keys);
-  std::optional<glm::vec2> cursor;  // the rendered pixel under the mouse, unless a panel has it
-  const glm::vec2 mouse = glm::vec2(io.MousePos.x, io.MousePos.y) * m_window.pixel_ratio();
-  if (const auto pixel = io.WantCaptureMouse ? std::nullopt : layout.to_render(mouse)) cursor = glm::vec2(*pixel) + 0.5f;
-  m_session->set_view_focus(view_focus(m_session->scene(), m_state, cursor));
   if (m_state.show_ui) {
     const float panel_x = io.DisplaySize.x - kPanelWidth;
     draw_side_panel(*m_session, m_state, panel_x, io.DisplaySize.y);

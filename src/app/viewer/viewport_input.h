@@ -23,7 +23,8 @@ namespace hipr::viewer {
 class ViewportInput {
  public:
   // `pixel_ratio`: framebuffer pixels per window coordinate (ImGui reports the mouse in the
-  // latter, the layout is in the former). `keys`: the presses since the last frame.
+  // latter, the layout is in the former). `keys`: the presses since the last frame. Hands the
+  // session the view's focus (the selection, the cursor) every frame.
   void update(Session& session, ViewerState& state, const ViewLayout& layout, float pixel_ratio,
               const std::vector<KeyPress>& keys);
 
