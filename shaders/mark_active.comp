@@ -5,9 +5,9 @@
 // the starting point of a drag).
 // Reads: both G-buffers, the changed-record flags, the surface each displayed pixel depicts.
 // Writes: kTileActive (and kTileFocus where the focus is) into the tile flags, and per tile a
-// change score that orders the active tiles: 1 per pixel showing a changed element, 2 where the pixel shows another surface than
-// before or than the screen shows (an object moved in or out: the largest changes on screen,
-// while a moved object's own inside often looks much as it did).
+// change score that orders the active tiles: 1 per pixel showing a changed element, 2 where the
+// pixel shows another surface than before or than the screen shows (an object moved in or out:
+// the largest changes on screen, while a moved object's own inside often looks much as it did).
 // The focus (docs/method.md#focus) is marked here too: a pixel whose surface now is a focus
 // record, or which lies in a focus disc, makes its tile active and adds its focus weight to the
 // tile's focus score. The focus orders tiles after the edit's (schedule_keys.comp) and

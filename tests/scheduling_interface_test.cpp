@@ -17,7 +17,7 @@ namespace {
 
 // HiPR's stages as calls: stage 1 reports `active` tiles (stage1_focus `focus_active`).
 struct FakeStages final : HiprStageRunner {
-  uint32_t active = 3, focus_active = 2;
+  uint32_t active = 3, focus_active = 2, seeded = 3;
   uint32_t stage1_calls = 0, focus_calls = 0, schedule_builds = 0;
   std::vector<std::pair<uint32_t, uint32_t>> stage2;  // (offset, count) per call
   Focus focus;
@@ -26,6 +26,7 @@ struct FakeStages final : HiprStageRunner {
     return active;
   }
   void set_focus(const Focus& f) override { focus = f; }
+  uint32_t seeded_tiles() const override { return seeded; }
   uint32_t stage1_focus() override {
     ++focus_calls;
     return focus_active;
@@ -217,6 +218,31 @@ TEST(SchedulingInterface, TheFocusTakesItsLeadAfterItsFirstVisit) {
   // Without a lead the focus only orders.
   scheduler.set_focus_lead(0);
   EXPECT_EQ(renderer.focus_target, 0u);
+}
+
+// After an edit that activates every tile (a camera move), the focus does not wait for the whole
+// stage 2: its lead steps come once the scored entries (the focus's tiles lead the order) have
+// had their first visit, then stage 2 goes on.
+TEST(SchedulingInterface, AfterACameraEditTheLeadComesOnceTheFocusIsVisited) {
+  FakeRenderer renderer;
+  renderer.stages.emplace();
+  Scheduler scheduler(renderer, Policy::Hipr, 2);
+  scheduler.set_converged_spp(8);
+  scheduler.set_focus({{FocusSeed{.pixel = glm::vec2(3.0f, 4.0f), .radius = 2.0f}}});
+  renderer.stages->active = 12;  // every tile
+  renderer.stages->seeded = 3;   // the focus's three
+  scheduler.on_edit(Scene{}, ChangeSet{});
+  renderer.stages->stage2.clear();
+  scheduler.step();  // stage 2: entries 0, 1
+  scheduler.step();  // stage 2: entry 2 (a step stops at the seeded ones), then the lead begins
+  EXPECT_EQ(renderer.stages->stage2, (std::vector<std::pair<uint32_t, uint32_t>>{{0, 2}, {2, 1}}));
+  EXPECT_EQ(renderer.focus_target, 1u + kDefaultFocusLead) << "the round's 1 and the lead's visits";
+  scheduler.step();
+  scheduler.step();
+  EXPECT_EQ(renderer.lead_calls, (std::vector<std::pair<uint32_t, uint32_t>>{{0, 2}, {2, 1}}));
+  EXPECT_TRUE(scheduler.leading_steps_pending());
+  scheduler.step();  // stage 2 goes on from entry 3
+  EXPECT_EQ(renderer.stages->stage2.back(), (std::pair<uint32_t, uint32_t>{3, 2}));
 }
 
 TEST(SchedulingInterface, HiprNeedsARendererWithItsStages) {

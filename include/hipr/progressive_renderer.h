@@ -51,6 +51,9 @@ class HiprStageRunner {
   // (tiles an edit left unrendered keep their rank, the focus's tiles are active), from the
   // G-buffer as it is; nothing is rendered. Returns |A|.
   virtual uint32_t stage1_focus() = 0;
+  // Of the last stage 1's active tiles, how many have a change or focus score: they lead its
+  // order, the rest of the active set (an edit that activates every tile) follows them.
+  virtual uint32_t seeded_tiles() const = 0;
 };
 
 class ProgressiveRenderer {

@@ -74,8 +74,8 @@ class Scheduler {
   // The policy still renders leading steps of its own since the last edit (HiPR: stage 2, whose
   // weights are partial until it ends).
   bool leading_steps_pending() const { return m_leading_cursor < m_leading; }
-  // After the leading steps, the focus's tiles among them take their lead (set_focus_lead) in
-  // steps of their own before the round goes on; some are still to come.
+  // Once the leading steps have visited the edit's and the focus's tiles, the focus's take their
+  // lead (set_focus_lead) in steps of their own before the rest; some are still to come.
   bool lead_pass_pending() const { return m_lead_cursor < m_lead_end; }
 
  private:
@@ -89,6 +89,8 @@ class Scheduler {
   void set_round_target(uint32_t target);
   // A plan was made (an edit or a focus): the focus's lead waits for its first visit.
   void planned();
+  // The leading steps have passed the seeded entries: the focus's lead steps come next.
+  void begin_lead();
 
 
   ProgressiveRenderer& m_renderer;
@@ -114,6 +116,8 @@ class Scheduler {
   bool m_follows_focus = false;  // the policy ordered by the focus (its tiles may run ahead)
   bool m_focus_ahead = false;    // the focus's tiles are brought to their lead (not before their first visit)
   uint32_t m_lead_cursor = 0, m_lead_end = 0;  // the lead pass over schedule entries [0, m_lead_end)
+  uint32_t m_lead_at = 0;     // leading entries [0, m_lead_at) hold the edit's and the focus's tiles
+  bool m_lead_begun = false;  // the leading steps have passed them
   uint32_t m_focus_target = 0;  // what the focus's tiles are brought to (0: the round target)
   uint32_t m_converged_spp = 0;
   uint32_t m_focus_lead = kDefaultFocusLead;

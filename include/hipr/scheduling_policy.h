@@ -61,6 +61,12 @@ class SchedulingPolicy {
   }
   // After the last leading entry: orders the rest (HiPR: stage 3, from stage 2's weights).
   virtual void finish_leading(ProgressiveRenderer& renderer) { (void)renderer; }
+  // Of the last plan's leading entries, the first this many hold the tiles the edit or the
+  // focus scored (HiPR: the rest of the active set follows them, by distance); 0: none.
+  virtual uint32_t seeded_leading(ProgressiveRenderer& renderer) {
+    (void)renderer;
+    return 0;
+  }
   // The user's focus changed (docs/method.md#focus; no edit: nothing restarts). A policy that
   // follows it keeps it for every later plan, re-plans now and returns its leading entries as
   // plan() does; the others return nothing and keep their order.

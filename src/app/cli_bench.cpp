@@ -83,11 +83,12 @@ std::vector<PlannedRun> planned_runs(const std::vector<Policy>& policies, const 
 }
 
 void log_run(const std::string& name, const bench::PolicyRun& run) {
-  std::string line = "  " + name + ": relMSE AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::RelMse, 1.0)) +
-                     ", FLIP AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::Flip, 1.0));
+  const auto auc = [&](bench::Metric metric) { return std::to_string(error_auc(run.curve, metric, 1.0)); };
+  std::string line = "  " + name + ": relMSE AUC(1) " + auc(bench::Metric::RelMse) + ", FLIP AUC(1) " +
+                     auc(bench::Metric::Flip);
   if (!run.curve.empty() && run.curve.front().focus_relmse >= 0.0)
-    line += ", focus region relMSE AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::FocusRelMse, 1.0)) +
-            ", FLIP AUC(1) " + std::to_string(error_auc(run.curve, bench::Metric::FocusFlip, 1.0));
+    line += ", focus region relMSE AUC(1) " + auc(bench::Metric::FocusRelMse) + ", FLIP AUC(1) " +
+            auc(bench::Metric::FocusFlip);
   log::info(line + ", " + std::to_string(run.wall_seconds) + " s");
 }
 
@@ -109,7 +110,8 @@ void run_cold_start_bench(const BenchOptions& o, const vk::Context& ctx, Rendere
   run_options.focus_region =
       focus.empty() ? std::vector<uint8_t>()
                     : focus_pixels(focus, renderer.gbuffer_instances(), settings.width, settings.height);
-  log::info("cold start" + (focus.empty() ? std::string() : ", " + focus_line(scene, focus, run_options.focus_region)));
+  const std::string focus_text = focus.empty() ? "" : ", " + focus_line(scene, focus, run_options.focus_region);
+  log::info("cold start" + focus_text);
   BenchEdit& edit_report = report.add_edit("cold start", reference.image, 0, renderer.tile_count());
   for (const PlannedRun& planned : planned_runs(policies, focus)) {
     if (planned.policy == Policy::Oracle) continue;  // its order needs an edit to rank
@@ -215,7 +217,8 @@ int run_bench(BenchOptions& o) {
       if (const auto* focus_edit = std::get_if<FocusEdit>(&edit)) focus = with_focus_edit(probe, focus, *focus_edit);
     }
     if (std::all_of(edits.begin(), edits.end(), is_focus) && !o.cold_start)
-      throw InputError(o.edits.string() + ": the edit script has only focus ops: nothing to measure without --cold-start");
+      throw InputError(o.edits.string() +
+                       ": the edit script has only focus ops: nothing to measure without --cold-start");
     if (o.drag && std::any_of(edits.begin(), edits.end(), is_focus))
       throw InputError(o.edits.string() + ": --drag takes no focus ops (a drag measures edits only)");
     if (o.drag && o.cold_start) throw InputError("--cold-start and --drag measure different things: use one");

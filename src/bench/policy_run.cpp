@@ -31,7 +31,8 @@ CurvePoint measured(uint32_t step, double work, double wall_seconds, const Image
       ++region_pixels;
     }
   }
-  CurvePoint point{step, work, wall_seconds * 1e3, relmse(shown, reference), flip.empty() ? 0.0 : sum / double(flip.size())};
+  CurvePoint point{step, work, wall_seconds * 1e3, relmse(shown, reference),
+                   flip.empty() ? 0.0 : sum / double(flip.size())};
   point.focus_relmse = relmse_masked(shown, reference, options.focus_region);
   point.focus_flip = region_pixels ? region_sum / double(region_pixels) : 0.0;
   return point;
@@ -123,7 +124,8 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
 PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const PolicyRunOptions& options) {
   renderer.reset();
   renderer.reset_counters();
-  Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step, options.visit_spp);
+  Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step,
+                      options.visit_spp);
   scheduler.set_converged_spp(options.target_spp);
   scheduler.set_focus_lead(options.focus_lead);
   PolicyRun run;

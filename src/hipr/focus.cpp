@@ -43,7 +43,8 @@ Focus with_focus_edit(const Scene& scene, Focus focus, const FocusEdit& edit) {
   seed.radius = edit.radius;
   validate_focus_seed(seed, describe(Edit{edit}));
   if (seed.pixel) {
-    const auto discs = std::count_if(focus.seeds.begin(), focus.seeds.end(), [](const FocusSeed& s) { return s.pixel.has_value(); });
+    const auto discs = std::count_if(focus.seeds.begin(), focus.seeds.end(),
+                                     [](const FocusSeed& s) { return s.pixel.has_value(); });
     if (size_t(discs) >= kMaxFocusDiscs)
       throw InputError(describe(Edit{edit}) + ": a focus holds at most " + std::to_string(kMaxFocusDiscs) + " discs");
   }

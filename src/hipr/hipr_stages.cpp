@@ -54,9 +54,19 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
     vk::compute_to_compute_barrier(cmd);
     m_active.record(cmd, carry_mode == abi::kCarryEverything);
   });
-  // The one number the CPU needs: stage 2 is split into steps of equal work over |A| tiles.
+  // What the CPU needs: stage 2 is split into steps of equal work over |A| tiles, and the
+  // focus's lead comes after the scored ones among them.
   const std::vector<uint32_t> flags = m_parts.tiles.flags.download_all<uint32_t>();
-  return uint32_t(std::count_if(flags.begin(), flags.end(), [](uint32_t f) { return (f & abi::kTileActive) != 0; }));
+  const std::vector<uint32_t> change = m_active.tile_change.download_all<uint32_t>();
+  const std::vector<uint32_t> focus = m_active.tile_focus.download_all<uint32_t>();
+  uint32_t active = 0;
+  m_seeded = 0;
+  for (size_t t = 0; t < flags.size(); ++t) {
+    if ((flags[t] & abi::kTileActive) == 0) continue;
+    ++active;
+    if (change[t] != 0 || focus[t] != 0) ++m_seeded;
+  }
+  return active;
 }
 
 void HiprStages::stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,

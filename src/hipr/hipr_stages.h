@@ -44,6 +44,7 @@ class HiprStages final : public HiprStageRunner {
   void build_schedule() override;
   void set_focus(const Focus& focus) override;
   uint32_t stage1_focus() override;
+  uint32_t seeded_tiles() const override { return m_seeded; }
 
   // Recompiles stage 2's kernel with other kernel features.
   void set_kernel_features(uint32_t features) { m_discovery.set_features(features); }
@@ -61,7 +62,8 @@ class HiprStages final : public HiprStageRunner {
   ActiveTilesPass m_active;
   TracePass m_discovery;
   SchedulePass m_schedule;
-  Focus m_focus;  // marked by every stage 1
+  Focus m_focus;          // marked by every stage 1
+  uint32_t m_seeded = 0;  // active tiles with a change or focus score at the last stage 1
 };
 
 // A trace push that lets every workgroup leave at once (bit 31 is no kTile* flag): a dispatch

@@ -86,6 +86,7 @@ class HiprPolicy final : public SchedulingPolicy {
     stages_of(renderer).stage2_discover(offset, count, samples_per_pixel, then_resolve);
   }
   void finish_leading(ProgressiveRenderer& renderer) override { stages_of(renderer).build_schedule(); }
+  uint32_t seeded_leading(ProgressiveRenderer& renderer) override { return stages_of(renderer).seeded_tiles(); }
   // The focus is a changed set for ordering only: stage 1 marks where it is seen (after what
   // an edit left unrendered), stage 2 discovers from there, stage 3 orders the rest outward.
   std::optional<uint32_t> refocus(ProgressiveRenderer& renderer, const Focus& focus) override {

@@ -65,33 +65,29 @@ std::optional<DisplayRule> Scheduler::step_display_rule() const {
 void Scheduler::step() {
   const bool first_visit = m_first_round && m_edited && !m_policy->whole_passes();
   const uint32_t spp = first_visit ? m_first_visit_spp : m_visit_spp;
+  if (lead_pass_pending()) {
+    const uint32_t count = std::min(m_tiles_per_step, m_lead_end - m_lead_cursor);
+    m_renderer.render_focus_lead(m_lead_cursor, count, step_display_rule());
+    m_lead_cursor += count;
+    if (!lead_pass_pending() && !leading_steps_pending() && m_cursor == m_tile_count) end_round();
+    return;
+  }
   if (leading_steps_pending()) {
     // The policy's own steps, one budget each (HiPR's stage 2: immediate feedback, most changed
     // first). After the last, the policy orders the rest (stage 3's sort, from the weights stage
     // 2 discovered); the leading entries stay first in it, so the schedule resumes after them.
-    const uint32_t count = std::min(m_tiles_per_step, m_leading - m_leading_cursor);
+    uint32_t count = std::min(m_tiles_per_step, m_leading - m_leading_cursor);
+    if (!m_lead_begun && m_lead_at > m_leading_cursor) count = std::min(count, m_lead_at - m_leading_cursor);
     m_policy->render_leading(m_renderer, m_leading_cursor, count, spp, step_display_rule());
     m_leading_cursor += count;
+    if (!m_lead_begun && m_leading_cursor >= m_lead_at) begin_lead();
     if (m_leading_cursor == m_leading) {
       const Timer timer;
       m_policy->finish_leading(m_renderer);
       m_overhead_seconds += timer.seconds();
       m_cursor = m_leading;
-      // Every leading tile has had its first visit: now the focus's among them take their lead
-      // (one visit first everywhere the stale image is wrong, then more where the user looks).
-      m_focus_ahead = true;
-      set_round_target(*m_round_target);
-      m_lead_cursor = 0;
-      m_lead_end = m_focus_target ? m_leading : 0;
       if (!lead_pass_pending() && m_cursor == m_tile_count) end_round();  // every tile was a leading one
     }
-    return;
-  }
-  if (lead_pass_pending()) {
-    const uint32_t count = std::min(m_tiles_per_step, m_lead_end - m_lead_cursor);
-    m_renderer.render_focus_lead(m_lead_cursor, count, step_display_rule());
-    m_lead_cursor += count;
-    if (!lead_pass_pending() && m_cursor == m_tile_count) end_round();
     return;
   }
   m_renderer.render_schedule(m_cursor, m_tiles_per_step, spp, false, step_display_rule());
@@ -120,8 +116,21 @@ void Scheduler::set_round_target(uint32_t target) {
 
 void Scheduler::planned() {
   m_focus_ahead = false;  // until the leading steps have visited the focus once
+  m_lead_begun = false;
   m_lead_cursor = m_lead_end = 0;
+  m_lead_at = std::min(m_policy->seeded_leading(m_renderer), m_leading);
   if (m_round_target) set_round_target(*m_round_target);
+}
+
+void Scheduler::begin_lead() {
+  // The edit's and the focus's tiles have had their first visit (one visit first wherever the
+  // stale image is wrong): the focus's among them now take their lead, before the rest of the
+  // leading steps (after a camera edit every tile leads) and the rest of the round.
+  m_lead_begun = true;
+  m_focus_ahead = true;
+  set_round_target(*m_round_target);
+  m_lead_cursor = 0;
+  m_lead_end = m_focus_target ? m_lead_at : 0;
 }
 
 void Scheduler::set_converged_spp(uint32_t spp) {
@@ -142,9 +151,9 @@ void Scheduler::set_focus(const Focus& focus) {
   if (!leading) return;  // the policy keeps its order
   // The round under way goes on in the new order: a visit brings a pixel to the round's target,
   // so tiles it already visited get nothing more and every pixel ends it with the same count
-  // (no pixel may run ahead: the work since the edit tells when a render has converged). Before
-  // the first edit the scheduler knows no round: the counts are read back, and the round is
-  // the one they are in (uniform counts: the next).
+  // (but the focus's lead: the work since the edit tells when a render has converged, so no
+  // pixel may run ahead unchecked). Before the first edit the scheduler knows no round: the
+  // counts are read back, and the round is the one they are in (uniform counts: the next).
   if (!m_round_target) {
     const auto [fewest, most] = m_renderer.sample_count_range();
     set_round_target(fewest == most ? most + m_visit_spp : most);

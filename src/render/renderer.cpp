@@ -62,8 +62,8 @@ struct Renderer::Impl {
 
   HiprStages& stages() {
     if (!hipr) {
-      hipr = std::make_unique<HiprStages>(RenderParts{ctx, settings, gpu, tiles, film, gbuffers, resolve, sample_target},
-                                          features);
+      const RenderParts parts{ctx, settings, gpu, tiles, film, gbuffers, resolve, sample_target};
+      hipr = std::make_unique<HiprStages>(parts, features);
       if (settings.compile_kernels_early) ctx.submit_and_wait([&](VkCommandBuffer cmd) { hipr->record_warm_up(cmd); });
     }
     return *hipr;

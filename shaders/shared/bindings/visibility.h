@@ -16,7 +16,7 @@ HIPR_CONST uint kVisibilityGBuffer = 0u;         // GBufferTexel per pixel (writ
 // mark_active.comp
 HIPR_CONST uint kMarkActiveGBuffer = 0u;         // GBufferTexel per pixel, this scene state
 HIPR_CONST uint kMarkActivePrevious = 1u;        // GBufferTexel per pixel, before the edit
-HIPR_CONST uint kMarkActiveChangedRecords = 2u;  // uint per GeometryRecord: kRecordChanged = in E, above it the focus weight
+HIPR_CONST uint kMarkActiveChangedRecords = 2u;  // uint per GeometryRecord: kRecordChanged, focus weight
 HIPR_CONST uint kMarkActiveTileFlags = 3u;       // uint per tile: kTileActive is set here
 HIPR_CONST uint kMarkActiveTileChange = 4u;      // uint per tile: how much of it stage 1 saw change
 HIPR_CONST uint kMarkActiveDisplay = 5u;         // DisplayTexel per pixel: which surface the screen shows

@@ -151,7 +151,8 @@ void ViewportInput::update(Session& session, ViewerState& state, const ViewLayou
   // Where the user looks: the selection and, when asked, the pixel under the cursor
   // (docs/method.md#focus); a panel under the mouse holds no gaze.
   std::optional<glm::vec2> cursor;
-  if (const auto pixel = io.WantCaptureMouse ? std::nullopt : layout.to_render(mouse)) cursor = glm::vec2(*pixel) + 0.5f;
+  if (const auto pixel = io.WantCaptureMouse ? std::nullopt : layout.to_render(mouse))
+    cursor = glm::vec2(*pixel) + 0.5f;
   session.set_view_focus(view_focus(session.scene(), state, cursor));
 
   if (m_drag == Drag::None) return;
