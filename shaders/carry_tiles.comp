@@ -35,7 +35,9 @@ void main() {
   const bool carried = owed && ranked != 0u;
   const uint everything = u_mode == kCarryEverything ? kTileActive : 0u;
   const uint kept = u_mode == kCarryRefocus ? b_tile_flags[tile] & (kTileShown | kTileSettled) : 0u;
-  b_tile_flags[tile] = everything | kept | (carried ? ranked : 0u);
+  // A carried tile keeps its change score, so it stays a seed; its focus score restarts.
+  const uint scored = carried && b_tile_change[tile] != 0u ? kTileScored : 0u;
+  b_tile_flags[tile] = everything | kept | (carried ? ranked | scored : 0u);
   b_tile_focus[tile] = 0u;
   if (!carried) {
     b_tile_weights[tile] = 0ul;

@@ -4,10 +4,11 @@
 // the pixel no longer sees (left there by an earlier edit whose tiles were not re-rendered yet:
 // the starting point of a drag).
 // Reads: both G-buffers, the changed-record flags, the surface each displayed pixel depicts.
-// Writes: kTileActive (and kTileFocus where the focus is) into the tile flags, and per tile a
-// change score that orders the active tiles: 1 per pixel showing a changed element, 2 where the
-// pixel shows another surface than before or than the screen shows (an object moved in or out:
-// the largest changes on screen, while a moved object's own inside often looks much as it did).
+// Writes: kTileActive | kTileScored (and kTileFocus where the focus is) into the tile flags, and
+// per tile a change score that orders the active tiles: 1 per pixel showing a changed element,
+// 2 where the pixel shows another surface than before or than the screen shows (an object moved
+// in or out: the largest changes on screen, while a moved object's own inside often looks much
+// as it did).
 // The focus (docs/method.md#focus) is marked here too: a pixel whose surface now is a focus
 // record, or which lies in a focus disc, makes its tile active and adds its focus weight to the
 // tile's focus score. The focus orders tiles after the edit's (schedule_keys.comp) and
@@ -61,7 +62,7 @@ void main() {
   const uint focus = focus_weight(pixel, now);
   if (!edited && focus == 0u) return;
   const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
-  atomicOr(b_tile_flags[tile], kTileActive | (focus != 0u ? kTileFocus : 0u));
+  atomicOr(b_tile_flags[tile], kTileActive | kTileScored | (focus != 0u ? kTileFocus : 0u));
   if (edited) atomicAdd(b_tile_change[tile], now != before || wrongSurface ? 2u : 1u);
   if (focus != 0u) atomicAdd(b_tile_focus[tile], focus);
 }

@@ -30,9 +30,7 @@ layout(scalar, binding = kKeysTileFocus) readonly buffer TileFocus { uint b_tile
 
 const uint kNone = 0xffffu;
 
-bool seed(uint tile) {
-  return (b_tile_flags[tile] & kTileActive) != 0u && (b_tile_change[tile] != 0u || b_tile_focus[tile] != 0u);
-}
+bool seed(uint tile) { return (b_tile_flags[tile] & (kTileActive | kTileScored)) == (kTileActive | kTileScored); }
 
 // Squared distance in tiles to the nearest seed; 0x0fffffff when there is none.
 uint seed_distance(uint x, uint y) {

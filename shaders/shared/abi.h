@@ -28,6 +28,7 @@ HIPR_CONST uint kTileDiscovered = 2u;  // reached by a secondary vertex or occlu
 HIPR_CONST uint kTileShown = 4u;       // since the last edit, the display has shown this tile's fresh estimate (weight >= 1/2)
 HIPR_CONST uint kTileSettled = 8u;     // the display shows the fresh estimate alone, until the next edit
 HIPR_CONST uint kTileFocus = 16u;      // the focus is seen in the tile (stage 1): it may run ahead of the round
+HIPR_CONST uint kTileScored = 32u;     // stage 1 gave the tile a change or focus score (a seed of the order)
 HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
 // Stage 1's changed-record flags: bit 0 the record is in the changed set E, the bits above
 // its focus weight (kFocusWeightScale units; 0: not a focus).

@@ -57,14 +57,12 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
   // What the CPU needs: stage 2 is split into steps of equal work over |A| tiles, and the
   // focus's lead comes after the scored ones among them.
   const std::vector<uint32_t> flags = m_parts.tiles.flags.download_all<uint32_t>();
-  const std::vector<uint32_t> change = m_active.tile_change.download_all<uint32_t>();
-  const std::vector<uint32_t> focus = m_active.tile_focus.download_all<uint32_t>();
   uint32_t active = 0;
   m_seeded = 0;
-  for (size_t t = 0; t < flags.size(); ++t) {
-    if ((flags[t] & abi::kTileActive) == 0) continue;
+  for (uint32_t f : flags) {
+    if ((f & abi::kTileActive) == 0) continue;
     ++active;
-    if (change[t] != 0 || focus[t] != 0) ++m_seeded;
+    if (f & abi::kTileScored) ++m_seeded;
   }
   return active;
 }

@@ -46,7 +46,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   m_edited = true;
   m_cursor = 0;
   m_first_round = true;
-  set_round_target(m_policy->whole_passes() ? m_visit_spp : m_first_visit_spp);
+  m_round_target = m_policy->whole_passes() ? m_visit_spp : m_first_visit_spp;  // handed over by planned()
   // Planned while the pixels' owed bits still say which tiles earlier edits left unrendered
   // (HiPR keeps those ranked), then every pixel owes a restart. With no leading step (HiPR when
   // nothing visible changed) the schedule starts at once.

@@ -98,6 +98,23 @@ struct Renderer::Impl {
                              : std::vector<uint32_t>(tiles.count(), 0u));
   }
 
+  // Traces schedule entries [offset, offset + count) of the tiles whose flags pass
+  // require/skip, toward the scheduler's round targets, and resolves them when asked.
+  void trace_entries(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, uint32_t require, uint32_t skip,
+                     std::optional<DisplayRule> then_resolve) {
+    if (offset >= tiles.count() || count == 0) return;
+    count = std::min(count, tiles.count() - offset);
+    abi::TracePush push = trace.push(offset, count, samples_per_pixel);
+    push.requireFlags = require;
+    push.skipFlags = skip;
+    push.sampleTarget = sample_target.round;
+    push.focusTarget = sample_target.focus;
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+      trace.record(cmd, push);
+      if (then_resolve) resolve.record(cmd, {offset, count, require, skip}, *then_resolve);
+    });
+  }
+
   // The G-buffer exists from the start but is rendered on first need: a render that never asks
   // which surface a pixel shows never compiles the visibility kernel.
   const GBufferPass& rendered_gbuffers() {
@@ -166,29 +183,12 @@ void Renderer::set_schedule(std::span<const uint32_t> order) { m->tiles.set_sche
 
 void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
                                std::optional<DisplayRule> then_resolve) {
-  if (offset >= tile_count() || count == 0) return;
-  count = std::min(count, tile_count() - offset);
-  abi::TracePush push = m->trace.push(offset, count, samples_per_pixel);
-  push.skipFlags = skip_active ? abi::kTileActive : 0u;
-  push.sampleTarget = m->sample_target.round;
-  push.focusTarget = m->sample_target.focus;
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    m->trace.record(cmd, push);
-    if (then_resolve) m->resolve.record(cmd, {offset, count, 0, push.skipFlags}, *then_resolve);
-  });
+  m->trace_entries(offset, count, samples_per_pixel, 0u, skip_active ? abi::kTileActive : 0u, then_resolve);
 }
 
 void Renderer::render_focus_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve) {
-  if (offset >= tile_count() || count == 0 || m->sample_target.focus == 0) return;
-  count = std::min(count, tile_count() - offset);
-  abi::TracePush push = m->trace.push(offset, count, 1);
-  push.requireFlags = abi::kTileFocus;
-  push.sampleTarget = m->sample_target.round;
-  push.focusTarget = m->sample_target.focus;
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    m->trace.record(cmd, push);
-    if (then_resolve) m->resolve.record(cmd, {offset, count, push.requireFlags, 0}, *then_resolve);
-  });
+  if (m->sample_target.focus == 0) return;
+  m->trace_entries(offset, count, 1, abi::kTileFocus, 0u, then_resolve);
 }
 
 void Renderer::set_sample_target(uint32_t target, uint32_t focus_target) {
@@ -196,15 +196,14 @@ void Renderer::set_sample_target(uint32_t target, uint32_t focus_target) {
 }
 
 std::pair<uint32_t, uint32_t> Renderer::sample_count_range() const {
-  const std::vector<bool> owed = m->film.owed_pixels();
-  const std::vector<uint32_t> counts = m->film.sample_counts();
+  const auto accum = m->film.accumulation.download_all<abi::PixelAccum>();  // one read-back
   uint32_t fewest = UINT32_MAX, most = 0;
-  for (size_t i = 0; i < counts.size(); ++i) {
-    const uint32_t count = owed[i] ? 0 : counts[i];
+  for (const abi::PixelAccum& pixel : accum) {
+    const uint32_t count = (pixel.count & abi::kPixelOwed) ? 0 : pixel.count & abi::kPixelCountMask;
     fewest = std::min(fewest, count);
     most = std::max(most, count);
   }
-  return {counts.empty() ? 0 : fewest, most};
+  return {accum.empty() ? 0 : fewest, most};
 }
 
 void Renderer::mark_all_owed() {
