@@ -44,7 +44,8 @@ test::SampleFn eon_sampler(glm::vec3 rho, float roughness, glm::vec3 wo) {
 
 test::SampleFn fuzz_sampler(float roughness, glm::vec3 wo) {
   return lobe_sampler([=](glm::vec3 wi) { return glm::vec3(shader::fuzz_eval_cos(roughness, wo, wi)); },
-                      [=](glm::vec3 wi) { return shader::fuzz_pdf(wo, wi); }, [](glm::vec2 u) { return shader::fuzz_sample(u); });
+                      [=](glm::vec3 wi) { return shader::fuzz_pdf(roughness, wo, wi); },
+                      [=](glm::vec2 u) { return shader::fuzz_sample(roughness, wo, u); });
 }
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -208,40 +209,44 @@ class FuzzFit : public ::testing::TestWithParam<std::tuple<float, float>> {};
 TEST_P(FuzzFit, SamplesFollowThePdf) {
   const auto [roughness, theta] = GetParam();
   const glm::vec3 wo = direction(theta);
-  expect_samples_follow_pdf(fuzz_sampler(roughness, wo), [&](glm::vec3 wi) { return shader::fuzz_pdf(wo, wi); });
+  expect_samples_follow_pdf(fuzz_sampler(roughness, wo), [&](glm::vec3 wi) { return shader::fuzz_pdf(roughness, wo, wi); });
 }
 
-INSTANTIATE_TEST_SUITE_P(Params, FuzzFit, ::testing::Combine(::testing::Values(0.3f, 1.0f), ::testing::Values(0.2f, 1.4f)));
+INSTANTIATE_TEST_SUITE_P(Params, FuzzFit,
+                         ::testing::Combine(::testing::Values(0.3f, 1.0f), ::testing::Values(0.0f, 0.2f, 1.0f, 1.4f)));
+// Smooth fuzz seen at grazing is a sliver along the horizon, finer than the sphere grid.
+INSTANTIATE_TEST_SUITE_P(Smooth, FuzzFit, ::testing::Combine(::testing::Values(0.1f), ::testing::Values(0.0f, 1.0f)));
 
-// Off the table's grid points, so the bilinear lookup is checked too.
-TEST(Fuzz, WhiteAlbedoMatchesTheTableAndStaysBelowOne) {
+// The LTC integrates to one above the horizon, so the lobe's albedo is its fitted R, which
+// fuzz_energy returns: the layering's budget is exactly what the lobe takes.
+TEST(Fuzz, AlbedoIsTheFittedReflectance) {
   for (float roughness : {0.0f, 0.1f, 0.33f, 0.7f, 1.0f})
     for (float theta : {0.05f, 0.6f, 1.1f, 1.4f, 1.53f}) {
       const glm::vec3 wo = direction(theta);
       const double a = test::albedo(fuzz_sampler(roughness, wo), 40000).x;
       EXPECT_LE(a, 1.0) << "roughness " << roughness << " theta " << theta;
-      EXPECT_NEAR(shader::fuzz_energy(wo.z, roughness), a, 0.01) << "roughness " << roughness << " theta " << theta;
+      EXPECT_NEAR(shader::fuzz_energy(wo.z, roughness), a, 0.002 + 0.005 * a) << "roughness " << roughness << " theta " << theta;
     }
 }
 
-// Uniform sampling keeps weights low where the lobe leans toward the horizon (cosine
-// sampling reaches 18 for smooth fuzz seen at grazing).
-TEST(Fuzz, SamplingWeightsStayBounded) {
+// Sampling is exact (a cosine sample through the LTC's matrix): every sample weighs R.
+TEST(Fuzz, SamplesWeighTheAlbedo) {
   for (float roughness : {0.0f, 0.3f, 1.0f})
-    for (float theta : {0.0f, 0.8f, 1.3f, 1.5f, 1.565f})
-      EXPECT_LT(highest_weight(fuzz_sampler(roughness, direction(theta))), 3.0f) << "roughness " << roughness << " theta " << theta;
+    for (float theta : {0.0f, 0.8f, 1.3f, 1.5f, 1.565f}) {
+      const glm::vec3 wo = direction(theta);
+      EXPECT_NEAR(highest_weight(fuzz_sampler(roughness, wo)), shader::fuzz_energy(wo.z, roughness), 1e-3f)
+          << "roughness " << roughness << " theta " << theta;
+    }
 }
 
-TEST(Fuzz, Reciprocity) {
-  for (float roughness : {0.0f, 0.4f, 1.0f})
-    for (float a : {0.1f, 0.7f, 1.3f})
-      for (float b : {0.2f, 0.9f, 1.5f})
-        for (float phi : {0.5f, 2.0f, 3.1f}) {
-          const glm::vec3 wo = direction(a), wi = skew_direction(b, phi);
-          const float f1 = shader::fuzz_eval_cos(roughness, wo, wi) / wi.z;
-          const float f2 = shader::fuzz_eval_cos(roughness, wi, wo) / wo.z;
-          EXPECT_NEAR(f1, f2, 1e-5f * std::max(1.0f, f1)) << roughness << " " << a << " " << b << " " << phi;
-        }
+// The lobe keeps its shape when wo turns about the normal.
+TEST(Fuzz, TurnsWithTheViewAzimuth) {
+  for (float roughness : {0.2f, 0.8f})
+    for (float phi : {0.7f, 2.5f, 4.0f}) {
+      const glm::vec3 wo = skew_direction(1.0f, 0.0f), wi = skew_direction(0.6f, 2.0f);
+      const glm::vec3 wo_turned = skew_direction(1.0f, phi), wi_turned = skew_direction(0.6f, 2.0f + phi);
+      EXPECT_NEAR(shader::fuzz_eval_cos(roughness, wo, wi), shader::fuzz_eval_cos(roughness, wo_turned, wi_turned), 1e-5f);
+    }
 }
 
 TEST(Fuzz, FiniteAtTheRoughnessLimitsAndGrazing) {
@@ -254,16 +259,14 @@ TEST(Fuzz, FiniteAtTheRoughnessLimitsAndGrazing) {
           const float f = shader::fuzz_eval_cos(roughness, wo, wi);
           EXPECT_TRUE(std::isfinite(f) && f >= 0.0f) << roughness << " " << zo << " " << zi << " " << phi;
           EXPECT_TRUE(std::isfinite(shader::fuzz_energy(zo, roughness)));
-          const float scale = shader::fuzz_layer_scale(1.0f, roughness, zo, zi);
+          const float scale = shader::fuzz_layer_scale(1.0f, roughness, zo);
           EXPECT_TRUE(scale >= 0.0f && scale <= 1.0f);
         }
 }
 
 // OpenPBR's fuzz over a white Lambertian base: the fuzz reflects w E(mu_o), the base what
-// fuzz_layer_scale lets through. Never more than 1; how much less is the price of keeping
-// the scale reciprocal and bounded for every possible underlayer.
-TEST(Fuzz, LayeredOverWhiteLambertKeepsAlbedoInBounds) {
-  double lowest = 1.0;
+// fuzz_layer_scale lets through, so the stack reflects all it receives.
+TEST(Fuzz, LayeredOverWhiteLambertKeepsItsEnergy) {
   for (float weight : {0.5f, 1.0f})
     for (float roughness : {0.0f, 0.3f, 0.6f, 1.0f})
       for (float theta : {0.0f, 0.6f, 1.1f, 1.4f, 1.55f}) {
@@ -271,13 +274,10 @@ TEST(Fuzz, LayeredOverWhiteLambertKeepsAlbedoInBounds) {
         const double a = test::hemisphere_integral(
             [&](glm::vec3 wi) {
               return double(weight * shader::fuzz_eval_cos(roughness, wo, wi) +
-                            shader::fuzz_layer_scale(weight, roughness, wo.z, wi.z) * wi.z / float(kPi));
+                            shader::fuzz_layer_scale(weight, roughness, wo.z) * wi.z / float(kPi));
             });
-        EXPECT_LE(a, 1.0 + 1e-3) << "weight " << weight << " roughness " << roughness << " theta " << theta;
-        EXPECT_GE(a, weight == 1.0f ? 0.85 : 0.9) << "weight " << weight << " roughness " << roughness << " theta " << theta;
-        lowest = std::min(lowest, a);
+        EXPECT_NEAR(a, 1.0, 5e-3) << "weight " << weight << " roughness " << roughness << " theta " << theta;
       }
-  std::printf("lowest albedo of fuzz over white Lambert: %.4f\n", lowest);
 }
 
 // ---------------------------------------------------------------------------------------------

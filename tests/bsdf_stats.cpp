@@ -106,12 +106,30 @@ ChiSquareResult chi_square_sphere(const SampleFn& sample, const PdfFn& pdf, int 
   return result;
 }
 
+namespace {
+// Van der Corput radical inverse of i in `base`.
+double radical_inverse(unsigned i, unsigned base) {
+  double inverse = 1.0 / base, scale = inverse, result = 0.0;
+  for (; i > 0; i /= base, scale *= inverse) result += double(i % base) * scale;
+  return result;
+}
+
+float shifted(double x, double shift) {
+  const double y = x + shift;
+  return float(y >= 1.0 ? y - 1.0 : y);
+}
+}  // namespace
+
+// Halton points in (2, 3, 5) with a fixed Cranley-Patterson shift: the estimate's error falls
+// well below plain Monte Carlo's at equal count, so furnace tests can hold tight tolerances
+// (half-invalid lobes such as rough glass seen from inside need 4x fewer samples).
 glm::dvec3 albedo(const SampleFn& sample, int samples) {
-  std::mt19937 rng(777);
-  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   glm::dvec3 sum(0.0);
-  for (int i = 0; i < samples; ++i)
-    if (const auto s = sample(glm::vec2(uniform(rng), uniform(rng)), uniform(rng))) sum += glm::dvec3(s->weight);
+  for (int i = 0; i < samples; ++i) {
+    const unsigned k = unsigned(i) + 1u;
+    const glm::vec2 u(shifted(radical_inverse(k, 2), 0.1370), shifted(radical_inverse(k, 3), 0.5923));
+    if (const auto s = sample(u, shifted(radical_inverse(k, 5), 0.3311))) sum += glm::dvec3(s->weight);
+  }
   return sum / double(samples);
 }
 

@@ -3,127 +3,27 @@
 // extreme inputs, for each lobe alone and for random mixtures of all of them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 
-#include "bsdf_stats.h"
-
-namespace hipr::shader {
-using namespace glm;
-#include "shaders/bsdf/openpbr.glsl"
-}  // namespace hipr::shader
+#include "openpbr_support.h"
 
 namespace hipr {
 namespace {
 
 using shader::OpenPbrParams;
-
-// A white, non-absorbing dielectric: the spec's defaults with a white base.
-OpenPbrParams dielectric(float roughness, float ior = 1.5f) {
-  OpenPbrParams p;
-  p.baseColor = glm::vec3(1.0f);
-  p.metalness = 0.0f;
-  p.diffuseRoughness = 0.0f;
-  p.specularColor = glm::vec3(1.0f);
-  p.specularWeight = 1.0f;
-  p.alpha = glm::vec2(shader::ggx_alpha(roughness));
-  p.eta = ior;
-  p.transmission = 0.0f;
-  p.transmissionColor = glm::vec3(1.0f);
-  p.thinWalled = false;
-  p.subsurface = 0.0f;
-  p.subsurfaceColor = glm::vec3(1.0f);
-  p.coat = 0.0f;
-  p.coatColor = glm::vec3(1.0f);
-  p.coatAlpha = shader::ggx_alpha(0.0f);
-  p.coatEta = 1.6f;
-  p.coatDarkening = 1.0f;
-  p.fuzz = 0.0f;
-  p.fuzzColor = glm::vec3(1.0f);
-  p.fuzzRoughness = 0.5f;
-  p.thinFilm = 0.0f;
-  p.thinFilmThickness = 500.0f;
-  p.thinFilmIor = 1.4f;
-  return p;
-}
-
-OpenPbrParams metal(float roughness) {
-  OpenPbrParams p = dielectric(roughness);
-  p.metalness = 1.0f;
-  return p;
-}
-
-OpenPbrParams glass(float roughness, float eta, bool thin = false) {
-  OpenPbrParams p = dielectric(roughness, eta);
-  p.transmission = 1.0f;
-  p.thinWalled = thin;
-  return p;
-}
-
-OpenPbrParams coated(float roughness, float coat_roughness) {
-  OpenPbrParams p = dielectric(roughness);
-  p.coat = 1.0f;
-  p.coatAlpha = shader::ggx_alpha(coat_roughness);
-  return p;
-}
-
-// Every parameter drawn at random: the full BSDF with all its lobes at once.
-OpenPbrParams random_params(unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  const auto color = [&] { return glm::vec3(u(rng), u(rng), u(rng)); };
-  OpenPbrParams p = dielectric(0.2f + 0.8f * u(rng), 1.0f + 1.5f * u(rng));
-  if (u(rng) < 0.3f) p.eta = 1.0f / p.eta;
-  p.baseColor = color();
-  p.metalness = u(rng) < 0.3f ? 0.0f : u(rng);
-  p.specularColor = color();
-  p.alpha = shader::ggx_alpha_anisotropic(0.3f + 0.7f * u(rng), u(rng));
-  p.transmission = u(rng);
-  p.transmissionColor = color();
-  p.thinWalled = u(rng) < 0.5f;
-  if (p.thinWalled && p.eta < 1.0f) p.eta = 1.0f / p.eta;  // a slab has the same index on both sides
-  p.subsurface = u(rng);
-  p.subsurfaceColor = color();
-  p.coat = u(rng);
-  p.coatColor = color();
-  p.coatAlpha = shader::ggx_alpha(0.3f + 0.7f * u(rng));
-  p.coatEta = 1.2f + u(rng);
-  p.coatDarkening = u(rng);
-  p.diffuseRoughness = u(rng);
-  p.fuzz = u(rng) < 0.5f ? 0.0f : u(rng);
-  p.fuzzColor = color();
-  p.fuzzRoughness = u(rng);
-  p.thinFilm = u(rng) < 0.5f ? 0.0f : u(rng);
-  p.thinFilmThickness = 1000.0f * u(rng);
-  p.thinFilmIor = 1.0f + u(rng);
-  return p;
-}
-
-glm::vec3 direction(float theta) { return glm::vec3(std::sin(theta), 0.0f, std::cos(theta)); }
-
-// The BSDF seen from wo through bsdf_stats.h's sampler interface. Delta events (index-matched
-// pass-through) carry no density: the chi-square sampler skips them, the albedo one counts them.
-test::SampleFn sampler(const OpenPbrParams& p, glm::vec3 wo, bool count_delta = false) {
-  return [p, wo, count_delta](glm::vec2 u, float u_lobe) -> std::optional<test::DirectionSample> {
-    const shader::OpenPbrSample s = shader::openpbr_sample(p, wo, u, u_lobe);
-    if (!s.valid) return std::nullopt;
-    if (s.delta) {
-      if (!count_delta) return std::nullopt;
-      return test::DirectionSample{s.wi, s.deltaWeight};
-    }
-    const float pdf = shader::openpbr_pdf(p, wo, s.wi);
-    if (!(pdf > 0.0f)) return std::nullopt;
-    return test::DirectionSample{s.wi, shader::openpbr_eval_cos(p, wo, s.wi) / pdf};
-  };
-}
-
-test::ChiSquareResult fit(const OpenPbrParams& p, glm::vec3 wo) {
-  return test::chi_square_sphere(sampler(p, wo), [&](glm::vec3 wi) { return shader::openpbr_pdf(p, wo, wi); });
-}
-
-glm::dvec3 albedo(const OpenPbrParams& p, glm::vec3 wo, int samples = 40000) {
-  return test::albedo(sampler(p, wo, true), samples);
-}
+using test::albedo;
+using test::coated;
+using test::dielectric;
+using test::direction;
+using test::fit;
+using test::glass;
+using test::metal;
+using test::random_params;
+using test::sampler;
 
 struct Case {
   std::string name;
@@ -187,23 +87,32 @@ TEST(OpenPbrFurnace, NonAbsorbingConfigurationsKeepTheirEnergy) {
   };
   const Row rows[] = {
       {"white dielectric", [](float r) { return dielectric(r); }},
-      {"white rough-diffuse dielectric",
-       [](float r) {
-         OpenPbrParams p = dielectric(r);
-         p.diffuseRoughness = 1.0f;
-         return p;
-       }},
       {"white metal", [](float r) { return metal(r); }},
       {"glass entering", [](float r) { return glass(r, 1.5f); }},
       {"glass leaving", [](float r) { return glass(r, 1.0f / 1.5f); }},
       {"thin-walled glass", [](float r) { return glass(r, 1.5f, true); }},
   };
-  for (const Row& row : rows)
+  for (const Row& row : rows) {
+    double worst = 0.0;
     for (float roughness : {0.0f, 0.25f, 0.5f, 0.75f, 1.0f})
       for (float theta : {0.0f, 0.6f, 1.1f, 1.45f}) {
-        const double a = albedo(row.make(roughness), direction(theta)).x;
-        EXPECT_NEAR(a, 1.0, 0.02) << row.name << " roughness " << roughness << " theta " << theta;
+        const double a = albedo(row.make(roughness), direction(theta), 100000).x;
+        EXPECT_NEAR(a, 1.0, 0.005) << row.name << " roughness " << roughness << " theta " << theta;
+        worst = std::max(worst, std::abs(a - 1.0));
       }
+    std::printf("%s: white furnace within %.4f of 1\n", row.name, worst);
+  }
+}
+
+// The specular layer's scaling of the diffuse under it is exact for a Lambertian diffuse; EON's
+// rough diffuse has another shape, and keeps its energy to within 2 % (docs/openpbr.md).
+TEST(OpenPbrFurnace, RoughDiffuseUnderTheSpecularLayerKeepsNearlyAllItsEnergy) {
+  for (float roughness : {0.0f, 0.5f, 1.0f})
+    for (float theta : {0.0f, 0.6f, 1.1f, 1.45f}) {
+      OpenPbrParams p = dielectric(roughness);
+      p.diffuseRoughness = 1.0f;
+      EXPECT_NEAR(albedo(p, direction(theta), 100000).x, 1.0, 0.02) << "roughness " << roughness << " theta " << theta;
+    }
 }
 
 TEST(OpenPbrFurnace, AlbedoNeverExceedsOne) {
@@ -219,25 +128,54 @@ TEST(OpenPbrFurnace, AlbedoNeverExceedsOne) {
   }
 }
 
-TEST(OpenPbrFurnace, CoatOverWhiteDiffuseLosesLittle) {
-  for (float coat_roughness : {0.0f, 0.5f, 1.0f})
-    for (float theta : {0.0f, 0.8f, 1.3f}) {
-      const double a = albedo(coated(1.0f, coat_roughness), direction(theta)).x;
-      EXPECT_LE(a, 1.01);
-      EXPECT_GE(a, 0.9) << "coat roughness " << coat_roughness << " theta " << theta;
-    }
-}
-
-TEST(OpenPbrFurnace, FuzzOverWhiteDielectricLosesLittle) {
-  for (float fuzz_roughness : {0.1f, 0.5f, 1.0f})
-    for (float theta : {0.0f, 0.8f, 1.3f}) {
-      OpenPbrParams p = dielectric(0.5f);
-      p.fuzz = 1.0f;
-      p.fuzzRoughness = fuzz_roughness;
-      const double a = albedo(p, direction(theta)).x;
-      EXPECT_LE(a, 1.01);
-      EXPECT_GE(a, 0.85) << "fuzz roughness " << fuzz_roughness << " theta " << theta;
-    }
+// White stacks of layers keep all the energy they receive, at every angle and roughness: the
+// albedo tables agree with the lobes they stand for, and the layering is exact.
+TEST(OpenPbrFurnace, WhiteLayerStacksKeepTheirEnergy) {
+  struct Row {
+    const char* name;
+    OpenPbrParams (*make)(float);
+  };
+  const Row rows[] = {
+      {"coat over white diffuse", [](float r) {
+         OpenPbrParams p = coated(0.5f, r);
+         p.specularWeight = 0.0f;
+         p.eta = 1.0f;  // what shading makes of any ior at specular_weight 0
+         return p;
+       }},
+      {"coat over white dielectric", [](float r) { return coated(0.5f, r); }},
+      {"coat over white metal", [](float r) {
+         OpenPbrParams p = coated(r, 0.1f);
+         p.metalness = 1.0f;
+         return p;
+       }},
+      {"coat over glass", [](float r) {
+         OpenPbrParams p = coated(r, 0.2f);
+         p.transmission = 1.0f;
+         return p;
+       }},
+      {"fuzz over white dielectric", [](float r) {
+         OpenPbrParams p = dielectric(0.5f);
+         p.fuzz = 1.0f;
+         p.fuzzRoughness = r;
+         return p;
+       }},
+      {"fuzz over coat over white dielectric", [](float r) {
+         OpenPbrParams p = coated(0.5f, r);
+         p.fuzz = 1.0f;
+         p.fuzzRoughness = 1.0f - r;
+         return p;
+       }},
+  };
+  for (const Row& row : rows) {
+    double worst = 0.0;
+    for (float roughness : {0.0f, 0.25f, 0.5f, 0.75f, 1.0f})
+      for (float theta : {0.0f, 0.6f, 1.1f, 1.47f}) {
+        const double a = albedo(row.make(roughness), direction(theta), 100000).x;
+        EXPECT_NEAR(a, 1.0, 0.005) << row.name << " roughness " << roughness << " theta " << theta;
+        worst = std::max(worst, std::abs(a - 1.0));
+      }
+    std::printf("%s: white furnace within %.4f of 1\n", row.name, worst);
+  }
 }
 
 TEST(OpenPbrAnalytic, ThinFilmColoursTheReflectionOnly) {
@@ -254,12 +192,17 @@ TEST(OpenPbrAnalytic, ThinFilmColoursTheReflectionOnly) {
   EXPECT_GT(std::abs(film.r - film.b), 0.2f * bare.r) << "a 300 nm film must colour the reflection";
 }
 
-TEST(OpenPbrReciprocity, OpaqueConfigurations) {
-  std::vector<OpenPbrParams> configs = {dielectric(0.3f), metal(0.4f), coated(0.6f, 0.2f)};
+// Coat and fuzz scale what lies under them by the view side alone (exact energy, as OpenPBR's
+// albedo scaling and its reference implementation do), and the LTC fuzz lobe is fitted per view
+// direction: stacks with either are not reciprocal, by design (docs/openpbr.md).
+TEST(OpenPbrReciprocity, OpaqueConfigurationsWithoutCoatOrFuzz) {
+  std::vector<OpenPbrParams> configs = {dielectric(0.3f), metal(0.4f)};
   for (unsigned seed = 1; seed <= 6; ++seed) {
     OpenPbrParams p = random_params(seed);
     p.transmission = 0.0f;
     p.thinWalled = false;
+    p.coat = 0.0f;
+    p.fuzz = 0.0f;
     if (p.eta < 1.0f) p.eta = 1.0f / p.eta;
     configs.push_back(p);
   }

@@ -56,7 +56,7 @@ HIPR_FN float ggx_energy_average(float alpha) { return table_1d(kTableGgxEnergyA
 HIPR_FN float dielectric_table(int offset, float mu, float alpha, float eta) {
   const int n = kDielectricTableSize;
   float fe;
-  const int e = table_cell(eta_coordinate(eta), n, fe);
+  const int e = table_cell(eta_coordinate(eta), kDielectricTableEtaSize, fe);
   const float low = table_2d(offset + e * n * n, n, n, sqrt(alpha), sqrt(max(mu, 0.0f)));
   const float high = table_2d(offset + (e + 1) * n * n, n, n, sqrt(alpha), sqrt(max(mu, 0.0f)));
   return mix(low, high, fe);
@@ -71,7 +71,7 @@ HIPR_FN float dielectric_reflection_energy_average(float alpha, float eta) {
   const int n = kDielectricTableSize;
   const int offset = eta >= 1.0f ? kTableDielectricReflectionAverage : kTableDielectricReflectionLeavingAverage;
   float fe;
-  const int e = table_cell(eta_coordinate(eta), n, fe);
+  const int e = table_cell(eta_coordinate(eta), kDielectricTableEtaSize, fe);
   const float low = table_1d(offset + e * n, n, sqrt(alpha));
   const float high = table_1d(offset + (e + 1) * n, n, sqrt(alpha));
   return mix(low, high, fe);
@@ -80,11 +80,6 @@ HIPR_FN float dielectric_reflection_energy_average(float alpha, float eta) {
 // Albedo of reflection plus refraction of a rough interface, entering (eta > 1) or leaving.
 HIPR_FN float dielectric_interface_energy(float mu, float alpha, float eta) {
   return dielectric_table(eta >= 1.0f ? kTableDielectricEntering : kTableDielectricLeaving, mu, alpha, eta);
-}
-
-// Albedo of the fuzz lobe (unit colour) at cos_o = mu; roughness as OpenPBR's fuzz_roughness.
-HIPR_FN float fuzz_energy(float mu, float roughness) {
-  return table_2d(kTableFuzzEnergy, kGgxTableSize, kFuzzTableMuSize, roughness, sqrt(max(mu, 0.0f)));
 }
 
 #endif

@@ -1,60 +1,89 @@
-// The fuzz (sheen) lobe of OpenPBR on its own, with unit colour: the "Charlie" microfiber
-// distribution of Estevez and Kulla (2017), D(h) = (2 + 1/r) sin(theta_h)^(1/r) / (2 pi), in a
-// microfacet BRDF D G2 / (4 cos_o cos_i) with their fitted Smith Lambda and the
-// height-correlated G2 = 1 / (1 + Lambda(o) + Lambda(i)): symmetric in the two directions (so
-// reciprocal) and, being a Smith model, it never reflects more than it receives. (Their
-// "terminator softening" is left out: it applies to one direction only and breaks
-// reciprocity. The simpler visibility of Neubelt and Pettineo reflects up to 1.56 times the
-// incoming light at grazing for smooth fuzz, which a furnace would show.)
-// Sampled uniformly over the hemisphere: the lobe leans toward the horizon, where cosine
-// sampling puts few samples (weights measured up to 18 with cosine sampling, below 3 with
-// uniform sampling, 2 to 8 times less variance). Its albedo is tabulated by
-// tools/make_ggx_tables.cpp; fuzz_layer.glsl reads that table for layering.
+// The fuzz (sheen) lobe of OpenPBR 1.1 on its own, with unit colour: the LTC sheen of Zeltner,
+// Burley and Chiang (2022, "Practical Multiple-Scattering Sheen Using Linearly Transformed
+// Cosines"), which the specification names. A volumetric layer of fibre-like SGGX microflakes
+// (unit density and thickness, white) was simulated and fitted, per view cosine x and
+// roughness alpha (= fuzz_roughness), by
+//   - its directional albedo R(x, alpha), and
+//   - a linearly transformed cosine for the lobe's shape, M^-1 = [[a, 0, b], [0, a, 0], [0, 0, 1]]
+//     in a frame whose x axis points along wo's azimuth.
+// We evaluate the paper's analytic fits of R, a and b (rational functions, a Gaussian for R)
+// instead of its 32 x 32 table; docs/openpbr.md gives the size of the difference.
+// The LTC keeps z, so the whole distribution lies above the horizon: it integrates to one over
+// the hemisphere, it is sampled exactly (a cosine sample pushed through M), and the lobe's albedo
+// is exactly R. Like every LTC lobe it is fitted per view direction and not reciprocal.
 // Local frame (n = +Z), unit directions. Shared with C++.
 #ifndef HIPR_FUZZ_GLSL
 #define HIPR_FUZZ_GLSL
 
 #include "../common/sampling.glsl"
 
-// As r goes to 0 all fibre normals lie in the surface plane: the normalisation 2 + 1/r grows
-// without bound and the lobe shrinks to a sliver at grazing that no sampler resolves.
-// OpenPBR's fuzz_roughness is in [0, 1]; below this minimum the look hardly changes.
-const float kFuzzMinRoughness = 0.07f;
+// As alpha goes to 0 the LTC's a goes to 0: the lobe flattens onto the horizon, where no
+// sampler resolves it. Below this the look hardly changes.
+const float kFuzzMinRoughness = 0.05f;
 
 HIPR_FN float fuzz_clamp_roughness(float roughness) { return clamp(roughness, kFuzzMinRoughness, 1.0f); }
 
-// Estevez and Kulla's fit of the Charlie distribution's Lambda: Lambda(mu) = exp(L(mu)) for
-// mu < 1/2, mirrored as exp(2 L(1/2) - L(1 - mu)) above so it reaches 0 at the normal. L's five
-// coefficients blend their r = 0 and r = 1 fits with weight (1 - r)^2.
-HIPR_FN float fuzz_lambda_l(float x, float r) {
-  const float t = (1.0f - r) * (1.0f - r);
-  const float a = mix(21.5473f, 25.3245f, t);
-  const float b = mix(3.82987f, 3.32435f, t);
-  const float c = mix(0.19823f, 0.16801f, t);
-  const float d = mix(-1.97760f, -1.27393f, t);
-  const float e = mix(-4.32054f, -4.85967f, t);
-  return a / (1.0f + b * pow(x, c)) + d * x + e;
+// Directional albedo R(x = cos_o, y = alpha): a Gaussian in x with fitted centre, width and offset.
+HIPR_FN float fuzz_albedo_fit(float x, float y) {
+  const float s = y * (0.0206607f + 1.58491f * y) / (0.0379424f + y * (1.32227f + y));
+  const float m = y * (-0.193854f + y * (-1.14885f + y * (1.7932f - 0.95943f * y * y))) / (0.046391f + y);
+  const float o = y * (0.000654023f + (-0.0207818f + 0.119681f * y) * y) / (1.26264f + y * (-1.92021f + y));
+  const float t = (x - m) / s;
+  return clamp(exp(-0.5f * t * t) / (s * 2.50662827f) + o, 0.0f, 1.0f);
 }
 
-HIPR_FN float fuzz_lambda(float mu, float r) {
-  mu = clamp(mu, 0.0f, 1.0f);
-  return mu < 0.5f ? exp(fuzz_lambda_l(mu, r)) : exp(2.0f * fuzz_lambda_l(0.5f, r) - fuzz_lambda_l(1.0f - mu, r));
+// The LTC's a and b at (x, y).
+HIPR_FN float fuzz_ltc_a(float x, float y) { return (2.58126f * x + 0.813703f * y) * y / (1.0f + 0.310327f * x * x + 2.60994f * x * y); }
+
+HIPR_FN float fuzz_ltc_b(float x, float y) {
+  return sqrt(max(1.0f - x, 0.0f)) * (y - 1.0f) * y * y * y / (0.0000254053f + 1.71228f * x - 1.71506f * x * y + 1.34174f * y * y);
+}
+
+// Albedo of the lobe (unit colour) seen at cos_o = mu.
+HIPR_FN float fuzz_energy(float mu, float roughness) {
+  return fuzz_albedo_fit(clamp(mu, 0.0f, 1.0f), fuzz_clamp_roughness(roughness));
+}
+
+// The frame of the fit: rotate about z so that wo's azimuth becomes 0 (sign = -1), or back (+1).
+HIPR_FN vec3 fuzz_rotate(vec3 v, vec3 wo, float sign) {
+  const float r2 = wo.x * wo.x + wo.y * wo.y;
+  if (r2 <= 0.0f) return v;
+  const float inv = 1.0f / sqrt(r2);
+  const float c = wo.x * inv, s = sign * wo.y * inv;
+  return vec3(c * v.x - s * v.y, s * v.x + c * v.y, v.z);
+}
+
+// Density of the LTC at w (in the fit's frame): D(M^-1 w / |M^-1 w|) |M^-1| / |M^-1 w|^3 with
+// D the clamped cosine over pi, which is w.z a^2 / (pi |M^-1 w|^4).
+HIPR_FN float fuzz_ltc_density(vec3 w, float a, float b) {
+  if (w.z <= 0.0f || a <= 0.0f) return 0.0f;
+  const vec3 v = vec3(a * w.x + b * w.z, a * w.y, w.z);
+  const float len2 = dot(v, v);
+  if (len2 <= 0.0f) return 0.0f;
+  const float k = a / len2;
+  return w.z * k * k * kInvPi;
+}
+
+// Both the pdf of fuzz_sample and, times R, the lobe's f cos.
+HIPR_FN float fuzz_pdf(float roughness, vec3 wo, vec3 wi) {
+  if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+  const float x = min(wo.z, 1.0f), y = fuzz_clamp_roughness(roughness);
+  return fuzz_ltc_density(fuzz_rotate(wi, wo, -1.0f), fuzz_ltc_a(x, y), fuzz_ltc_b(x, y));
 }
 
 // f(wo, wi) cos(wi) for unit fuzz colour; roughness in [0, 1] (clamped as above).
 HIPR_FN float fuzz_eval_cos(float roughness, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-  const float r = fuzz_clamp_roughness(roughness);
-  const vec3 h = normalize(wo + wi);
-  // sin^2 from the tangent components: 1 - h.z^2 loses everything near the normal.
-  const float sin2_h = h.x * h.x + h.y * h.y;
-  const float d = (2.0f + 1.0f / r) * pow(sin2_h, 0.5f / r) * (0.5f * kInvPi);
-  const float g2 = 1.0f / (1.0f + fuzz_lambda(wo.z, r) + fuzz_lambda(wi.z, r));
-  return d * g2 / (4.0f * wo.z);
+  return fuzz_energy(wo.z, roughness) * fuzz_pdf(roughness, wo, wi);
 }
 
-HIPR_FN float fuzz_pdf(vec3 wo, vec3 wi) { return wo.z > 0.0f && wi.z > 0.0f ? 0.5f * kInvPi : 0.0f; }
-
-HIPR_FN vec3 fuzz_sample(vec2 u) { return sample_uniform_hemisphere(u); }
+// A cosine sample pushed through M = [[1/a, 0, -b/a], [0, 1/a, 0], [0, 0, 1]], then rotated to wo.
+HIPR_FN vec3 fuzz_sample(float roughness, vec3 wo, vec2 u) {
+  const float x = clamp(wo.z, 0.0f, 1.0f), y = fuzz_clamp_roughness(roughness);
+  const float a = fuzz_ltc_a(x, y), b = fuzz_ltc_b(x, y);
+  const vec3 c = sample_cosine_hemisphere(u);
+  const vec3 w = normalize(vec3((c.x - b * c.z) / a, c.y / a, c.z));
+  return fuzz_rotate(w, wo, 1.0f);
+}
 
 #endif

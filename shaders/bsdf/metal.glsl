@@ -1,6 +1,8 @@
 // OpenPBR's metal: GGX reflection with the F82-tint Fresnel (base_color at normal incidence,
 // specular_color bending the edge), plus the multiple-scattering term of Kulla & Conty (2017)
 // from the generated E / E_avg tables, so a white metal keeps its energy at any roughness.
+// A thin film on top changes the single-scattering Fresnel (thin_film_metal.glsl), not the
+// multiple-scattering term.
 // Local frame (n = +Z), wo.z > 0, reflection only. Shared with C++.
 #ifndef HIPR_METAL_GLSL
 #define HIPR_METAL_GLSL
@@ -9,6 +11,7 @@
 #include "fresnel.glsl"
 #include "lambert.glsl"
 #include "microfacet.glsl"
+#include "thin_film_metal.glsl"
 
 // Energy single scattering misses toward wo: the share of the lobe sampled as the
 // (cosine-shaped) multiple-scattering term.
@@ -27,10 +30,11 @@ HIPR_FN vec3 metal_ms_eval_cos(vec3 f0, vec2 alpha, vec3 wo, vec3 wi) {
   return f_ms * (shape * ggx_isotropy(alpha) * wi.z);
 }
 
-HIPR_FN vec3 metal_eval_cos(vec3 f0, vec3 tint, vec2 alpha, vec3 wo, vec3 wi) {
+// film = (thin_film_weight, thin_film_ior, thickness in nm).
+HIPR_FN vec3 metal_eval_cos(vec3 f0, vec3 tint, vec3 film, vec2 alpha, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
   const vec3 h = normalize(wo + wi);
-  return fresnel_f82_tint(f0, tint, dot(wo, h)) * ggx_reflection_eval_cos(wo, wi, alpha) +
+  return metal_fresnel(f0, tint, film, dot(wo, h)) * ggx_reflection_eval_cos(wo, wi, alpha) +
          metal_ms_eval_cos(f0, alpha, wo, wi);
 }
 

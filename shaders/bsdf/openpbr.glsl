@@ -2,16 +2,20 @@
 // Shared with C++ (tests/openpbr_test.cpp runs these very functions).
 //
 // Layers, top to bottom, combined by albedo scaling with generated albedo tables:
-//   fuzz     Charlie sheen (fuzz.glsl), weight F, colour; below it everything is scaled by
-//            1 - F max(E_f(wo), E_f(wi)) (fuzz_layer.glsl);
+//   fuzz     LTC sheen (fuzz.glsl), weight F, colour; below it everything is scaled by
+//            1 - F E_f(wo) (fuzz_layer.glsl);
 //   coat     GGX dielectric reflection (coat_ior, coat_roughness), weight C; everything below is
-//            scaled by 1 - C max(E_c(wo), E_c(wi)) (reciprocal, and never more than the energy
-//            the coat lets through), tinted by coat_color and darkened by the light the coat
-//            reflects back onto an absorbing base (coat_darkening);
+//            scaled by 1 - C E_c(wo) (coat_layer.glsl), tinted by coat_color along the
+//            refracted path on the way in and out, and its reflection darkened by the light the
+//            coat reflects back onto an absorbing base (coat_darkening);
+//            both layers scale by the view side only, as the specification's albedo scaling
+//            and its reference implementation do: exact energy for any white stack, not
+//            reciprocal (docs/openpbr.md);
 //   base     mix by base_metalness of
 //            metal       F82-tint GGX with multiple-scattering compensation (metal.glsl);
-//            dielectric  specular reflection (specular_ior modulated by specular_weight,
-//                        tinted by specular_color, thin-film iridescence on its Fresnel),
+//            dielectric  specular reflection (specular_ior modulated by specular_weight and
+//                        taken relative to the coat's index, tinted by specular_color,
+//                        thin-film iridescence on its Fresnel),
 //                        mixed by transmission_weight t with
 //                        t:     the transmitting interface, reflection + refraction (or a
 //                               thin-walled slab), compensated by 1 / E_rt(wo) so rough glass
@@ -23,17 +27,18 @@
 //            the diffuse is mixed by subsurface_weight with subsurface_color: our approximation
 //            of subsurface until a volumetric walk exists (diffuse reflection; thin-walled, half
 //            of it is transmitted diffusely to the far side).
-// Approximations, documented: the coat tint is applied once (its value at normal incidence);
-// thin film changes the reflected colour but not the energy left to the layers below, and
-// leaves metals alone; the specular interface under a coat keeps its own index (not
-// specular_ior / coat_ior); the coat follows the base's shading normal; anisotropic lobes read
-// the isotropic tables at one stand-in alpha (ggx_alpha_for_tables); refraction leaves out the
-// 1/eta^2 radiance scaling (it cancels for paths that enter and leave an object).
+// Approximations, documented (docs/openpbr.md): thin film changes the reflected colour but not
+// the energy left to the layers below, and sees index 1 above it even under a coat; glass under
+// a coat refracts with its own index; the coat follows the base's shading normal; anisotropic
+// lobes read the isotropic tables at one stand-in alpha (ggx_alpha_for_tables; the larger of
+// the two for the diffuse under the specular layer); refraction leaves out the 1/eta^2 radiance
+// scaling (it cancels for paths that enter and leave an object).
 #ifndef HIPR_OPENPBR_GLSL
 #define HIPR_OPENPBR_GLSL
 
 #include "dielectric.glsl"
 #include "energy_tables.glsl"
+#include "coat_layer.glsl"
 #include "eon.glsl"
 #include "fuzz_layer.glsl"
 #include "lambert.glsl"
@@ -80,8 +85,10 @@ struct OpenPbrParams {
 struct OpenPbrContext {
   float fuzzEnergy;       // F E_f(wo)
   float coatEnergy;       // C E_c(wo)
-  vec3 baseTint;          // coat colour and darkening, on all light that reaches the base
-  float specularEnergy;   // E_r(wo) of the dielectric reflection, 0 when index-matched
+  vec3 coatTint;          // the coat's colour on the passage toward wo
+  vec3 darkening;         // of the base's reflection under the coat
+  float specularEta;      // index of the opaque dielectric's reflection, relative to the coat
+  float specularEnergy;   // E_r(wo) of that reflection, 0 when index-matched
   float specularAverage;  // its cosine-weighted average
   float interfaceEnergy;  // E_rt(wo), or E(wo) for a thin-walled slab: the transmitting interface
   vec4 weights;           // sampling probabilities: coat, metal, dielectric reflection, interface
@@ -90,6 +97,7 @@ struct OpenPbrContext {
 };
 
 HIPR_FN bool specular_reflects(OpenPbrParams p) { return !index_matched(p.eta); }
+HIPR_FN bool opaque_specular_reflects(OpenPbrContext c) { return !index_matched(c.specularEta); }
 
 // Diffuse colours reflected to wo's side and transmitted to the far side.
 HIPR_FN vec3 diffuse_reflection_color(OpenPbrParams p) {
@@ -105,10 +113,6 @@ HIPR_FN float diffuse_transmission_probability(OpenPbrParams p) {
   return t > 0.0f ? t / (t + luminance(diffuse_reflection_color(p))) : 0.0f;
 }
 
-HIPR_FN float coat_energy(OpenPbrParams p, float mu) {
-  return p.coat > 0.0f ? p.coat * dielectric_reflection_energy(mu, p.coatAlpha, p.coatEta) : 0.0f;
-}
-
 // Light the coat reflects back down meets the base again; an absorbing base loses part of it.
 // With K the coat's internal diffuse reflectance and rho the base albedo the base's reflectance
 // becomes rho (1 - K) / (1 - K rho) (no change for rho = 1, so white furnaces stay white).
@@ -116,26 +120,42 @@ HIPR_FN vec3 coat_darkening(OpenPbrParams p) {
   const float amount = p.coat * p.coatDarkening;
   if (amount <= 0.0f) return vec3(1.0f);
   const float k = 1.0f - (1.0f - dielectric_reflection_energy_average(p.coatAlpha, p.coatEta)) / (p.coatEta * p.coatEta);
-  const vec3 rho = mix((1.0f - p.transmission) * diffuse_reflection_color(p), p.baseColor, p.metalness);
+  // Light the base transmits is not lost: glass under a clear coat keeps its energy.
+  const vec3 rho = mix((1.0f - p.transmission) * diffuse_reflection_color(p) + p.transmission * p.transmissionColor, p.baseColor,
+                       p.metalness);
   return mix(vec3(1.0f), (1.0f - k) / (vec3(1.0f) - k * clamp(rho, vec3(0.0f), vec3(1.0f))), amount);
+}
+
+// Albedo of the specular layer over the diffuse. The tables are isotropic: an anisotropic lobe
+// takes the larger albedo of its two alphas, so the diffuse under it is never overestimated (its
+// reflection varies with alpha both ways once total internal reflection is involved).
+HIPR_FN float specular_layer_energy(float mu, vec2 alpha, float eta) {
+  const float e = dielectric_reflection_energy(mu, alpha.x, eta);
+  return alpha.x == alpha.y ? e : max(e, dielectric_reflection_energy(mu, alpha.y, eta));
+}
+HIPR_FN float specular_layer_energy_average(vec2 alpha, float eta) {
+  const float e = dielectric_reflection_energy_average(alpha.x, eta);
+  return alpha.x == alpha.y ? e : max(e, dielectric_reflection_energy_average(alpha.y, eta));
 }
 
 HIPR_FN OpenPbrContext openpbr_context(OpenPbrParams p, vec3 wo) {
   OpenPbrContext c;
   const float mu_o = wo.z;
   c.fuzzEnergy = p.fuzz > 0.0f ? p.fuzz * fuzz_energy(mu_o, p.fuzzRoughness) : 0.0f;
-  c.coatEnergy = coat_energy(p, mu_o);
-  c.baseTint = p.coat > 0.0f ? mix(vec3(1.0f), p.coatColor, p.coat) * coat_darkening(p) : vec3(1.0f);
+  c.coatEnergy = coat_layer_energy(p.coat, p.coatAlpha, p.coatEta, mu_o);
+  c.coatTint = coat_passage_tint(p.coatColor, p.coat, p.coatEta, mu_o);
+  c.darkening = p.coat > 0.0f ? coat_darkening(p) : vec3(1.0f);
+  c.specularEta = specular_eta_under_coat(p.eta, p.specularWeight, p.coat, p.coatEta);
   const float a = ggx_alpha_for_tables(p.alpha);
-  c.specularEnergy = specular_reflects(p) ? dielectric_reflection_energy(mu_o, a, p.eta) : 0.0f;
-  c.specularAverage = specular_reflects(p) ? dielectric_reflection_energy_average(a, p.eta) : 0.0f;
+  c.specularEnergy = opaque_specular_reflects(c) ? specular_layer_energy(mu_o, p.alpha, c.specularEta) : 0.0f;
+  c.specularAverage = opaque_specular_reflects(c) ? specular_layer_energy_average(p.alpha, c.specularEta) : 0.0f;
   c.interfaceEnergy = 1.0f;
   if (p.transmission > 0.0f && specular_reflects(p))
     c.interfaceEnergy = mix(1.0f, max(p.thinWalled ? ggx_energy(mu_o, a) : dielectric_interface_energy(mu_o, a, p.eta), 0.05f),
                             ggx_isotropy(p.alpha));
 
   // Estimated albedo of each lobe from wo; floors keep a lobe sampled wherever it can be non-zero.
-  const float under = (1.0f - c.fuzzEnergy) * (1.0f - c.coatEnergy) * luminance(c.baseTint);
+  const float under = (1.0f - c.fuzzEnergy) * (1.0f - c.coatEnergy) * luminance(c.coatTint * c.coatTint * c.darkening);
   const float dielectric = (1.0f - p.metalness) * under;
   c.weights = vec4(0.0f);
   c.weights.x = (1.0f - c.fuzzEnergy) * c.coatEnergy;
@@ -164,7 +184,7 @@ HIPR_FN vec3 diffuse_under_specular_eval_cos(OpenPbrParams p, OpenPbrContext c, 
   const float mu_i = abs(wi.z);
   float scale = 1.0f;
   if (c.specularEnergy > 0.0f) {
-    const float e_i = dielectric_reflection_energy(mu_i, ggx_alpha_for_tables(p.alpha), p.eta);
+    const float e_i = specular_layer_energy(mu_i, p.alpha, c.specularEta);
     scale = (1.0f - c.specularEnergy) * (1.0f - e_i) / max(1.0f - c.specularAverage, 1.0e-4f);
   }
   if (wi.z < 0.0f) return diffuse_transmission_color(p) * (scale * lambert_eval_cos(mu_i));
@@ -176,11 +196,11 @@ HIPR_FN vec3 diffuse_under_specular_eval_cos(OpenPbrParams p, OpenPbrContext c, 
           subsurface * lambert_eval_cos(mu_i)) * scale;
 }
 
-// Fresnel of the dielectric specular reflection, with the thin film's colours.
-HIPR_FN vec3 specular_fresnel(OpenPbrParams p, float cos_o) {
+// Fresnel of a dielectric specular reflection at relative index eta, with the thin film's colours.
+HIPR_FN vec3 specular_fresnel(OpenPbrParams p, float eta, float cos_o) {
   if (p.thinFilm > 0.0f)
-    return fresnel_with_thin_film(cos_o, p.eta, p.thinFilm, p.thinFilmIor, p.thinFilmThickness);
-  return vec3(fresnel_dielectric(cos_o, p.eta));
+    return fresnel_with_thin_film(cos_o, eta, p.thinFilm, p.thinFilmIor, p.thinFilmThickness);
+  return vec3(fresnel_dielectric(cos_o, eta));
 }
 
 // The base (metal and dielectric) below the coat, f * |cos_i|.
@@ -188,15 +208,20 @@ HIPR_FN vec3 openpbr_base_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, v
   vec3 result = vec3(0.0f);
   const bool reflection = wi.z > 0.0f;
   if (reflection && p.metalness > 0.0f && p.specularWeight > 0.0f)
-    result += (p.metalness * min(p.specularWeight, 1.0f)) * metal_eval_cos(p.baseColor, p.specularColor, p.alpha, wo, wi);
+    result += (p.metalness * min(p.specularWeight, 1.0f)) *
+              metal_eval_cos(p.baseColor, p.specularColor, vec3(p.thinFilm, p.thinFilmIor, p.thinFilmThickness), p.alpha, wo, wi);
   if (p.metalness >= 1.0f) return result;
 
   vec3 dielectric = vec3(0.0f);
   const float t = p.transmission;
-  if (reflection && specular_reflects(p)) {
-    const vec3 f = specular_fresnel(p, dot(wo, normalize(wo + wi)));
-    vec3 amount = (1.0f - t) * f;
-    if (t > 0.0f) amount += (t / c.interfaceEnergy) * (p.thinWalled ? thin_slab_reflectance(f) : f);
+  if (reflection && (opaque_specular_reflects(c) || (t > 0.0f && specular_reflects(p)))) {
+    const float cos_h = dot(wo, normalize(wo + wi));
+    vec3 amount = vec3(0.0f);
+    if (t < 1.0f && opaque_specular_reflects(c)) amount += (1.0f - t) * specular_fresnel(p, c.specularEta, cos_h);
+    if (t > 0.0f && specular_reflects(p)) {
+      const vec3 f = specular_fresnel(p, p.eta, cos_h);
+      amount += (t / c.interfaceEnergy) * (p.thinWalled ? thin_slab_reflectance(f) : f);
+    }
     dielectric += p.specularColor * amount * ggx_reflection_eval_cos(wo, wi, p.alpha);
   } else if (!reflection && t > 0.0f && specular_reflects(p)) {
     const float through = p.thinWalled ? thin_interface_eval_cos(wo, wi, p.eta, p.alpha)
@@ -207,10 +232,12 @@ HIPR_FN vec3 openpbr_base_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, v
   return result + (1.0f - p.metalness) * dielectric;
 }
 
-// Scale of everything under the coat for the pair (wo, wi), colour included.
-HIPR_FN vec3 under_coat_scale(OpenPbrParams p, OpenPbrContext c, float mu_i) {
+// Scale of everything under the coat for the pair (wo, wi), colour included: light reflected
+// by the base crosses the coat twice and is darkened, light refracted through it once.
+HIPR_FN vec3 under_coat_scale(OpenPbrParams p, OpenPbrContext c, vec3 wi) {
   if (p.coat <= 0.0f) return vec3(1.0f);
-  return c.baseTint * (1.0f - max(c.coatEnergy, coat_energy(p, mu_i)));
+  const vec3 through = c.coatTint * (1.0f - c.coatEnergy);
+  return wi.z > 0.0f ? through * coat_passage_tint(p.coatColor, p.coat, p.coatEta, wi.z) * c.darkening : through;
 }
 
 // eval, pdf and sample come in two forms: given the context of wo (openpbr_context), so a
@@ -219,13 +246,13 @@ HIPR_FN vec3 under_coat_scale(OpenPbrParams p, OpenPbrContext c, float mu_i) {
 // f(wo, wi) * |cos(wi)|; wi on either side.
 HIPR_FN vec3 openpbr_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z == 0.0f) return vec3(0.0f);
-  vec3 result = openpbr_base_eval_cos(p, c, wo, wi) * under_coat_scale(p, c, abs(wi.z));
+  vec3 result = openpbr_base_eval_cos(p, c, wo, wi) * under_coat_scale(p, c, wi);
   if (p.coat > 0.0f && wi.z > 0.0f) {
     const float f = fresnel_dielectric(dot(wo, normalize(wo + wi)), p.coatEta);
     result += vec3(p.coat * f * ggx_reflection_eval_cos(wo, wi, vec2(p.coatAlpha)));
   }
   if (p.fuzz > 0.0f) {
-    result *= fuzz_layer_scale(p.fuzz, p.fuzzRoughness, wo.z, abs(wi.z));
+    result *= 1.0f - c.fuzzEnergy;
     if (wi.z > 0.0f) result += (p.fuzz * fuzz_eval_cos(p.fuzzRoughness, wo, wi)) * p.fuzzColor;
   }
   return result;
@@ -252,7 +279,7 @@ HIPR_FN float openpbr_pdf(OpenPbrParams p, OpenPbrContext c, vec3 wo, vec3 wi) {
     const float reflected = p.diffuseRoughness > 0.0f ? eon_pdf(p.diffuseRoughness, wo, wi) : lambert_pdf(wi.z);
     pdf += c.diffuseWeight * (wi.z > 0.0f ? (1.0f - q) * reflected : q * lambert_pdf(-wi.z));
   }
-  if (c.fuzzWeight > 0.0f) pdf += c.fuzzWeight * fuzz_pdf(wo, wi);
+  if (c.fuzzWeight > 0.0f) pdf += c.fuzzWeight * fuzz_pdf(p.fuzzRoughness, wo, wi);
   return pdf;
 }
 
@@ -315,7 +342,7 @@ HIPR_FN OpenPbrSample openpbr_sample(OpenPbrParams p, OpenPbrContext c, vec3 wo,
     if (result == 2) {
       // Index-matched: every bit of the interface's share passes; nothing is reflected.
       s.delta = true;
-      s.deltaWeight = under_coat_scale(p, c, wo.z) * p.transmissionColor *
+      s.deltaWeight = under_coat_scale(p, c, s.wi) * p.transmissionColor *
                       ((1.0f - p.metalness) * p.transmission * (1.0f - c.fuzzEnergy) / w.w);
     }
     return s;
@@ -335,7 +362,7 @@ HIPR_FN OpenPbrSample openpbr_sample(OpenPbrParams p, OpenPbrContext c, vec3 wo,
     return s;
   }
   if (c.fuzzWeight <= 0.0f) return s;
-  s.wi = fuzz_sample(u);
+  s.wi = fuzz_sample(p.fuzzRoughness, wo, u);
   s.lobe = kLobeDiffuse;  // a broad sheen: HiPR weighs it as diffuse
   s.valid = s.wi.z > 0.0f;
   return s;
@@ -352,8 +379,8 @@ HIPR_FN vec3 layers_emission_scale(float coat, vec3 coatColor, float coatAlpha, 
                                    float fuzzRoughness, float mu_o) {
   vec3 scale = vec3(1.0f);
   if (coat > 0.0f)
-    scale = mix(vec3(1.0f), coatColor, coat) * (1.0f - coat * dielectric_reflection_energy(mu_o, coatAlpha, coatEta));
-  if (fuzz > 0.0f) scale *= 1.0f - fuzz * fuzz_energy(mu_o, fuzzRoughness);
+    scale = coat_passage_tint(coatColor, coat, coatEta, mu_o) * (1.0f - coat_layer_energy(coat, coatAlpha, coatEta, mu_o));
+  scale *= fuzz_layer_scale(fuzz, fuzzRoughness, mu_o);
   return scale;
 }
 
