@@ -65,6 +65,15 @@ TEST(OpenPbrConformance, BaseReflectionUnderACoatSeesTheCoatsIndex) {
   }
 }
 
+// The coat roughens the base's specular as the specification recommends.
+TEST(OpenPbrConformance, ARoughCoatRoughensTheBase) {
+  EXPECT_NEAR(shader::coat_roughened(0.3f, 0.1f, 1.0f), std::pow(0.3f * 0.3f * 0.3f * 0.3f + 2.0e-4f, 0.25f), 1e-6f);
+  EXPECT_EQ(shader::coat_roughened(0.3f, 0.8f, 0.0f), 0.3f);
+  EXPECT_NEAR(shader::coat_roughened(0.3f, 0.0f, 1.0f), 0.3f, 1e-6f);
+  EXPECT_EQ(shader::coat_roughened(0.2f, 1.0f, 1.0f), 1.0f);
+  EXPECT_NEAR(shader::coat_roughened(0.0f, 0.5f, 0.5f), 0.5f * std::pow(2.0f * 0.0625f, 0.25f), 1e-6f);
+}
+
 // A white coat over a white Lambertian base (specular_weight 0): the reference reflects 1.000.
 TEST(OpenPbrConformance, WhiteCoatOverWhiteDiffuse) {
   for (float cosine : kCosines) {

@@ -28,6 +28,15 @@ HIPR_FN vec3 coat_passage_tint(vec3 coat_color, float coat, float coat_eta, floa
   return mix(vec3(1.0f), once, coat);
 }
 
+// A rough coat blurs what is seen through it: OpenPBR recommends roughening the base's specular
+// roughness r under a coat of roughness r_c and weight C to mix(r, min(1, r^4 + 2 r_c^4)^(1/4), C)
+// (the variances of the two lobes add, once for each crossing).
+HIPR_FN float coat_roughened(float roughness, float coat_roughness, float coat) {
+  if (coat <= 0.0f) return roughness;
+  const float r2 = roughness * roughness, c2 = coat_roughness * coat_roughness;
+  return mix(roughness, sqrt(sqrt(min(1.0f, r2 * r2 + 2.0f * c2 * c2))), clamp(coat, 0.0f, 1.0f));
+}
+
 // The index the base's specular reflection sees under a coat (OpenPBR: the coat's index mixed in
 // by coat weight replaces the ambient one), for a base seen from outside. eta is the base's index
 // with specular_weight already applied (ior_with_specular_weight); the weight is taken off, the

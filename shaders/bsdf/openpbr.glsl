@@ -7,7 +7,8 @@
 //   coat     GGX dielectric reflection (coat_ior, coat_roughness), weight C; everything below is
 //            scaled by 1 - C E_c(wo) (coat_layer.glsl), tinted by coat_color along the
 //            refracted path on the way in and out, and its reflection darkened by the light the
-//            coat reflects back onto an absorbing base (coat_darkening);
+//            coat reflects back onto an absorbing base (coat_darkening); a rough coat roughens
+//            the base's specular (coat_roughened, applied where the parameters are resolved);
 //            both layers scale by the view side only, as the specification's albedo scaling
 //            and its reference implementation do: exact energy for any white stack, not
 //            reciprocal (docs/openpbr.md);

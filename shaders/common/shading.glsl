@@ -61,7 +61,9 @@ ShadingParams shading_params(SurfaceHit hit, vec3 wo) {
   const bool inside = !thin && !hit.frontFacing && p.transmission > 0.0;
   p.coat = HIPR_FEATURE_COAT != 0 && !inside ? clamp(material_coat_weight(hit), 0.0, 1.0) : 0.0;
   p.coatColor = b_materials[material].coat_color;
-  p.coatAlpha = p.coat > 0.0 ? ggx_alpha(clamp(material_coat_roughness(hit), 0.0, 1.0)) : 1.0;
+  const float coatRoughness = clamp(material_coat_roughness(hit), 0.0, 1.0);
+  p.coatAlpha = p.coat > 0.0 ? ggx_alpha(coatRoughness) : 1.0;
+  if (p.coat > 0.0) p.alpha = ggx_alpha_anisotropic(coat_roughened(clamp(roughness, 0.0, 1.0), coatRoughness, p.coat), anisotropy);
   p.coatEta = max(b_materials[material].coat_ior, 1.0);
   p.coatDarkening = clamp(b_materials[material].coat_darkening, 0.0, 1.0);
   p.fuzz = HIPR_FEATURE_FUZZ != 0 && !inside ? clamp(b_materials[material].fuzz_weight, 0.0, 1.0) : 0.0;
