@@ -49,7 +49,7 @@ HIPR_FN float thin_film_metal_channel(float cos_i, float film_ior, vec2 nk, floa
 HIPR_FN vec3 fresnel_thin_film_metal(float cos_i, float film_ior, vec3 f0, vec3 edge_tint, float thickness_nm) {
   const float c = clamp(cos_i, 0.0f, 1.0f);
   if (c <= 0.0f) return vec3(1.0f);
-  film_ior = max(film_ior, 1.0f);  // a film thinner than the air above it is not a film OpenPBR allows
+  film_ior = max(film_ior, 1.0f);  // OpenPBR keeps thin_film_ior at 1 or more
   thickness_nm = max(thickness_nm, 0.0f);
   vec3 result;
   for (int k = 0; k < 3; ++k)
