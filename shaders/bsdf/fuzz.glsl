@@ -6,8 +6,9 @@
 //   - its directional albedo R(x, alpha), and
 //   - a linearly transformed cosine for the lobe's shape, M^-1 = [[a, 0, b], [0, a, 0], [0, 0, 1]]
 //     in a frame whose x axis points along wo's azimuth.
-// We evaluate the paper's analytic fits of R, a and b (rational functions, a Gaussian for R)
-// instead of its 32 x 32 table; docs/openpbr.md gives the size of the difference.
+// R comes from our own random walks through that volume (tools/sheen_volume.cpp), tabulated on
+// the paper's grid (32 x 32, mu and alpha uniform) and read bilinearly as its table is; a and b
+// from the paper's analytic fits of its table (rational functions). docs/openpbr.md compares.
 // The LTC keeps z, so the whole distribution lies above the horizon: it integrates to one over
 // the hemisphere, it is sampled exactly (a cosine sample pushed through M), and the lobe's albedo
 // is exactly R. Like every LTC lobe it is fitted per view direction and not reciprocal.
@@ -16,6 +17,7 @@
 #define HIPR_FUZZ_GLSL
 
 #include "../common/sampling.glsl"
+#include "energy_tables.glsl"
 
 // As alpha goes to 0 the LTC's a goes to 0: the lobe flattens onto the horizon, where no
 // sampler resolves it. Below this the look hardly changes.
@@ -23,25 +25,16 @@ const float kFuzzMinRoughness = 0.05f;
 
 HIPR_FN float fuzz_clamp_roughness(float roughness) { return clamp(roughness, kFuzzMinRoughness, 1.0f); }
 
-// Directional albedo R(x = cos_o, y = alpha): a Gaussian in x with fitted centre, width and offset.
-HIPR_FN float fuzz_albedo_fit(float x, float y) {
-  const float s = y * (0.0206607f + 1.58491f * y) / (0.0379424f + y * (1.32227f + y));
-  const float m = y * (-0.193854f + y * (-1.14885f + y * (1.7932f - 0.95943f * y * y))) / (0.046391f + y);
-  const float o = y * (0.000654023f + (-0.0207818f + 0.119681f * y) * y) / (1.26264f + y * (-1.92021f + y));
-  const float t = (x - m) / s;
-  return clamp(exp(-0.5f * t * t) / (s * 2.50662827f) + o, 0.0f, 1.0f);
-}
-
-// The LTC's a and b at (x, y).
+// The LTC's a and b at x = cos_o, y = alpha: the paper's rational fits of its table.
 HIPR_FN float fuzz_ltc_a(float x, float y) { return (2.58126f * x + 0.813703f * y) * y / (1.0f + 0.310327f * x * x + 2.60994f * x * y); }
 
 HIPR_FN float fuzz_ltc_b(float x, float y) {
   return sqrt(max(1.0f - x, 0.0f)) * (y - 1.0f) * y * y * y / (0.0000254053f + 1.71228f * x - 1.71506f * x * y + 1.34174f * y * y);
 }
 
-// Albedo of the lobe (unit colour) seen at cos_o = mu.
+// Albedo of the lobe (unit colour) seen at cos_o = mu: the volume's R.
 HIPR_FN float fuzz_energy(float mu, float roughness) {
-  return fuzz_albedo_fit(clamp(mu, 0.0f, 1.0f), fuzz_clamp_roughness(roughness));
+  return table_2d(kTableFuzzAlbedo, kFuzzTableSize, kFuzzTableSize, fuzz_clamp_roughness(roughness), mu);
 }
 
 // The frame of the fit: rotate about z so that wo's azimuth becomes 0 (sign = -1), or back (+1).
