@@ -75,6 +75,31 @@ TEST(OpenPbrConformance, ARoughCoatRoughensTheBase) {
   EXPECT_NEAR(shader::coat_roughened(0.0f, 0.5f, 0.5f), 0.5f * std::pow(2.0f * 0.0625f, 0.25f), 1e-6f);
 }
 
+// Under a coat the film sees the coat's index above it: a film of the coat's own index is then
+// no film (the coat is merely thicker), over the dielectric and over the metal.
+TEST(OpenPbrConformance, AFilmOfTheCoatsIndexUnderTheCoatIsInvisible) {
+  for (float cosine : {0.2f, 0.6f, 1.0f}) {
+    const glm::vec3 wo = view(cosine), wi = glm::vec3(-wo.x, 0.0f, wo.z);
+    OpenPbrParams p = defaults();
+    p.baseColor = glm::vec3(0.0f);
+    p.coat = 1.0f;
+    p.coatEta = 1.6f;
+    p.coatAlpha = shader::ggx_alpha(0.2f);
+    const glm::vec3 bare = shader::openpbr_eval_cos(p, wo, wi);
+    p.thinFilm = 1.0f;
+    p.thinFilmIor = 1.6f;
+    p.thinFilmThickness = 400.0f;
+    const glm::vec3 filmed = shader::openpbr_eval_cos(p, wo, wi);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(filmed[c], bare[c], 1e-3f * bare[c] + 1e-6f) << "dielectric, cos " << cosine;
+    p.thinFilmIor = 1.3f;
+    EXPECT_GT(glm::length(shader::openpbr_eval_cos(p, wo, wi) - bare), 1e-3f * glm::length(bare)) << "a film of another index shows";
+    const glm::vec3 nk = glm::vec3(0.9f, 0.6f, 0.3f);
+    const glm::vec3 metal_under = shader::fresnel_thin_film_metal(cosine, 1.6f, nk, glm::vec3(1.0f), 400.0f, 1.6f);
+    const glm::vec3 metal_thin = shader::fresnel_thin_film_metal(cosine, 1.6f, nk, glm::vec3(1.0f), 0.0f, 1.6f);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(metal_under[c], metal_thin[c], 2e-3f) << "metal, cos " << cosine;
+  }
+}
+
 // A white coat over a white Lambertian base (specular_weight 0): the reference reflects 1.000.
 TEST(OpenPbrConformance, WhiteCoatOverWhiteDiffuse) {
   for (float cosine : kCosines) {
@@ -158,8 +183,8 @@ TEST(OpenPbrConformance, ThinFilmOfNoThicknessLeavesTheMetalAlone) {
   for (float cosine : {0.05f, 0.3f, 0.7f, 1.0f}) {
     const glm::vec3 f0(0.9f, 0.6f, 0.3f), tint(0.8f, 0.9f, 1.0f);
     const glm::vec3 plain = shader::fresnel_f82_tint(f0, tint, cosine);
-    EXPECT_EQ(shader::metal_fresnel(f0, tint, glm::vec3(1.0f, 1.4f, 0.0f), cosine), plain);
-    EXPECT_EQ(shader::metal_fresnel(f0, tint, glm::vec3(0.0f, 1.4f, 500.0f), cosine), plain);
+    EXPECT_EQ(shader::metal_fresnel(f0, tint, glm::vec4(1.0f, 1.4f, 0.0f, 1.0f), cosine), plain);
+    EXPECT_EQ(shader::metal_fresnel(f0, tint, glm::vec4(0.0f, 1.4f, 500.0f, 1.0f), cosine), plain);
   }
 }
 
@@ -171,7 +196,7 @@ TEST(OpenPbrConformance, MetalIndexReproducesTheBaseColour) {
       const glm::vec2 nk = shader::metal_complex_index(r, g);
       const float normal = ((nk.x - 1) * (nk.x - 1) + nk.y * nk.y) / ((nk.x + 1) * (nk.x + 1) + nk.y * nk.y);
       EXPECT_NEAR(normal, r, 1e-4f) << "r " << r << " g " << g;
-      const glm::vec3 vacuum = shader::fresnel_thin_film_metal(1.0f, 1.0f, glm::vec3(r), glm::vec3(g), 400.0f);
+      const glm::vec3 vacuum = shader::fresnel_thin_film_metal(1.0f, 1.0f, glm::vec3(r), glm::vec3(g), 400.0f, 1.0f);
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(vacuum[c], r, 2e-3f) << "r " << r << " g " << g;
     }
 }

@@ -30,8 +30,8 @@ HIPR_FN vec3 metal_ms_eval_cos(vec3 f0, vec2 alpha, vec3 wo, vec3 wi) {
   return f_ms * (shape * ggx_isotropy(alpha) * wi.z);
 }
 
-// film = (thin_film_weight, thin_film_ior, thickness in nm).
-HIPR_FN vec3 metal_eval_cos(vec3 f0, vec3 tint, vec3 film, vec2 alpha, vec3 wo, vec3 wi) {
+// film = (thin_film_weight, thin_film_ior, thickness in nm, index of the medium above the film).
+HIPR_FN vec3 metal_eval_cos(vec3 f0, vec3 tint, vec4 film, vec2 alpha, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
   const vec3 h = normalize(wo + wi);
   return metal_fresnel(f0, tint, film, dot(wo, h)) * ggx_reflection_eval_cos(wo, wi, alpha) +

@@ -29,8 +29,8 @@
 //            of subsurface until a volumetric walk exists (diffuse reflection; thin-walled, half
 //            of it is transmitted diffusely to the far side).
 // Approximations, documented (docs/openpbr.md): thin film changes the reflected colour but not
-// the energy left to the layers below, and sees index 1 above it even under a coat; glass under
-// a coat refracts with its own index; the coat follows the base's shading normal; anisotropic
+// the energy left to the layers below; under a coat it sees the coat's index above it at the
+// outside angle (so does the base's reflection); glass under a coat keeps its own index; the coat follows the base's shading normal; anisotropic
 // lobes read the isotropic tables at one stand-in alpha (ggx_alpha_for_tables; the larger of
 // the two for the diffuse under the specular layer); refraction leaves out the 1/eta^2 radiance
 // scaling (it cancels for paths that enter and leave an object).
@@ -89,6 +89,7 @@ struct OpenPbrContext {
   vec3 coatTint;          // the coat's colour on the passage toward wo
   vec3 darkening;         // of the base's reflection under the coat
   float specularEta;      // index of the opaque dielectric's reflection, relative to the coat
+  float filmAmbient;      // index of the medium above the thin film: 1, or the coat's mixed in
   float specularEnergy;   // E_r(wo) of that reflection, 0 when index-matched
   float specularAverage;  // its cosine-weighted average
   float interfaceEnergy;  // E_rt(wo), or E(wo) for a thin-walled slab: the transmitting interface
@@ -147,6 +148,7 @@ HIPR_FN OpenPbrContext openpbr_context(OpenPbrParams p, vec3 wo) {
   c.coatTint = coat_passage_tint(p.coatColor, p.coat, p.coatEta, mu_o);
   c.darkening = p.coat > 0.0f ? coat_darkening(p) : vec3(1.0f);
   c.specularEta = specular_eta_under_coat(p.eta, p.specularWeight, p.coat, p.coatEta);
+  c.filmAmbient = p.coat > 0.0f ? mix(1.0f, p.coatEta, p.coat) : 1.0f;
   const float a = ggx_alpha_for_tables(p.alpha);
   c.specularEnergy = opaque_specular_reflects(c) ? specular_layer_energy(mu_o, p.alpha, c.specularEta) : 0.0f;
   c.specularAverage = opaque_specular_reflects(c) ? specular_layer_energy_average(p.alpha, c.specularEta) : 0.0f;
@@ -197,10 +199,12 @@ HIPR_FN vec3 diffuse_under_specular_eval_cos(OpenPbrParams p, OpenPbrContext c, 
           subsurface * lambert_eval_cos(mu_i)) * scale;
 }
 
-// Fresnel of a dielectric specular reflection at relative index eta, with the thin film's colours.
-HIPR_FN vec3 specular_fresnel(OpenPbrParams p, float eta, float cos_o) {
+// Fresnel of a dielectric specular reflection at relative index eta, with the thin film's colours;
+// `ambient` is the index of the medium above the film (the film's index is taken relative to it,
+// as eta already is).
+HIPR_FN vec3 specular_fresnel(OpenPbrParams p, float eta, float ambient, float cos_o) {
   if (p.thinFilm > 0.0f)
-    return fresnel_with_thin_film(cos_o, eta, p.thinFilm, p.thinFilmIor, p.thinFilmThickness);
+    return fresnel_with_thin_film(cos_o, eta, p.thinFilm, p.thinFilmIor / ambient, p.thinFilmThickness);
   return vec3(fresnel_dielectric(cos_o, eta));
 }
 
@@ -210,7 +214,8 @@ HIPR_FN vec3 openpbr_base_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, v
   const bool reflection = wi.z > 0.0f;
   if (reflection && p.metalness > 0.0f && p.specularWeight > 0.0f)
     result += (p.metalness * min(p.specularWeight, 1.0f)) *
-              metal_eval_cos(p.baseColor, p.specularColor, vec3(p.thinFilm, p.thinFilmIor, p.thinFilmThickness), p.alpha, wo, wi);
+              metal_eval_cos(p.baseColor, p.specularColor, vec4(p.thinFilm, p.thinFilmIor, p.thinFilmThickness, c.filmAmbient), p.alpha,
+                             wo, wi);
   if (p.metalness >= 1.0f) return result;
 
   vec3 dielectric = vec3(0.0f);
@@ -218,9 +223,9 @@ HIPR_FN vec3 openpbr_base_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, v
   if (reflection && (opaque_specular_reflects(c) || (t > 0.0f && specular_reflects(p)))) {
     const float cos_h = dot(wo, normalize(wo + wi));
     vec3 amount = vec3(0.0f);
-    if (t < 1.0f && opaque_specular_reflects(c)) amount += (1.0f - t) * specular_fresnel(p, c.specularEta, cos_h);
+    if (t < 1.0f && opaque_specular_reflects(c)) amount += (1.0f - t) * specular_fresnel(p, c.specularEta, c.filmAmbient, cos_h);
     if (t > 0.0f && specular_reflects(p)) {
-      const vec3 f = specular_fresnel(p, p.eta, cos_h);
+      const vec3 f = specular_fresnel(p, p.eta, 1.0f, cos_h);
       amount += (t / c.interfaceEnergy) * (p.thinWalled ? thin_slab_reflectance(f) : f);
     }
     dielectric += p.specularColor * amount * ggx_reflection_eval_cos(wo, wi, p.alpha);
