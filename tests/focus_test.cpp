@@ -162,12 +162,12 @@ TEST(Focus, AfterAnEditTheEditsTilesComeFirstThenTheFocus) {
   scheduler.set_focus(focus);
   const Scene before = scene;
   apply_edit(scene, MaterialEdit{"red", {{"base_color", {0.1f, 0.2f, 0.7f}}}});
-  scheduler.on_edit(scene, diff_scenes(before, scene));
+  const ChangeSet red = diff_scenes(before, scene);
+  scheduler.on_edit(scene, red);
   const std::vector<uint32_t> ids = renderer.gbuffer_instances();
   const std::set<uint32_t> focus_tiles = tiles_of(focus_pixels(focus, ids, s.width, s.height), s, renderer.tiles_x());
   const std::vector<uint32_t> flags = renderer.tile_flags();
   const std::vector<uint32_t> order = renderer.schedule();
-  const ChangeSet red = diff_scenes(before, scene);
   const Focus red_wall{{FocusSeed{.instances = red.instances}}};
   const std::set<uint32_t> wall_tiles = tiles_of(focus_pixels(red_wall, ids, s.width, s.height), s, renderer.tiles_x());
   expect_leading(order, wall_tiles);

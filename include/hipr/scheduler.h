@@ -92,7 +92,6 @@ class Scheduler {
   // The leading steps have passed the seeded entries: the focus's lead steps come next.
   void begin_lead();
 
-
   ProgressiveRenderer& m_renderer;
   std::unique_ptr<SchedulingPolicy> m_policy;
   uint32_t m_tile_count;

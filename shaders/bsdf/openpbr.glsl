@@ -259,7 +259,8 @@ HIPR_FN vec3 openpbr_eval_cos(OpenPbrParams p, OpenPbrContext c, vec3 wo, vec3 w
   }
   if (p.fuzz > 0.0f) {
     result *= 1.0f - c.fuzzEnergy;
-    if (wi.z > 0.0f) result += (p.fuzz * fuzz_eval_cos(p.fuzzRoughness, wo, wi)) * p.fuzzColor;
+    // The fuzz lobe, f cos = w E_f(wo) pdf(wi) (fuzz.glsl), its albedo taken from the context.
+    if (wi.z > 0.0f) result += (c.fuzzEnergy * fuzz_pdf(p.fuzzRoughness, wo, wi)) * p.fuzzColor;
   }
   return result;
 }

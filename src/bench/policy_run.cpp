@@ -38,6 +38,14 @@ CurvePoint measured(uint32_t step, double work, double wall_seconds, const Image
   return point;
 }
 
+// Adds the point measured at `step` to the curve, and `shown` as each capture its work reaches.
+void record(PolicyRun& run, uint32_t step, double work, double wall_seconds, const ImageRGB& shown,
+            const ImageRGB& reference, const PolicyRunOptions& options) {
+  run.curve.push_back(measured(step, work, wall_seconds, shown, reference, options));
+  while (run.captures.size() < options.capture_work.size() && work >= options.capture_work[run.captures.size()])
+    run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
+}
+
 // One scheduling step, its time added to `wall`; returns the work since the edit.
 double timed_step(Scheduler& scheduler, double& wall) {
   const Timer timer;
@@ -80,11 +88,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
   const ImageRGB stale = scheduler.displayed_image();
   const auto evaluate = [&](uint32_t step, double wall_seconds) {
     ImageRGB shown = scheduler.displayed_image();
-    const double work = step == 0 ? 0.0 : scheduler.work_since_edit();
-    run.curve.push_back(measured(step, work, wall_seconds, shown, reference, options));
-    while (run.captures.size() < options.capture_work.size() &&
-           work >= options.capture_work[run.captures.size()])
-      run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
+    record(run, step, step == 0 ? 0.0 : scheduler.work_since_edit(), wall_seconds, shown, reference, options);
     return shown;
   };
   double wall = 0.0;  // only scheduling and rendering: evaluation and read-backs are left out
@@ -131,11 +135,7 @@ PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const Po
   PolicyRun run;
   double wall = 0.0;
   const auto evaluate = [&](uint32_t step) {
-    const ImageRGB shown = scheduler.displayed_image();
-    const double work = scheduler.work_since_edit();
-    run.curve.push_back(measured(step, work, wall, shown, reference, options));
-    while (run.captures.size() < options.capture_work.size() && work >= options.capture_work[run.captures.size()])
-      run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
+    record(run, step, scheduler.work_since_edit(), wall, scheduler.displayed_image(), reference, options);
   };
   if (!options.focus.empty()) {
     const Timer timer;
@@ -171,10 +171,7 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
   uint32_t non_finite = 0;  // the counters restart at every edit
   uint32_t step = 0;
   const auto evaluate = [&](double work) {
-    const ImageRGB shown = scheduler.displayed_image();
-    run.curve.push_back({step, work, wall * 1e3, relmse(shown, reference), flip_mean(shown, reference, options.flip)});
-    while (run.captures.size() < options.capture_work.size() && work >= options.capture_work[run.captures.size()])
-      run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
+    record(run, step, work, wall, scheduler.displayed_image(), reference, options);
   };
   for (size_t e = 0; e < changes.size(); ++e) {
     if (e > 0) {

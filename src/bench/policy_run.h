@@ -58,9 +58,9 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
                      const RenderSnapshot& start, const ImageRGB& reference,
                      const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options);
 
-// From nothing: the renderer's film and display cleared, the scene it holds (`scene`, with
-// its converged render `reference`) rendered by the policy's scheduler with no edit, the focus
-// set first when there is one. Work counts from the empty film.
+// From nothing: the renderer's film and display cleared, the scene it holds (whose converged
+// render is `reference`) rendered by the policy's scheduler with no edit, the focus set first
+// when there is one. Work counts from the empty film.
 PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const PolicyRunOptions& options);
 
 // A drag: the edits one after another, `work_per_edit` apart (steps run until the current

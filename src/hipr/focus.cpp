@@ -37,8 +37,8 @@ void validate_focus_seed(const FocusSeed& seed, const std::string& where) {
 
 Focus with_focus_edit(const Scene& scene, Focus focus, const FocusEdit& edit) {
   if (edit.clear) return {};
-  FocusSeed seed = edit.node ? focus_on_node(scene, find_node(scene, *edit.node), edit.weight) : FocusSeed{};
-  seed.weight = edit.weight;
+  FocusSeed seed =
+      edit.node ? focus_on_node(scene, find_node(scene, *edit.node), edit.weight) : FocusSeed{.weight = edit.weight};
   seed.pixel = edit.pixel;
   seed.radius = edit.radius;
   validate_focus_seed(seed, describe(Edit{edit}));
