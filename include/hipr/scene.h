@@ -79,6 +79,7 @@ struct PunctualLight {
   float range = 0.0f;      // 0 = infinite
   float inner_cone = 0.0f;
   float outer_cone = 0.7853982f;
+  bool operator==(const PunctualLight&) const = default;
 };
 
 struct Camera {

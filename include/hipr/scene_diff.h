@@ -18,9 +18,24 @@ struct EmitterScale {
   glm::vec3 factor{1.0f};
 };
 
+// A punctual light as it shines: its parameters and where its node puts it.
+struct PlacedLight {
+  PunctualLight light;
+  glm::mat4 world{1.0f};
+  bool operator==(const PlacedLight&) const = default;
+};
+
+// A punctual light an edit changed (moved, re-aimed or re-parametrized), before and after: stage 1
+// looks for the surfaces it reaches in either state.
+struct LightChange {
+  uint32_t node = 0;
+  PlacedLight before, after;
+  bool operator==(const LightChange&) const = default;
+};
+
 struct ChangeSet {
   std::vector<uint32_t> instances;  // indices into Scene::instances() (the changed set E)
-  std::vector<uint32_t> lights;     // node indices of punctual lights that changed
+  std::vector<LightChange> lights;  // punctual lights that changed
   bool materials = false;           // material parameters changed: patch the material table
   bool transforms = false;          // an instance moved, appeared or disappeared: rebuild the TLAS
   bool light_tables = false;        // emitters or punctual lights changed: rebuild light tables

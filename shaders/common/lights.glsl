@@ -36,6 +36,25 @@ float range_window(float distance, float range) {
   return w * w;
 }
 
+// What a point or spot light sends to `position`: the unit direction toward the light, its
+// distance and the intensity x range window x cone / d^2 that arrives (0 outside range or cone).
+// False where the point is the light's own position.
+bool point_light_arrival(Light light, vec3 position, out vec3 direction, out float distance, out vec3 arriving) {
+  const vec3 toLight = light.position - position;
+  const float d2 = dot(toLight, toLight);
+  if (d2 <= 0.0) return false;
+  distance = sqrt(d2);
+  direction = toLight / distance;
+  float falloff = range_window(distance, light.range) / d2;
+  if (light.type == kLightSpot) {
+    const float cd = dot(light.direction, -direction);
+    const float t = clamp((cd - light.spotCosOuter) / max(light.spotCosInner - light.spotCosOuter, 1e-4), 0.0, 1.0);
+    falloff *= t * t;
+  }
+  arriving = light.intensity * falloff;
+  return true;
+}
+
 // Solid-angle pdf of reaching a point on triangle light `light` from `origin`.
 float triangle_light_pdf(Light light, float distance, float cosAtLight) {
   if (cosAtLight <= 0.0 || light.area <= 0.0) return 0.0;
@@ -90,18 +109,12 @@ LightSample sample_light(vec3 position, vec4 u) {
     s.pdf = selection;
     s.isDelta = true;
   } else if (HIPR_FEATURE_PUNCTUAL_LIGHTS != 0) {  // point or spot
-    const vec3 toLight = light.position - position;
-    const float d2 = dot(toLight, toLight);
-    if (d2 <= 0.0) return s;
-    s.distance = sqrt(d2);
-    s.direction = toLight / s.distance;
-    float falloff = range_window(s.distance, light.range) / d2;
-    if (light.type == kLightSpot) {
-      const float cd = dot(light.direction, -s.direction);
-      const float t = clamp((cd - light.spotCosOuter) / max(light.spotCosInner - light.spotCosOuter, 1e-4), 0.0, 1.0);
-      falloff *= t * t;
-    }
-    s.radiance = light.intensity * falloff;
+    vec3 direction, arriving;
+    float distance;
+    if (!point_light_arrival(light, position, direction, distance, arriving)) return s;
+    s.direction = direction;
+    s.distance = distance;
+    s.radiance = arriving;
     s.pdf = selection;
     s.isDelta = true;
   }

@@ -38,6 +38,12 @@ HIPR_CONST float kFocusWeightScale = 16.0f;
 HIPR_CONST uint kFocusWeightMax = 16000u;       // a seed's weight, fixed point (1000 x the scale)
 HIPR_CONST uint kFocusPixelMax = 0x7fffu;       // a pixel's summed focus weight (tile sums stay in 32 bits)
 HIPR_CONST uint kMaxFocusDiscs = 16u;
+// Changed punctual lights stage 1 follows to the surfaces they reach (light_reach.comp); an edit
+// that changes more makes every tile active.
+HIPR_CONST uint kMaxReachLights = 16u;
+// light_reach.comp: a reached pixel scores 1 + kReachScoreScale x r^2, r the relative change of
+// its direct light (a mark_active.comp pixel scores 1 or 2).
+HIPR_CONST float kReachScoreScale = 63.0f;
 HIPR_CONST uint kSortBlock = 256u;     // keys per workgroup in the radix sort
 HIPR_CONST uint kSortRadix = 256u;     // 8-bit digits
 

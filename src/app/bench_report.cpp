@@ -103,6 +103,8 @@ nlohmann::json BenchReport::summary() const {
     for (const auto& [name, run] : edit.runs) policies[name] = policy_summary(run);
     edits.push_back({{"name", edit.name},
                      {"changed_tiles", edit.changed_tiles},
+                     {"reference_changed_tiles", edit.reference_changed_tiles},
+                     {"active_and_changed_tiles", edit.active_and_changed_tiles},
                      {"tiles", edit.tiles},
                      {"policies", policies}});
   }

@@ -16,8 +16,11 @@ inline constexpr const char* kFocusedHipr = "hipr+focus";
 struct BenchEdit {
   std::string name;
   ImageRGB reference;
-  size_t changed_tiles = 0;
+  size_t changed_tiles = 0;  // stage 1's active set
   uint32_t tiles = 0;
+  // Tiles the edit really changed (bench::reference_changed_tiles), and how many of them stage 1
+  // made active.
+  size_t reference_changed_tiles = 0, active_and_changed_tiles = 0;
   std::vector<std::pair<std::string, bench::PolicyRun>> runs;  // in the order run
 
   void add_run(const std::string& policy, bench::PolicyRun run) {

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -285,6 +286,7 @@ int run_bench(BenchOptions& o) {
   }
   focus = {};
   std::string state;  // the edits applied so far
+  std::optional<ImageRGB> previous_reference;  // of the scene before the next edit
   for (size_t e = 0; e < edits.size(); ++e) {
     if (const auto* focus_edit = std::get_if<FocusEdit>(&edits[e])) {
       focus = with_focus_edit(scene, focus, *focus_edit);
@@ -292,6 +294,11 @@ int run_bench(BenchOptions& o) {
       continue;
     }
     const Scene before = scene;
+    // What the edit really changed is judged between the references before and after it.
+    if (!previous_reference)
+      previous_reference = bench::converged_reference(ctx, before, bench::reference_key(before, state, settings, o.ref_spp),
+                                                      settings, o.ref_spp, cache)
+                               .image;
     apply_edit(scene, edits[e]);
     state += texts[e];
     const ChangeSet changes = diff_scenes(before, scene);
@@ -318,6 +325,15 @@ int run_bench(BenchOptions& o) {
     if (!focus.empty()) log::info("  " + focus_line(scene, focus, run_options.focus_region));
     BenchEdit& edit_report =
         report.add_edit(name, reference.image, changed.size(), renderer.tile_count());
+    const std::vector<uint32_t> really_changed =
+        bench::reference_changed_tiles(*previous_reference, reference.image, renderer.tile_grid().tile_size);
+    edit_report.reference_changed_tiles = really_changed.size();
+    edit_report.active_and_changed_tiles = size_t(std::count_if(
+        really_changed.begin(), really_changed.end(),
+        [&](uint32_t t) { return std::binary_search(changed.begin(), changed.end(), t); }));
+    log::info("  active tiles " + std::to_string(changed.size()) + ", changed (references) " +
+              std::to_string(really_changed.size()) + ", both " + std::to_string(edit_report.active_and_changed_tiles));
+    previous_reference = reference.image;
     for (const PlannedRun& planned : planned_runs(policies, focus)) {
       renderer.update_scene(before, undo);
       run_options.policy = planned.policy;

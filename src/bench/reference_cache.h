@@ -3,6 +3,7 @@
 // full-frame passes, and a benchmark is rerun far more often than its scene or edits change.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "hipr/renderer.h"
 #include "hipr/scene.h"
@@ -39,5 +40,14 @@ void converge(Renderer& renderer, uint32_t spp);
 Reference converged_reference(const vk::Context& ctx, const Scene& scene, const std::string& key,
                               const RenderSettings& settings, uint32_t spp,
                               const std::filesystem::path& cache_dir);
+
+// A tile whose two references differ by more than this mean relMSE (per pixel and channel, as
+// relmse()) changed: about 10 % RMS, several times the difference two references of one scene
+// at 1024 spp show from noise alone (0.001 on cornell_sphere).
+inline constexpr double kChangedTileRelmse = 0.005;
+
+// The tiles (ids, ascending) where the references before and after an edit differ by more than
+// kChangedTileRelmse: what the edit really changed, to judge stage 1's active set against.
+std::vector<uint32_t> reference_changed_tiles(const ImageRGB& before, const ImageRGB& after, uint32_t tile_size);
 
 }  // namespace hipr::bench

@@ -18,6 +18,8 @@ HiprStages::HiprStages(const RenderParts& parts, uint32_t kernel_features)
       m_tile_weights(parts.ctx, size_t(parts.tiles.count()) * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_active(parts.ctx, parts.scene, parts.tiles, parts.film, parts.gbuffers, parts.resolve.display, m_tile_weights,
                parts.settings.width * parts.settings.height),
+      m_reach(parts.ctx, parts.scene, parts.tiles, parts.gbuffers, parts.resolve.display, m_active.tile_change,
+              parts.settings.width * parts.settings.height, kernel_features),
       m_discovery(parts.ctx, parts.scene, parts.tiles, parts.film, parts.resolve.display, parts.settings, kernel_features,
                   {{abi::kTraceGBuffer, &parts.gbuffers.current},
                    {abi::kTraceChangedRecords, &m_active.changed_records},
@@ -28,15 +30,17 @@ HiprStages::HiprStages(const RenderParts& parts, uint32_t kernel_features)
 }
 
 uint32_t HiprStages::stage1_visibility(const ChangeSet& changes) {
-  // What no G-buffer shows (a moved camera, a punctual light's or the environment's reach) makes
-  // every tile active.
-  const bool everything = changes.camera || !changes.lights.empty() || changes.environment;
+  // What no G-buffer shows (a moved camera, the environment's reach) makes every tile active.
+  // Changed punctual lights are followed to the surfaces they reach (light_reach.comp).
+  const bool everything = changes.camera || changes.environment || !LightReachPass::can_follow(changes);
+  m_reach.set_changed(everything ? ChangeSet{} : changes);
   return mark_tiles(changes, everything ? abi::kCarryEverything : abi::kCarryEdit, true);
 }
 
 uint32_t HiprStages::stage1_focus() {
   // The G-buffer shows the scene as it is unless a policy without stage 1 left it behind.
   if (!m_parts.gbuffers.is_current()) m_parts.gbuffers.render();
+  m_reach.set_changed({});
   return mark_tiles({}, abi::kCarryRefocus, false);
 }
 
@@ -53,6 +57,8 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
     if (render_gbuffer) m_parts.gbuffers.record(cmd);
     vk::compute_to_compute_barrier(cmd);
     m_active.record(cmd, carry_mode == abi::kCarryEverything);
+    vk::compute_to_compute_barrier(cmd);
+    m_reach.record(cmd);
   });
   // What the CPU needs: stage 2 is split into steps of equal work over |A| tiles, and the
   // focus's lead comes after the scored ones among them.

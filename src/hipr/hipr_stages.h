@@ -1,12 +1,13 @@
 #pragma once
 // HiPR's three stages on the GPU, wired to the renderer's shared state: stage 1
-// (GBufferPass + ActiveTilesPass), stage 2 (DiscoveryPass: the trace kernel with discovery on)
+// (GBufferPass + ActiveTilesPass, LightReachPass for light edits), stage 2 (DiscoveryPass: the trace kernel with discovery on)
 // and stage 3 (SchedulePass). Made on first use: plain renders never pay for them.
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "hipr/active_tiles_pass.h"
+#include "hipr/light_reach_pass.h"
 #include "hipr/progressive_renderer.h"
 #include "hipr/resolve_pass.h"
 #include "hipr/schedule_pass.h"
@@ -47,7 +48,10 @@ class HiprStages final : public HiprStageRunner {
   uint32_t seeded_tiles() const override { return m_seeded; }
 
   // Recompiles stage 2's kernel with other kernel features.
-  void set_kernel_features(uint32_t features) { m_discovery.set_features(features); }
+  void set_kernel_features(uint32_t features) {
+    m_discovery.set_features(features);
+    m_reach.set_kernel_features(features);
+  }
   // Dispatches stage 2's and stage 3's kernels over no tile (they compile, nothing changes).
   void record_warm_up(VkCommandBuffer cmd) const;
   // Per tile: the discovery weight W(T).
@@ -60,6 +64,7 @@ class HiprStages final : public HiprStageRunner {
   RenderParts m_parts;
   vk::Buffer m_tile_weights;  // uint64 per tile: W(T) x abi::kWeightScale
   ActiveTilesPass m_active;
+  LightReachPass m_reach;
   TracePass m_discovery;
   SchedulePass m_schedule;
   Focus m_focus;          // marked by every stage 1

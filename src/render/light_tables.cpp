@@ -33,6 +33,25 @@ float environment_mean_luminance(const Environment& env) {
   return weight > 0.0 ? float(sum / weight) : 0.0f;
 }
 
+abi::Light punctual_light(const PunctualLight& src, const glm::mat4& world) {
+  abi::Light light{};
+  light.position = glm::vec3(world[3]);
+  light.direction = light_direction(world);
+  light.intensity = src.color * src.intensity;
+  light.range = src.range;
+  light.group = abi::kInvalidIndex;
+  switch (src.type) {
+    case LightType::Point: light.type = abi::kLightPoint; break;
+    case LightType::Spot:
+      light.type = abi::kLightSpot;
+      light.spotCosOuter = std::cos(src.outer_cone);
+      light.spotCosInner = std::cos(src.inner_cone);
+      break;
+    case LightType::Directional: light.type = abi::kLightDirectional; break;
+  }
+  return light;
+}
+
 LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& instances,
                                const std::vector<uint32_t>& record_base, uint32_t record_count,
                                float scene_radius, const LightGroups& groups) {
@@ -77,30 +96,13 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
   for (uint32_t n = 0; n < scene.nodes.size(); ++n) {
     const Node& node = scene.nodes[n];
     if (node.light < 0) continue;
-    const PunctualLight& src = scene.lights[size_t(node.light)];
-    const glm::mat4 world = scene.world_transform(n);
-    abi::Light light{};
-    light.position = glm::vec3(world[3]);
-    light.direction = light_direction(world);
-    light.intensity = src.color * src.intensity;
-    light.range = src.range;
+    abi::Light light = punctual_light(scene.lights[size_t(node.light)], scene.world_transform(n));
     light.group = groups.of_node(n);
-    const float lum = luminance(light.intensity);
-    switch (src.type) {
-      case LightType::Point:
-        light.type = abi::kLightPoint;
-        power.push_back(4.0 * kPi * lum);
-        break;
-      case LightType::Spot:
-        light.type = abi::kLightSpot;
-        light.spotCosOuter = std::cos(src.outer_cone);
-        light.spotCosInner = std::cos(src.inner_cone);
-        power.push_back(2.0 * kPi * (1.0 - light.spotCosOuter) * lum);
-        break;
-      case LightType::Directional:
-        light.type = abi::kLightDirectional;
-        power.push_back(double(lum) * kPi * scene_radius * scene_radius);
-        break;
+    const double lum = luminance(light.intensity);
+    switch (light.type) {
+      case abi::kLightPoint: power.push_back(4.0 * kPi * lum); break;
+      case abi::kLightSpot: power.push_back(2.0 * kPi * (1.0 - light.spotCosOuter) * lum); break;
+      default: power.push_back(lum * kPi * scene_radius * scene_radius); break;  // directional
     }
     t.lights.push_back(light);
   }

@@ -23,6 +23,9 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
                                const std::vector<uint32_t>& record_base, uint32_t record_count,
                                float scene_radius, const LightGroups& groups = {});
 
+// A punctual light as the kernels see it, placed by its node's world transform (no group).
+abi::Light punctual_light(const PunctualLight& light, const glm::mat4& world);
+
 // Mean luminance of the environment's texels weighted by solid angle.
 float environment_mean_luminance(const Environment& env);
 

@@ -94,9 +94,12 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
   for (uint32_t n = 0; n < after.nodes.size(); ++n) {
     const int light = after.nodes[n].light;
     if (light < 0) continue;
-    const bool moved = n >= before.nodes.size() || before.world_transform(n) != after.world_transform(n);
+    // A node the scene before did not have (none today: edits keep the nodes) counts as moved.
+    const glm::mat4 new_world = after.world_transform(n);
+    const glm::mat4 old_world = n < before.nodes.size() ? before.world_transform(n) : new_world;
+    const bool moved = n >= before.nodes.size() || old_world != new_world;
     if (moved || !same_light(before.lights[size_t(light)], after.lights[size_t(light)])) {
-      changes.lights.push_back(n);
+      changes.lights.push_back({n, {before.lights[size_t(light)], old_world}, {after.lights[size_t(light)], new_world}});
       changes.light_tables = true;
       const std::optional<glm::vec3> factor =
           moved ? std::nullopt : light_factor(before.lights[size_t(light)], after.lights[size_t(light)]);

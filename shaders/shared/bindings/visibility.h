@@ -1,5 +1,5 @@
 // Set 0 of the G-buffer pass (visibility.comp) and of HiPR stage 1 (ActiveTilesPass:
-// carry_tiles.comp and mark_active.comp).
+// carry_tiles.comp and mark_active.comp; LightReachPass: light_reach.comp).
 // Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
 // binding numbers, named by the kernel's GLSL layouts and by its C++ pass.
 #ifndef HIPR_BINDINGS_VISIBILITY_H
@@ -22,6 +22,12 @@ HIPR_CONST uint kMarkActiveTileChange = 4u;      // uint per tile: how much of i
 HIPR_CONST uint kMarkActiveDisplay = 5u;         // DisplayTexel per pixel: which surface the screen shows
 HIPR_CONST uint kMarkActiveFocusDiscs = 6u;      // FocusDisc[kMaxFocusDiscs]: screen discs of the focus
 HIPR_CONST uint kMarkActiveTileFocus = 7u;       // uint per tile: summed focus weight of its pixels
+// light_reach.comp
+HIPR_CONST uint kReachGBuffer = 0u;     // GBufferTexel per pixel, this scene state
+HIPR_CONST uint kReachLights = 1u;      // Light[2 x kMaxReachLights]: each changed light before, then after
+HIPR_CONST uint kReachDisplay = 2u;     // DisplayTexel per pixel: what the screen shows now
+HIPR_CONST uint kReachTileFlags = 3u;   // uint per tile: kTileActive | kTileScored are set here
+HIPR_CONST uint kReachTileChange = 4u;  // uint per tile: the reached pixels' scores are added
 // carry_tiles.comp
 HIPR_CONST uint kCarryAccumulation = 0u;  // PixelAccum per pixel: the owed bit
 HIPR_CONST uint kCarryTileFlags = 1u;     // uint per tile: rewritten for the new edit

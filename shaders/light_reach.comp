@@ -1,0 +1,130 @@
+#version 460
+// HiPR stage 1 for punctual lights an edit changed (moved, re-aimed, its range, cone, type,
+// colour or intensity): a light is no G-buffer record, so mark_active.comp cannot see where it
+// changes the image. Here the surface each pixel shows (the ray through its centre, as
+// visibility.comp casts it) is lit by every changed light before and after the edit, shadow ray
+// included; the light's direct contribution toward the camera (BSDF x cosine x what arrives,
+// range window and cone included) is compared between the two states. A pixel either state
+// reaches makes its tile active and adds 1 + kReachScoreScale x r^2 to the tile's change score,
+// r being the change of direct light relative to the pixel's new value (the shown value plus the
+// change), at most 1: relMSE weighs a pixel's error by its value, and shadows that moved or surfaces
+// newly lit or darkened (r = 1) come before the slow falloff over a wide floor.
+// Shadow rays of both states go through the scene as it is now (an edit that also moved geometry
+// has it in E, where mark_active.comp finds it). Light arriving through other surfaces (bounces,
+// glass) is stage 2's to discover from the reached tiles.
+// Reads: TLAS and scene buffers, the G-buffer, the changed lights, the display.
+// Writes: kTileActive | kTileScored into the tile flags, the tile change score.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_ray_query : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+
+layout(local_size_x = 64) in;
+
+#include "common/scene_bindings.glsl"
+#include "shared/bindings/visibility.h"
+#include "common/dispatch.glsl"
+#include "common/sampling.glsl"
+#include "common/ray_offset.glsl"
+#include "common/textures.glsl"
+#include "bsdf/bsdf.glsl"
+#include "common/surface.glsl"
+#include "common/cutout.glsl"
+#include "common/material_inputs.glsl"
+#include "common/shading.glsl"
+#include "common/environment.glsl"
+#include "common/lights.glsl"
+
+layout(scalar, binding = kReachGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
+layout(scalar, binding = kReachLights) readonly buffer ReachLights { Light b_reach_lights[]; };
+layout(scalar, binding = kReachDisplay) readonly buffer Display { DisplayTexel b_display[]; };
+layout(scalar, binding = kReachTileFlags) buffer TileFlags { uint b_tile_flags[]; };
+layout(scalar, binding = kReachTileChange) buffer TileChange { uint b_tile_change[]; };
+// u_lights changed lights: b_reach_lights[i] before the edit, b_reach_lights[u_lights + i] after.
+layout(push_constant) uniform Push { uint u_lights; };
+
+bool occluded(vec3 origin, vec3 direction, float tMax) {
+  rayQueryEXT query;
+  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsTerminateOnFirstHitEXT | kCutoutRayFlags, 0xff, origin, 0.0,
+                        direction, tMax);
+  cutout_proceed(query, origin, direction);
+  return rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
+}
+
+// What `light` adds to the pixel: its direct radiance toward the camera (0 where shadowed, out
+// of range or cone). `reached` tells whether its light gets to the surface at all: unblocked,
+// and on the camera's side of it or through a BSDF that passes it on (a mirror or a pane of glass
+// shows the change only by what it reflects, but is lit all the same).
+vec3 direct_from(Light light, SurfaceHit surface, BsdfPoint bsdf, vec3 wo, out bool reached) {
+  reached = false;
+  vec3 direction, arriving;
+  float distance = kFloatMax;
+  if (light.type == kLightDirectional) {
+    direction = -light.direction;
+    arriving = light.intensity;
+  } else if (!point_light_arrival(light, surface.position, direction, distance, arriving)) {
+    return vec3(0.0);
+  }
+  if (!(max3(arriving) > 0.0)) return vec3(0.0);
+  const vec3 f = bsdf_eval(bsdf, direction);
+  const bool cameraSide = dot(direction, surface.geometricNormal) * dot(wo, surface.geometricNormal) > 0.0;
+  if (!(max3(f) > 0.0) && !cameraSide) return vec3(0.0);
+  const vec3 side = dot(direction, surface.geometricNormal) >= 0.0 ? surface.geometricNormal : -surface.geometricNormal;
+  const vec3 origin = offset_ray_origin(surface.position, side);
+  float tMax = kFloatMax;
+  vec3 toward = direction;
+  if (distance < kFloatMax) {
+    const vec3 toLight = surface.position + direction * distance - origin;
+    tMax = length(toLight);
+    if (!(tMax > 0.0)) return vec3(0.0);
+    toward = toLight / tMax;
+    tMax *= 0.99999;
+  }
+  if (occluded(origin, toward, tMax)) return vec3(0.0);
+  reached = true;
+  return max(f, vec3(0.0)) * arriving;
+}
+
+void main() {
+  const uint index = dispatch_index();
+  if (index >= u_frame.width * u_frame.height) return;
+  // Background: a punctual light changes nothing there.
+  if (b_gbuffer[index].record == kInvalidIndex) return;
+  const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
+  const vec2 ndc = (vec2(pixel) + 0.5) / vec2(u_frame.width, u_frame.height) * 2.0 - 1.0;
+  const vec3 ray = normalize(u_frame.cameraForward + ndc.x * u_frame.tanHalfFovY * u_frame.aspect * u_frame.cameraRight -
+                             ndc.y * u_frame.tanHalfFovY * u_frame.cameraUp);
+  rayQueryEXT query;
+  rayQueryInitializeEXT(query, u_tlas, kCutoutRayFlags, 0xff, u_frame.cameraPosition, 0.0, ray, 3.0e38);
+  cutout_proceed(query, u_frame.cameraPosition, ray);
+  if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return;
+  const uint record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
+                      uint(rayQueryGetIntersectionGeometryIndexEXT(query, true));
+  const SurfaceHit surface =
+      make_surface_hit(record, uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true)),
+                       rayQueryGetIntersectionBarycentricsEXT(query, true),
+                       rayQueryGetIntersectionObjectToWorldEXT(query, true),
+                       rayQueryGetIntersectionWorldToObjectEXT(query, true), ray);
+  const vec3 wo = -ray;
+  const ShadingParams shading = shading_params(surface, wo);
+  const BsdfPoint bsdf = bsdf_point(shading.bsdf, BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent), wo);
+
+  bool anyReached = false;
+  vec3 change = vec3(0.0);
+  for (uint i = 0u; i < min(u_lights, kMaxReachLights); ++i) {
+    bool reachedBefore, reachedAfter;
+    const vec3 before = direct_from(b_reach_lights[i], surface, bsdf, wo, reachedBefore);
+    const vec3 after = direct_from(b_reach_lights[u_lights + i], surface, bsdf, wo, reachedAfter);
+    anyReached = anyReached || reachedBefore || reachedAfter;
+    change += after - before;
+  }
+  if (!anyReached) return;
+  // The pixel's value after the edit, as far as the screen and the direct light tell.
+  const float delta = abs(luminance(change));
+  const float shown = max(luminance(b_display[index].shown), 0.0);
+  const float now = max(shown + luminance(change), delta);
+  const float r = now > 0.0 && delta < 3.0e38 ? min(delta / now, 1.0) : 0.0;
+  const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
+  atomicOr(b_tile_flags[tile], kTileActive | kTileScored);
+  atomicAdd(b_tile_change[tile], 1u + uint(kReachScoreScale * r * r + 0.5));
+}
