@@ -13,9 +13,11 @@
 #include "core/error.h"
 #include "hipr/edits.h"
 #include "hipr/scene_diff.h"
+#include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
 #include "image/debug_images.h"
 #include "image/tonemap.h"
+#include "shaders/shared/abi.h"
 #include "test_support.h"
 #include "image/image_io.h"
 
@@ -296,6 +298,54 @@ TEST_F(ViewerWindow, SavedSceneReloadsToTheEditedScene) {
   for (const auto& [code, count] : (*reports)[1].codes)
     EXPECT_LE(count, original.count(code) ? original.at(code) : 0)
         << "new validator error " << code;
+}
+
+// A light edit re-renders first where the light reaches (docs/method.md#light-reach): the
+// lamp's range cut to 0.2 m at frame 24, the lamp moved 5 cm at frame 48 (24 steps of 4 of the 64
+// tiles after the first edit: every tile has been re-rendered, none carries that edit's rank),
+// then one step. Every tile that step cleaned (the owed overlay no longer tints it) is one stage 1
+// found the moved lamp reaching, before or after the move.
+TEST_F(ViewerWindow, AMovedLampRerendersWhereItReachesFirst) {
+  const fs::path scene_file = test::asset("cornell_sphere.glb");
+  const fs::path edits = script("reach.json", R"({"edits": [
+    {"op": "light", "node": "lamp", "set": {"range": 0.2}},
+    {"op": "transform", "node": "lamp", "translate": [-0.05, 0.0, 0.0]}]})");
+  std::map<std::string, ImageRGB> shots;
+  for (const char* overlay : {"none", "owed"}) {
+    const fs::path png = s_dir / (std::string("reach-") + overlay + ".png");
+    const test::CommandResult result = run_in_xvfb(
+        "view " + quoted(scene_file) +
+        " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 4 --steps-per-frame 1 --no-ui -q"
+        " --script-every 24 --exit-after-frames 49 --script " + quoted(edits) + " --overlay " + overlay +
+        " --screenshot " + quoted(png));
+    ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+    shots[overlay] = read_image(png);
+  }
+  // Stage 1 of the move, on a renderer of the same size and tiles.
+  Scene before = load_scene(scene_file);
+  apply_edit(before, LightEdit{.node = "lamp", .range = 0.2f});
+  Scene after = before;
+  apply_edit(after, TransformEdit{"lamp", glm::vec3(-0.05f, 0.0f, 0.0f), std::nullopt});
+  RenderSettings s;
+  s.width = s.height = kSize;
+  s.tile_size = 16;
+  Renderer renderer(test::context(), before, s);
+  renderer.add_samples_full_frame(1);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  renderer.hipr_stages()->stage1_visibility({});
+  const ChangeSet changes = diff_scenes(before, after);
+  renderer.update_scene(after, changes);
+  const uint32_t reached = renderer.hipr_stages()->stage1_visibility(changes);
+  const std::vector<uint32_t> flags = renderer.tile_flags();
+  EXPECT_GT(reached, 4u);
+  EXPECT_LT(reached, 32u) << "a lamp of 0.2 m range lights a part of the box";
+  uint32_t clean = 0;
+  for (uint32_t t = 0; t < 64; ++t) {
+    if (!same_tile(shots["none"], shots["owed"], t)) continue;
+    ++clean;
+    EXPECT_NE(flags[t] & abi::kTileActive, 0u) << "tile " << t << " was re-rendered first but the lamp does not reach it";
+  }
+  EXPECT_EQ(clean, 4u) << "one step of 4 tiles";
 }
 
 // Bad input is refused before a window opens: no display is needed to see the error.
