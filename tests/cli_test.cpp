@@ -434,12 +434,16 @@ TEST(Bench, WritesCurvesSummaryAndPlot) {
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
   for (const char* file : {"curves.csv", "summary.json", "plot.png", "edit1_reference.png", "edit2_hipr_work1.png"})
     EXPECT_TRUE(fs::exists(dir / "a" / file)) << file;
-  EXPECT_EQ(files_in(dir / "cache").size(), 2u) << "one reference per edited scene state";
+  EXPECT_EQ(files_in(dir / "cache").size(), 3u) << "one reference per scene state: before the edits, after each";
 
   std::ifstream summary_file(dir / "a" / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(summary_file);
   ASSERT_EQ(summary.at("edits").size(), 2u);
   for (const auto& edit : summary.at("edits")) {
+    // Stage 1's active tiles against those the references say changed.
+    EXPECT_LE(edit.at("active_and_changed_tiles").get<size_t>(), edit.at("reference_changed_tiles").get<size_t>());
+    EXPECT_LE(edit.at("active_and_changed_tiles").get<size_t>(), edit.at("changed_tiles").get<size_t>());
+    EXPECT_LE(edit.at("reference_changed_tiles").get<size_t>(), edit.at("tiles").get<size_t>());
     const auto& policies = edit.at("policies");
     ASSERT_EQ(policies.size(), 6u);
     const double final_relmse = policies.at("hipr").at("final_relmse");
@@ -466,7 +470,7 @@ TEST(Bench, WritesCurvesSummaryAndPlot) {
 
   // Again, with the references from the cache: the same errors (wall times aside).
   ASSERT_EQ(test::run_hipr(command + quoted(dir / "b")).exit_code, kExitOk);
-  EXPECT_EQ(files_in(dir / "cache").size(), 2u);
+  EXPECT_EQ(files_in(dir / "cache").size(), 3u);
   std::ifstream again_file(dir / "b" / "summary.json");
   const nlohmann::json again = nlohmann::json::parse(again_file);
   for (size_t e = 0; e < 2; ++e)

@@ -1,5 +1,6 @@
 // The benchmark's summaries of an error curve: the displayed image is a step function of work.
 #include "bench/error_curve.h"
+#include "bench/reference_cache.h"
 
 #include <gtest/gtest.h>
 
@@ -44,6 +45,19 @@ TEST(ErrorAuc, RefusesCurvesThatDoNotStartAtTheEditOrGoBack) {
   EXPECT_THROW(error_auc({point(0.0, 1.0), point(0.5, 1.0), point(0.25, 1.0)}, Metric::RelMse, 1.0),
                InternalError);
   EXPECT_THROW(error_auc({point(0.0, 1.0)}, Metric::RelMse, 0.0), InternalError);
+}
+
+// A tile changed where the references before and after differ by more than noise: 12 % in one
+// 8x8 tile of a 20x12 image (partial tiles at the edges), 2 % everywhere else.
+TEST(ReferenceChangedTiles, FindsTheTilesThatDifferBeyondNoise) {
+  ImageRGB before{20, 12, std::vector<float>(20 * 12 * 3, 1.0f)};
+  ImageRGB after = before;
+  for (float& v : after.rgb) v = 1.02f;
+  for (uint32_t y = 8; y < 12; ++y)  // tile 4: x 8-15 of the bottom row, 4 rows high
+    for (uint32_t x = 8; x < 16; ++x)
+      for (int c = 0; c < 3; ++c) after.rgb[(size_t(y) * 20 + x) * 3 + size_t(c)] = 1.12f;
+  EXPECT_EQ(reference_changed_tiles(before, after, 8), std::vector<uint32_t>{4});
+  EXPECT_TRUE(reference_changed_tiles(before, before, 8).empty());
 }
 
 }  // namespace

@@ -194,12 +194,14 @@ TEST(Focus, AfterAnEditTheEditsTilesComeFirstThenTheFocus) {
   EXPECT_EQ(scheduler.displayed_image().rgb, fresh(scene, spp).rgb);
 }
 
-// A camera edit makes every tile active: the focus orders them, its own first.
+// A camera edit makes every tile active: the focus orders them, its own first. (With the
+// reprojection on, the tiles of its rejected pixels come before the focus: Reproject tests.)
 TEST(Focus, OrdersACameraEditsTilesFromTheFocus) {
   Scene scene = cornell();
   const RenderSettings s = settings();
   Renderer renderer(test::context(), scene, s);
   Scheduler scheduler(renderer, Policy::Hipr, 6);
+  scheduler.set_reproject(false);
   renderer.add_samples_full_frame(2);
   const FocusSeed disc{.pixel = glm::vec2(52.0f, 36.0f), .radius = 7.0f};
   scheduler.set_focus({{disc}});

@@ -26,6 +26,7 @@ struct FakeStages final : HiprStageRunner {
     return active;
   }
   void set_focus(const Focus& f) override { focus = f; }
+  void set_reprojection(bool) override {}
   uint32_t seeded_tiles() const override { return seeded; }
   uint32_t stage1_focus() override {
     ++focus_calls;

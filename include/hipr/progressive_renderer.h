@@ -33,9 +33,14 @@ class HiprStageRunner {
   virtual ~HiprStageRunner() = default;
   // Stage 1: the G-buffer of the scene as it is now (the previous one is kept) and the active
   // tiles, where an element of `changes` is visible now or was before, each with a change
-  // score. A camera, punctual-light or environment change makes every tile active (no G-buffer
-  // shows their reach). Returns |A| (stage 2 is split into steps over it).
+  // score. A changed punctual light activates the tiles it reaches; a camera or environment
+  // change makes every tile active (no G-buffer shows their reach), and a camera change alone
+  // reprojects the display before it (set_reprojection). Returns |A| (stage 2 is split into
+  // steps over it).
   virtual uint32_t stage1_visibility(const ChangeSet& changes) = 0;
+  // Whether stage 1 reprojects the display at an edit that changes nothing but the camera (on
+  // by default; off, such an edit restarts what the screen shows, for comparison).
+  virtual void set_reprojection(bool reproject) = 0;
   // Stage 2: path-traces the active tiles among schedule entries [offset, offset + count)
   // (restarting them) with discovery on; `then_resolve` resolves their display in the same
   // submission.

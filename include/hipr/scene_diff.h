@@ -39,7 +39,8 @@ struct ChangeSet {
   bool materials = false;           // material parameters changed: patch the material table
   bool transforms = false;          // an instance moved, appeared or disappeared: rebuild the TLAS
   bool light_tables = false;        // emitters or punctual lights changed: rebuild light tables
-  bool camera = false;              // the view changed: everything restarts
+  bool camera = false;              // the view changed
+  Camera camera_before;             // the view before the edit (when `camera`)
   // The environment changed (intensity, rotation or map). Like a punctual light it reaches
   // every tile without being visible in a G-buffer, so everything restarts.
   bool environment = false;
@@ -49,6 +50,11 @@ struct ChangeSet {
   // per channel (radiance is linear in them: the converged image can be relit, docs/method.md).
   // Empty for any other edit.
   std::vector<EmitterScale> emitter_scales;
+
+  // Nothing but the view changed: the image before the edit can be reprojected into the new one.
+  bool camera_only() const {
+    return camera && instances.empty() && lights.empty() && !materials && !transforms && !light_tables && !environment;
+  }
 
   bool empty() const {
     return instances.empty() && lights.empty() && !materials && !transforms && !light_tables &&

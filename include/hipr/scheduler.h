@@ -36,6 +36,9 @@ class Scheduler {
   // Relighting by linearity at edits that only scale emitters (policies that relight: hipr).
   // On by default; off for comparison (the estimator's ablation).
   void set_relight(bool relight) { m_relight = relight; }
+  // Reprojecting the display at camera edits (HiPR's stage 1, docs/method.md#camera-moves). On
+  // by default; off for comparison.
+  void set_reproject(bool reproject) { m_reproject = reproject; }
   // Whether the last edit was relit (its stale estimate is the relit converged image).
   bool relit() const { return m_relit; }
 
@@ -103,6 +106,7 @@ class Scheduler {
   uint32_t m_cursor = 0;       // next schedule entry
   bool m_edited = false;       // an edit happened: the display rule applies
   bool m_relight = true;
+  bool m_reproject = true;
   bool m_relit = false;
   bool m_first_round = false;  // still in the first pass over the schedule since the edit
   uint32_t m_leading = 0;          // schedule entries [0, m_leading) are the policy's own steps

@@ -54,6 +54,9 @@ HIPR_CONST uint kPathCaustic = 2u;   // x_0 diffuse, then only specular/transmis
 HIPR_CONST uint kWorkgroupSize = 64u;
 HIPR_CONST uint kInvalidIndex = 0xffffffffu;
 HIPR_CONST uint kRecordUnknown = 0xfffffffeu;  // DisplayTexel: no G-buffer said which surface it shows
+// DisplayTexel: reprojected from the view before a camera edit and rejected (off-screen,
+// disoccluded, another surface there): it depicts no surface the pixel sees now.
+HIPR_CONST uint kRecordRejected = 0xfffffffdu;
 
 HIPR_CONST uint kLightTriangle = 0u;
 HIPR_CONST uint kLightPoint = 1u;
@@ -343,6 +346,19 @@ struct TracePush {
   // With a round target: the target of the tiles flagged kTileFocus (the focus runs ahead of the
   // round, never past the count the render converges to); 0: sampleTarget.
   uint focusTarget;
+};
+
+// A pinhole view as FrameParams holds it: what reproject_display.comp needs of the camera before
+// a camera edit (the push constant).
+struct ViewFrame {
+  vec3 position;
+  float tanHalfFovY;
+  vec3 right;  // unit
+  float aspect;
+  vec3 up;  // unit
+  uint padding0;
+  vec3 forward;  // unit
+  uint padding1;
 };
 
 // Stage 1's focus (docs/method.md#focus): a disc on screen whose pixels are seeds.

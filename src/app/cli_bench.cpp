@@ -54,6 +54,7 @@ struct BenchOptions {
   bool no_ref_cache = false;
   double drag = 0.0;  // > 0: the edits are one drag, this much work apart (full-frame passes)
   bool no_relight = false;
+  bool no_reproject = false;
   bool cold_start = false;  // measure the render of the scene as loaded, from nothing, first
   uint32_t focus_lead = kDefaultFocusLead;
 };
@@ -244,6 +245,7 @@ int run_bench(BenchOptions& o) {
   run_options.visit_spp = o.visit_spp;
   run_options.first_visit_spp = o.first_visit_spp;
   run_options.relight = !o.no_relight;
+  run_options.reproject = !o.no_reproject;
   run_options.target_spp = o.common.spp;
   run_options.max_steps = o.steps;
   run_options.focus_lead = o.focus_lead;
@@ -258,6 +260,7 @@ int run_bench(BenchOptions& o) {
                                    {"first_visit_spp", run_options.first_visit_spp},
                                    {"display_hipr_oracle", display_rule_name(ordered_display)},
                                    {"relight", run_options.relight},
+                                   {"reproject", run_options.reproject},
                                    {"light_groups", settings.light_groups},
                                    {"steps", o.steps},
                                    {"drag_work_per_edit", o.drag},
@@ -387,6 +390,8 @@ Command add_bench_command(CLI::App& app) {
                   "one per frame), measuring against the scene as it is at each step");
   cmd->add_flag("--no-relight", options->no_relight,
                 "hipr: re-render light edits without relighting the converged image (for comparison)");
+  cmd->add_flag("--no-reproject", options->no_reproject,
+                "hipr: restart camera edits without reprojecting the image before them (for comparison)");
   cmd->add_option("--focus-lead", options->focus_lead,
                   "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
       ->capture_default_str();

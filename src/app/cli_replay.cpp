@@ -32,6 +32,7 @@ struct ReplayOptions {
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp = 0;  // 0 = visit_spp
   bool no_relight = false;
+  bool no_reproject = false;
   std::string display;           // empty = the policy's own rule
   uint32_t focus_lead = kDefaultFocusLead;
 };
@@ -83,6 +84,7 @@ int run_replay(ReplayOptions& o) {
   scheduler.set_display_rule(display);
   if (o.first_visit_spp) scheduler.set_first_visit_spp(o.first_visit_spp);
   scheduler.set_relight(!o.no_relight);
+  scheduler.set_reproject(!o.no_reproject);
   scheduler.set_converged_spp(o.common.spp);
   scheduler.set_focus_lead(o.focus_lead);
   // Converge the scene as loaded; the last 1-spp pass is timed: the unit of the overhead share.
@@ -167,6 +169,8 @@ Command add_replay_command(CLI::App& app) {
                   "hipr, immediate for the others)");
   cmd->add_flag("--no-relight", options->no_relight,
                 "hipr: re-render light edits without relighting the converged image first");
+  cmd->add_flag("--no-reproject", options->no_reproject,
+                "hipr: restart camera edits without reprojecting the image before them");
   cmd->add_option("--focus-lead", options->focus_lead,
                   "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
       ->capture_default_str();

@@ -80,6 +80,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
   if (options.display) scheduler.set_display_rule(*options.display);
   scheduler.set_first_visit_spp(options.first_visit_spp);
   scheduler.set_relight(options.relight);
+  scheduler.set_reproject(options.reproject);
   scheduler.set_converged_spp(options.target_spp);
   scheduler.set_focus_lead(options.focus_lead);
   if (!options.focus.empty()) scheduler.set_focus(options.focus);  // what the user looked at before the edit
@@ -165,6 +166,7 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
   if (options.display) scheduler.set_display_rule(*options.display);
   scheduler.set_first_visit_spp(options.first_visit_spp);
   scheduler.set_relight(options.relight);
+  scheduler.set_reproject(options.reproject);
 
   PolicyRun run;
   double wall = 0.0, overhead = 0.0, work_before = 0.0;  // work_before: of the edits before the current one

@@ -19,6 +19,7 @@ struct PolicyRunOptions {
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp = 1;  // samples of a tile's first visit after the edit (not for `full`)
   bool relight = true;           // relighting by linearity (policies that relight; Scheduler::set_relight)
+  bool reproject = true;         // reprojection at camera edits (hipr; Scheduler::set_reproject)
   uint32_t target_spp = 1;       // converged: every pixel has this many samples since the edit
   uint32_t max_steps = 0;        // 0: until converged
   double dense_until = 16.0;     // evaluate after every step until this much work, then sparser

@@ -5,10 +5,10 @@
 #include "core/hash.h"
 #include "core/log.h"
 #include "core/timer.h"
-#include "vk/embedded_shaders.h"
-#include "vk/shader_compiler.h"
 #include "image/error_metrics.h"
 #include "image/image_io.h"
+#include "vk/embedded_shaders.h"
+#include "vk/shader_compiler.h"
 
 namespace hipr::bench {
 namespace fs = std::filesystem;

@@ -20,6 +20,8 @@ HiprStages::HiprStages(const RenderParts& parts, uint32_t kernel_features)
                parts.settings.width * parts.settings.height),
       m_reach(parts.ctx, parts.scene, parts.tiles, parts.gbuffers, parts.resolve.display, m_active.tile_change,
               parts.settings.width * parts.settings.height, kernel_features),
+      m_reproject(parts.ctx, parts.scene, parts.gbuffers, parts.resolve.display, parts.settings.width,
+                  parts.settings.height),
       m_discovery(parts.ctx, parts.scene, parts.tiles, parts.film, parts.resolve.display, parts.settings, kernel_features,
                   {{abi::kTraceGBuffer, &parts.gbuffers.current},
                    {abi::kTraceChangedRecords, &m_active.changed_records},
@@ -31,10 +33,13 @@ HiprStages::HiprStages(const RenderParts& parts, uint32_t kernel_features)
 
 uint32_t HiprStages::stage1_visibility(const ChangeSet& changes) {
   // What no G-buffer shows (a moved camera, the environment's reach) makes every tile active.
-  // Changed punctual lights are followed to the surfaces they reach (light_reach.comp).
+  // Changed punctual lights are followed to the surfaces they reach (light_reach.comp). A camera
+  // edit alone reuses the image before it, reprojected (reproject_display.comp); its rejected
+  // pixels score, the rest follow by distance.
   const bool everything = changes.camera || changes.environment || !LightReachPass::can_follow(changes);
   m_reach.set_changed(everything ? ChangeSet{} : changes);
-  return mark_tiles(changes, everything ? abi::kCarryEverything : abi::kCarryEdit, true);
+  return mark_tiles(changes, everything ? abi::kCarryEverything : abi::kCarryEdit, true,
+                    m_reprojection && changes.camera_only() ? &changes.camera_before : nullptr);
 }
 
 uint32_t HiprStages::stage1_focus() {
@@ -46,7 +51,8 @@ uint32_t HiprStages::stage1_focus() {
 
 void HiprStages::set_focus(const Focus& focus) { m_focus = focus; }
 
-uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer) {
+uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer,
+                               const Camera* reproject_from) {
   m_active.set_changed(m_parts.scene, changes, m_focus);
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     if (render_gbuffer) {
@@ -56,7 +62,13 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
     m_active.record_carry(cmd, carry_mode);
     if (render_gbuffer) m_parts.gbuffers.record(cmd);
     vk::compute_to_compute_barrier(cmd);
-    m_active.record(cmd, carry_mode == abi::kCarryEverything);
+    if (reproject_from) {
+      m_reproject.record(cmd, *reproject_from);
+      vk::compute_to_compute_barrier(cmd);
+    }
+    // After a reprojection the screen shows the new view: a pixel showing a surface it does not
+    // see (a rejected one) scores, as after any edit.
+    m_active.record(cmd, carry_mode == abi::kCarryEverything && !reproject_from);
     vk::compute_to_compute_barrier(cmd);
     m_reach.record(cmd);
   });

@@ -1,6 +1,6 @@
 #pragma once
 // HiPR's three stages on the GPU, wired to the renderer's shared state: stage 1
-// (GBufferPass + ActiveTilesPass, LightReachPass for light edits), stage 2 (DiscoveryPass: the trace kernel with discovery on)
+// (GBufferPass + ActiveTilesPass, LightReachPass for light edits, ReprojectPass for camera edits), stage 2 (DiscoveryPass: the trace kernel with discovery on)
 // and stage 3 (SchedulePass). Made on first use: plain renders never pay for them.
 #include <cstdint>
 #include <optional>
@@ -8,6 +8,7 @@
 
 #include "hipr/active_tiles_pass.h"
 #include "hipr/light_reach_pass.h"
+#include "hipr/reproject_pass.h"
 #include "hipr/progressive_renderer.h"
 #include "hipr/resolve_pass.h"
 #include "hipr/schedule_pass.h"
@@ -40,6 +41,7 @@ class HiprStages final : public HiprStageRunner {
   HiprStages(const RenderParts& parts, uint32_t kernel_features);
 
   uint32_t stage1_visibility(const ChangeSet& changes) override;
+  void set_reprojection(bool reproject) override { m_reprojection = reproject; }
   void stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
                        std::optional<DisplayRule> then_resolve = std::nullopt) override;
   void build_schedule() override;
@@ -58,17 +60,22 @@ class HiprStages final : public HiprStageRunner {
   std::vector<double> tile_weights() const;
 
  private:
-  // Records stage 1's carry (kCarry* mode) and marking, then counts the active tiles.
-  uint32_t mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer);
+  // Records stage 1's carry (kCarry* mode) and marking, then counts the active tiles. With
+  // `reproject_from` (a camera edit and nothing else) the display is reprojected from that view
+  // into the new G-buffer's first.
+  uint32_t mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer,
+                      const Camera* reproject_from = nullptr);
 
   RenderParts m_parts;
   vk::Buffer m_tile_weights;  // uint64 per tile: W(T) x abi::kWeightScale
   ActiveTilesPass m_active;
   LightReachPass m_reach;
+  ReprojectPass m_reproject;
   TracePass m_discovery;
   SchedulePass m_schedule;
   Focus m_focus;          // marked by every stage 1
   uint32_t m_seeded = 0;  // active tiles with a change or focus score at the last stage 1
+  bool m_reprojection = true;
 };
 
 // A trace push that lets every workgroup leave at once (bit 31 is no kTile* flag): a dispatch

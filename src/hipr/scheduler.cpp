@@ -50,6 +50,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   // Planned while the pixels' owed bits still say which tiles earlier edits left unrendered
   // (HiPR keeps those ranked), then every pixel owes a restart. With no leading step (HiPR when
   // nothing visible changed) the schedule starts at once.
+  if (HiprStageRunner* stages = m_renderer.hipr_stages()) stages->set_reprojection(m_reproject);
   m_leading = std::min(m_policy->plan(m_renderer, changes), m_tile_count);
   m_leading_cursor = 0;
   planned();

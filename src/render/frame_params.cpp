@@ -7,15 +7,26 @@
 
 namespace hipr {
 
+abi::ViewFrame view_frame(const Camera& camera, float aspect) {
+  abi::ViewFrame v{};
+  v.position = glm::vec3(camera.camera_to_world[3]);
+  v.right = glm::normalize(glm::vec3(camera.camera_to_world[0]));
+  v.up = glm::normalize(glm::vec3(camera.camera_to_world[1]));
+  v.forward = -glm::normalize(glm::vec3(camera.camera_to_world[2]));
+  v.tanHalfFovY = std::tan(0.5f * camera.yfov);
+  v.aspect = aspect;
+  return v;
+}
+
 abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, const RenderSettings& s) {
-  const Camera camera = resolve_camera(scene);
+  const abi::ViewFrame view = view_frame(resolve_camera(scene), float(s.width) / float(s.height));
   abi::FrameParams f{};
-  f.cameraPosition = glm::vec3(camera.camera_to_world[3]);
-  f.cameraRight = glm::normalize(glm::vec3(camera.camera_to_world[0]));
-  f.cameraUp = glm::normalize(glm::vec3(camera.camera_to_world[1]));
-  f.cameraForward = -glm::normalize(glm::vec3(camera.camera_to_world[2]));
-  f.tanHalfFovY = std::tan(0.5f * camera.yfov);
-  f.aspect = float(s.width) / float(s.height);
+  f.cameraPosition = view.position;
+  f.cameraRight = view.right;
+  f.cameraUp = view.up;
+  f.cameraForward = view.forward;
+  f.tanHalfFovY = view.tanHalfFovY;
+  f.aspect = view.aspect;
   f.seed = s.seed;
   f.sampleSequence = s.sampler == Sampler::Random ? abi::kSamplerRandom : abi::kSamplerSobol;
   f.width = s.width;

@@ -7,6 +7,9 @@
 
 namespace hipr {
 
+// The camera as the kernels see it (FrameParams' camera fields), for an image of this aspect.
+abi::ViewFrame view_frame(const Camera& camera, float aspect);
+
 abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, const RenderSettings& settings);
 
 // Copies the discovery parameters into `frame` (the rest stays).

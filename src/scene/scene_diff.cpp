@@ -111,6 +111,7 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
   const Camera old_camera = resolve_camera(before);
   const Camera new_camera = resolve_camera(after);
   changes.camera = old_camera.camera_to_world != new_camera.camera_to_world || old_camera.yfov != new_camera.yfov;
+  if (changes.camera) changes.camera_before = old_camera;
   if (changes.camera) linear = false;
 
   const std::optional<Environment>& a = before.environment;

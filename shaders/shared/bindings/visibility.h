@@ -1,5 +1,6 @@
 // Set 0 of the G-buffer pass (visibility.comp) and of HiPR stage 1 (ActiveTilesPass:
-// carry_tiles.comp and mark_active.comp; LightReachPass: light_reach.comp).
+// carry_tiles.comp and mark_active.comp; LightReachPass: light_reach.comp; ReprojectPass:
+// reproject_display.comp).
 // Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
 // binding numbers, named by the kernel's GLSL layouts and by its C++ pass.
 #ifndef HIPR_BINDINGS_VISIBILITY_H
@@ -28,6 +29,11 @@ HIPR_CONST uint kReachLights = 1u;      // Light[2 x kMaxReachLights]: each chan
 HIPR_CONST uint kReachDisplay = 2u;     // DisplayTexel per pixel: what the screen shows now
 HIPR_CONST uint kReachTileFlags = 3u;   // uint per tile: kTileActive | kTileScored are set here
 HIPR_CONST uint kReachTileChange = 4u;  // uint per tile: the reached pixels' scores are added
+// reproject_display.comp
+HIPR_CONST uint kReprojectGBuffer = 0u;          // GBufferTexel per pixel, the new view
+HIPR_CONST uint kReprojectPrevious = 1u;         // GBufferTexel per pixel, the view before
+HIPR_CONST uint kReprojectPreviousDisplay = 2u;  // DisplayTexel per pixel: the display at the edit (a copy)
+HIPR_CONST uint kReprojectDisplay = 3u;          // DisplayTexel per pixel: rewritten for the new view
 // carry_tiles.comp
 HIPR_CONST uint kCarryAccumulation = 0u;  // PixelAccum per pixel: the owed bit
 HIPR_CONST uint kCarryTileFlags = 1u;     // uint per tile: rewritten for the new edit

@@ -114,6 +114,8 @@ Command add_view_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag_function("--no-relight", [&v](int64_t) { v.relight = false; },
                 "hipr: re-render light edits without relighting the converged image first");
+  cmd->add_flag_function("--no-reproject", [&v](int64_t) { v.reproject = false; },
+                         "hipr: restart camera moves without reprojecting the image before them");
   cmd->add_option("--first-visit-spp", v.first_visit_spp,
                   "Samples per pixel of a tile's first visit after an edit (default: 2, within "
                   "[--visit-spp, --spp])");

@@ -114,6 +114,10 @@ void hipr_section(Session& session, ViewerState& state) {
   if (ImGui::Checkbox("relight light edits", &relight)) session.set_relight(relight);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("hipr: an edit of a light's intensity or colour shows the converged image relit at once");
+  bool reproject = settings.reproject;
+  if (ImGui::Checkbox("reproject camera moves", &reproject)) session.set_reproject(reproject);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("hipr: after a camera move the image before it stays where the same surface is seen");
   ImGui::Checkbox("focus: selection", &state.focus_selection);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("hipr renders where the selected object is seen first, then where its light goes");

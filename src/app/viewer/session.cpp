@@ -34,6 +34,7 @@ std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy po
   scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp
                                                             : default_first_visit_spp(m_settings));
   scheduler->set_relight(m_settings.relight);
+  scheduler->set_reproject(m_settings.reproject);
   scheduler->set_converged_spp(m_settings.spp);  // rendering pauses there: the focus never passes it
   scheduler->set_focus_lead(m_settings.focus_lead);
   return scheduler;
@@ -200,6 +201,11 @@ void Session::set_display_rule(std::optional<DisplayRule> rule) {
 void Session::set_relight(bool relight) {
   m_settings.relight = relight;
   m_scheduler->set_relight(relight);
+}
+
+void Session::set_reproject(bool reproject) {
+  m_settings.reproject = reproject;
+  m_scheduler->set_reproject(reproject);
 }
 
 void Session::set_tile_size(uint32_t tile_size) {

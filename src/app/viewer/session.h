@@ -28,6 +28,7 @@ struct SessionSettings {
       display;        // how re-rendered tiles are shown; none: the policy's default
   uint32_t spp = 64;  // samples per pixel to converge to; rendering pauses there
   bool relight = true;  // relighting by linearity at light edits (Scheduler::set_relight)
+  bool reproject = true;  // reprojection at camera moves (Scheduler::set_reproject)
   uint32_t focus_lead = kDefaultFocusLead;  // visits the focus's tiles run ahead (Scheduler::set_focus_lead)
 };
 
@@ -100,6 +101,7 @@ class Session {
   void set_policy(Policy policy);  // throws InputError for the oracle (it needs a reference)
   void set_display_rule(std::optional<DisplayRule> rule);
   void set_relight(bool relight);  // from the next edit on
+  void set_reproject(bool reproject);  // from the next camera move on
   void set_focus_lead(uint32_t visits);  // at once
   void set_tile_size(uint32_t tile_size);
   void set_sampler(Sampler sampler);  // rebuilds the renderer: the image restarts

@@ -80,6 +80,7 @@ class Viewer {
     settings.visit_spp = options.visit_spp;
     settings.first_visit_spp = options.first_visit_spp;
     settings.relight = options.relight;
+    settings.reproject = options.reproject;
     settings.focus_lead = options.focus_lead;
     settings.display = options.display_rule;
     settings.spp = options.common.spp;

@@ -26,6 +26,7 @@ struct ViewerOptions {
   uint32_t visit_spp = 1;
   uint32_t first_visit_spp = 0;             // 0: default_first_visit_spp
   bool relight = true;
+  bool reproject = true;
   std::optional<DisplayRule> display_rule;  // none: the policy's default
   uint32_t steps_per_frame = 0;  // > 0: exactly this many steps per frame (reproducible scripts)
   double frame_budget_ms = 30.0;

@@ -1,0 +1,152 @@
+// Camera edits reuse the converged image (reproject_display.comp): a pure pan reprojects exactly
+// where nothing is disoccluded, rejected pixels are ranked first, a view-dependent value gives
+// way to its fresh samples, and the schedule still ends on the full-frame render of the new view.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "card_scene.h"
+#include "hipr/edits.h"
+#include "hipr/renderer.h"
+#include "hipr/scene_diff.h"
+#include "hipr/scene_loader.h"
+#include "hipr/scheduler.h"
+#include "shaders/shared/abi.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+
+constexpr uint32_t kSize = 64, kTile = 8;
+
+RenderSettings settings() { return test::render_settings(kSize, kSize, kTile, 4, 21); }
+
+// The card camera's card (filling the frame) lit unevenly by a lamp, so that pixels differ.
+Scene lit_card() {
+  Scene scene = test::make_card_camera_scene(0.0f);
+  MaterialParameters white = default_material_params();
+  white.base_color = glm::vec3(0.8f);
+  white.specular_weight = 0.0f;
+  test::add_card(scene, "card", glm::mat4(1.0f), white);
+  PunctualLight lamp;
+  lamp.intensity = 1.5f;
+  scene.lights.push_back(lamp);
+  Node node;
+  node.name = "lamp";
+  node.light = 0;
+  node.local = glm::translate(glm::mat4(1.0f), {-0.4f, 0.3f, 0.6f});
+  scene.nodes.push_back(node);
+  scene.children.push_back({});
+  scene.root_nodes.push_back(uint32_t(scene.nodes.size() - 1));
+  return scene;
+}
+
+void run_to_convergence(Scheduler& scheduler, uint32_t spp) {
+  for (int s = 0; s < 10000 && scheduler.work_since_edit() < double(spp); ++s) scheduler.step();
+}
+
+float at(const ImageRGB& image, uint32_t x, uint32_t y, int c) { return image.rgb[(size_t(y) * image.width + x) * 3 + size_t(c)]; }
+
+TEST(Reproject, APanReprojectsExactlyWhereNothingIsDisoccluded) {
+  Scene scene = lit_card();
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Hipr, 8);
+  renderer.add_samples_full_frame(4);
+  renderer.resolve_display_all(DisplayRule::Immediate);  // what the capture at the edit takes too
+  const ImageRGB before = scheduler.displayed_image();
+  // Two pixels to the right (the card spans 2 units over 64 pixels at the camera's distance).
+  const Scene old = scene;
+  apply_edit(scene, CameraEdit{glm::vec3(2.0f * 2.0f / kSize, 0.0f, 0.0f), std::nullopt});
+  const ChangeSet changes = diff_scenes(old, scene);
+  ASSERT_TRUE(changes.camera_only());
+  scheduler.on_edit(scene, changes);
+  const ImageRGB after = scheduler.displayed_image();
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x + 2 < kSize; ++x)
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(at(after, x, y, c), at(before, x + 2, y, c)) << x << "," << y;
+  // The two right columns see past the card's edge: rejected, so their tiles (the right column
+  // of tiles) are the ones scored, first in the schedule.
+  const std::vector<uint32_t> order = renderer.schedule();
+  for (uint32_t i = 0; i < kSize / kTile; ++i) EXPECT_EQ(order[i] % (kSize / kTile), kSize / kTile - 1) << i;
+}
+
+// A smooth mirror filling the frame, reflecting a bright panel behind the camera over half of
+// it: the reflection's edge moves on screen otherwise than the mirror's surface does.
+Scene mirror_card() {
+  Scene scene = test::make_card_camera_scene(0.0f);
+  MaterialParameters mirror = default_material_params();
+  mirror.base_color = glm::vec3(0.9f);
+  mirror.base_metalness = 1.0f;
+  mirror.specular_roughness = 0.0f;
+  test::add_card(scene, "mirror", glm::mat4(1.0f), mirror);
+  MaterialParameters glow = test::black_material();
+  glow.emission_color = glm::vec3(1.0f);
+  glow.emission_luminance = 2.0f;
+  glm::mat4 panel = glm::translate(glm::mat4(1.0f), {2.0f, 0.0f, 5.0f});
+  panel = glm::rotate(panel, glm::radians(180.0f), glm::vec3(0, 1, 0));  // facing the mirror
+  test::add_card(scene, "panel", glm::scale(panel, glm::vec3(2.0f, 4.0f, 1.0f)), glow);
+  return scene;
+}
+
+TEST(Reproject, AReflectionThatMovedGivesWayToItsFreshSamples) {
+  Scene scene = mirror_card();
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Hipr, kSize * kSize / (kTile * kTile));
+  scheduler.set_display_rule(DisplayRule::Blend);
+  renderer.add_samples_full_frame(16);
+  const Scene old = scene;
+  apply_edit(scene, CameraEdit{glm::vec3(0.25f, 0.0f, 0.0f), std::nullopt});  // 8 pixels right
+  scheduler.on_edit(scene, diff_scenes(old, scene));
+  const ImageRGB stale = scheduler.displayed_image();
+  Renderer full(test::context(), scene, settings());
+  full.add_samples_full_frame(16);
+  full.resolve_display_all(DisplayRule::Immediate);
+  const ImageRGB truth = full.displayed_image();
+  run_to_convergence(scheduler, 4);  // a quarter of the samples the reprojected values have
+  const ImageRGB shown = scheduler.displayed_image();
+  // Where the reprojected reflection is wrong (the panel's edge moved 3/8 as far as the mirror):
+  double stale_error = 0.0, shown_error = 0.0;
+  size_t wrong = 0;
+  for (size_t i = 0; i < truth.rgb.size(); ++i) {
+    if (std::abs(stale.rgb[i] - truth.rgb[i]) < 0.5f) continue;
+    ++wrong;
+    stale_error += std::abs(stale.rgb[i] - truth.rgb[i]);
+    shown_error += std::abs(shown.rgb[i] - truth.rgb[i]);
+  }
+  ASSERT_GT(wrong, size_t(3 * kSize)) << "the reflection's edge moved across a few columns";
+  EXPECT_LT(shown_error, 0.2 * stale_error) << "the fresh samples took over where they disagree";
+}
+
+TEST(Reproject, AnOrbitEndsOnTheFullFrameImageOfTheNewView) {
+  for (const DisplayRule rule : {DisplayRule::Blend, DisplayRule::Difference, DisplayRule::Switch}) {
+    Scene scene = load_scene(test::asset("cornell_box.gltf"));
+    Renderer renderer(test::context(), scene, settings());
+    Scheduler scheduler(renderer, Policy::Hipr, 5);
+    scheduler.set_display_rule(rule);
+    renderer.add_samples_full_frame(3);
+    const Scene old = scene;
+    // Two degrees about the box's vertical axis through its centre.
+    const int node = scene.camera_node();
+    ASSERT_GE(node, 0);
+    ASSERT_LT(scene.nodes[size_t(node)].parent, 0) << "the camera's local transform is its world transform";
+    const glm::mat4 world = scene.nodes[size_t(node)].local;
+    const glm::vec3 centre(0.28f, 0.27f, 0.28f);
+    const glm::mat4 orbit = glm::translate(glm::mat4(1.0f), centre) *
+                            glm::rotate(glm::mat4(1.0f), glm::radians(2.0f), glm::vec3(0, 1, 0)) *
+                            glm::translate(glm::mat4(1.0f), -centre);
+    apply_edit(scene, CameraEdit{std::nullopt, orbit * world});
+    ASSERT_TRUE(diff_scenes(old, scene).camera_only());
+    scheduler.on_edit(scene, diff_scenes(old, scene));
+    run_to_convergence(scheduler, 3);
+    Renderer full(test::context(), scene, settings());
+    full.add_samples_full_frame(3);
+    full.resolve_display_all(DisplayRule::Immediate);
+    EXPECT_EQ(scheduler.displayed_image().rgb, full.displayed_image().rgb);
+  }
+}
+
+}  // namespace
+}  // namespace hipr
