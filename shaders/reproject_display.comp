@@ -2,11 +2,11 @@
 // HiPR stage 1 after a camera edit: what was converged is reused, not restarted. Each pixel's
 // stale estimate (and what the screen shows until it is re-rendered) becomes the display before
 // the edit, reprojected: the surface point the new G-buffer sees through the pixel centre is
-// projected into the camera before the edit, and the pixel there is taken (nearest) when the
-// G-buffer before the edit shows the same record there at the expected depth (relative tolerance
-// depthEpsilon, as stage 2's projection). Background pixels reproject by direction (the
+// projected into the camera before the edit, and the four old pixels around it are blended
+// (bilinear, with the fewest samples among them) when the G-buffer before the edit shows the same
+// record at the expected depth in each (relative tolerance depthEpsilon, as stage 2's projection). Background pixels reproject by direction (the
 // environment does not move with the camera) onto background pixels. Elsewhere (off-screen
-// before, disoccluded, another surface in front) the pixel is rejected: it still shows the
+// before, disoccluded, another surface in front, an edge between surfaces) the pixel is rejected: it still shows the
 // nearest value the old view has (a hole filled, not black) but its records say kRecordRejected,
 // so the resolve shows its first fresh samples at once and mark_active.comp ranks its tile first.
 // Accepted values keep their sample counts: the display rule's bias estimate (D against V) then
@@ -56,24 +56,85 @@ void main() {
   vec2 at;
   float depth;
   const bool inFront = project_before(offset, at, depth);
-  const bool onScreen = inFront && at.x >= 0.0 && at.y >= 0.0 && at.x < float(u_frame.width) && at.y < float(u_frame.height);
-  // The pixel taken: where the point was, else (behind the old camera) the pixel itself.
-  const uvec2 source = inFront ? uvec2(clamp(at, vec2(0.0), vec2(u_frame.width - 1u, u_frame.height - 1u))) : pixel;
-  const uint from = source.y * u_frame.width + source.x;
-  bool accepted = false;
-  if (onScreen) {
-    const GBufferTexel before = b_previous[from];
-    accepted = before.record == now.record &&
-               (background || abs(depth - before.depth) <= u_frame.depthEpsilon * before.depth);
+  // The four pixel centres around the point in the old view, and their bilinear weights (a
+  // weight within 1e-4 of 0 or 1 snaps: a shift by whole pixels takes the pixels as they are).
+  vec2 f = inFront ? at - 0.5 - floor(at - 0.5) : vec2(0.0);
+  f = mix(f, round(f), lessThan(abs(f - round(f)), vec2(1e-4)));
+  const ivec2 base = inFront ? ivec2(floor(at - 0.5)) : ivec2(pixel);
+  // Accepted when every pixel with a weight is on screen and shows the same record (a pixel on
+  // an edge between surfaces mixes them by its footprint, which another view does not share: it
+  // is rendered again instead), and the point's depth is the one expected there: the old depths'
+  // 1/z interpolated (exact across a plane, where z itself is not: a grazing floor's depth
+  // changes fast from pixel to pixel).
+  bool accepted = inFront;
+  vec3 value = vec3(0.0);
+  float inverseDepth = 0.0;
+  uint samples = 0xffffffffu;
+  // A hole's value until it is rendered: the darkest of the four on screen, of the same surface
+  // where one is. An error by a value too dark is bounded (relMSE at most 1/2 per pixel), one
+  // too bright is not: never an emitter's value spread onto the ceiling beside it.
+  uint fill = kInvalidIndex;
+  float fillLuminance = 3.0e38;
+  bool fillSameRecord = false;
+  for (int k = 0; k < 4 && inFront; ++k) {
+    const ivec2 corner = base + ivec2(k & 1, k >> 1);
+    const float weight = ((k & 1) != 0 ? f.x : 1.0 - f.x) * ((k >> 1) != 0 ? f.y : 1.0 - f.y);
+    if (corner.x < 0 || corner.y < 0 || corner.x >= int(u_frame.width) || corner.y >= int(u_frame.height)) {
+      accepted = accepted && weight == 0.0;
+      continue;
+    }
+    const uint from = uint(corner.y) * u_frame.width + uint(corner.x);
+    const bool same = b_previous[from].record == now.record;
+    const float lum = dot(b_before[from].shown, vec3(0.2126, 0.7152, 0.0722));
+    if ((same && !fillSameRecord) || (same == fillSameRecord && lum < fillLuminance)) {
+      fill = from;
+      fillLuminance = lum;
+      fillSameRecord = same;
+    }
+    if (weight == 0.0) continue;
+    accepted = accepted && same;
+    inverseDepth += weight / b_previous[from].depth;
+    value += weight * b_before[from].shown;
+    samples = min(samples, b_before[from].shownSamples);
+  }
+  if (accepted && !background) accepted = abs(depth * inverseDepth - 1.0) <= u_frame.depthEpsilon;
+  // An old pixel next to another surface may cover part of it (a converged edge pixel is a mix,
+  // by its footprint): the ring of pixels around the four must show the same record too. Near
+  // an emitter's edge a mix is far off either side.
+  for (int k = 0; k < 16 && accepted; ++k) {
+    const ivec2 corner = base + ivec2(k % 4 - 1, k / 4 - 1);
+    if (k % 4 != 0 && k % 4 != 3 && k / 4 != 0 && k / 4 != 3) continue;  // the four themselves
+    if (corner.x < 0 || corner.y < 0 || corner.x >= int(u_frame.width) || corner.y >= int(u_frame.height)) continue;
+    accepted = b_previous[uint(corner.y) * u_frame.width + uint(corner.x)].record == now.record;
   }
 
-  const DisplayTexel old = b_before[from];
+  // Beside an edge, where a neighbour of the same surface is at about the depth expected: its
+  // value (the darkest such) is kept, with a quarter of its samples, for the display rule to
+  // judge against the fresh ones, rather than rejected (shown fresh and noisy at once).
+  const bool besideEdge = !accepted && fillSameRecord &&
+                          (background || abs(depth / b_previous[fill].depth - 1.0) <= 4.0 * u_frame.depthEpsilon);
+
   DisplayTexel texel;
-  texel.shown = old.shown;
-  texel.stale = old.shown;
-  texel.shownSamples = accepted ? old.shownSamples : 0u;
+  if (accepted) {
+    texel.shown = value;
+    texel.shownSamples = samples;
+    texel.shownRecord = now.record;
+  } else if (besideEdge) {
+    texel.shown = b_before[fill].shown;
+    texel.shownSamples = b_before[fill].shownSamples / 4u;
+    texel.shownRecord = now.record;
+  } else {
+    // Off-screen or behind the old camera: the old view's nearest pixel, or the pixel itself.
+    if (fill == kInvalidIndex) {
+      const uvec2 nearest = inFront ? uvec2(clamp(at, vec2(0.0), vec2(u_frame.width - 1u, u_frame.height - 1u))) : pixel;
+      fill = nearest.y * u_frame.width + nearest.x;
+    }
+    texel.shown = b_before[fill].shown;
+    texel.shownSamples = 0u;
+    texel.shownRecord = kRecordRejected;
+  }
+  texel.stale = texel.shown;
   texel.staleSamples = texel.shownSamples;
-  texel.shownRecord = accepted ? now.record : kRecordRejected;
   texel.staleRecord = texel.shownRecord;
   texel.flags = 0u;
   b_display[index] = texel;
