@@ -2,15 +2,20 @@
 // HiPR stage 1 after a camera edit: what was converged is reused, not restarted. Each pixel's
 // stale estimate (and what the screen shows until it is re-rendered) becomes the display before
 // the edit, reprojected: the surface point the new G-buffer sees through the pixel centre is
-// projected into the camera before the edit, and the four old pixels around it are blended
-// (bilinear, with the fewest samples among them) when the G-buffer before the edit shows the same
-// record at the expected depth in each (relative tolerance depthEpsilon, as stage 2's projection). Background pixels reproject by direction (the
-// environment does not move with the camera) onto background pixels. Elsewhere (off-screen
-// before, disoccluded, another surface in front, an edge between surfaces) the pixel is rejected: it still shows the
-// nearest value the old view has (a hole filled, not black) but its records say kRecordRejected,
-// so the resolve shows its first fresh samples at once and mark_active.comp ranks its tile first.
-// Accepted values keep their sample counts: the display rule's bias estimate (D against V) then
-// decides how long a view-dependent value (a highlight, a reflection) survives its fresh samples.
+// projected into the camera before the edit (background pixels by direction: the environment
+// does not move with the camera), and
+//  - accepted: the four old pixels around it show the same record, the ring of twelve around
+//    them too (a pixel on an edge mixes surfaces by its footprint, which the new pixel does not
+//    share), and its depth is the expected one (1/z interpolated, relative tolerance
+//    depthEpsilon as stage 2's): their bilinear blend, with the fewest samples among them;
+//  - beside an edge: a same-surface neighbour among the four lies at about that depth: the
+//    darkest such value, with a quarter of its samples, for the display rule to judge;
+//  - rejected (off-screen before, disoccluded, another surface in front): the darkest of the four
+//    (an error too dark is bounded, one too bright is not: an emitter's value never spreads onto
+//    the ceiling beside it) until it is rendered; its records say kRecordRejected, so the
+//    resolve shows its first fresh samples at once and mark_active.comp ranks its tile first.
+// Kept values are judged by the display rule as any stale value: its bias estimate (D against V)
+// decides how long a view-dependent one (a highlight, a reflection) survives its fresh samples.
 // No kept samples or light-group shares carry over (they are of other pixels' paths).
 // Reads: both G-buffers, the display at the edit (a copy), FrameParams (the new view), the view
 // before (push constant). Writes: each pixel's display texel.
