@@ -24,6 +24,7 @@ layout(local_size_x = 64) in;
 #include "common/scene_bindings.glsl"
 #include "shared/bindings/visibility.h"
 #include "common/dispatch.glsl"
+#include "common/pixel_ray.glsl"
 #include "common/sampling.glsl"
 #include "common/ray_offset.glsl"
 #include "common/textures.glsl"
@@ -91,9 +92,7 @@ void main() {
   // Background: a punctual light changes nothing there.
   if (b_gbuffer[index].record == kInvalidIndex) return;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
-  const vec2 ndc = (vec2(pixel) + 0.5) / vec2(u_frame.width, u_frame.height) * 2.0 - 1.0;
-  const vec3 ray = normalize(u_frame.cameraForward + ndc.x * u_frame.tanHalfFovY * u_frame.aspect * u_frame.cameraRight -
-                             ndc.y * u_frame.tanHalfFovY * u_frame.cameraUp);
+  const vec3 ray = pixel_centre_ray(pixel);
   rayQueryEXT query;
   rayQueryInitializeEXT(query, u_tlas, kCutoutRayFlags, 0xff, u_frame.cameraPosition, 0.0, ray, 3.0e38);
   cutout_proceed(query, u_frame.cameraPosition, ray);

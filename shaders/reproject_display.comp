@@ -28,6 +28,7 @@ layout(local_size_x = 64) in;
 #include "common/frame.glsl"
 #include "shared/bindings/visibility.h"
 #include "common/dispatch.glsl"
+#include "common/pixel_ray.glsl"
 
 layout(scalar, binding = kReprojectGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 layout(scalar, binding = kReprojectPrevious) readonly buffer Previous { GBufferTexel b_previous[]; };
@@ -50,9 +51,7 @@ void main() {
   const uint index = dispatch_index();
   if (index >= u_frame.width * u_frame.height) return;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
-  const vec2 ndc = (vec2(pixel) + 0.5) / vec2(u_frame.width, u_frame.height) * 2.0 - 1.0;
-  const vec3 ray = normalize(u_frame.cameraForward + ndc.x * u_frame.tanHalfFovY * u_frame.aspect * u_frame.cameraRight -
-                             ndc.y * u_frame.tanHalfFovY * u_frame.cameraUp);
+  const vec3 ray = pixel_centre_ray(pixel);
   const GBufferTexel now = b_gbuffer[index];
   const bool background = now.record == kInvalidIndex;
   const vec3 offset =
