@@ -75,6 +75,25 @@ if [ -d "$shared" ]; then
   drag CornellBox "$shared/CornellBox/cornellBox.gltf" tools/bench/CornellBox.drag.json
 fi
 
+# Camera moves (tools/bench/*.camera.json; an orbit as a drag): hipr reprojects the image before
+# each; again with --no-reproject for the comparison. Results in OUTDIR/camera_*.
+camera() {
+  local name=$1
+  shift
+  for reproject in reproject no-reproject; do
+    echo "== camera $name ($reproject)"
+    rm -rf "${out:?}/camera_${name}_$reproject"
+    build/hipr bench "$@" -o "$out/camera_${name}_$reproject" --width "$size" --height "$size" --spp "$spp" \
+      --policies hipr,full $([ $reproject = no-reproject ] && echo --no-reproject)
+  done
+}
+camera cornell_box assets/scenes/cornell_box.gltf tools/bench/cornell_box.camera.json
+camera cornell_box_orbit assets/scenes/cornell_box.gltf tools/bench/cornell_box.orbit.json \
+  --drag 0.0625 --tiles-per-step 4 --ref-spp 256
+if [ -d "$shared" ]; then
+  camera SheenChair "$shared/SheenChair/SheenChair.gltf" tools/bench/SheenChair.camera.json --env "$studio"
+fi
+
 # Light edits (tools/bench/*.lights.json, a lamp slider dragged): hipr relights them at once from
 # its light groups; again with --no-relight for the comparison. Results in OUTDIR/lights_*.
 lights() {
