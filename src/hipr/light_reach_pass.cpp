@@ -1,5 +1,6 @@
 #include "hipr/light_reach_pass.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "render/film.h"
@@ -25,7 +26,7 @@ LightReachPass::LightReachPass(const vk::Context& ctx, const GpuScene& scene, co
 bool LightReachPass::can_follow(const ChangeSet& changes) { return changes.lights.size() <= abi::kMaxReachLights; }
 
 void LightReachPass::set_changed(const ChangeSet& changes) {
-  m_light_count = uint32_t(changes.lights.size());
+  m_light_count = uint32_t(std::min<size_t>(changes.lights.size(), abi::kMaxReachLights));
   if (m_light_count == 0) return;
   std::vector<abi::Light> lights(2 * m_light_count);
   for (uint32_t i = 0; i < m_light_count; ++i) {

@@ -94,7 +94,8 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
   for (uint32_t n = 0; n < after.nodes.size(); ++n) {
     const int light = after.nodes[n].light;
     if (light < 0) continue;
-    // A node the scene before did not have (none today: edits keep the nodes) counts as moved.
+    // A light node the scene before did not have counts as moved (edits add none today; a camera
+    // edit may add its camera's node).
     const glm::mat4 new_world = after.world_transform(n);
     const glm::mat4 old_world = n < before.nodes.size() ? before.world_transform(n) : new_world;
     const bool moved = n >= before.nodes.size() || old_world != new_world;
