@@ -39,6 +39,7 @@ layout(push_constant, scalar) uniform Push { ViewFrame u_view; };
 // Where `offset` (a point minus the old camera's position, or a direction) lands in the old
 // view: continuous pixel coordinates and the depth along its axis; false behind the camera.
 bool project_before(vec3 offset, out vec2 pixel, out float depth) {
+  pixel = vec2(0.0);
   depth = dot(offset, u_view.forward);
   if (!(depth > 0.0)) return false;
   const float sx = dot(offset, u_view.right) / (depth * u_view.tanHalfFovY * u_view.aspect);
@@ -60,6 +61,9 @@ void main() {
   vec2 at;
   float depth;
   const bool inFront = project_before(offset, at, depth);
+  // Far off screen (a point near the old camera's plane lands anywhere) is as good as just off
+  // it, and stays within what converts to an int.
+  at = clamp(at, vec2(-4.0), vec2(u_frame.width + 4u, u_frame.height + 4u));
   // The four pixel centres around the point in the old view, and their bilinear weights (a
   // weight within 1e-4 of 0 or 1 snaps: a shift by whole pixels takes the pixels as they are).
   vec2 f = inFront ? at - 0.5 - floor(at - 0.5) : vec2(0.0);
