@@ -88,7 +88,7 @@ vec3 direct_from(Light light, SurfaceHit surface, BsdfPoint bsdf, vec3 wo, out b
 
 void main() {
   const uint index = dispatch_index();
-  if (index >= u_frame.width * u_frame.height) return;
+  if (u_lights == 0u || index >= u_frame.width * u_frame.height) return;  // no light: a warm-up
   // Background: a punctual light changes nothing there.
   if (b_gbuffer[index].record == kInvalidIndex) return;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);

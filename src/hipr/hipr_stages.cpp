@@ -103,9 +103,11 @@ void HiprStages::build_schedule() {
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m_schedule.record(cmd); });
 }
 
-void HiprStages::record_warm_up(VkCommandBuffer cmd) const {
+void HiprStages::record_warm_up(VkCommandBuffer cmd) {
   m_discovery.record(cmd, no_tile_push(m_discovery, m_parts.tiles.count()));
   m_schedule.record_warm_up(cmd);
+  m_reach.record_warm_up(cmd);
+  m_reproject.prepare();
 }
 
 std::vector<double> HiprStages::tile_weights() const {

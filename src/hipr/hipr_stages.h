@@ -54,8 +54,9 @@ class HiprStages final : public HiprStageRunner {
     m_discovery.set_features(features);
     m_reach.set_kernel_features(features);
   }
-  // Dispatches stage 2's and stage 3's kernels over no tile (they compile, nothing changes).
-  void record_warm_up(VkCommandBuffer cmd) const;
+  // Dispatches stage 2's and stage 3's kernels over no tile and the light reach over no light
+  // (they compile, nothing changes); makes the reprojection's kernel and copy.
+  void record_warm_up(VkCommandBuffer cmd);
   // Per tile: the discovery weight W(T).
   std::vector<double> tile_weights() const;
 

@@ -35,15 +35,27 @@ void LightReachPass::set_changed(const ChangeSet& changes) {
     lights[m_light_count + i] = punctual_light(change.after.light, change.after.world);
   }
   m_lights.upload(lights.data(), lights.size() * sizeof(abi::Light));
-  if (!m_reach)
-    m_reach = std::make_unique<vk::ComputePipeline>(m_ctx, "light_reach.comp", kernel_feature_defines(m_features),
-                                                    std::vector<vk::BufferBinding>{
-                                                        {abi::kReachGBuffer, &m_gbuffers.current},
-                                                        {abi::kReachLights, &m_lights},
-                                                        {abi::kReachDisplay, &m_display},
-                                                        {abi::kReachTileFlags, &m_tiles.flags},
-                                                        {abi::kReachTileChange, &m_tile_change}},
-                                                    uint32_t(sizeof(uint32_t)), &m_scene.descriptor_set());
+  make_pipeline();
+}
+
+void LightReachPass::make_pipeline() {
+  if (m_reach) return;
+  m_reach = std::make_unique<vk::ComputePipeline>(m_ctx, "light_reach.comp", kernel_feature_defines(m_features),
+                                                  std::vector<vk::BufferBinding>{
+                                                      {abi::kReachGBuffer, &m_gbuffers.current},
+                                                      {abi::kReachLights, &m_lights},
+                                                      {abi::kReachDisplay, &m_display},
+                                                      {abi::kReachTileFlags, &m_tiles.flags},
+                                                      {abi::kReachTileChange, &m_tile_change}},
+                                                  uint32_t(sizeof(uint32_t)), &m_scene.descriptor_set());
+}
+
+void LightReachPass::record_warm_up(VkCommandBuffer cmd) {
+  // Only a scene with punctual lights has light edits to follow (edits add no light).
+  if ((m_features & kernel_feature_bit("HIPR_FEATURE_PUNCTUAL_LIGHTS")) == 0) return;
+  make_pipeline();
+  const uint32_t none = 0;
+  m_reach->dispatch(cmd, &none, groups_for(m_pixels));
 }
 
 void LightReachPass::record(VkCommandBuffer cmd) const {

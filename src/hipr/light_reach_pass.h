@@ -27,6 +27,9 @@ class LightReachPass {
   // changed lights.
   void record(VkCommandBuffer cmd) const;
   void set_kernel_features(uint32_t features);
+  // Compiles the kernel now and dispatches it over no light (it returns at once), so the first
+  // light edit does not wait for it (RenderSettings::compile_kernels_early).
+  void record_warm_up(VkCommandBuffer cmd);
 
  private:
   const vk::Context& m_ctx;
@@ -39,7 +42,9 @@ class LightReachPass {
   uint32_t m_light_count = 0;
   uint32_t m_pixels;
   uint32_t m_features;
-  std::unique_ptr<vk::ComputePipeline> m_reach;  // made on the first light edit
+  std::unique_ptr<vk::ComputePipeline> m_reach;  // made on the first light edit (or warm-up)
+
+  void make_pipeline();
 };
 
 }  // namespace hipr

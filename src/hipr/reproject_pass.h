@@ -21,6 +21,9 @@ class ReprojectPass {
   // the current G-buffer was rendered from. Run after the capture and the new G-buffer, before
   // mark_active.comp. The first call allocates the copy of the display it reads from.
   void record(VkCommandBuffer cmd, const Camera& before);
+  // Allocates the copy and compiles the kernel now, so the first camera move does not wait for
+  // them (RenderSettings::compile_kernels_early).
+  void prepare();
 
  private:
   const vk::Context& m_ctx;
