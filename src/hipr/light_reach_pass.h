@@ -1,8 +1,8 @@
 #pragma once
 // HiPR stage 1 for punctual-light edits (light_reach.comp): the tiles whose visible surfaces a
 // changed light reaches, before or after the edit, become active, scored by how much their
-// direct light changes. The kernel shades (BSDF x light), so it is compiled on the first light
-// edit, with the scene's kernel features, and recompiled when they grow.
+// direct light changes. The kernel shades (BSDF x light), so it is compiled with the scene's
+// kernel features on the first light edit or warm-up, and again when they grow.
 #include <cstdint>
 #include <memory>
 
