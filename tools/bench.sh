@@ -75,18 +75,22 @@ if [ -d "$shared" ]; then
   drag CornellBox "$shared/CornellBox/cornellBox.gltf" tools/bench/CornellBox.drag.json
 fi
 
-# Camera moves (tools/bench/*.camera.json; an orbit as a drag): hipr reprojects the image before
-# each; again with --no-reproject for the comparison. Results in OUTDIR/camera_*.
-camera() {
-  local name=$1
-  shift
-  for reproject in reproject no-reproject; do
-    echo "== camera $name ($reproject)"
-    rm -rf "${out:?}/camera_${name}_$reproject"
-    build/hipr bench "$@" -o "$out/camera_${name}_$reproject" --width "$size" --height "$size" --spp "$spp" \
-      --policies hipr,full $([ $reproject = no-reproject ] && echo --no-reproject)
+# An estimator on and off: KIND NAME FLAG args... runs hipr and full as they are, then again
+# with --FLAG (the estimator off). Results in OUTDIR/KIND_NAME_{on,FLAG}.
+with_and_without() {
+  local kind=$1 name=$2 flag=$3
+  shift 3
+  for run in on "$flag"; do
+    echo "== $kind $name ($run)"
+    rm -rf "${out:?}/${kind}_${name}_$run"
+    build/hipr bench "$@" -o "$out/${kind}_${name}_$run" --width "$size" --height "$size" --spp "$spp" \
+      --policies hipr,full $([ "$run" = "$flag" ] && echo "--$flag")
   done
 }
+
+# Camera moves (tools/bench/*.camera.json; an orbit as a drag): hipr reprojects the image before
+# each; again with --no-reproject for the comparison. Results in OUTDIR/camera_*.
+camera() { with_and_without camera "$1" no-reproject "${@:2}"; }
 camera cornell_box assets/scenes/cornell_box.gltf tools/bench/cornell_box.camera.json
 camera cornell_box_orbit assets/scenes/cornell_box.gltf tools/bench/cornell_box.orbit.json \
   --drag 0.0625 --tiles-per-step 4 --ref-spp 256
@@ -96,16 +100,7 @@ fi
 
 # Light edits (tools/bench/*.lights.json, a lamp slider dragged): hipr relights them at once from
 # its light groups; again with --no-relight for the comparison. Results in OUTDIR/lights_*.
-lights() {
-  local name=$1
-  shift
-  for relight in relight no-relight; do
-    echo "== lights $name ($relight)"
-    rm -rf "${out:?}/lights_${name}_$relight"
-    build/hipr bench "$@" -o "$out/lights_${name}_$relight" --width "$size" --height "$size" --spp "$spp" \
-      --policies hipr,full $([ $relight = no-relight ] && echo --no-relight)
-  done
-}
+lights() { with_and_without lights "$1" no-relight "${@:2}"; }
 lights cornell_sphere assets/scenes/cornell_sphere.glb tools/bench/cornell_sphere.lights.json
 lights cornell_sphere_drag assets/scenes/cornell_sphere.glb tools/bench/cornell_sphere.lightdrag.json \
   --drag 0.0625 --tiles-per-step "$drag_tiles" --ref-spp 256
