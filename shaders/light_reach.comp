@@ -15,7 +15,7 @@
 // Reads: TLAS and scene buffers, the G-buffer, the changed lights, the display.
 // Writes: kTileActive | kTileScored into the tile flags, the tile change score.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_ray_query : require
+#include "common/traversal.glsl"
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 
@@ -31,6 +31,7 @@ layout(local_size_x = 64) in;
 #include "bsdf/bsdf.glsl"
 #include "common/surface.glsl"
 #include "common/cutout.glsl"
+#include "common/scene_trace.glsl"
 #include "common/material_inputs.glsl"
 #include "common/shading.glsl"
 #include "common/environment.glsl"
@@ -43,14 +44,6 @@ layout(scalar, binding = kReachTileFlags) buffer TileFlags { uint b_tile_flags[]
 layout(scalar, binding = kReachTileChange) buffer TileChange { uint b_tile_change[]; };
 // u_lights changed lights: b_reach_lights[i] before the edit, b_reach_lights[u_lights + i] after.
 layout(push_constant) uniform Push { uint u_lights; };
-
-bool occluded(vec3 origin, vec3 direction, float tMax) {
-  rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsTerminateOnFirstHitEXT | kCutoutRayFlags, 0xff, origin, 0.0,
-                        direction, tMax);
-  cutout_proceed(query, origin, direction);
-  return rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
-}
 
 // What `light` adds to the pixel: its direct radiance toward the camera (0 where shadowed, out
 // of range or cone). `reached` tells whether its light gets to the surface at all: unblocked,
@@ -81,7 +74,7 @@ vec3 direct_from(Light light, SurfaceHit surface, BsdfPoint bsdf, vec3 wo, out b
     toward = toLight / tMax;
     tMax *= 0.99999;
   }
-  if (occluded(origin, toward, tMax)) return vec3(0.0);
+  if (trace_occluded(origin, toward, tMax)) return vec3(0.0);
   reached = true;
   return max(f, vec3(0.0)) * arriving;
 }
@@ -93,17 +86,10 @@ void main() {
   if (b_gbuffer[index].record == kInvalidIndex) return;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
   const vec3 ray = pixel_centre_ray(pixel);
-  rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, kCutoutRayFlags, 0xff, u_frame.cameraPosition, 0.0, ray, 3.0e38);
-  cutout_proceed(query, u_frame.cameraPosition, ray);
-  if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return;
-  const uint record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
-                      uint(rayQueryGetIntersectionGeometryIndexEXT(query, true));
+  RayHit hit;
+  if (!trace_closest(u_frame.cameraPosition, ray, 3.0e38, hit)) return;
   const SurfaceHit surface =
-      make_surface_hit(record, uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true)),
-                       rayQueryGetIntersectionBarycentricsEXT(query, true),
-                       rayQueryGetIntersectionObjectToWorldEXT(query, true),
-                       rayQueryGetIntersectionWorldToObjectEXT(query, true), ray);
+      make_surface_hit(hit.record, hit.primitive, hit.barycentrics, hit.objectToWorld, hit.worldToObject, ray);
   const vec3 wo = -ray;
   const ShadingParams shading = shading_params(surface, wo);
   const BsdfPoint bsdf = bsdf_point(shading.bsdf, BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent), wo);

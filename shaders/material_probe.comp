@@ -3,7 +3,7 @@
 // can check what the BSDF will receive (factor x texture channel, UV set, transform, frames).
 // Reads: the scene buffers. Writes: one MaterialInputsProbe.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_ray_query : require
+#include "common/traversal.glsl"
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 

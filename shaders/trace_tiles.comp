@@ -10,7 +10,7 @@
 // with a `sampleTarget`, what the pixel lacks of it) whose indices continue the pixel's count,
 // so results never depend on tile order.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_ray_query : require
+#include "common/traversal.glsl"
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
@@ -35,6 +35,7 @@ layout(scalar, binding = kTraceMaterialGroups) readonly buffer MaterialGroups { 
 #include "bsdf/bsdf.glsl"
 #include "common/surface.glsl"
 #include "common/cutout.glsl"
+#include "common/scene_trace.glsl"
 #include "common/material_inputs.glsl"
 #include "common/shading.glsl"
 #include "common/environment.glsl"
@@ -100,38 +101,6 @@ float bsdf_hit_weight(float bsdfPdf, float lightPdf) {
   return power_heuristic(bsdfPdf, lightPdf);
 }
 
-struct RayHit {
-  float t;
-  uint geometry;
-  uint primitive;
-  vec2 barycentrics;
-  mat4x3 objectToWorld;
-  mat4x3 worldToObject;
-};
-
-bool trace_closest(vec3 origin, vec3 direction, out RayHit hit) {
-  rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, kCutoutRayFlags, 0xff, origin, 0.0, direction, kFloatMax);
-  cutout_proceed(query, origin, direction);
-  if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return false;
-  hit.t = rayQueryGetIntersectionTEXT(query, true);
-  hit.geometry = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
-                 uint(rayQueryGetIntersectionGeometryIndexEXT(query, true));
-  hit.primitive = uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true));
-  hit.barycentrics = rayQueryGetIntersectionBarycentricsEXT(query, true);
-  hit.objectToWorld = rayQueryGetIntersectionObjectToWorldEXT(query, true);
-  hit.worldToObject = rayQueryGetIntersectionWorldToObjectEXT(query, true);
-  return true;
-}
-
-bool occluded(vec3 origin, vec3 direction, float tMax) {
-  rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, gl_RayFlagsTerminateOnFirstHitEXT | kCutoutRayFlags, 0xff, origin, 0.0,
-                        direction, tMax);
-  cutout_proceed(query, origin, direction);
-  return rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
-}
-
 vec3 camera_ray_direction(uvec2 pixel, vec2 jitter) {
   const vec2 ndc = (vec2(pixel) + jitter) / vec2(u_frame.width, u_frame.height) * 2.0 - 1.0;
   const float x = ndc.x * u_frame.tanHalfFovY * u_frame.aspect;
@@ -183,7 +152,7 @@ vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWei
     return vec3(0.0);
   }
 #else
-  if (occluded(origin, direction, tMax)) return vec3(0.0);
+  if (trace_occluded(origin, direction, tMax)) return vec3(0.0);
 #endif
   const float weight = (ls.isDelta || HIPR_LIGHT_SAMPLING == kLightSamplingLightOnly)
                            ? 1.0
@@ -254,7 +223,7 @@ bool path_step(inout PathState p, bool backgroundTile, inout uint rays) {
   RayHit hit;
   const bool query = p.depth > 0u || !backgroundTile;
   if (query) rays += 1u;
-  if (!query || !trace_closest(p.origin, p.direction, hit)) {
+  if (!query || !trace_closest(p.origin, p.direction, kFloatMax, hit)) {
     if (HIPR_FEATURE_ENVIRONMENT != 0 && u_frame.environmentLight != kInvalidIndex) {
       float weight = 1.0;
       if (!p.previousDelta)
@@ -263,7 +232,7 @@ bool path_step(inout PathState p, bool backgroundTile, inout uint rays) {
     }
     return true;
   }
-  const SurfaceHit surface = make_surface_hit(hit.geometry, hit.primitive, hit.barycentrics, hit.objectToWorld,
+  const SurfaceHit surface = make_surface_hit(hit.record, hit.primitive, hit.barycentrics, hit.objectToWorld,
                                               hit.worldToObject, p.direction);
   const vec3 wo = -p.direction;
   const ShadingParams shading = shading_params(surface, wo);

@@ -1,9 +1,9 @@
 #version 460
 // HiPR stage 1: one primary ray through every pixel centre.
-// Reads: TLAS, FrameParams, and the scene buffers the opacity cutout needs (geometry records,
+// Reads: TLAS (or the software BVH), FrameParams, and the scene buffers the opacity cutout needs (geometry records,
 // materials, UVs, textures). Writes: the G-buffer (record hit, camera-space depth) per pixel.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_ray_query : require
+#include "common/traversal.glsl"
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 
@@ -15,6 +15,7 @@ layout(local_size_x = 64) in;
 #include "common/pixel_ray.glsl"
 #include "common/textures.glsl"
 #include "common/cutout.glsl"
+#include "common/scene_trace.glsl"
 
 layout(scalar, binding = kVisibilityGBuffer) writeonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 
@@ -23,14 +24,11 @@ void main() {
   if (index >= u_frame.width * u_frame.height) return;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
   const vec3 direction = pixel_centre_ray(pixel);
-  rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, kCutoutRayFlags, 0xff, u_frame.cameraPosition, 0.0, direction, 3.0e38);
-  cutout_proceed(query, u_frame.cameraPosition, direction);
   GBufferTexel texel = GBufferTexel(kInvalidIndex, 3.0e38);
-  if (rayQueryGetIntersectionTypeEXT(query, true) == gl_RayQueryCommittedIntersectionTriangleEXT) {
-    texel.record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
-                   uint(rayQueryGetIntersectionGeometryIndexEXT(query, true));
-    texel.depth = rayQueryGetIntersectionTEXT(query, true) * dot(direction, u_frame.cameraForward);
+  RayHit hit;
+  if (trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit)) {
+    texel.record = hit.record;
+    texel.depth = hit.t * dot(direction, u_frame.cameraForward);
   }
   b_gbuffer[index] = texel;
 }

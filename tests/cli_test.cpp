@@ -660,6 +660,35 @@ TEST(Compare, TwoProcessesRenderTheSamePixels) {
             kExitOk);
 }
 
+// --traversal software renders through hipr's own BVH (what a device without ray queries uses),
+// says so in the statistics, and gives the same picture as ray queries up to rounding.
+TEST(Cli, TraversalIsChosenNamedAndChecked) {
+  const fs::path dir = test::temp_dir("traversal");
+  const std::string render = "render " + quoted(test::asset("cornell_sphere.glb")) +
+                             " --width 32 --height 24 --spp 4 --seed 3 --max-depth 4 -q --validate -o ";
+  if (!test::context().has_ray_queries()) GTEST_SKIP() << test::context().device_name() << " has no ray queries";
+  for (const char* traversal : {"ray-query", "software"}) {
+    const fs::path out = dir / (std::string(traversal) + ".exr");
+    const fs::path stats = dir / (std::string(traversal) + ".json");
+    const auto result =
+        test::run_hipr(render + quoted(out) + " --traversal " + traversal + " --stats-json " + quoted(stats));
+    ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+    std::ifstream in(stats);
+    EXPECT_EQ(nlohmann::json::parse(in)["traversal"], traversal);
+  }
+  const ImageRGB queries = read_image(dir / "ray-query.exr"), software = read_image(dir / "software.exr");
+  EXPECT_NEAR(test::mean(software), test::mean(queries), 0.02 * test::mean(queries));
+
+  const auto bad_option = test::run_hipr(render + quoted(dir / "x.exr") + " --traversal magic");
+  EXPECT_EQ(bad_option.exit_code, kExitBadInput) << bad_option.output;
+  EXPECT_EQ(lines_of(bad_option.output).size(), 1u) << bad_option.output;
+  const auto bad_environment = test::run_command("HIPR_TRAVERSAL=magic " + quoted(test::hipr_binary()) + " " + render +
+                                                 quoted(dir / "y.exr"));
+  EXPECT_EQ(bad_environment.exit_code, kExitBadInput) << bad_environment.output;
+  EXPECT_EQ(lines_of(bad_environment.output).size(), 1u) << bad_environment.output;
+  EXPECT_FALSE(fs::exists(dir / "x.exr") || fs::exists(dir / "y.exr"));
+}
+
 // A name with bytes that are not UTF-8 (and a terminal escape) reaches stderr escaped, on one line.
 TEST(Cli, ErrorLinesStayCleanWithBrokenBytes) {
   const fs::path dir = test::temp_dir("broken_bytes");

@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <set>
 
 #include "test_support.h"
 #include "vk/compute_pipeline.h"
@@ -68,9 +69,37 @@ TEST(ShaderCompiler, ErrorsNameTheShader) {
   }
 }
 
+// Every float add and multiply of a compiled kernel carries NoContraction: no driver fuses them
+// into FMAs differently in two variants of a kernel (vk/spirv_no_contraction.h).
+TEST(ShaderCompiler, ArithmeticIsNeverContracted) {
+  const std::vector<uint32_t> spirv = vk::compile_compute_shader("display.comp", {}).spirv;
+  std::set<uint32_t> arithmetic, no_contraction;
+  for (size_t at = 5; at < spirv.size(); at += spirv[at] >> 16) {
+    const uint32_t opcode = spirv[at] & 0xffffu;
+    if (opcode == 129 || opcode == 131 || opcode == 133 || opcode == 136) arithmetic.insert(spirv[at + 2]);  // FAdd FSub FMul FDiv
+    if (opcode == 71 && spirv[at + 2] == 42) no_contraction.insert(spirv[at + 1]);  // OpDecorate NoContraction
+  }
+  EXPECT_GT(arithmetic.size(), 3u) << "the display kernel does float arithmetic";
+  for (uint32_t id : arithmetic) EXPECT_TRUE(no_contraction.count(id)) << "%" << id;
+}
+
 TEST(Device, MissingDeviceIsAClearError) {
   vk::ContextOptions options;
   options.preferred_device = "no such device anywhere";
+  try {
+    vk::Context ctx(options);
+    FAIL() << "expected an error";
+  } catch (const std::exception& e) {
+    // It names what was asked for and what is there.
+    EXPECT_NE(std::string(e.what()).find("'no such device anywhere'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(test::context().device_name()), std::string::npos) << e.what();
+  }
+}
+
+TEST(Device, ForcedRayQueriesOnADeviceWithoutThemIsAClearError) {
+  if (test::context().has_ray_queries()) GTEST_SKIP() << test::context().device_name() << " has ray queries";
+  vk::ContextOptions options;
+  options.traversal = vk::Traversal::RayQuery;
   try {
     vk::Context ctx(options);
     FAIL() << "expected an error";

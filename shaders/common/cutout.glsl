@@ -1,9 +1,7 @@
-// Opacity cutout (glTF alphaMode MASK / BLEND, OpenPBR geometry_opacity) inside ray queries.
-// Geometry whose material needs no test is VK_GEOMETRY_OPAQUE_BIT_KHR and never reaches the
-// candidate loop; the rest stops there and is confirmed only where the test passes. Every
-// query of the renderer (closest hit, shadow, discovery blocker, stage 1) starts with
-// kCutoutRayFlags and runs this one loop. A kernel without HIPR_FEATURE_CUTOUT (every
-// material opaque) has no candidate code at all and marks its rays opaque.
+// Opacity cutout (glTF alphaMode MASK / BLEND, OpenPBR geometry_opacity): the test a ray runs
+// on a candidate triangle of geometry whose material is not opaque (scene_trace.glsl, for both
+// traversals); opaque geometry never runs it. A kernel without HIPR_FEATURE_CUTOUT (every
+// material opaque) has no candidate code at all.
 // Needs scene_bindings.glsl (scene buffers) and textures.glsl.
 #ifndef HIPR_CUTOUT_GLSL
 #define HIPR_CUTOUT_GLSL
@@ -11,9 +9,6 @@
 #include "features.glsl"
 #include "rng.glsl"
 #include "vertices.glsl"
-
-// Ray flags of every query: without cutout geometry, rays treat everything as opaque.
-const uint kCutoutRayFlags = HIPR_FEATURE_CUTOUT != 0 ? gl_RayFlagsNoneEXT : gl_RayFlagsOpaqueEXT;
 
 // A uniform number in [0,1) fixed by the ray and the triangle: the same ray makes the same
 // choice whatever tile order or dispatch size produced it, so renders stay deterministic.
@@ -50,23 +45,6 @@ float cutout_coverage(uint record, uint primitive, vec2 bary) {
   float cutoff;
   const float opacity = cutout_opacity(record, primitive, bary, cutoff);
   return cutoff >= 0.0 ? (opacity >= cutoff ? 1.0 : 0.0) : opacity;
-}
-
-// Runs an initialised query to its end, confirming the candidate triangles that pass the test.
-void cutout_proceed(rayQueryEXT query, vec3 origin, vec3 direction) {
-#if HIPR_FEATURE_CUTOUT == 0
-  // Only opaque triangles: the first call runs the traversal to its end (and returns false).
-  rayQueryProceedEXT(query);
-#else
-  while (rayQueryProceedEXT(query)) {
-    if (rayQueryGetIntersectionTypeEXT(query, false) != gl_RayQueryCandidateIntersectionTriangleEXT) continue;
-    const uint record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false)) +
-                        uint(rayQueryGetIntersectionGeometryIndexEXT(query, false));
-    if (cutout_hit(record, uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, false)),
-                   rayQueryGetIntersectionBarycentricsEXT(query, false), origin, direction))
-      rayQueryConfirmIntersectionEXT(query);
-  }
-#endif
 }
 
 #endif

@@ -40,12 +40,8 @@ void discover_vertex(vec3 x, float weight) {
 
 // The record a shadow ray hits first, or kInvalidIndex when it is unblocked.
 uint closest_blocker(vec3 origin, vec3 direction, float tMax) {
-  rayQueryEXT query;
-  rayQueryInitializeEXT(query, u_tlas, kCutoutRayFlags, 0xff, origin, 0.0, direction, tMax);
-  cutout_proceed(query, origin, direction);
-  if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return kInvalidIndex;
-  return uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
-         uint(rayQueryGetIntersectionGeometryIndexEXT(query, true));
+  RayHit hit;
+  return trace_closest(origin, direction, tMax, hit) ? hit.record : kInvalidIndex;
 }
 
 #endif

@@ -3,10 +3,18 @@
 #ifndef HIPR_SCENE_BINDINGS_GLSL
 #define HIPR_SCENE_BINDINGS_GLSL
 
+#include "traversal.glsl"
 #include "../shared/bindings/scene.h"
 #include "frame.glsl"
 
+#if HIPR_SOFTWARE_TRAVERSAL
+layout(scalar, set = kSceneSet, binding = kSceneBlasNodes) readonly buffer BlasNodes { BvhNode b_blas_nodes[]; };
+layout(scalar, set = kSceneSet, binding = kSceneBlasTriangles) readonly buffer BlasTriangles { BvhTriangle b_blas_triangles[]; };
+layout(scalar, set = kSceneSet, binding = kSceneTlasNodes) readonly buffer TlasNodes { BvhNode b_tlas_nodes[]; };
+layout(scalar, set = kSceneSet, binding = kSceneTlasInstances) readonly buffer TlasInstances { BvhInstance b_tlas_instances[]; };
+#else
 layout(set = kSceneSet, binding = kSceneTlas) uniform accelerationStructureEXT u_tlas;
+#endif
 layout(scalar, set = kSceneSet, binding = kScenePositions) readonly buffer Positions { vec3 b_positions[]; };
 layout(scalar, set = kSceneSet, binding = kSceneNormals) readonly buffer Normals { vec3 b_normals[]; };
 layout(scalar, set = kSceneSet, binding = kSceneTangents) readonly buffer Tangents { vec4 b_tangents[]; };

@@ -85,6 +85,14 @@ HIPR_CONST uint kTextureMirrorU = 16u;
 HIPR_CONST uint kTextureMirrorV = 32u;
 HIPR_CONST uint kTextureUv1 = 64u;        // reads TEXCOORD_1 instead of TEXCOORD_0
 
+// Software traversal (devices without ray queries): a two-level BVH built on the host
+// (src/render/bvh_builder.cpp, src/render/software_bvh.cpp) and walked by
+// shaders/common/bvh_traversal.glsl. A node's count is kBvhLeaf | items for a leaf (items at
+// `first`), 0 for an interior node (children at `first` and `first + 1`).
+HIPR_CONST uint kBvhLeaf = 0x80000000u;
+HIPR_CONST uint kBvhMaxDepth = 30u;          // the builder's limit: the kernels' stacks hold 32
+HIPR_CONST uint kBvhTriangleCutout = 0x80000000u;  // BvhTriangle::geometry: runs the opacity test
+
 // ---- structs ----
 
 // One entry per (instance, mesh primitive): TLAS instance custom index + geometry index.
@@ -322,6 +330,34 @@ struct FrameParams {
   uint tilesY;
   float rayOffsetScale;  // size of the scene (diagonal of its bounds): scales ray_offset.glsl's offsets
   uint sampleSequence;   // kSamplerSobol or kSamplerRandom (common/rng.glsl)
+};
+
+// Software traversal: one BVH node (bounds in the space of the level it belongs to).
+struct BvhNode {
+  vec3 lo;
+  uint first;
+  vec3 hi;
+  uint count;
+};
+
+// A triangle of a mesh's BVH, its vertices gathered in object space.
+struct BvhTriangle {
+  vec3 v0;
+  uint geometry;   // primitive of the mesh (the geometry index a ray query reports) | kBvhTriangleCutout
+  vec3 v1;
+  uint primitive;  // triangle index within that primitive
+  vec3 v2;
+  uint padding;
+};
+
+// A visible instance in the top-level BVH: its transforms as rows of 3x4 matrices.
+struct BvhInstance {
+  vec4 worldToObject[3];
+  vec4 objectToWorld[3];
+  uint blasRoot;     // its mesh's root in the node buffer of all meshes
+  uint customIndex;  // first GeometryRecord of the instance
+  uint padding0;
+  uint padding1;
 };
 
 // Stage 1 output per pixel: what the pixel-centre ray hit.

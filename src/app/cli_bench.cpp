@@ -107,7 +107,7 @@ void run_cold_start_bench(const BenchOptions& o, const vk::Context& ctx, Rendere
                           bench::PolicyRunOptions run_options, BenchReport& report) {
   const RenderSettings& settings = o.common.render;
   const bench::Reference reference = bench::converged_reference(
-      ctx, scene, bench::reference_key(scene, "", settings, o.ref_spp), settings, o.ref_spp, cache);
+      ctx, scene, bench::reference_key(ctx, scene, "", settings, o.ref_spp), settings, o.ref_spp, cache);
   renderer.refresh_gbuffer();
   run_options.focus_region =
       focus.empty() ? std::vector<uint8_t>()
@@ -156,7 +156,7 @@ void run_drag_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& ren
     changes.push_back(diff_scenes(states[e], states.back()));
     state += texts[e];
     const bench::Reference reference = bench::converged_reference(
-        ctx, states.back(), bench::reference_key(states.back(), state, o.common.render, o.ref_spp), o.common.render,
+        ctx, states.back(), bench::reference_key(ctx, states.back(), state, o.common.render, o.ref_spp), o.common.render,
         o.ref_spp, cache);
     references.push_back(reference.image);
   }
@@ -268,7 +268,8 @@ int run_bench(BenchOptions& o) {
                                    {"max_depth", settings.max_depth},
                                    {"seed", settings.seed},
                                    {"sampler", sampler_name(settings.sampler)},
-                                   {"device", ctx.device_name()}};
+                                   {"device", ctx.device_name()},
+                                   {"traversal", ctx.traversal_name()}};
   BenchReport report(o.common.scene.filename().string(), recorded, o.output);
   const auto display_of = [&](Policy policy) {
     return policy == Policy::Hipr || policy == Policy::Oracle ? ordered_display : default_display_rule(policy);
@@ -299,7 +300,7 @@ int run_bench(BenchOptions& o) {
     const Scene before = scene;
     // What the edit really changed is judged between the references before and after it.
     if (!previous_reference)
-      previous_reference = bench::converged_reference(ctx, before, bench::reference_key(before, state, settings, o.ref_spp),
+      previous_reference = bench::converged_reference(ctx, before, bench::reference_key(ctx, before, state, settings, o.ref_spp),
                                                       settings, o.ref_spp, cache)
                                .image;
     apply_edit(scene, edits[e]);
@@ -310,7 +311,7 @@ int run_bench(BenchOptions& o) {
     log::info("edit " + std::to_string(e + 1) + " (" + name + "): reference at " +
               std::to_string(o.ref_spp) + " spp");
     const bench::Reference reference = bench::converged_reference(
-        ctx, scene, bench::reference_key(scene, state, settings, o.ref_spp), settings, o.ref_spp,
+        ctx, scene, bench::reference_key(ctx, scene, state, settings, o.ref_spp), settings, o.ref_spp,
         cache);
     log::info(reference.from_cache
                   ? "  reference read from the cache"

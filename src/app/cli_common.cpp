@@ -51,6 +51,10 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
                  "default 8, render 0)");
   app.add_flag("--validate", o.validate, "Enable Vulkan validation layers; any validation error fails the run");
   app.add_option("--device", o.device, "Use the Vulkan device whose name contains this text");
+  app.add_option("--traversal", o.traversal,
+                 "How rays are traced: auto (ray queries where the device has them), ray-query or software "
+                 "(hipr's own BVH; default from HIPR_TRAVERSAL)")
+      ->check(CLI::IsMember({"auto", "ray-query", "software"}));
   app.add_flag("-q,--quiet", o.quiet, "Print nothing but errors and warnings");
 }
 
@@ -95,6 +99,8 @@ vk::ContextOptions context_options(const CommonOptions& o) {
   const char* env = std::getenv("HIPR_VALIDATION");
   ctx.validation = o.validate || (env && std::string(env) == "1");
   ctx.preferred_device = o.device;
+  if (o.traversal == "ray-query") ctx.traversal = vk::Traversal::RayQuery;
+  if (o.traversal == "software") ctx.traversal = vk::Traversal::Software;
   return ctx;
 }
 

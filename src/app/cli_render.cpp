@@ -52,7 +52,7 @@ int run_render(RenderOptions& o) {
   settings.difference_estimate = false;
   Renderer renderer(ctx, scene, settings);
   const double setup_seconds = setup_timer.seconds();
-  log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" +
+  log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" + ctx.traversal_name() + " traversal, " +
             std::to_string(renderer.scene_stats().triangle_count) + " triangles, " +
             std::to_string(renderer.scene_stats().light_count) + " lights, environment " +
             environment_description(scene) + ")");
@@ -109,6 +109,7 @@ int run_render(RenderOptions& o) {
         {"rays", counters.rays},
         {"rays_per_sample", double(counters.rays) / samples},
         {"device", ctx.device_name()},
+        {"traversal", ctx.traversal_name()},
         {"scene_hash", scene.content_hash},
         {"triangles", renderer.scene_stats().triangle_count},
         {"tile", o.common.render.tile_size},

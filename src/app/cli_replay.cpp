@@ -118,12 +118,19 @@ int run_replay(ReplayOptions& o) {
     // An edit that changes nothing (a move by zero) re-renders nothing.
     const bool changed = !pipeline.apply(edits[e]).empty();
     double work_after_first_step = 0.0;
+    double first_step_seconds = 0.0;  // the edit until its first step is on the display
+    double step_seconds = 0.0;        // the steps alone (no image writing)
     bool debug_written = policy != Policy::Hipr || !changed;
     uint32_t steps = 0;
     for (uint32_t s = 1; s <= max_steps && (o.steps || scheduler.work_since_edit() < double(o.common.spp)); ++s) {
       steps = s;
+      const Timer step_timer;
       scheduler.step();
-      if (s == 1) work_after_first_step = scheduler.work_since_edit();
+      step_seconds += step_timer.seconds();
+      if (s == 1) {
+        work_after_first_step = scheduler.work_since_edit();
+        first_step_seconds = timer.seconds();
+      }
       if (!debug_written && !scheduler.leading_steps_pending()) {  // stage 2's weights are all in
         write_debug_images(o.output, e, renderer);
         debug_written = true;
@@ -134,6 +141,8 @@ int run_replay(ReplayOptions& o) {
                                 {"steps", steps},
                                 {"work", scheduler.work_since_edit()},
                                 {"seconds", timer.seconds()},
+                                {"first_step_seconds", first_step_seconds},
+                                {"mean_step_seconds", steps ? step_seconds / steps : 0.0},
                                 {"work_after_first_step", work_after_first_step},
                                 {"overhead_seconds", scheduler.overhead_seconds()},
                                 {"overhead_share_of_full_pass", scheduler.overhead_seconds() / pass_seconds}});

@@ -7,6 +7,7 @@
 #include "core/timer.h"
 #include "image/error_metrics.h"
 #include "image/image_io.h"
+#include "vk/context.h"
 #include "vk/embedded_shaders.h"
 #include "vk/shader_compiler.h"
 
@@ -25,12 +26,14 @@ void converge(Renderer& renderer, uint32_t spp) {
   for (uint32_t done = 0; done < spp; done += 16) renderer.add_samples_full_frame(std::min(16u, spp - done));
 }
 
-std::string reference_key(const Scene& scene, const std::string& state,
+std::string reference_key(const vk::Context& ctx, const Scene& scene, const std::string& state,
                           const RenderSettings& settings, uint32_t spp) {
   Hasher hasher;
   // The shader sources are hashed below; a change of host code that alters pixels (scene
   // packing, light or BSDF tables) must bump this version, or stale references are reused.
   hasher.add("hipr-reference-v1").add(scene.content_hash).add(state);
+  // Devices (and traversals) agree only to a tolerance: each keeps its own references.
+  hasher.add(ctx.device_name()).add(ctx.traversal_name());
   if (scene.environment) {
     hasher.add(&scene.environment->intensity, sizeof(float));
     hasher.add(&scene.environment->rotation, sizeof(float));

@@ -17,8 +17,9 @@ namespace hipr::bench {
 
 // Everything that decides a reference's pixels: the scene as loaded (content hash, environment
 // settings), the edits applied so far (`state` = their canonical text), the render settings
-// that change the image, the sample count and the renderer's own shader sources.
-std::string reference_key(const Scene& scene, const std::string& state,
+// that change the image, the sample count, the renderer's own shader sources and the device
+// with its traversal.
+std::string reference_key(const vk::Context& ctx, const Scene& scene, const std::string& state,
                           const RenderSettings& settings, uint32_t spp);
 
 // $HIPR_CACHE_DIR/references (or beside the shader cache); empty when there is no cache folder.

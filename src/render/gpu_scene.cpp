@@ -12,8 +12,6 @@
 namespace hipr {
 namespace {
 
-constexpr VkBufferUsageFlags kBuildInput = VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR;
-
 std::array<float, 12> row_major_3x4(const glm::mat4& m) {
   return {m[0][0], m[1][0], m[2][0], m[3][0], m[0][1], m[1][1], m[2][1], m[3][1], m[0][2], m[1][2], m[2][2], m[3][2]};
 }
@@ -46,8 +44,11 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
   geometries = vk::make_storage_buffer(ctx, m_records);
   bsdf_tables = vk::make_storage_buffer(ctx, bsdf_table_data());
   frame_buffer = vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1));
-  std::vector<vk::BindingSlot> slots = {{abi::kSceneTlas, vk::BindingKind::AccelerationStructure}};
+  std::vector<vk::BindingSlot> slots;
+  if (!ctx.software_traversal()) slots.push_back({abi::kSceneTlas, vk::BindingKind::AccelerationStructure});
   for (uint32_t b = abi::kScenePositions; b <= abi::kSceneFrame; ++b) slots.push_back({b});
+  if (ctx.software_traversal())
+    for (uint32_t b = abi::kSceneBlasNodes; b <= abi::kSceneTlasInstances; ++b) slots.push_back({b});
   m_set = std::make_unique<vk::DescriptorSet>(ctx, slots);
   update_instances(scene);
 }
@@ -59,7 +60,14 @@ void GpuScene::set_frame(const abi::FrameParams& params) {
 
 void GpuScene::bind_set() {
   if (!m_set) return;  // during construction: bound once everything exists
-  m_set->bind_acceleration_structure(abi::kSceneTlas, m_tlas.handle());
+  if (m_ctx.software_traversal()) {
+    m_set->bind_buffer(abi::kSceneBlasNodes, m_software.blas_nodes);
+    m_set->bind_buffer(abi::kSceneBlasTriangles, m_software.blas_triangles);
+    m_set->bind_buffer(abi::kSceneTlasNodes, m_software.tlas_nodes);
+    m_set->bind_buffer(abi::kSceneTlasInstances, m_software.tlas_instances);
+  } else {
+    m_set->bind_acceleration_structure(abi::kSceneTlas, m_tlas.handle());
+  }
   const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
       {abi::kScenePositions, &positions},   {abi::kSceneNormals, &normals},       {abi::kSceneTangents, &tangents},
       {abi::kSceneUvs, &uvs},               {abi::kSceneIndices, &indices},       {abi::kSceneGeometries, &geometries},
@@ -91,11 +99,14 @@ void GpuScene::upload_geometry(const Scene& scene) {
       all_indices.insert(all_indices.end(), p.indices.begin(), p.indices.end());
     }
   }
-  positions = vk::make_storage_buffer(m_ctx, all_positions, kBuildInput);
+  // Acceleration-structure builds read positions and indices (ray queries only).
+  const VkBufferUsageFlags build_input =
+      m_ctx.software_traversal() ? 0 : VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR;
+  positions = vk::make_storage_buffer(m_ctx, all_positions, build_input);
   normals = vk::make_storage_buffer(m_ctx, all_normals);
   tangents = vk::make_storage_buffer(m_ctx, all_tangents);
   uvs = vk::make_storage_buffer(m_ctx, all_uvs);
-  indices = vk::make_storage_buffer(m_ctx, all_indices, kBuildInput);
+  indices = vk::make_storage_buffer(m_ctx, all_indices, build_input);
 
   m_blas.resize(scene.meshes.size());
   m_has_blas.assign(scene.meshes.size(), false);
@@ -104,7 +115,8 @@ void GpuScene::upload_geometry(const Scene& scene) {
 
 bool GpuScene::build_blases(const Scene& scene) {
   // One BLAS per mesh, one geometry per primitive. BLAS indices are relative to the
-  // primitive's first vertex, which is why the vertex address carries the offset.
+  // primitive's first vertex, which is why the vertex address carries the offset. The software
+  // traversal builds its own mesh BVH at the same moments.
   bool rebuilt = false;
   m_info.cutout_geometries = 0;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -112,6 +124,13 @@ bool GpuScene::build_blases(const Scene& scene) {
     for (const MeshPrimitive& p : scene.meshes[m].primitives) opaque.push_back(material_is_opaque(scene.materials[p.material].params));
     m_info.cutout_geometries += size_t(std::count(opaque.begin(), opaque.end(), false));
     if (m_ranges[m].empty() || (m_has_blas[m] && opaque == m_blas_opaque[m])) continue;
+    rebuilt = true;
+    if (m_ctx.software_traversal()) {
+      m_software.set_mesh(m, scene.meshes[m], opaque);
+      m_has_blas[m] = true;
+      m_blas_opaque[m] = std::move(opaque);
+      continue;
+    }
     std::vector<vk::TriangleGeometry> geometry;
     for (size_t p = 0; p < m_ranges[m].size(); ++p) {
       const PrimitiveRange& r = m_ranges[m][p];
@@ -122,8 +141,8 @@ bool GpuScene::build_blases(const Scene& scene) {
     m_blas[m] = vk::build_blas(m_ctx, geometry);
     m_has_blas[m] = true;
     m_blas_opaque[m] = std::move(opaque);
-    rebuilt = true;
   }
+  if (rebuilt && m_ctx.software_traversal()) m_software.upload_meshes(m_ctx);
   return rebuilt;
 }
 
@@ -166,20 +185,27 @@ void GpuScene::update_instances(const Scene& scene) {
   m_info.triangle_count = 0;
   m_info.instance_count = 0;
   std::vector<vk::TlasInstance> tlas_instances;
+  std::vector<SoftwareBvh::Placement> placements;
   for (size_t i = 0; i < instances.size(); ++i) {
     const Instance& instance = instances[i];
     if (!m_has_blas[instance.mesh]) continue;
+    if (m_ctx.software_traversal() && instance.visible)
+      placements.push_back({instance.world, instance.mesh, m_record_base[i]});
     // Facing is computed from object-space normals in the shader; the flag keeps the
     // hardware's notion of front faces consistent for mirroring transforms.
     const bool mirrored = glm::determinant(glm::mat3(instance.world)) < 0.0f;
-    tlas_instances.push_back({row_major_3x4(instance.world), m_record_base[i], m_blas[instance.mesh].address(),
-                              !mirrored, instance.visible});
+    if (!m_ctx.software_traversal())
+      tlas_instances.push_back({row_major_3x4(instance.world), m_record_base[i], m_blas[instance.mesh].address(),
+                                !mirrored, instance.visible});
     if (!instance.visible) continue;
     m_info.instance_count += 1;
     for (const PrimitiveRange& r : m_ranges[instance.mesh]) m_info.triangle_count += r.triangle_count;
   }
   // An empty TLAS is valid and makes every ray miss.
-  m_tlas = vk::build_tlas(m_ctx, tlas_instances);
+  if (m_ctx.software_traversal())
+    m_software.upload_instances(m_ctx, placements);
+  else
+    m_tlas = vk::build_tlas(m_ctx, tlas_instances);
   update_lights(scene);
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // The scene as the kernels see it: shared vertex/index buffers, one BLAS per mesh, a TLAS of
-// instances, material/texture/light tables, the environment, the BSDF tables and the frame
+// instances (or, without ray queries, hipr's own two-level BVH), material/texture/light tables, the environment, the BSDF tables and the frame
 // parameters, all in one descriptor set (set 1 of every kernel that reads the scene:
 // shaders/shared/bindings/scene.h). Geometry is uploaded once; edits update only what they
 // touch (materials, instances + lights, or lights alone) and the set follows.
@@ -11,6 +11,7 @@
 #include "hipr/scene.h"
 #include "render/light_groups.h"
 #include "render/light_tables.h"
+#include "render/software_bvh.h"
 #include "vk/acceleration.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -49,7 +50,6 @@ class GpuScene {
 
   const SceneStats& info() const { return m_info; }
   const LightTables& light_tables() const { return m_lights; }
-  VkAccelerationStructureKHR tlas() const { return m_tlas.handle(); }
   // Instance index of each GeometryRecord (records are grouped per instance).
   const std::vector<uint32_t>& record_instance() const { return m_record_instance; }
   uint32_t record_count() const { return uint32_t(m_records.size()); }
@@ -87,6 +87,7 @@ class GpuScene {
   std::vector<uint32_t> m_record_base;      // per instance
   std::vector<uint32_t> m_record_instance;  // per record
   vk::AccelerationStructure m_tlas;
+  SoftwareBvh m_software;  // instead of m_blas and m_tlas on a device without ray queries
   abi::FrameParams m_frame_params{};
   std::unique_ptr<vk::DescriptorSet> m_set;
 };

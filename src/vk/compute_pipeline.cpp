@@ -24,7 +24,10 @@ ComputePipeline::ComputePipeline(const Context& ctx, const std::string& entry, c
                                  const DescriptorSet* shared)
     : m_ctx(ctx), m_own(ctx, bindings), m_shared(shared), m_push_size(push_constant_size) {
   const VkDevice device = ctx.device();
-  const CompiledShader shader = compile_compute_shader(entry, defines);
+  // Every kernel learns the device's traversal; only those that trace (traversal.glsl) read it.
+  ShaderDefines all_defines = defines;
+  all_defines.emplace_back("HIPR_SOFTWARE_TRAVERSAL", ctx.software_traversal() ? "1" : "0");
+  const CompiledShader shader = compile_compute_shader(entry, all_defines);
 
   std::vector<VkDescriptorSetLayout> set_layouts = {m_own.layout()};
   if (m_shared) set_layouts.push_back(m_shared->layout());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -14,11 +15,22 @@ namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
-const char* const kRequiredDeviceExtensions[] = {
+// What ray queries need; the software traversal needs none of it.
+const char* const kRayQueryExtensions[] = {
     VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
     VK_KHR_RAY_QUERY_EXTENSION_NAME,
     VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME,
 };
+
+Traversal requested_traversal(Traversal option) {
+  if (option != Traversal::Automatic) return option;
+  const char* env = std::getenv("HIPR_TRAVERSAL");
+  if (!env || !*env) return Traversal::Automatic;
+  const std::string value = env;
+  if (value == "ray-query") return Traversal::RayQuery;
+  if (value == "software") return Traversal::Software;
+  throw InputError("HIPR_TRAVERSAL must be ray-query or software");
+}
 
 bool has_extension(const std::vector<VkExtensionProperties>& list, const char* name) {
   return std::any_of(list.begin(), list.end(),
@@ -44,10 +56,12 @@ struct FeatureChain {
   FeatureChain() = default;
   FeatureChain(const FeatureChain&) = delete;
 
-  bool supports_all() const {
-    return rayQuery.rayQuery && accel.accelerationStructure && v12.bufferDeviceAddress &&
-           v12.scalarBlockLayout && v12.shaderBufferInt64Atomics && core.features.shaderInt64;
+  // What every kernel needs, whichever the traversal.
+  bool supports_kernels() const {
+    return v12.bufferDeviceAddress && v12.scalarBlockLayout && v12.shaderBufferInt64Atomics &&
+           core.features.shaderInt64;
   }
+  bool supports_ray_queries() const { return rayQuery.rayQuery && accel.accelerationStructure; }
 };
 
 // The queue family to use: compute, preferably with graphics (the viewer draws its UI on the
@@ -91,7 +105,7 @@ Context::Context(const ContextOptions& options) {
       m_surface = options.create_surface(m_instance);
       if (!m_surface) throw InternalError("the window system made no Vulkan surface");
     }
-    pick_physical_device(options);
+    pick_physical_device(options, requested_traversal(options.traversal));
     create_device();
   } catch (...) {
     release();  // the destructor does not run for a constructor that throws
@@ -193,42 +207,54 @@ void Context::create_instance(const ContextOptions& options) {
   }
 }
 
-void Context::pick_physical_device(const ContextOptions& options) {
+void Context::pick_physical_device(const ContextOptions& options, Traversal traversal) {
   uint32_t count = 0;
   VK_CHECK(vkEnumeratePhysicalDevices(m_instance, &count, nullptr));
   std::vector<VkPhysicalDevice> devices(count);
   VK_CHECK(vkEnumeratePhysicalDevices(m_instance, &count, devices.data()));
 
   int best_rank = -1;
-  std::string rejected;
+  std::string rejected, unnamed;
   for (VkPhysicalDevice device : devices) {
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(device, &props);
     const std::string name = props.deviceName;
-    if (!options.preferred_device.empty() && name.find(options.preferred_device) == std::string::npos)
+    if (!options.preferred_device.empty() && name.find(options.preferred_device) == std::string::npos) {
+      unnamed += (unnamed.empty() ? "" : ", ") + name;
       continue;
+    }
     const auto extensions = device_extensions(device);
     FeatureChain features;
     vkGetPhysicalDeviceFeatures2(device, &features.core);
-    const bool has_all_extensions =
-        std::all_of(std::begin(kRequiredDeviceExtensions), std::end(kRequiredDeviceExtensions),
+    const bool ray_queries =
+        std::all_of(std::begin(kRayQueryExtensions), std::end(kRayQueryExtensions),
                     [&](const char* ext) { return has_extension(extensions, ext); }) &&
-        (!m_surface || has_extension(extensions, VK_KHR_SWAPCHAIN_EXTENSION_NAME));
-    if (props.apiVersion < VK_API_VERSION_1_2 || !has_all_extensions || !features.supports_all() ||
-        pick_queue_family(device, m_surface) < 0) {
+        features.supports_ray_queries();
+    const bool usable = props.apiVersion >= VK_API_VERSION_1_2 && features.supports_kernels() &&
+                        (!m_surface || has_extension(extensions, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) &&
+                        (ray_queries || traversal != Traversal::RayQuery) && pick_queue_family(device, m_surface) >= 0;
+    if (!usable) {
       rejected += (rejected.empty() ? "" : ", ") + name;
       continue;
     }
-    const int rank = device_rank(props);
+    // The kind of device first (a GPU without ray queries beats a CPU with them), then ray queries.
+    const int rank = 2 * device_rank(props) + (ray_queries ? 1 : 0);
     if (rank > best_rank) {
       best_rank = rank;
       m_physical = device;
       m_device_name = name;
       m_is_cpu = props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+      m_software_traversal = traversal == Traversal::Software || !ray_queries;
+      m_has_ray_queries = ray_queries;
     }
   }
+  if (!m_physical && rejected.empty() && !options.preferred_device.empty())
+    throw InternalError("no Vulkan device's name contains '" + options.preferred_device + "' (found: " +
+                        (unnamed.empty() ? std::string("none") : unnamed) + ")");
   if (!m_physical) {
-    std::string message = "no Vulkan device supports acceleration structures + ray queries";
+    std::string message = traversal == Traversal::RayQuery
+                              ? "no Vulkan device supports acceleration structures + ray queries"
+                              : "no Vulkan 1.2 device has buffer device addresses, scalar layouts and 64-bit atomics";
     if (m_surface) message += " and presents to the window";
     if (!options.preferred_device.empty()) message += " matching '" + options.preferred_device + "'";
     if (!rejected.empty()) message += " (rejected: " + rejected + ")";
@@ -238,10 +264,11 @@ void Context::pick_physical_device(const ContextOptions& options) {
 
   VkPhysicalDeviceAccelerationStructurePropertiesKHR accel_props{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
-  VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &accel_props};
+  VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
+                                     m_software_traversal ? nullptr : &accel_props};
   vkGetPhysicalDeviceProperties2(m_physical, &props2);
   m_min_storage_alignment = uint32_t(props2.properties.limits.minStorageBufferOffsetAlignment);
-  m_min_scratch_alignment = accel_props.minAccelerationStructureScratchOffsetAlignment;
+  if (!m_software_traversal) m_min_scratch_alignment = accel_props.minAccelerationStructureScratchOffsetAlignment;
   const auto& groups = props2.properties.limits.maxComputeWorkGroupCount;
   m_max_dispatch[0] = options.dispatch_width_limit ? std::min(options.dispatch_width_limit, groups[0]) : groups[0];
   m_max_dispatch[1] = groups[1];
@@ -260,8 +287,12 @@ void Context::create_device() {
 
   // Enable exactly what the kernels need.
   FeatureChain enabled;
-  enabled.rayQuery.rayQuery = VK_TRUE;
-  enabled.accel.accelerationStructure = VK_TRUE;
+  if (m_software_traversal) {
+    enabled.v12.pNext = nullptr;  // no ray-query or acceleration-structure features to enable
+  } else {
+    enabled.rayQuery.rayQuery = VK_TRUE;
+    enabled.accel.accelerationStructure = VK_TRUE;
+  }
   enabled.v12.bufferDeviceAddress = VK_TRUE;
   enabled.v12.scalarBlockLayout = VK_TRUE;
   enabled.v12.shaderBufferInt64Atomics = VK_TRUE;
@@ -270,8 +301,8 @@ void Context::create_device() {
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &enabled.core};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
-  std::vector<const char*> extensions(std::begin(kRequiredDeviceExtensions),
-                                      std::end(kRequiredDeviceExtensions));
+  std::vector<const char*> extensions;
+  if (!m_software_traversal) extensions.assign(std::begin(kRayQueryExtensions), std::end(kRayQueryExtensions));
   if (m_surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   info.enabledExtensionCount = uint32_t(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
@@ -282,11 +313,13 @@ void Context::create_device() {
     pointer = reinterpret_cast<std::remove_reference_t<decltype(pointer)>>(vkGetDeviceProcAddr(m_device, name));
     if (!pointer) throw InternalError(std::string("Vulkan function missing: ") + name);
   };
-  load(m_fn.createAccelerationStructure, "vkCreateAccelerationStructureKHR");
-  load(m_fn.destroyAccelerationStructure, "vkDestroyAccelerationStructureKHR");
-  load(m_fn.getAccelerationStructureBuildSizes, "vkGetAccelerationStructureBuildSizesKHR");
-  load(m_fn.cmdBuildAccelerationStructures, "vkCmdBuildAccelerationStructuresKHR");
-  load(m_fn.getAccelerationStructureDeviceAddress, "vkGetAccelerationStructureDeviceAddressKHR");
+  if (!m_software_traversal) {
+    load(m_fn.createAccelerationStructure, "vkCreateAccelerationStructureKHR");
+    load(m_fn.destroyAccelerationStructure, "vkDestroyAccelerationStructureKHR");
+    load(m_fn.getAccelerationStructureBuildSizes, "vkGetAccelerationStructureBuildSizesKHR");
+    load(m_fn.cmdBuildAccelerationStructures, "vkCmdBuildAccelerationStructuresKHR");
+    load(m_fn.getAccelerationStructureDeviceAddress, "vkGetAccelerationStructureDeviceAddressKHR");
+  }
 
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;

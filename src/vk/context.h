@@ -1,6 +1,8 @@
 #pragma once
-// The Vulkan instance + device the renderer runs on. Picks any device with acceleration
-// structures and ray queries (lavapipe in CI, a real GPU elsewhere) and owns one queue.
+// The Vulkan instance + device the renderer runs on, and the one queue it uses. Picks the best
+// device that can run the kernels: with ray queries (lavapipe in CI, RTX GPUs) they trace
+// through the driver's acceleration structures; without (NVIDIA's data-centre GPUs, for one)
+// through hipr's own BVH (software traversal: src/render/software_bvh.h).
 #include <vulkan/vulkan.h>
 
 #include <atomic>
@@ -10,9 +12,15 @@
 
 namespace hipr::vk {
 
+// How the kernels trace rays. Automatic: ray queries where the device has them, else the
+// software traversal; the environment variable HIPR_TRAVERSAL (ray-query or software) overrides
+// it, so a whole test suite can run either way.
+enum class Traversal { Automatic, RayQuery, Software };
+
 struct ContextOptions {
   bool validation = false;  // enable VK_LAYER_KHRONOS_validation and count its errors
   std::string preferred_device;  // substring of the device name; empty = best available
+  Traversal traversal = Traversal::Automatic;
   // Presentation (the viewer). The window system's instance extensions, and a function that
   // makes the window's surface once the instance exists (the Context then owns the surface).
   // With a surface, only devices whose queue can present to it qualify, and the device gets
@@ -48,6 +56,12 @@ class Context {
   const DeviceFunctions& fn() const { return m_fn; }
   const std::string& device_name() const { return m_device_name; }
   bool is_cpu_device() const { return m_is_cpu; }
+  // The kernels trace hipr's BVH instead of ray queries (HIPR_SOFTWARE_TRAVERSAL=1 in every
+  // kernel; GpuScene builds the BVH instead of acceleration structures).
+  bool software_traversal() const { return m_software_traversal; }
+  // Whether the device could trace with ray queries (whichever traversal was chosen).
+  bool has_ray_queries() const { return m_has_ray_queries; }
+  const char* traversal_name() const { return m_software_traversal ? "software" : "ray-query"; }
   uint32_t min_storage_alignment() const { return m_min_storage_alignment; }
   uint32_t min_scratch_alignment() const { return m_min_scratch_alignment; }
   // maxComputeWorkGroupCount[0] and [1]: ComputePipeline::dispatch folds wider dispatches.
@@ -63,7 +77,7 @@ class Context {
 
  private:
   void create_instance(const ContextOptions& options);
-  void pick_physical_device(const ContextOptions& options);
+  void pick_physical_device(const ContextOptions& options, Traversal traversal);
   void create_device();
   void release();
 
@@ -83,6 +97,8 @@ class Context {
   DeviceFunctions m_fn;
   std::string m_device_name;
   bool m_is_cpu = false;
+  bool m_software_traversal = false;
+  bool m_has_ray_queries = false;
   uint32_t m_min_storage_alignment = 16;
   uint32_t m_max_dispatch[2] = {65535, 65535};  // the minimum every device supports
   uint32_t m_min_scratch_alignment = 128;

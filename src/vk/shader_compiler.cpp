@@ -17,13 +17,14 @@
 #include "core/hash.h"
 #include "core/log.h"
 #include "vk/embedded_shaders.h"
+#include "vk/spirv_no_contraction.h"
 
 namespace hipr::vk {
 namespace fs = std::filesystem;
 namespace {
 
 // Bump when the compile options change, so old cache entries are ignored.
-constexpr const char* kCompilerConfig = "glslang-vk1.2-spv1.5-O-v1";
+constexpr const char* kCompilerConfig = "glslang-vk1.2-spv1.5-O-nocontraction-v2";
 
 const std::map<std::string, std::string_view>& shader_sources() {
   static const auto sources = [] {
@@ -136,6 +137,7 @@ std::vector<uint32_t> compile(const std::string& entry, const std::string& pream
   options.optimizeSize = false;
   options.validate = false;
   glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &options);
+  forbid_contraction(spirv);  // the same rounding in every variant of a kernel, on every driver
   return spirv;
 }
 

@@ -11,7 +11,7 @@ namespace hipr::abi {
 #endif
 
 HIPR_CONST uint kSceneSet = 1u;
-HIPR_CONST uint kSceneTlas = 0u;
+HIPR_CONST uint kSceneTlas = 0u;         // ray queries: the TLAS (software traversal: unbound)
 HIPR_CONST uint kScenePositions = 1u;     // vec3 per vertex, object space
 HIPR_CONST uint kSceneNormals = 2u;       // vec3 per vertex
 HIPR_CONST uint kSceneTangents = 3u;      // vec4 per vertex (w = handedness)
@@ -26,6 +26,11 @@ HIPR_CONST uint kSceneLightCdf = 11u;     // float, lightCount + 1 entries
 HIPR_CONST uint kSceneEnvironment = 12u;  // RGB texels, then marginal and conditional CDFs (floats)
 HIPR_CONST uint kSceneBsdfTables = 13u;   // float: generated BSDF tables (bsdf/ggx_energy_table.glsl)
 HIPR_CONST uint kSceneFrame = 14u;        // FrameParams: camera, image and tiles, HiPR weights
+// Software traversal only (devices without ray queries; shaders/common/bvh_traversal.glsl):
+HIPR_CONST uint kSceneBlasNodes = 15u;      // BvhNode: every mesh's BVH, object space
+HIPR_CONST uint kSceneBlasTriangles = 16u;  // BvhTriangle: their leaves' triangles
+HIPR_CONST uint kSceneTlasNodes = 17u;      // BvhNode: the BVH over visible instances, world space
+HIPR_CONST uint kSceneTlasInstances = 18u;  // BvhInstance: its leaves' instances
 
 #ifdef __cplusplus
 }  // namespace hipr::abi

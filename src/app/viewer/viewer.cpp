@@ -103,7 +103,7 @@ class Viewer {
                  ":\ncompiling the path tracer (the first start with a scene can take a minute or "
                  "two on a CPU)");
     m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
-    log::info("viewer on " + m_ctx.device_name() + ", present mode " +
+    log::info("viewer on " + m_ctx.device_name() + " (" + m_ctx.traversal_name() + " traversal), present mode " +
               std::to_string(int(m_swapchain.present_mode())));
   }
 
@@ -408,6 +408,7 @@ void Viewer::write_stats(double seconds) const {
                      {"work_at_first_change", r.work_at_first_change}});
   const RenderSettings& s = m_options.common.render;
   const nlohmann::json stats = {{"device", m_ctx.device_name()},
+                                {"traversal", m_ctx.traversal_name()},
                                 {"width", s.width},
                                 {"height", s.height},
                                 {"policy", policy_name(m_session->settings().policy)},
