@@ -3,7 +3,8 @@
 // nearest rendered pixel of the displayed image (placed and scaled by the push constants),
 // tone-maps it exactly as tonemap_srgb8 does (exposure, clamp, sRGB curve, 8 bits) and blends
 // the overlay on top in display space; pixels outside the image get the background colour.
-// Reads: the displayed radiance, the overlay. Writes: one RGBA8 word per window pixel.
+// Reads: the display (DisplayTexel.shown, where the resolve wrote it: no copy through the host),
+// the overlay. Writes: one RGBA8 word per window pixel.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -13,7 +14,7 @@ layout(local_size_x = 64) in;
 #include "shared/bindings/display.h"
 #include "common/dispatch.glsl"
 
-layout(scalar, binding = kDisplayRadiance) readonly buffer Radiance { vec3 b_radiance[]; };
+layout(scalar, binding = kDisplayTexels) readonly buffer Display { DisplayTexel b_display[]; };
 layout(scalar, binding = kDisplayOverlay) readonly buffer Overlay { uint b_overlay[]; };
 layout(scalar, binding = kDisplayOutput) writeonly buffer Output { uint b_output[]; };
 layout(push_constant, scalar) uniform Push { DisplayPush u_push; };
@@ -37,7 +38,7 @@ void main() {
     return;
   }
   const uint pixel = uint(source.y) * u_push.sourceWidth + uint(source.x);
-  const vec3 radiance = b_radiance[pixel] * u_push.exposureScale;
+  const vec3 radiance = b_display[pixel].shown * u_push.exposureScale;
   uvec3 rgb = uvec3(display_byte(display_srgb_encode(radiance.r)),
                     display_byte(display_srgb_encode(radiance.g)),
                     display_byte(display_srgb_encode(radiance.b)));

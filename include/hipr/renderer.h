@@ -19,6 +19,7 @@
 
 namespace hipr {
 namespace vk {
+class Buffer;
 class Context;
 }
 
@@ -134,6 +135,10 @@ class Renderer final : public ProgressiveRenderer {
   void resolve_display_all(DisplayRule rule) override;
   void capture_stale_display() override;
   ImageRGB displayed_image() const override;
+  // The display on the device (abi::DisplayTexel per pixel, `shown` is what the screen shows):
+  // what the viewer's display pass reads, with no copy through the host. Lives as long as the
+  // renderer.
+  const vk::Buffer& display_texels() const;
   bool relight(const std::vector<EmitterScale>& scales) override;
   RenderSnapshot snapshot() const;
   void restore(const RenderSnapshot& snapshot);

@@ -18,21 +18,31 @@ DisplayPass::DisplayPass(const vk::Context& ctx, uint32_t width, uint32_t height
     : m_ctx(ctx),
       m_width(width),
       m_height(height),
-      m_radiance(storage(ctx, size_t(width) * height * 3 * sizeof(float))),
+      m_texels(storage(ctx, size_t(width) * height * sizeof(abi::DisplayTexel))),
       m_overlay(storage(ctx, size_t(width) * height * 4)),
       // The output follows the window's size: bound when record() makes it.
       m_pipeline(ctx, "display.comp", {},
-                 {{abi::kDisplayRadiance, &m_radiance}, {abi::kDisplayOverlay, &m_overlay}, {abi::kDisplayOutput, nullptr}},
+                 {{abi::kDisplayTexels, &m_texels}, {abi::kDisplayOverlay, &m_overlay}, {abi::kDisplayOutput, nullptr}},
                  sizeof(abi::DisplayPush)) {
-  m_radiance.clear();
+  m_texels.clear();
   m_overlay.clear();
+}
+
+void DisplayPass::show(const vk::Buffer& display_texels) {
+  if (display_texels.size() < size_t(m_width) * m_height * sizeof(abi::DisplayTexel))
+    throw InternalError("the display buffer is smaller than the rendered size");
+  m_pipeline.bind_buffer(abi::kDisplayTexels, display_texels);
 }
 
 void DisplayPass::set_image(const ImageRGB& image) {
   if (image.width != m_width || image.height != m_height ||
       image.rgb.size() != size_t(m_width) * m_height * 3)
     throw InternalError("the displayed image does not have the rendered size");
-  m_radiance.upload(image.rgb.data(), image.rgb.size() * sizeof(float));
+  std::vector<abi::DisplayTexel> texels(size_t(m_width) * m_height, abi::DisplayTexel{});
+  for (size_t i = 0; i < texels.size(); ++i)
+    texels[i].shown = glm::vec3(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]);
+  m_texels.upload(texels.data(), texels.size() * sizeof(abi::DisplayTexel));
+  m_pipeline.bind_buffer(abi::kDisplayTexels, m_texels);
 }
 
 void DisplayPass::set_overlay(const std::vector<uint32_t>& rgba8) {
@@ -59,6 +69,9 @@ void DisplayPass::record(VkCommandBuffer cmd, const DisplayView& view) {
   push.exposureScale = std::exp2(view.exposure_ev);
   push.background = view.background;
   push.overlayEnabled = view.overlay ? 1u : 0u;
+  // The display and the overlay were written by earlier submissions (kernels, uploads).
+  vk::transfer_to_compute_barrier(cmd);
+  vk::compute_to_compute_barrier(cmd);
   m_pipeline.dispatch(cmd, &push,
                       uint32_t((pixels + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize));
 }

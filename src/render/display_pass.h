@@ -2,7 +2,8 @@
 // The viewer's display pass (shaders/display.comp): the displayed radiance, tone-mapped as
 // tonemap_srgb8 does, with an overlay blended on top, becomes the RGBA8 pixels of the window.
 // It runs on the GPU so the window can be larger than the render (letterbox, nearest texel)
-// without a CPU pass over every window pixel.
+// without a CPU pass over every window pixel, and it reads the renderer's display buffer where
+// the resolve wrote it (show()): no image crosses to the host and back per frame.
 #include <cstdint>
 #include <vector>
 
@@ -30,7 +31,11 @@ class DisplayPass {
   // `width` x `height`: the rendered image's size.
   DisplayPass(const vk::Context& ctx, uint32_t width, uint32_t height);
 
-  // The displayed radiance (linear RGB, the rendered size).
+  // Shows a renderer's display (abi::DisplayTexel per rendered pixel, Renderer::display_texels):
+  // read at every record(), so what the resolve writes later shows without another call. The
+  // buffer must outlive its use here (the viewer shows its session's renderer).
+  void show(const vk::Buffer& display_texels);
+  // Shows an image instead (linear RGB, the rendered size; uploaded once: tests, screenshots).
   void set_image(const ImageRGB& image);
   // One RGBA8 word per rendered pixel: sRGB-encoded colour, alpha = how much it covers.
   void set_overlay(const std::vector<uint32_t>& rgba8);
@@ -46,7 +51,7 @@ class DisplayPass {
  private:
   const vk::Context& m_ctx;
   uint32_t m_width, m_height;
-  vk::Buffer m_radiance, m_overlay, m_output;
+  vk::Buffer m_texels, m_overlay, m_output;  // m_texels: set_image's, when no display is shown
   vk::ComputePipeline m_pipeline;
 };
 

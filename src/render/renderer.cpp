@@ -239,6 +239,8 @@ void Renderer::capture_stale_display() {
 
 ImageRGB Renderer::displayed_image() const { return m->resolve.displayed_image(); }
 
+const vk::Buffer& Renderer::display_texels() const { return m->resolve.display; }
+
 RenderSnapshot Renderer::snapshot() const {
   std::vector<uint8_t> groups = bytes_of<glm::vec3>(m->film.group_sums);
   const std::vector<uint8_t> stale_groups = bytes_of<glm::vec3>(m->relight.stale_groups);

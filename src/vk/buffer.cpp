@@ -1,5 +1,6 @@
 #include "vk/buffer.h"
 
+#include <atomic>
 #include <cstring>
 #include <utility>
 
@@ -8,6 +9,8 @@
 
 namespace hipr::vk {
 namespace {
+
+std::atomic<uint64_t> g_transferred{0};  // host_transfer_bytes()
 
 uint32_t find_memory_type(const Context& ctx, uint32_t allowed, VkMemoryPropertyFlags wanted,
                           VkMemoryPropertyFlags fallback) {
@@ -97,6 +100,7 @@ void Buffer::release() {
 void Buffer::upload(const void* data, VkDeviceSize size, VkDeviceSize offset) {
   if (size == 0) return;
   if (offset + size > m_size) throw InternalError("buffer upload out of range");
+  g_transferred.fetch_add(size, std::memory_order_relaxed);
   if (m_mapped) {
     std::memcpy(static_cast<char*>(m_mapped) + offset, data, size);
     return;
@@ -112,6 +116,7 @@ void Buffer::upload(const void* data, VkDeviceSize size, VkDeviceSize offset) {
 void Buffer::download(void* data, VkDeviceSize size, VkDeviceSize offset) const {
   if (size == 0) return;
   if (offset + size > m_size) throw InternalError("buffer download out of range");
+  g_transferred.fetch_add(size, std::memory_order_relaxed);
   if (m_mapped) {
     std::memcpy(data, static_cast<const char*>(m_mapped) + offset, size);
     return;
@@ -128,5 +133,7 @@ void Buffer::clear() {
   m_ctx->submit_and_wait(
       [&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, m_buffer, 0, VK_WHOLE_SIZE, 0); });
 }
+
+uint64_t host_transfer_bytes() { return g_transferred.load(std::memory_order_relaxed); }
 
 }  // namespace hipr::vk

@@ -59,6 +59,11 @@ class Buffer {
   void* m_mapped = nullptr;
 };
 
+// Bytes copied between host and device by every Buffer's upload() and download() since the
+// process started: the one place such copies happen, so counting here counts them all (the
+// viewer reports them per frame).
+uint64_t host_transfer_bytes();
+
 // Creates a storage buffer holding `values` (at least one element's worth of bytes).
 template <typename T>
 Buffer make_storage_buffer(const Context& ctx, const std::vector<T>& values,

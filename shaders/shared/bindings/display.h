@@ -10,7 +10,7 @@
 namespace hipr::abi {
 #endif
 
-HIPR_CONST uint kDisplayRadiance = 0u;  // float RGB per rendered pixel (the displayed image)
+HIPR_CONST uint kDisplayTexels = 0u;    // DisplayTexel per rendered pixel (the resolve's display; `shown`)
 HIPR_CONST uint kDisplayOverlay = 1u;   // uint RGBA8 per rendered pixel (sRGB, A = coverage)
 HIPR_CONST uint kDisplayOutput = 2u;    // uint RGBA8 per window pixel (what the window shows)
 

@@ -52,8 +52,8 @@ int run_view(ViewCommandOptions& o) {
   if (v.script_every < 1) throw InputError("--script-every must be at least 1");
   if (v.visit_spp < 1 || v.visit_spp > v.common.spp)
     throw InputError("--visit-spp must be between 1 and --spp");
-  if (!(v.frame_budget_ms > 0.0) || v.frame_budget_ms > 10000.0)
-    throw InputError("--frame-budget-ms must be in (0, 10000]");
+  if (!(v.frame_budget_ms >= 0.0) || v.frame_budget_ms > 10000.0)
+    throw InputError("--frame-budget-ms must be between 0 (adapt) and 10000");
   if (!std::isfinite(v.exposure_ev)) throw InputError("--exposure must be finite");
   if (!v.screenshot.empty()) viewer::check_screenshot_path(v.screenshot);
   if (!v.save.empty()) {
@@ -123,7 +123,8 @@ Command add_view_command(CLI::App& app) {
                   "How re-rendered tiles are shown: immediate, switch, blend or difference (default: "
                   "difference for hipr, immediate for the others)");
   cmd->add_option("--frame-budget-ms", v.frame_budget_ms,
-                  "Time spent on scheduling steps per frame")
+                  "Time spent on scheduling steps per frame; 0 adapts it to the device, aiming at 60 fps "
+                  "(at least one step a frame)")
       ->capture_default_str();
   cmd->add_option("--steps-per-frame", v.steps_per_frame,
                   "Exactly N scheduling steps per frame instead of a time budget");

@@ -177,10 +177,15 @@ void display_section(ViewerState& state) {
   state.overlay = Overlay(overlay);
   ImGui::SliderFloat("exposure (EV)", &state.exposure_ev, -20.0f, 20.0f, "%.1f");
   ImGui::Checkbox("status line", &state.show_status);
-  float budget = float(state.frame_budget_ms);
-  if (ImGui::SliderFloat("render ms/frame", &budget, 2.0f, 250.0f, "%.0f",
-                         ImGuiSliderFlags_Logarithmic))
-    state.frame_budget_ms = budget;
+  bool adapt = state.frame_budget_ms <= 0.0;
+  if (ImGui::Checkbox("adapt render time (60 fps)", &adapt)) state.frame_budget_ms = adapt ? 0.0 : 30.0;
+  if (adapt) {
+    ImGui::Text("render %.1f ms/frame", state.adaptive_budget_ms);
+  } else {
+    float budget = float(state.frame_budget_ms);
+    if (ImGui::SliderFloat("render ms/frame", &budget, 2.0f, 250.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
+      state.frame_budget_ms = budget;
+  }
 }
 
 }  // namespace

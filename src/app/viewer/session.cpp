@@ -47,10 +47,15 @@ void Session::rebuild() {
   render.compile_kernels_early = true;
   auto renderer = std::make_unique<Renderer>(m_ctx, m_scene, render);
   auto scheduler = make_scheduler(*renderer, m_settings.policy);
+  // A frame in flight may still read the old renderer's display buffer (the viewer's display
+  // pass shows it in place).
+  if (m_renderer) vkDeviceWaitIdle(m_ctx.device());
   m_scheduler.reset();  // it refers to the renderer
   m_renderer = std::move(renderer);
+  static uint64_t next_renderer_id = 0;
+  m_renderer_id = ++next_renderer_id;
   m_scheduler = std::move(scheduler);
-  m_dirty_display = true;
+  display_changed();
   m_ids_stale = true;
   m_gbuffer_stale = false;  // a new renderer's G-buffer is made from the scene as it is now
   m_since_edit = Timer();
@@ -58,12 +63,12 @@ void Session::rebuild() {
 }
 
 void Session::changed(const std::function<void(Scene&)>& change, const std::string& what) {
-  std::optional<ImageRGB> shown = displayed();
   const Timer started;  // the latency includes on_edit itself (GPU update, stage 1)
   if (EditPipeline(m_scene, *m_scheduler).apply(change).empty()) return;  // e.g. a slider released where it started
-  m_shown_at_edit = std::move(shown);
+  m_awaiting_change = true;
+  m_steps_since_edit = 0;
   m_since_edit = started;
-  m_dirty_display = true;
+  display_changed();
   m_ids_stale = true;
   // HiPR's on_edit runs stage 1, which renders the G-buffer of the edited scene; the other
   // policies leave it as it was (scheduler.h).
@@ -113,7 +118,8 @@ uint32_t Session::render(double budget_seconds, uint32_t max_steps) {
   while (steps < max_steps && !converged()) {
     m_scheduler->step();
     ++steps;
-    m_dirty_display = true;
+    ++m_steps_since_edit;
+    display_changed();
     if (timer.seconds() >= budget_seconds) break;
   }
   return steps;
@@ -127,20 +133,21 @@ double Session::samples_per_second() const {
 }
 
 const ImageRGB& Session::displayed() {
-  if (m_dirty_display) {
+  if (m_displayed_version != m_display_version) {
     m_displayed = m_scheduler->displayed_image();
-    m_dirty_display = false;
-    ++m_display_version;
+    m_displayed_version = m_display_version;
   }
   return m_displayed;
 }
 
 void Session::on_presented() {
-  if (!m_shown_at_edit || m_records.empty()) return;
-  if (m_displayed.rgb == m_shown_at_edit->rgb) return;
+  // The first step after an edit resolves the tiles it rendered to the display (HiPR: the most
+  // changed ones): the frame presented after it is the first to show the change. Judged without
+  // reading the image back, so presenting costs no host transfer.
+  if (!m_awaiting_change || m_records.empty() || m_steps_since_edit == 0) return;
   m_records.back().latency_seconds = m_since_edit.seconds();
   m_records.back().work_at_first_change = m_scheduler->work_since_edit();
-  m_shown_at_edit.reset();
+  m_awaiting_change = false;
 }
 
 void Session::ensure_gbuffer() {
@@ -179,7 +186,7 @@ void Session::update_focus() {
   focus.seeds.insert(focus.seeds.end(), m_view_focus.seeds.begin(), m_view_focus.seeds.end());
   if (focus == m_scheduler->focus()) return;
   m_scheduler->set_focus(focus);
-  m_dirty_display = true;
+  display_changed();
 }
 
 void Session::set_policy(Policy policy) {
@@ -190,7 +197,7 @@ void Session::set_policy(Policy policy) {
   // A HiPR scheduler starts with stage 1 of the scene as it is now.
   if (policy == Policy::Hipr) m_gbuffer_stale = false;
   m_ids_stale = true;
-  m_dirty_display = true;
+  display_changed();
 }
 
 void Session::set_display_rule(std::optional<DisplayRule> rule) {

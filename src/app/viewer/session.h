@@ -35,7 +35,7 @@ struct SessionSettings {
 // How one change reached the screen: the feedback latency of the measurements.
 struct EditRecord {
   std::string what;
-  double latency_seconds = -1.0;      // edit -> first presented frame that differs; -1: none yet
+  double latency_seconds = -1.0;      // edit -> first frame presented after a step; -1: none yet
   double work_at_first_change = 0.0;  // in full-frame 1-spp passes
 };
 
@@ -53,6 +53,8 @@ class Session {
   float radius() const;
   const SessionSettings& settings() const { return m_settings; }
   const Renderer& renderer() const { return *m_renderer; }
+  // Changes whenever the renderer is replaced (a new session's too): its display buffer is another.
+  uint64_t renderer_id() const { return m_renderer_id; }
   const Scheduler& scheduler() const { return *m_scheduler; }
   const EditHistory& history() const { return m_history; }
 
@@ -82,12 +84,14 @@ class Session {
   // Samples per second since the last edit (0 before any sample).
   double samples_per_second() const;
 
-  // What the scheduler says is displayed (read back only when steps ran since the last call).
+  // What the scheduler says is displayed, read back from the device (only when something ran
+  // since the last call): screenshots and tests. The viewer's frames show the renderer's display
+  // buffer directly (Renderer::display_texels).
   const ImageRGB& displayed();
-  // Increments whenever displayed() may return something new.
+  // Increments whenever the display may have changed (steps, edits, a new renderer).
   uint64_t display_version() const { return m_display_version; }
-  // Call after a frame showing displayed() was presented: completes the latency of the last
-  // change when this frame is the first to show it.
+  // Call after a frame was presented: completes the latency of the last change when this frame
+  // is the first to show it (the first after a step since the edit).
   void on_presented();
   const std::vector<EditRecord>& edit_records() const { return m_records; }
 
@@ -124,12 +128,15 @@ class Session {
   Scene m_scene;
   EditHistory m_history;
   std::unique_ptr<Renderer> m_renderer;
+  uint64_t m_renderer_id = 0;
   std::unique_ptr<Scheduler> m_scheduler;
   Timer m_since_edit;
-  bool m_dirty_display = true;
+  void display_changed() { ++m_display_version; }
   uint64_t m_display_version = 0;
+  uint64_t m_displayed_version = UINT64_MAX;  // the version m_displayed was read at
   ImageRGB m_displayed;
-  std::optional<ImageRGB> m_shown_at_edit;  // what the screen showed when the pending change came
+  bool m_awaiting_change = false;  // the last change has not been presented yet
+  uint32_t m_steps_since_edit = 0;
   std::vector<EditRecord> m_records;
   bool m_ids_stale = true;
   bool m_gbuffer_stale = false;  // edits since stage 1 last ran (policies without stage 1)

@@ -24,6 +24,7 @@
 #include "hipr/scene_writer.h"
 #include "image/builtin_environments.h"
 #include "render/display_pass.h"
+#include "vk/buffer.h"
 #include "vk/image.h"
 #include "vk/swapchain.h"
 #include "vk/ui_pass.h"
@@ -152,9 +153,14 @@ class Viewer {
   size_t m_script_next = 0;
   uint64_t m_frames = 0;
   uint64_t m_steps = 0;
-  // The displayed image last uploaded to the display pass: which session, which version.
-  const Session* m_uploaded_session = nullptr;
-  uint64_t m_uploaded_version = UINT64_MAX;
+  // The renderer whose display buffer the display pass reads (a new session or settings that
+  // rebuild the renderer bring another).
+  uint64_t m_shown_renderer = 0;  // Session::renderer_id()
+  double m_render_ms = 0.0;          // the last frame's scheduling steps
+  double m_frame_overhead_ms = 0.0;  // a frame's other work, smoothed (the adaptive budget)
+  // Frames that ran steps, and the bytes copied between host and device during them.
+  uint64_t m_rendering_frames = 0;
+  uint64_t m_rendering_transfer_bytes = 0;
   // What the current overlay was made from, to rebuild it only when that changes.
   struct OverlayKey {
     Overlay overlay = Overlay::None;
@@ -261,6 +267,7 @@ void Viewer::open_scene() {
     Scene scene = load_scene(path, m_options.common.load);
     SessionSettings settings = m_session->settings();
     auto session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
+    vkDeviceWaitIdle(m_ctx.device());  // a frame in flight may read the old renderer's display
     m_session = std::move(session);
     m_state.selected_node = -1;
     m_state.emitters.clear();
@@ -331,10 +338,22 @@ void Viewer::take_setting_request(std::optional<T>& request, const char* what, A
 }
 
 void Viewer::render_steps() {
-  if (m_state.steps_per_frame > 0)
+  const Timer timer;
+  if (m_state.steps_per_frame > 0) {
     m_state.steps_last_frame = m_session->render(1e30, m_state.steps_per_frame);
-  else
+  } else if (m_state.frame_budget_ms > 0.0) {
     m_state.steps_last_frame = m_session->render(m_state.frame_budget_ms * 1e-3);
+  } else {
+    // What a 60 fps frame leaves after the rest of the frame, as the last frames measured it: a
+    // GPU that renders a step in 2 ms fits several. Where the rest alone takes longer than a
+    // 60 fps frame (lavapipe: UI and presentation on the CPU), rendering gets as long as the rest,
+    // up to the fixed default, so it keeps at least half of each frame (render() runs one step
+    // whatever the budget).
+    constexpr double kFrameMs = 1000.0 / 60.0, kSlowDeviceMs = 30.0;
+    m_state.adaptive_budget_ms = std::max(kFrameMs - m_frame_overhead_ms, std::min(m_frame_overhead_ms, kSlowDeviceMs));
+    m_state.steps_last_frame = m_session->render(m_state.adaptive_budget_ms * 1e-3);
+  }
+  m_render_ms = timer.seconds() * 1e3;
 }
 
 void Viewer::update_overlay() {
@@ -378,12 +397,11 @@ bool Viewer::present(const ViewLayout& layout) {
     resize(m_window.framebuffer_size());
     return false;
   }
-  // The previous frame is done (begin_frame waited): its inputs may change now.
-  const ImageRGB& shown = m_session->displayed();
-  if (m_session.get() != m_uploaded_session || m_session->display_version() != m_uploaded_version) {
-    m_display.set_image(shown);
-    m_uploaded_session = m_session.get();
-    m_uploaded_version = m_session->display_version();
+  // The previous frame is done (begin_frame waited): its inputs may change now. The display
+  // pass reads the renderer's display buffer itself; only a new renderer needs telling.
+  if (m_session->renderer_id() != m_shown_renderer) {
+    m_display.show(m_session->renderer().display_texels());
+    m_shown_renderer = m_session->renderer_id();
   }
   update_overlay();
   DisplayView view;
@@ -417,6 +435,8 @@ void Viewer::write_stats(double seconds) const {
                                 {"seconds", seconds},
                                 {"fps", seconds > 0.0 ? double(m_frames) / seconds : 0.0},
                                 {"steps", m_steps},
+                                {"host_transfer_bytes_per_frame",
+                                 m_rendering_frames ? double(m_rendering_transfer_bytes) / m_rendering_frames : 0.0},
                                 {"edits", edits}};
   write_text_atomically(m_options.stats_json, stats.dump(2) + "\n");
 }
@@ -426,6 +446,7 @@ int Viewer::run() {
   Timer frame_timer;
   uint32_t frame_index = 0;
   while (!m_window.should_close()) {
+    const uint64_t transferred_at_frame_start = vk::host_transfer_bytes();
     const bool scripted =
         m_options.exit_after_frames > 0 || m_script_next < m_options.script.size();
     // Nothing to render and nobody in a hurry: sleep until an event instead of spinning.
@@ -453,8 +474,9 @@ int Viewer::run() {
     follow_environment(m_session->scene(), m_state);
     render_steps();
     m_steps += m_state.steps_last_frame;
-    if (m_state.show_status && m_spp_timer.seconds() > 0.25) {
-      // The mean over pixels of the samples they hold, a few times a second (a read-back).
+    if (m_state.show_ui && m_state.show_status && m_spp_timer.seconds() > 1.0) {
+      // The mean over pixels of the samples they hold, once a second and only while the status
+      // line shows it: a read-back of every pixel's accumulation, the one image-sized copy left.
       const std::vector<uint32_t> counts = m_session->renderer().sample_counts();
       double sum = 0.0;
       for (uint32_t c : counts) sum += c;
@@ -467,6 +489,14 @@ int Viewer::run() {
     if (m_first_frame_seconds < 0.0) m_first_frame_seconds = m_started.seconds();
     const double frame_seconds = frame_timer.seconds();
     frame_timer = Timer();
+    // The frame's work besides rendering (UI, display pass, presentation): what the adaptive
+    // budget leaves room for.
+    const double overhead_ms = std::max(frame_seconds * 1e3 - m_render_ms, 0.0);
+    m_frame_overhead_ms = m_frame_overhead_ms > 0.0 ? 0.8 * m_frame_overhead_ms + 0.2 * overhead_ms : overhead_ms;
+    if (m_state.steps_last_frame > 0) {  // re-rendering: what crossed between host and device
+      m_rendering_frames += 1;
+      m_rendering_transfer_bytes += vk::host_transfer_bytes() - transferred_at_frame_start;
+    }
     m_state.fps = m_state.fps > 0.0 ? 0.9 * m_state.fps + 0.1 / frame_seconds : 1.0 / frame_seconds;
     if (m_state.request_screenshot) {
       m_state.request_screenshot = false;

@@ -29,7 +29,7 @@ struct ViewerOptions {
   bool reproject = true;
   std::optional<DisplayRule> display_rule;  // none: the policy's default
   uint32_t steps_per_frame = 0;  // > 0: exactly this many steps per frame (reproducible scripts)
-  double frame_budget_ms = 30.0;
+  double frame_budget_ms = 0.0;  // 0: adapt (ViewerState::frame_budget_ms)
   float exposure_ev = 0.0f;
   bool show_ui = true;
   std::filesystem::path stats_json;  // fps and per-edit latency, written at exit

@@ -31,7 +31,11 @@ struct ViewerState {
   bool focus_selection = true;
   bool focus_cursor = false;
   float focus_radius = 32.0f;  // rendered pixels
-  double frame_budget_ms = 30.0;  // time spent on scheduling steps per frame
+  // Time spent on scheduling steps per frame; 0 adapts it: what a 60 fps frame leaves after the
+  // frame's other work (UI, presentation), measured; on a device too slow for 60 fps, as long as
+  // that other work, up to 30 ms (at least one step a frame, whatever it costs).
+  double frame_budget_ms = 0.0;
+  double adaptive_budget_ms = 0.0;  // the budget the last frame used when adapting (shown in the panel)
   uint32_t steps_per_frame = 0;   // > 0: a fixed number of steps instead (scripts, tests)
 
   std::string open_path, save_path, screenshot_path;
