@@ -75,6 +75,18 @@ bool bvh_triangle_hit(BvhTriangle tri, BvhShearedRay ray, float tMax, out float 
   return t < tMax;
 }
 
+// An interior node's children at `left` and `left + 1`, entered at the given distances (-1:
+// missed): the one to visit next (kInvalidIndex: neither), the other pushed when it is hit too.
+// Nearer first, so the closest hit found early prunes the farther subtree.
+uint bvh_nearer_child(uint left, float leftT, float rightT, inout uint stack[kBvhStackSize], inout uint depth) {
+  if (leftT < 0.0 && rightT < 0.0) return kInvalidIndex;
+  if (rightT < 0.0) return left;
+  if (leftT < 0.0) return left + 1u;
+  const bool leftFirst = leftT <= rightT;
+  stack[depth++] = leftFirst ? left + 1u : left;
+  return leftFirst ? left : left + 1u;
+}
+
 vec3 bvh_transform(vec4 rows[3], vec4 v) { return vec3(dot(rows[0], v), dot(rows[1], v), dot(rows[2], v)); }
 
 mat4x3 bvh_matrix(vec4 rows[3]) {
@@ -118,19 +130,11 @@ bool bvh_trace_instance(BvhInstance instance, vec3 origin, vec3 direction, bool 
         if (anyHit) return true;
       }
     } else {
-      const float nearT = bvh_box_entry(b_blas_nodes[node.first], localOrigin, inverseDirection, closest);
-      const float farT = bvh_box_entry(b_blas_nodes[node.first + 1u], localOrigin, inverseDirection, closest);
-      uint first = node.first, second = node.first + 1u;
-      float firstT = nearT, secondT = farT;
-      if (secondT >= 0.0 && (firstT < 0.0 || secondT < firstT)) {
-        first = node.first + 1u;
-        second = node.first;
-        firstT = farT;
-        secondT = nearT;
-      }
-      if (firstT >= 0.0) {
-        if (secondT >= 0.0) stack[depth++] = second;
-        nodeIndex = first;
+      const uint next = bvh_nearer_child(
+          node.first, bvh_box_entry(b_blas_nodes[node.first], localOrigin, inverseDirection, closest),
+          bvh_box_entry(b_blas_nodes[node.first + 1u], localOrigin, inverseDirection, closest), stack, depth);
+      if (next != kInvalidIndex) {
+        nodeIndex = next;
         continue;
       }
     }
@@ -160,19 +164,11 @@ bool bvh_trace(vec3 origin, vec3 direction, float tMax, bool anyHit, out RayHit 
         if (anyHit) return true;
       }
     } else {
-      const float nearT = bvh_box_entry(b_tlas_nodes[node.first], origin, inverseDirection, closest);
-      const float farT = bvh_box_entry(b_tlas_nodes[node.first + 1u], origin, inverseDirection, closest);
-      uint first = node.first, second = node.first + 1u;
-      float firstT = nearT, secondT = farT;
-      if (secondT >= 0.0 && (firstT < 0.0 || secondT < firstT)) {
-        first = node.first + 1u;
-        second = node.first;
-        firstT = farT;
-        secondT = nearT;
-      }
-      if (firstT >= 0.0) {
-        if (secondT >= 0.0) stack[depth++] = second;
-        nodeIndex = first;
+      const uint next = bvh_nearer_child(node.first, bvh_box_entry(b_tlas_nodes[node.first], origin, inverseDirection, closest),
+                                         bvh_box_entry(b_tlas_nodes[node.first + 1u], origin, inverseDirection, closest),
+                                         stack, depth);
+      if (next != kInvalidIndex) {
+        nodeIndex = next;
         continue;
       }
     }
