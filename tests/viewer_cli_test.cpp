@@ -150,22 +150,26 @@ TEST_F(ViewerWindow, AScriptedRecolourIsVisible) {
 
 // The object-id view of a moved block is exactly the G-buffer of the moved scene: the edit
 // reached the renderer and the overlay shows its ids, one flat colour per object.
-// The display pass reads the renderer's display where the resolve wrote it: while the viewer
+// The display pass reads the renderer's display where the resolve wrote it, and the overlays
+// are made on the GPU from the renderer's buffers: while the viewer
 // re-renders an edit, no image crosses between host and device, only a few hundred bytes per
 // frame (the sample counters the convergence test reads, frame parameters, the edit's material
 // block), less than one row of the accumulation (128 x 28 bytes; the image is 128 x 128 x 12).
 TEST_F(ViewerWindow, NoImageCrossesTheHostWhileReRendering) {
-  const fs::path stats = s_dir / "transfer_stats.json";
-  const test::CommandResult result = run_in_xvfb(view_arguments(
-      "--exit-after-frames 8 --stats-json " + quoted(stats) + " --script " + quoted(script("recolour.json", kRecolour))));
-  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
-  std::ifstream in(stats);
-  const nlohmann::json json = nlohmann::json::parse(in);
-  ASSERT_TRUE(json.contains("host_transfer_bytes_per_frame")) << json.dump();
-  EXPECT_LT(json["host_transfer_bytes_per_frame"].get<double>(), 2048.0) << json.dump();
-  EXPECT_GT(json["steps"].get<double>(), 0.0);
-  ASSERT_EQ(json["edits"].size(), 1u);
-  EXPECT_GE(json["edits"][0]["latency_seconds"].get<double>(), 0.0) << "the recolour was shown";
+  for (const std::string overlay : {"none", "weights", "owed", "ids"}) {
+    const fs::path stats = s_dir / ("transfer_stats_" + overlay + ".json");
+    const test::CommandResult result = run_in_xvfb(
+        view_arguments("--exit-after-frames 8 --overlay " + overlay + " --stats-json " +
+                       quoted(stats) + " --script " + quoted(script("recolour.json", kRecolour))));
+    ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+    std::ifstream in(stats);
+    const nlohmann::json json = nlohmann::json::parse(in);
+    ASSERT_TRUE(json.contains("host_transfer_bytes_per_frame")) << json.dump();
+    EXPECT_LT(json["host_transfer_bytes_per_frame"].get<double>(), 2048.0) << overlay << ": " << json.dump();
+    EXPECT_GT(json["steps"].get<double>(), 0.0);
+    ASSERT_EQ(json["edits"].size(), 1u);
+    EXPECT_GE(json["edits"][0]["latency_seconds"].get<double>(), 0.0) << "the recolour was shown";
+  }
 }
 
 TEST_F(ViewerWindow, ObjectIdOverlayShowsTheEditedScene) {

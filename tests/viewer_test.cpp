@@ -2,6 +2,7 @@
 // the edit path of a session (headless GPU) and the display pass.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
@@ -323,6 +324,50 @@ ImageRGB fresh_render(const Scene& scene, const SessionSettings& s) {
 void converge(Session& session) {
   for (int i = 0; i < 10000 && !session.converged(); ++i) session.render(1e9, 1);
   ASSERT_TRUE(session.converged());
+}
+
+// The overlays the viewer shows are made on the GPU (overlay.comp) from the renderer's buffers;
+// they are the CPU overlays of the same data (app/viewer/overlays.cpp, image/debug_images.cpp):
+// the ids, owed tint and outline exactly, the weight heat map within a byte (log10 in float).
+TEST(Session, GpuOverlaysAreTheCpuOverlaysOfTheSameData) {
+  SessionSettings settings = small_settings();
+  settings.render.width = 44;  // a column of tiles cut short by the image edge
+  Session session(test::context(), cornell(), settings);
+  converge(session);
+  session.edit(TransformEdit{"tall_block", glm::vec3(0.1f, 0.0f, 0.0f), std::nullopt});
+  session.render(1e9, 1);  // stage 2's weights, some tiles re-rendered, the rest owed
+  const Renderer& renderer = session.renderer();
+  const OverlayGrid grid{settings.render.width, settings.render.height, settings.render.tile_size, renderer.tiles_x()};
+  DisplayPass display(test::context(), grid.width, grid.height);
+  const auto gpu_overlay = [&](Renderer::DebugOverlay kind, uint32_t node) {
+    session.render_overlay(kind, node, display.overlay_buffer());
+    return display.overlay_buffer().download_all<uint32_t>();
+  };
+  const std::vector<uint32_t> ids = session.instance_ids();
+  EXPECT_EQ(gpu_overlay(Renderer::DebugOverlay::Ids, UINT32_MAX), id_overlay(ids, grid));
+  EXPECT_EQ(gpu_overlay(Renderer::DebugOverlay::OwedTiles, UINT32_MAX), owed_overlay(renderer.owed_tiles(), grid));
+
+  const std::vector<uint32_t> weights = gpu_overlay(Renderer::DebugOverlay::TileWeights, UINT32_MAX);
+  const std::vector<uint32_t> expected = weight_overlay(renderer.tile_weights(), renderer.tile_flags(), grid);
+  ASSERT_EQ(weights.size(), expected.size());
+  size_t coloured = 0;
+  for (size_t i = 0; i < weights.size(); ++i) {
+    for (uint32_t shift : {0u, 8u, 16u, 24u})
+      ASSERT_LE(std::abs(int((weights[i] >> shift) & 0xff) - int((expected[i] >> shift) & 0xff)), 1) << i;
+    coloured += (expected[i] & 0xffffffu) != 0u;
+  }
+  EXPECT_GT(coloured, 0u) << "a heat map of nothing would prove nothing";
+
+  // The selected node's outline on top of no overlay.
+  const Scene& scene = session.scene();
+  uint32_t node = 0;
+  while (scene.nodes[node].name != "tall_block") ++node;
+  std::vector<uint32_t> outline(ids.size(), 0u);
+  const auto instances = scene.instances();
+  for (uint32_t i = 0; i < instances.size(); ++i)
+    if (instances[i].node == node) outline_instance(outline, ids, i, grid);
+  EXPECT_EQ(gpu_overlay(Renderer::DebugOverlay::None, node), outline);
+  EXPECT_GT(std::count_if(outline.begin(), outline.end(), [](uint32_t v) { return v != 0u; }), 8);
 }
 
 // Undo is a change like any other: it goes through on_edit, and the re-render ends exactly

@@ -151,6 +151,13 @@ class Renderer final : public ProgressiveRenderer {
 
   // ---- Read-backs for inspection (viewer overlays, picking, debug images, tests)
   std::vector<uint32_t> gbuffer_instances() const;  // per pixel: instance index or UINT32_MAX
+  // The viewer's overlays, made on the device into `output` (one RGBA8 word per pixel: the
+  // display pass's overlay buffer) from what the renderer holds there, with no read-back:
+  // object ids of the G-buffer, stage 2's tile weights, the tiles still owed a restart; and the
+  // outline of `selected_node` on top (UINT32_MAX: none). The G-buffer is used as it is: call
+  // refresh_gbuffer first where edits left it behind (policies without stage 1).
+  enum class DebugOverlay { None, Ids, TileWeights, OwedTiles };
+  void render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output);
   struct PixelHit {
     uint32_t instance = UINT32_MAX;  // index into Scene::instances(), UINT32_MAX for background
     float depth = 0.0f;              // camera-space depth along the view axis

@@ -432,6 +432,29 @@ struct DisplayPush {
   uint overlayEnabled;  // 0: the overlay buffer is ignored
 };
 
+// The viewer's overlays (overlay.comp): what OverlayPush::mode draws over the image.
+HIPR_CONST uint kOverlayNone = 0u;
+HIPR_CONST uint kOverlayIds = 1u;      // each object in its own colour, opaque
+HIPR_CONST uint kOverlayWeights = 2u;  // stage 2's tile weights as a heat map, active tiles blue
+HIPR_CONST uint kOverlayOwed = 3u;     // tiles still showing radiance from before the last edit
+
+struct OverlayPush {
+  uint mode;           // kOverlay*
+  uint selectedNode;   // its outline is drawn on top; kInvalidIndex: none
+  uint pass;           // 0: the largest tile weight (over tiles), 1: the overlay (over pixels)
+  uint width;
+  uint height;
+  uint tileSize;
+  uint tilesX;
+  uint tileCount;
+};
+
+// Per GeometryRecord, what the overlays colour and outline by.
+struct OverlayRecord {
+  uint instance;
+  uint node;
+};
+
 // Radix sort pass: keys/values move from one buffer pair to the other by one 8-bit digit.
 struct SortPush {
   uint count;

@@ -59,6 +59,7 @@ class HiprStages final : public HiprStageRunner {
   void record_warm_up(VkCommandBuffer cmd);
   // Per tile: the discovery weight W(T).
   std::vector<double> tile_weights() const;
+  const vk::Buffer& tile_weights_buffer() const { return m_tile_weights; }  // uint64 per tile
 
  private:
   // Records stage 1's carry (kCarry* mode) and marking, then counts the active tiles. With

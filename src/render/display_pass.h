@@ -39,6 +39,8 @@ class DisplayPass {
   void set_image(const ImageRGB& image);
   // One RGBA8 word per rendered pixel: sRGB-encoded colour, alpha = how much it covers.
   void set_overlay(const std::vector<uint32_t>& rgba8);
+  // The overlay's buffer, for a kernel to write in place (Renderer::render_overlay).
+  const vk::Buffer& overlay_buffer() const { return m_overlay; }
 
   // Records the dispatch (resizing the output for the window first: call it only when no
   // submitted work still reads the output). output() then holds the window's pixels.

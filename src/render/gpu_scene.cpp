@@ -39,6 +39,7 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
       const PrimitiveRange& r = m_ranges[instances[i].mesh][p];
       m_records.push_back({mesh.primitives[p].material, r.first_index, r.vertex_offset, abi::kInvalidIndex});
       m_record_instance.push_back(uint32_t(i));
+      m_record_node.push_back(instances[i].node);
     }
   }
   geometries = vk::make_storage_buffer(ctx, m_records);

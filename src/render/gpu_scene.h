@@ -52,6 +52,8 @@ class GpuScene {
   const LightTables& light_tables() const { return m_lights; }
   // Instance index of each GeometryRecord (records are grouped per instance).
   const std::vector<uint32_t>& record_instance() const { return m_record_instance; }
+  // Node of each GeometryRecord (the viewer outlines a selected node).
+  const std::vector<uint32_t>& record_node() const { return m_record_node; }
   uint32_t record_count() const { return uint32_t(m_records.size()); }
 
   vk::Buffer positions, normals, tangents, uvs, indices;
@@ -86,6 +88,7 @@ class GpuScene {
   std::vector<abi::GeometryRecord> m_records;
   std::vector<uint32_t> m_record_base;      // per instance
   std::vector<uint32_t> m_record_instance;  // per record
+  std::vector<uint32_t> m_record_node;      // per record
   vk::AccelerationStructure m_tlas;
   SoftwareBvh m_software;  // instead of m_blas and m_tlas on a device without ray queries
   abi::FrameParams m_frame_params{};

@@ -16,6 +16,7 @@
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
 #include "render/kernel_features.h"
+#include "render/overlay_pass.h"
 #include "render/tile_state.h"
 #include "render/trace_pass.h"
 
@@ -134,6 +135,7 @@ struct Renderer::Impl {
   TracePass trace;
   BackgroundTiles background;
   std::unique_ptr<HiprStages> hipr;  // made on first use
+  std::unique_ptr<OverlayPass> overlays;  // the viewer's, made on first use
   SampleTarget sample_target;        // the scheduler's round targets (set_sample_target)
 };
 
@@ -288,6 +290,18 @@ Renderer::PixelHit Renderer::gbuffer_at(uint32_t x, uint32_t y) const {
   const GBufferPass::Hit hit = m->rendered_gbuffers().at(x, y);
   if (hit.record == UINT32_MAX) return {};
   return {m->gpu.record_instance()[hit.record], hit.depth};
+}
+
+void Renderer::render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output) {
+  if (!m->overlays) {
+    const OverlaySources sources{m->gbuffers.current, m->stages().tile_weights_buffer(), m->tiles.flags,
+                                 m->film.accumulation};
+    m->overlays = std::make_unique<OverlayPass>(m->ctx, m->gpu, sources, m->settings.width, m->settings.height,
+                                                m->settings.tile_size, tiles_x(), tile_count());
+  }
+  static constexpr uint32_t kModes[] = {abi::kOverlayNone, abi::kOverlayIds, abi::kOverlayWeights, abi::kOverlayOwed};
+  m->overlays->render(kModes[size_t(overlay)], selected_node == UINT32_MAX ? abi::kInvalidIndex : selected_node,
+                      output);
 }
 
 std::vector<uint32_t> Renderer::tile_flags() const {

@@ -150,6 +150,11 @@ void Session::on_presented() {
   m_awaiting_change = false;
 }
 
+void Session::render_overlay(Renderer::DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output) {
+  if (overlay == Renderer::DebugOverlay::Ids || selected_node != UINT32_MAX) ensure_gbuffer();
+  m_renderer->render_overlay(overlay, selected_node, output);
+}
+
 void Session::ensure_gbuffer() {
   if (!m_gbuffer_stale) return;
   m_renderer->refresh_gbuffer();

@@ -95,6 +95,9 @@ class Session {
   void on_presented();
   const std::vector<EditRecord>& edit_records() const { return m_records; }
 
+  // Makes an overlay on the device into `output` (Renderer::render_overlay), the G-buffer
+  // brought up to date first where ids or an outline need it.
+  void render_overlay(Renderer::DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output);
   // The G-buffer of the scene as it is now: instance per pixel, and one pixel's hit.
   const std::vector<uint32_t>& instance_ids();
   Renderer::PixelHit pick(uint32_t x, uint32_t y);

@@ -361,33 +361,15 @@ void Viewer::update_overlay() {
                        m_session.get()};
   if (key == m_overlay_key) return;
   m_overlay_key = key;
-  const Renderer& renderer = m_session->renderer();
-  const RenderSettings& s = renderer.settings();
-  const OverlayGrid grid{s.width, s.height, s.tile_size, renderer.tiles_x()};
-  std::vector<uint32_t> overlay;
-  switch (m_state.overlay) {
-    case Overlay::Ids:
-      overlay = id_overlay(m_session->instance_ids(), grid);
-      break;
-    case Overlay::Weights:
-      overlay = weight_overlay(renderer.tile_weights(), renderer.tile_flags(), grid);
-      break;
-    case Overlay::Owed:
-      overlay = owed_overlay(renderer.owed_tiles(), grid);
-      break;
-    case Overlay::None:
-      break;
-  }
-  const Scene& scene = m_session->scene();
-  if (m_state.selected_node >= 0) {
-    if (overlay.empty()) overlay.assign(size_t(s.width) * s.height, 0u);
-    const auto instances = scene.instances();
-    for (uint32_t i = 0; i < instances.size(); ++i)
-      if (int(instances[i].node) == m_state.selected_node)
-        outline_instance(overlay, m_session->instance_ids(), i, grid);
-  }
-  m_overlay_on = !overlay.empty();
-  if (m_overlay_on) m_display.set_overlay(overlay);
+  m_overlay_on = m_state.overlay != Overlay::None || m_state.selected_node >= 0;
+  if (!m_overlay_on) return;
+  // Made on the GPU from the renderer's own buffers into the display pass's overlay: showing an
+  // overlay while re-rendering reads nothing back (image/debug_images.cpp's colours).
+  static constexpr Renderer::DebugOverlay kinds[] = {Renderer::DebugOverlay::None, Renderer::DebugOverlay::Ids,
+                                                     Renderer::DebugOverlay::TileWeights,
+                                                     Renderer::DebugOverlay::OwedTiles};
+  const uint32_t selected = m_state.selected_node >= 0 ? uint32_t(m_state.selected_node) : UINT32_MAX;
+  m_session->render_overlay(kinds[size_t(m_state.overlay)], selected, m_display.overlay_buffer());
 }
 
 bool Viewer::present(const ViewLayout& layout) {
