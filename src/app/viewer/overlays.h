@@ -1,7 +1,9 @@
 #pragma once
 // The viewer's overlays, as RGBA8 words per rendered pixel for the display pass (sRGB-encoded
 // colour, alpha = how much it covers the image). Colours come from image/debug_images, so the
-// window shows what `hipr replay` writes as debug images.
+// window shows what `hipr replay` writes as debug images. The window's overlays are made on the
+// GPU (shaders/overlay.comp, Renderer::render_overlay); these CPU versions of them are the
+// reference that kernel is tested against (tests/viewer_test.cpp).
 #include <cstdint>
 #include <string>
 #include <vector>

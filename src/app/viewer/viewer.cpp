@@ -166,7 +166,7 @@ class Viewer {
     Overlay overlay = Overlay::None;
     int selected = -1;
     uint64_t version = UINT64_MAX;
-    const Session* session = nullptr;
+    uint64_t renderer = 0;  // Session::renderer_id(): a new session or renderer starts over
     bool operator==(const OverlayKey&) const = default;
   } m_overlay_key;
   bool m_overlay_on = false;
@@ -358,7 +358,7 @@ void Viewer::render_steps() {
 
 void Viewer::update_overlay() {
   const OverlayKey key{m_state.overlay, m_state.selected_node, m_session->display_version(),
-                       m_session.get()};
+                       m_session->renderer_id()};
   if (key == m_overlay_key) return;
   m_overlay_key = key;
   m_overlay_on = m_state.overlay != Overlay::None || m_state.selected_node >= 0;
