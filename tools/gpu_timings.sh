@@ -1,7 +1,8 @@
 #!/bin/bash
 # Times hipr on whatever device it finds, at 1920x1080 by default: the setup (upload, BVH or
 # acceleration structures, kernels), a full-frame pass (hipr render, 16 spp), the edit until its
-# first step is on the display, a scheduling step, and stage 1 + scheduling (hipr replay),
+# first step is on the display, and its parts: scene update, stage 1, a stage 2 step, stage 3's
+# sort and a scheduled step (hipr replay's "parts"),
 # for the shipped and shared scenes with their bench edit scripts (BENCHMARKS.md, "On a GPU").
 # Also renders two small images twice, for the determinism contract on that device.
 #   bash tools/gpu_timings.sh [HIPR] [SCENES] [OUT] [WIDTHxHEIGHT]
@@ -51,8 +52,8 @@ done
 python3 - "$out" <<'PY'
 import json, pathlib, statistics, sys
 out = pathlib.Path(sys.argv[1])
-print("| scene | device | traversal | size | triangles | setup (s) | full-frame pass (ms) | edit to first step shown (ms, median / max) | scheduling step (ms) | stage 1 + scheduling (ms, median) |")
-print("|---|---|---|---|---|---|---|---|---|---|")
+print("| scene | device | traversal | size | triangles | setup (s) | full-frame pass (ms) | edit to first step shown (ms, median / max) | scene update (ms) | stage 1 (ms) | stage 2 step (ms) | stage 3 sort (ms) | scheduled step (ms) |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for stats in sorted(out.glob("*.render.json")):
     name = stats.name[: -len(".render.json")]
     r = json.loads(stats.read_text())
@@ -63,11 +64,14 @@ for stats in sorted(out.glob("*.render.json")):
         s = json.loads(summary.read_text())
         edits = [e for e in s["edits"] if e.get("steps", 0) > 0]
         first = [1000 * e["first_step_seconds"] for e in edits]
-        step = [1000 * e["mean_step_seconds"] for e in edits]
-        over = [1000 * e["overhead_seconds"] for e in edits]
-        row += [f"{statistics.median(first):.1f} / {max(first):.1f}", f"{statistics.median(step):.1f}",
-                f"{statistics.median(over):.1f}"]
+        row.append(f"{statistics.median(first):.1f} / {max(first):.1f}")
+        # Medians over the edits of each part (replay's "parts"; the first edit of a kind may compile).
+        for key, count in (("scene_update_seconds", None), ("plan_seconds", None),
+                           ("mean_leading_step_seconds", "leading_steps"), ("sort_seconds", None),
+                           ("mean_step_seconds", "steps")):
+            values = [1000 * e["parts"][key] for e in edits if count is None or e["parts"][count] > 0]
+            row.append(f"{statistics.median(values):.2f}" if values else "-")  # "-": no such step ran
     else:
-        row += ["-", "-", "-"]
+        row += ["-"] * 6
     print("| " + " | ".join(row) + " |")
 PY

@@ -73,6 +73,19 @@ class Scheduler {
   // display pass that follows each step's rendering in the same submission counts as
   // rendering, as any viewer's tone mapping.)
   double overhead_seconds() const { return m_overhead_seconds; }
+  // Where the time since the last edit went, part by part (wall time of each part's submissions,
+  // which wait for the device: on a GPU, its time plus a submission's overhead).
+  struct EditTimes {
+    double capture_seconds = 0.0;  // the stale display captured (and relit) at the edit
+    double scene_seconds = 0.0;    // the scene's device copy updated (materials, transforms, BVH)
+    double plan_seconds = 0.0;     // the policy's plan: HiPR's stage 1 (G-buffer, marking, reach, reprojection)
+    double sort_seconds = 0.0;     // after the leading steps: HiPR's stage 3 (keys, radix sort)
+    double leading_step_seconds = 0.0;  // the policy's own steps (HiPR's stage 2: discovery + display)
+    uint32_t leading_steps = 0;
+    double step_seconds = 0.0;  // scheduled steps (path tracing + display)
+    uint32_t steps = 0;
+  };
+  const EditTimes& edit_times() const { return m_times; }
   Policy policy() const { return m_policy->id(); }
   // The policy still renders leading steps of its own since the last edit (HiPR: stage 2, whose
   // weights are partial until it ends).
@@ -112,6 +125,7 @@ class Scheduler {
   uint32_t m_leading = 0;          // schedule entries [0, m_leading) are the policy's own steps
   uint32_t m_leading_cursor = 0;   // the next of them
   double m_overhead_seconds = 0.0;
+  EditTimes m_times;
   // The samples every pixel has when the round under way ends; unknown before the first edit
   // or focus (the renderer may have been given samples outside the scheduler).
   std::optional<uint32_t> m_round_target;

@@ -19,6 +19,18 @@
 
 namespace hipr::app {
 namespace {
+
+nlohmann::json edit_times_json(const Scheduler::EditTimes& t) {
+  const auto mean = [](double seconds, uint32_t count) { return count ? seconds / count : 0.0; };
+  return {{"capture_seconds", t.capture_seconds},
+          {"scene_update_seconds", t.scene_seconds},
+          {"plan_seconds", t.plan_seconds},
+          {"sort_seconds", t.sort_seconds},
+          {"leading_steps", t.leading_steps},
+          {"mean_leading_step_seconds", mean(t.leading_step_seconds, t.leading_steps)},
+          {"steps", t.steps},
+          {"mean_step_seconds", mean(t.step_seconds, t.steps)}};
+}
 namespace fs = std::filesystem;
 
 struct ReplayOptions {
@@ -145,6 +157,7 @@ int run_replay(ReplayOptions& o) {
                                 {"mean_step_seconds", steps ? step_seconds / steps : 0.0},
                                 {"work_after_first_step", work_after_first_step},
                                 {"overhead_seconds", scheduler.overhead_seconds()},
+                                {"parts", edit_times_json(scheduler.edit_times())},
                                 {"overhead_share_of_full_pass", scheduler.overhead_seconds() / pass_seconds}});
     log::info("edit " + std::to_string(e + 1) + " (" + describe(edits[e]) + "): " + std::to_string(steps) + " steps, " +
               std::to_string(timer.seconds()) + " s");

@@ -30,6 +30,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   // edit path: work is only read when someone asks for it.
   m_renderer.reset_counters();
   m_overhead_seconds = 0.0;
+  m_times = {};
   const Timer timer;
   // What the screen shows at the moment of the edit becomes the stale image. A whole-pass
   // policy keeps showing its last completed pass (before the first edit: whatever was rendered).
@@ -41,7 +42,10 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   // Before the pixels owe this edit's restart: the relight reads which estimates are current.
   m_relit = m_relight && m_policy->relights() && m_renderer.relight(changes.emitter_scales);
   m_overhead_seconds += timer.seconds();
+  m_times.capture_seconds = timer.seconds();
+  const Timer scene_timer;
   m_renderer.update_scene(scene, changes);
+  m_times.scene_seconds = scene_timer.seconds();
   const Timer schedule_timer;
   m_edited = true;
   m_cursor = 0;
@@ -56,6 +60,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   planned();
   m_renderer.mark_all_owed();
   m_overhead_seconds += schedule_timer.seconds();
+  m_times.plan_seconds = schedule_timer.seconds();
 }
 
 std::optional<DisplayRule> Scheduler::step_display_rule() const {
@@ -64,11 +69,14 @@ std::optional<DisplayRule> Scheduler::step_display_rule() const {
 }
 
 void Scheduler::step() {
+  const Timer step_timer;
   const bool first_visit = m_first_round && m_edited && !m_policy->whole_passes();
   const uint32_t spp = first_visit ? m_first_visit_spp : m_visit_spp;
   if (lead_pass_pending()) {
     const uint32_t count = std::min(m_tiles_per_step, m_lead_end - m_lead_cursor);
     m_renderer.render_focus_lead(m_lead_cursor, count, step_display_rule());
+    m_times.step_seconds += step_timer.seconds();
+    m_times.steps += 1;
     m_lead_cursor += count;
     if (!lead_pass_pending() && !leading_steps_pending() && m_cursor == m_tile_count) end_round();
     return;
@@ -80,18 +88,23 @@ void Scheduler::step() {
     uint32_t count = std::min(m_tiles_per_step, m_leading - m_leading_cursor);
     if (!m_lead_begun && m_lead_at > m_leading_cursor) count = std::min(count, m_lead_at - m_leading_cursor);
     m_policy->render_leading(m_renderer, m_leading_cursor, count, spp, step_display_rule());
+    m_times.leading_step_seconds += step_timer.seconds();
+    m_times.leading_steps += 1;
     m_leading_cursor += count;
     if (!m_lead_begun && m_leading_cursor >= m_lead_at) begin_lead();
     if (m_leading_cursor == m_leading) {
       const Timer timer;
       m_policy->finish_leading(m_renderer);
       m_overhead_seconds += timer.seconds();
+      m_times.sort_seconds += timer.seconds();
       m_cursor = m_leading;
       if (!lead_pass_pending() && m_cursor == m_tile_count) end_round();  // every tile was a leading one
     }
     return;
   }
   m_renderer.render_schedule(m_cursor, m_tiles_per_step, spp, false, step_display_rule());
+  m_times.step_seconds += step_timer.seconds();
+  m_times.steps += 1;
   m_cursor += m_tiles_per_step;
   if (m_cursor >= m_tile_count) end_round();
 }
