@@ -132,6 +132,31 @@ TEST(Scheduler, UntouchedTilesKeepShowingThePreviousImage) {
   EXPECT_EQ(shown.rgb[last_pixel], before_edit.rgb[last_pixel]);
 }
 
+// Where an edit's time goes: every step is counted once, as one of HiPR's stage 2 steps or a
+// scheduled one; stage 1 and the sort ran; a new edit starts the tally over.
+TEST(Scheduler, EditTimesCountEveryPart) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Hipr, 5);
+  renderer.add_samples_full_frame(1);
+  for (int edit = 0; edit < 2; ++edit) {
+    const Scene before = scene;
+    apply_edit(scene, MaterialEdit{"white", {{"base_color", {0.2f + 0.3f * float(edit), 0.2f, 0.2f}}}});
+    scheduler.on_edit(scene, diff_scenes(before, scene));
+    uint32_t steps = 0;
+    for (; steps < 10000 && scheduler.work_since_edit() < 1.0; ++steps) scheduler.step();
+    const Scheduler::EditTimes& t = scheduler.edit_times();
+    EXPECT_EQ(t.leading_steps + t.steps, steps) << "edit " << edit;
+    EXPECT_GT(t.leading_steps, 0u);
+    EXPECT_GT(t.steps, 0u);
+    EXPECT_GT(t.plan_seconds, 0.0);
+    EXPECT_GT(t.sort_seconds, 0.0);
+    EXPECT_GT(t.leading_step_seconds, 0.0);
+    EXPECT_GE(t.scene_seconds, 0.0);
+    EXPECT_LE(t.capture_seconds + t.scene_seconds + t.plan_seconds + t.sort_seconds, 1e3);
+  }
+}
+
 TEST(TileOrder, PoliciesArePermutationsWithTheirShape) {
   for (Policy p : {Policy::Scanline, Policy::Spiral, Policy::Random}) {
     std::vector<uint32_t> order = tile_order(p, 7, 5, 1);
