@@ -13,19 +13,12 @@ layout(local_size_x = 64) in;
 
 #include "shared/bindings/display.h"
 #include "common/dispatch.glsl"
+#include "common/srgb.glsl"
 
 layout(scalar, binding = kDisplayTexels) readonly buffer Display { DisplayTexel b_display[]; };
 layout(scalar, binding = kDisplayOverlay) readonly buffer Overlay { uint b_overlay[]; };
 layout(scalar, binding = kDisplayOutput) writeonly buffer Output { uint b_output[]; };
 layout(push_constant, scalar) uniform Push { DisplayPush u_push; };
-
-// image/tonemap.cpp's srgb_encode: non-finite -> 0, clamp to [0, 1], sRGB transfer curve.
-float display_srgb_encode(float x) {
-  x = (isnan(x) || isinf(x)) ? 0.0 : clamp(x, 0.0, 1.0);
-  return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
-}
-
-uint display_byte(float encoded) { return uint(floor(encoded * 255.0 + 0.5)); }
 
 void main() {
   const uint index = dispatch_index();
@@ -39,9 +32,7 @@ void main() {
   }
   const uint pixel = uint(source.y) * u_push.sourceWidth + uint(source.x);
   const vec3 radiance = b_display[pixel].shown * u_push.exposureScale;
-  uvec3 rgb = uvec3(display_byte(display_srgb_encode(radiance.r)),
-                    display_byte(display_srgb_encode(radiance.g)),
-                    display_byte(display_srgb_encode(radiance.b)));
+  uvec3 rgb = srgb_bytes(radiance);
   if (u_push.overlayEnabled != 0u) {
     const uint overlay = b_overlay[pixel];
     const float alpha = float(overlay >> 24u) / 255.0;

@@ -18,6 +18,7 @@ layout(local_size_x = 64) in;
 
 #include "shared/bindings/overlay.h"
 #include "common/dispatch.glsl"
+#include "common/srgb.glsl"
 
 layout(scalar, binding = kOverlayGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 layout(scalar, binding = kOverlayRecords) readonly buffer Records { OverlayRecord b_records[]; };
@@ -35,18 +36,7 @@ layout(push_constant, scalar) uniform Push { OverlayPush u_push; };
 const float kWeightCoverage = 0.7;
 const float kOwedCoverage = 0.45;
 
-uint byte_of(float v) { return uint(floor(clamp(v, 0.0, 1.0) * 255.0 + 0.5)); }
-uint pack_rgba8(uvec3 rgb, float coverage) { return rgb.r | (rgb.g << 8u) | (rgb.b << 16u) | (byte_of(coverage) << 24u); }
-
-// image/tonemap.cpp's srgb_encode.
-float overlay_srgb_encode(float x) {
-  x = clamp(x, 0.0, 1.0);
-  return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
-}
-uvec3 srgb_bytes(vec3 linear) {
-  return uvec3(byte_of(overlay_srgb_encode(linear.r)), byte_of(overlay_srgb_encode(linear.g)),
-               byte_of(overlay_srgb_encode(linear.b)));
-}
+uint pack_rgba8(uvec3 rgb, float coverage) { return rgb.r | (rgb.g << 8u) | (rgb.b << 16u) | (srgb_byte(coverage) << 24u); }
 
 // debug_images.cpp's id_colour: the hash picks a byte per channel, the table its sRGB byte.
 uvec3 id_bytes(uint id) {

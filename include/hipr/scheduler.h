@@ -72,7 +72,9 @@ class Scheduler {
   // planning (stage 1, sorting, the oracle's ranking) and capturing the stale display. (The
   // display pass that follows each step's rendering in the same submission counts as
   // rendering, as any viewer's tone mapping.)
-  double overhead_seconds() const { return m_overhead_seconds; }
+  double overhead_seconds() const {
+    return m_times.capture_seconds + m_times.plan_seconds + m_times.sort_seconds + m_times.focus_seconds;
+  }
   // Where the time since the last edit went, part by part (wall time of each part's submissions,
   // which wait for the device: on a GPU, its time plus a submission's overhead).
   struct EditTimes {
@@ -80,6 +82,7 @@ class Scheduler {
     double scene_seconds = 0.0;    // the scene's device copy updated (materials, transforms, BVH)
     double plan_seconds = 0.0;     // the policy's plan: HiPR's stage 1 (G-buffer, marking, reach, reprojection)
     double sort_seconds = 0.0;     // after the leading steps: HiPR's stage 3 (keys, radix sort)
+    double focus_seconds = 0.0;    // re-planning for a new focus (set_focus)
     double leading_step_seconds = 0.0;  // the policy's own steps (HiPR's stage 2: discovery + display)
     uint32_t leading_steps = 0;
     double step_seconds = 0.0;  // scheduled steps (path tracing + display)
@@ -124,8 +127,7 @@ class Scheduler {
   bool m_first_round = false;  // still in the first pass over the schedule since the edit
   uint32_t m_leading = 0;          // schedule entries [0, m_leading) are the policy's own steps
   uint32_t m_leading_cursor = 0;   // the next of them
-  double m_overhead_seconds = 0.0;
-  EditTimes m_times;
+  EditTimes m_times;  // since the last edit
   // The samples every pixel has when the round under way ends; unknown before the first edit
   // or focus (the renderer may have been given samples outside the scheduler).
   std::optional<uint32_t> m_round_target;

@@ -20,17 +20,25 @@
 namespace hipr::app {
 namespace {
 
+double mean_seconds(double seconds, uint32_t count) { return count ? seconds / count : 0.0; }
+
+// A step of either kind, without the image writing between steps.
+double mean_step_seconds(const Scheduler::EditTimes& t) {
+  return mean_seconds(t.leading_step_seconds + t.step_seconds, t.leading_steps + t.steps);
+}
+
 nlohmann::json edit_times_json(const Scheduler::EditTimes& t) {
-  const auto mean = [](double seconds, uint32_t count) { return count ? seconds / count : 0.0; };
   return {{"capture_seconds", t.capture_seconds},
           {"scene_update_seconds", t.scene_seconds},
           {"plan_seconds", t.plan_seconds},
           {"sort_seconds", t.sort_seconds},
           {"leading_steps", t.leading_steps},
-          {"mean_leading_step_seconds", mean(t.leading_step_seconds, t.leading_steps)},
+          {"mean_leading_step_seconds", mean_seconds(t.leading_step_seconds, t.leading_steps)},
           {"steps", t.steps},
-          {"mean_step_seconds", mean(t.step_seconds, t.steps)}};
+          {"mean_step_seconds", mean_seconds(t.step_seconds, t.steps)},
+          {"focus_seconds", t.focus_seconds}};
 }
+
 namespace fs = std::filesystem;
 
 struct ReplayOptions {
@@ -131,14 +139,11 @@ int run_replay(ReplayOptions& o) {
     const bool changed = !pipeline.apply(edits[e]).empty();
     double work_after_first_step = 0.0;
     double first_step_seconds = 0.0;  // the edit until its first step is on the display
-    double step_seconds = 0.0;        // the steps alone (no image writing)
     bool debug_written = policy != Policy::Hipr || !changed;
     uint32_t steps = 0;
     for (uint32_t s = 1; s <= max_steps && (o.steps || scheduler.work_since_edit() < double(o.common.spp)); ++s) {
       steps = s;
-      const Timer step_timer;
       scheduler.step();
-      step_seconds += step_timer.seconds();
       if (s == 1) {
         work_after_first_step = scheduler.work_since_edit();
         first_step_seconds = timer.seconds();
@@ -154,7 +159,7 @@ int run_replay(ReplayOptions& o) {
                                 {"work", scheduler.work_since_edit()},
                                 {"seconds", timer.seconds()},
                                 {"first_step_seconds", first_step_seconds},
-                                {"mean_step_seconds", steps ? step_seconds / steps : 0.0},
+                                {"mean_step_seconds", mean_step_seconds(scheduler.edit_times())},
                                 {"work_after_first_step", work_after_first_step},
                                 {"overhead_seconds", scheduler.overhead_seconds()},
                                 {"parts", edit_times_json(scheduler.edit_times())},

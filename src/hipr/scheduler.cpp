@@ -29,7 +29,6 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   // Restarting the counters (a GPU fill) instead of reading them keeps read-backs off the
   // edit path: work is only read when someone asks for it.
   m_renderer.reset_counters();
-  m_overhead_seconds = 0.0;
   m_times = {};
   const Timer timer;
   // What the screen shows at the moment of the edit becomes the stale image. A whole-pass
@@ -41,7 +40,6 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   m_renderer.capture_stale_display();
   // Before the pixels owe this edit's restart: the relight reads which estimates are current.
   m_relit = m_relight && m_policy->relights() && m_renderer.relight(changes.emitter_scales);
-  m_overhead_seconds += timer.seconds();
   m_times.capture_seconds = timer.seconds();
   const Timer scene_timer;
   m_renderer.update_scene(scene, changes);
@@ -59,7 +57,6 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   m_leading_cursor = 0;
   planned();
   m_renderer.mark_all_owed();
-  m_overhead_seconds += schedule_timer.seconds();
   m_times.plan_seconds = schedule_timer.seconds();
 }
 
@@ -95,7 +92,6 @@ void Scheduler::step() {
     if (m_leading_cursor == m_leading) {
       const Timer timer;
       m_policy->finish_leading(m_renderer);
-      m_overhead_seconds += timer.seconds();
       m_times.sort_seconds += timer.seconds();
       m_cursor = m_leading;
       if (!lead_pass_pending() && m_cursor == m_tile_count) end_round();  // every tile was a leading one
@@ -176,7 +172,7 @@ void Scheduler::set_focus(const Focus& focus) {
   m_leading = std::min(*leading, m_tile_count);
   m_leading_cursor = 0;
   planned();
-  m_overhead_seconds += timer.seconds();
+  m_times.focus_seconds += timer.seconds();
 }
 
 double Scheduler::work_since_edit() const { return double(m_renderer.samples_since_reset()) / double(m_pixels); }

@@ -10,13 +10,6 @@
 #include "shaders/shared/bindings/scene.h"
 
 namespace hipr {
-namespace {
-
-std::array<float, 12> row_major_3x4(const glm::mat4& m) {
-  return {m[0][0], m[1][0], m[2][0], m[3][0], m[0][1], m[1][1], m[2][1], m[3][1], m[0][2], m[1][2], m[2][2], m[3][2]};
-}
-
-}  // namespace
 
 GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_group_budget)
     : m_ctx(ctx), m_groups(assign_light_groups(scene, light_group_budget)) {
@@ -128,18 +121,16 @@ bool GpuScene::build_blases(const Scene& scene) {
     rebuilt = true;
     if (m_ctx.software_traversal()) {
       m_software.set_mesh(m, scene.meshes[m], opaque);
-      m_has_blas[m] = true;
-      m_blas_opaque[m] = std::move(opaque);
-      continue;
+    } else {
+      std::vector<vk::TriangleGeometry> geometry;
+      for (size_t p = 0; p < m_ranges[m].size(); ++p) {
+        const PrimitiveRange& r = m_ranges[m][p];
+        geometry.push_back({positions.address() + VkDeviceAddress(r.vertex_offset) * sizeof(glm::vec3), r.vertex_count,
+                            indices.address() + VkDeviceAddress(r.first_index) * sizeof(uint32_t), r.triangle_count,
+                            opaque[p]});
+      }
+      m_blas[m] = vk::build_blas(m_ctx, geometry);
     }
-    std::vector<vk::TriangleGeometry> geometry;
-    for (size_t p = 0; p < m_ranges[m].size(); ++p) {
-      const PrimitiveRange& r = m_ranges[m][p];
-      geometry.push_back({positions.address() + VkDeviceAddress(r.vertex_offset) * sizeof(glm::vec3), r.vertex_count,
-                          indices.address() + VkDeviceAddress(r.first_index) * sizeof(uint32_t), r.triangle_count,
-                          opaque[p]});
-    }
-    m_blas[m] = vk::build_blas(m_ctx, geometry);
     m_has_blas[m] = true;
     m_blas_opaque[m] = std::move(opaque);
   }
@@ -196,7 +187,7 @@ void GpuScene::update_instances(const Scene& scene) {
     // hardware's notion of front faces consistent for mirroring transforms.
     const bool mirrored = glm::determinant(glm::mat3(instance.world)) < 0.0f;
     if (!m_ctx.software_traversal())
-      tlas_instances.push_back({row_major_3x4(instance.world), m_record_base[i], m_blas[instance.mesh].address(),
+      tlas_instances.push_back({affine_rows(instance.world), m_record_base[i], m_blas[instance.mesh].address(),
                                 !mirrored, instance.visible});
     if (!instance.visible) continue;
     m_info.instance_count += 1;

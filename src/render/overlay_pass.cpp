@@ -56,10 +56,10 @@ void OverlayPass::render(uint32_t mode, uint32_t selected_node, const vk::Buffer
   m_pipeline.bind_buffer(abi::kOverlayOutput, output);
   abi::OverlayPush push{mode, selected_node, 0u, m_width, m_height, m_tile_size, m_tiles_x, m_tile_count};
   m_ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    vkCmdFillBuffer(cmd, m_max_weight.handle(), 0, VK_WHOLE_SIZE, 0);
-    vk::transfer_to_compute_barrier(cmd);
     vk::compute_to_compute_barrier(cmd);  // the weights, flags and G-buffer of earlier work
-    if (mode == abi::kOverlayWeights) {
+    if (mode == abi::kOverlayWeights) {  // the largest weight first: the heat map's scale
+      vkCmdFillBuffer(cmd, m_max_weight.handle(), 0, VK_WHOLE_SIZE, 0);
+      vk::transfer_to_compute_barrier(cmd);
       m_pipeline.dispatch(cmd, &push, (m_tile_count + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize);
       vk::compute_to_compute_barrier(cmd);
     }

@@ -1,13 +1,14 @@
 #include "render/software_bvh.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace hipr {
 namespace {
 
-// Rows of the 3x4 affine part of a column-major glm matrix.
 void store_rows(const glm::mat4& m, glm::vec4 rows[3]) {
-  for (int r = 0; r < 3; ++r) rows[r] = glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
+  static_assert(sizeof(glm::vec4[3]) == sizeof(std::array<float, 12>));
+  std::memcpy(rows, affine_rows(m).data(), sizeof(glm::vec4[3]));
 }
 
 Box transformed(const Box& box, const glm::mat4& m) {
@@ -21,6 +22,10 @@ Box transformed(const Box& box, const glm::mat4& m) {
 }
 
 }  // namespace
+
+std::array<float, 12> affine_rows(const glm::mat4& m) {
+  return {m[0][0], m[1][0], m[2][0], m[3][0], m[0][1], m[1][1], m[2][1], m[3][1], m[0][2], m[1][2], m[2][2], m[3][2]};
+}
 
 void SoftwareBvh::set_mesh(size_t mesh_index, const Mesh& mesh, const std::vector<bool>& opaque) {
   if (m_meshes.size() <= mesh_index) m_meshes.resize(mesh_index + 1);

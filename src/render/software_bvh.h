@@ -5,6 +5,7 @@
 // GpuScene builds instead of acceleration structures on a device without ray queries; the
 // two levels are rebuilt when the acceleration structures would be (opacity changes: a mesh;
 // transforms and visibility: the top level).
+#include <array>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -15,6 +16,10 @@
 #include "vk/context.h"
 
 namespace hipr {
+
+// The affine part of a transform as a row-major 3x4 matrix: how TLAS instances and the
+// software BVH's instances both store it.
+std::array<float, 12> affine_rows(const glm::mat4& m);
 
 class SoftwareBvh {
  public:

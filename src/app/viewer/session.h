@@ -125,6 +125,7 @@ class Session {
   void changed(const std::function<void(Scene&)>& change, const std::string& what);
   // Hands the scheduler the script's and the view's seeds when they differ from what it follows.
   void update_focus();
+  void display_changed() { ++m_display_version; }
 
   const vk::Context& m_ctx;
   SessionSettings m_settings;
@@ -134,7 +135,6 @@ class Session {
   uint64_t m_renderer_id = 0;
   std::unique_ptr<Scheduler> m_scheduler;
   Timer m_since_edit;
-  void display_changed() { ++m_display_version; }
   uint64_t m_display_version = 0;
   uint64_t m_displayed_version = UINT64_MAX;  // the version m_displayed was read at
   ImageRGB m_displayed;
