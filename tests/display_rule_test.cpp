@@ -168,6 +168,50 @@ TEST(DisplayRules, PixelsWhoseSurfaceChangedShowTheirFreshEstimateAtOnce) {
   EXPECT_GT(blended, 100u) << "pixels on unchanged surfaces still weigh stale against fresh";
 }
 
+// No tile seams: blend weighs each pixel by the rule's sums over the pixels around it, not over
+// its tile, so its weight changes across a tile's edge no more than between two pixels inside a
+// tile. (Weighed per tile, every pixel of a tile had one weight and the weights jumped at the
+// edges: the tile grid showed, as blocks of old shadow or colour bleeding beside new.)
+TEST(DisplayRules, BlendWeightsAreContinuousAcrossTileEdges) {
+  EditedBox box(DisplayRule::Blend);
+  box.edit(kRecolourRedWall);
+  box.scheduler.step();
+  const ImageRGB fresh = box.renderer.image(), shown = box.scheduler.displayed_image();
+  const uint32_t width = settings().width, height = settings().height, size = settings().tile_size;
+  // The weight a of f in shown = s + a (f - s), where f and s differ enough to tell (-1: not).
+  std::vector<double> weight(size_t(width) * height, -1.0);
+  size_t partial = 0;
+  for (size_t p = 0; p < weight.size(); ++p) {
+    double along = 0.0, squared = 0.0;
+    for (size_t c = p * 3; c < p * 3 + 3; ++c) {
+      along += double(shown.rgb[c] - box.stale.rgb[c]) * double(fresh.rgb[c] - box.stale.rgb[c]);
+      squared += std::pow(double(fresh.rgb[c] - box.stale.rgb[c]), 2);
+    }
+    if (squared < 1e-4) continue;
+    weight[p] = along / squared;
+    if (weight[p] > 0.05 && weight[p] < 0.95) ++partial;
+  }
+  ASSERT_GT(partial, 50u) << "pixels the rule weighs, neither stale nor fresh alone";
+  double across = 0.0, within = 0.0;
+  size_t across_pairs = 0, within_pairs = 0;
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x)
+      for (const auto& [dx, dy] : {std::pair{1u, 0u}, std::pair{0u, 1u}}) {
+        if (x + dx >= width || y + dy >= height) continue;
+        const double a = weight[size_t(y) * width + x], b = weight[size_t(y + dy) * width + x + dx];
+        if (a < 0.0 || b < 0.0) continue;
+        const bool edge = (x + dx) / size != x / size || (y + dy) / size != y / size;
+        (edge ? across : within) += std::abs(a - b);
+        ++(edge ? across_pairs : within_pairs);
+      }
+  ASSERT_GT(across_pairs, 50u);
+  ASSERT_GT(within_pairs, 500u);
+  within /= double(within_pairs);
+  across /= double(across_pairs);
+  EXPECT_GT(within, 1e-3) << "a weight per pixel, not per tile";
+  EXPECT_LT(across, 1.5 * within) << "mean weight step across tile edges " << across << ", within tiles " << within;
+}
+
 TEST(DisplayRules, ImmediateShowsEveryReRenderedPixel) {
   EditedBox box(DisplayRule::Immediate);
   box.edit(kNoOpEdit);

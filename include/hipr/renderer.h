@@ -92,6 +92,7 @@ struct RenderSnapshot {
   std::vector<uint8_t> display;
   std::vector<uint8_t> light_groups;  // the accumulation's and the stale estimate's group shares
   std::vector<uint8_t> difference;    // the difference records
+  std::vector<uint8_t> judgements;    // the display's per-tile judgements (TileJudgement)
 };
 
 class Renderer final : public ProgressiveRenderer {

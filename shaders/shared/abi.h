@@ -29,6 +29,7 @@ HIPR_CONST uint kTileShown = 4u;       // since the last edit, the display has s
 HIPR_CONST uint kTileSettled = 8u;     // the display shows the fresh estimate alone, until the next edit
 HIPR_CONST uint kTileFocus = 16u;      // the focus is seen in the tile (stage 1): it may run ahead of the round
 HIPR_CONST uint kTileScored = 32u;     // stage 1 gave the tile a change or focus score (a seed of the order)
+HIPR_CONST uint kTileReshow = 64u;     // within a resolve: show_display.comp rewrites the tile's pixels (set and cleared there)
 HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
 // Stage 1's changed-record flags: bit 0 the record is in the changed set E, the bits above
 // its focus weight (kFocusWeightScale units; 0: not a focus).
@@ -267,6 +268,23 @@ HIPR_CONST uint kDifferenceValidMask = 3u;
 struct DifferenceRecord {
   uint halves[kDifferenceHalves / 2u];
 };
+
+// What resolve_display.comp judged of a tile at its last resolve since the last edit (the
+// capture clears it), for show_display.comp: the gate of its pixels and, for the difference rule,
+// its regression weight.
+struct TileJudgement {
+  vec3 regression;  // difference rule: the weight a of f against C, per channel
+  uint state;       // kJudge*
+};
+// show_display.comp weighs a pixel by the display rule's sums over the square of
+// (2 kDisplayWindowRadius + 1)^2 pixels around it (9 x 9: about an 8 x 8 tile's statistics),
+// not over its tile: no tile seams.
+HIPR_CONST uint kDisplayWindowRadius = 4u;
+HIPR_CONST uint kJudgeNone = 0u;     // not resolved since the last edit
+HIPR_CONST uint kJudgeStale = 1u;    // a pixel lacks the fresh samples to judge: blend pixels keep s
+HIPR_CONST uint kJudgeWeighed = 2u;  // blend pixels show what the rule weighs over their windows
+HIPR_CONST uint kJudgeFresh = 3u;    // blend pixels show f (difference pixels still their estimate)
+HIPR_CONST uint kJudgeSettled = 4u;  // every pixel shows f alone, until the next edit
 
 // Light groups (relight.comp): each group's share of a pixel's radiance is kept apart, so an edit
 // of an emitter's intensity or colour rescales it. At most this many groups.

@@ -20,24 +20,39 @@ uint32_t kernel_rule(DisplayRule rule, bool difference) {
   return abi::kDisplayBlend;
 }
 
+// show_display.comp's workgroups per schedule entry: the entry's tile and the tiles around it
+// whose pixels' windows reach into it (show_reach in shaders/common/display_resolve.glsl);
+// immediate shows each pixel by itself.
+uint32_t show_neighbourhood(uint32_t kernel_rule, uint32_t tile_size) {
+  const uint32_t reach = kernel_rule == abi::kDisplayImmediate ? 0u : (abi::kDisplayWindowRadius + tile_size - 1u) / tile_size;
+  return (2u * reach + 1u) * (2u * reach + 1u);
+}
+
 }  // namespace
 
 ResolvePass::ResolvePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
                          const GBufferPass& gbuffers, uint32_t width, uint32_t height)
     : display(ctx, size_t(width) * height * sizeof(abi::DisplayTexel), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      judgements(ctx, size_t(tiles.count()) * sizeof(abi::TileJudgement), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_gbuffers(gbuffers),
       m_width(width),
       m_height(height),
       m_difference(film.keeps_difference()),
-      m_resolve(ctx, "resolve_display.comp", {},
-                {{abi::kResolveTileList, &tiles.schedule},
-                 {abi::kResolveAccumulation, &film.accumulation},
-                 {abi::kResolveTileFlags, &tiles.flags},
-                 {abi::kResolveDisplay, &display},
-                 {abi::kResolveGBuffer, &gbuffers.current},
-                 {abi::kResolveDifference, &film.difference}},
-                sizeof(abi::ResolvePush), &scene.descriptor_set()) {
+      m_tile_count(tiles.count()),
+      m_tile_size(tiles.tile_size()),
+      m_judge(ctx, "resolve_display.comp", {}, bindings(tiles, film, gbuffers), sizeof(abi::ResolvePush),
+              &scene.descriptor_set()),
+      m_show(ctx, "show_display.comp", {}, bindings(tiles, film, gbuffers), sizeof(abi::ResolvePush),
+             &scene.descriptor_set()) {
   clear();
+}
+
+std::vector<vk::BufferBinding> ResolvePass::bindings(const TileState& tiles, const Film& film,
+                                                    const GBufferPass& gbuffers) const {
+  return {{abi::kResolveTileList, &tiles.schedule},   {abi::kResolveAccumulation, &film.accumulation},
+          {abi::kResolveTileFlags, &tiles.flags},     {abi::kResolveDisplay, &display},
+          {abi::kResolveGBuffer, &gbuffers.current},  {abi::kResolveDifference, &film.difference},
+          {abi::kResolveJudgements, &judgements}};
 }
 
 void ResolvePass::clear() {
@@ -45,6 +60,8 @@ void ResolvePass::clear() {
   black.shownRecord = black.staleRecord = abi::kRecordUnknown;
   const std::vector<abi::DisplayTexel> texels(size_t(m_width) * m_height, black);
   display.upload(texels.data(), texels.size() * sizeof(abi::DisplayTexel));
+  const std::vector<abi::TileJudgement> none(m_tile_count, abi::TileJudgement{});
+  judgements.upload(none.data(), none.size() * sizeof(abi::TileJudgement));
 }
 
 void ResolvePass::record(VkCommandBuffer cmd, const Tiles& tiles, DisplayRule rule) const {
@@ -65,7 +82,10 @@ void ResolvePass::record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t 
                               m_gbuffers.is_current() ? 1u : 0u,
                               m_difference ? 1u : 0u};
   vk::compute_to_compute_barrier(cmd);
-  m_resolve.dispatch(cmd, &push, tiles.count);
+  m_judge.dispatch(cmd, &push, tiles.count);
+  if (rule == abi::kDisplayCapture) return;
+  vk::compute_to_compute_barrier(cmd);
+  m_show.dispatch(cmd, &push, tiles.count * show_neighbourhood(rule, m_tile_size));
 }
 
 ImageRGB ResolvePass::displayed_image() const {

@@ -1,9 +1,10 @@
 #pragma once
 // What the screen shows (resolve_display.comp): a display buffer apart from the accumulation.
-// At an edit the shown image is captured as the stale estimate; resolves then decide per tile,
-// by the display rule, when and how much its fresh estimate replaces the stale one
-// (docs/method.md, "The display after an edit").
+// At an edit the shown image is captured as the stale estimate; resolves then judge per tile, by
+// the display rule, when and how much its fresh estimate replaces the stale one, and weigh each
+// pixel by its neighbourhood's judgements (docs/method.md, "The display after an edit").
 #include <cstdint>
+#include <vector>
 
 #include "hipr/display_rule.h"
 #include "hipr/renderer.h"
@@ -28,24 +29,31 @@ class ResolvePass {
     uint32_t require_flags = 0;
     uint32_t skip_flags = 0;
   };
-  // Records a resolve by `rule` after whatever the command buffer wrote before.
+  // Records a resolve by `rule` after whatever the command buffer wrote before: the tiles are
+  // judged, then their pixels and their neighbours' are shown.
   void record(VkCommandBuffer cmd, const Tiles& tiles, DisplayRule rule) const;
   // Records the capture of what every pixel shows as its stale estimate (at an edit).
   void record_capture_stale(VkCommandBuffer cmd, uint32_t tile_count) const;
 
   ImageRGB displayed_image() const;
-  // Black everywhere, depicting no known surface.
+  // Black everywhere, depicting no known surface; no tile judged.
   void clear();
 
-  vk::Buffer display;  // DisplayTexel per pixel
+  vk::Buffer display;     // DisplayTexel per pixel
+  vk::Buffer judgements;  // TileJudgement per tile: the sums the next resolve's neighbours read
 
  private:
   void record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t rule) const;
+  // Both kernels' set 0 (shaders/shared/bindings/resolve.h).
+  std::vector<vk::BufferBinding> bindings(const TileState& tiles, const Film& film, const GBufferPass& gbuffers) const;
 
   const GBufferPass& m_gbuffers;
   uint32_t m_width, m_height;
   bool m_difference;  // the film keeps difference records
-  vk::ComputePipeline m_resolve;
+  uint32_t m_tile_count;
+  uint32_t m_tile_size;
+  vk::ComputePipeline m_judge;  // resolve_display.comp
+  vk::ComputePipeline m_show;   // show_display.comp
 };
 
 }  // namespace hipr

@@ -19,6 +19,7 @@ class TileState {
   uint32_t tiles_x() const { return m_tiles_x; }
   uint32_t tiles_y() const { return m_tiles_y; }
   uint32_t count() const { return m_tiles_x * m_tiles_y; }
+  uint32_t tile_size() const { return m_tile_size; }
   // Every tile id in id order.
   const std::vector<uint32_t>& all() const { return m_all; }
   // The tile a pixel belongs to.

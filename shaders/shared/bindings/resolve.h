@@ -1,4 +1,5 @@
-// Set 0 of the display resolve (ResolvePass: resolve_display.comp).
+// Set 0 of the display resolve (ResolvePass: resolve_display.comp judges tiles, show_display.comp
+// writes their pixels).
 // Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
 // binding numbers, named by the kernel's GLSL layouts and by its C++ pass.
 #ifndef HIPR_BINDINGS_RESOLVE_H
@@ -16,6 +17,7 @@ HIPR_CONST uint kResolveTileFlags = 2u;     // uint per tile: kTileShown and kTi
 HIPR_CONST uint kResolveDisplay = 3u;       // DisplayTexel per pixel: what the screen shows
 HIPR_CONST uint kResolveGBuffer = 4u;       // GBufferTexel per pixel: which surface a pixel shows
 HIPR_CONST uint kResolveDifference = 5u;    // DifferenceRecord per pixel (read)
+HIPR_CONST uint kResolveJudgements = 6u;    // TileJudgement per tile: written by the judging kernel, read by the showing one
 
 #ifdef __cplusplus
 }  // namespace hipr::abi
