@@ -9,6 +9,11 @@
 // 2 where the pixel shows another surface than before or than the screen shows (an object moved
 // in or out: the largest changes on screen, while a moved object's own inside often looks much
 // as it did).
+// After a reprojection (a camera edit alone, u_reprojected): the rejected pixels score 2 as
+// surfaces shown wrongly, pixels of view-dependent surfaces (kRecordViewDependent: a reflection
+// or refraction kept from another view is wrong) 1, so both rank first; every tile is marked
+// kTileReprojected, and kTileMoved where a pixel is not kShownStill (schedule_keys.comp renders
+// tiles that barely moved last).
 // The focus (docs/method.md#focus) is marked here too: a pixel whose surface now is a focus
 // record, or which lies in a focus disc, makes its tile active and adds its focus weight to the
 // tile's focus score. The focus orders tiles after the edit's (schedule_keys.comp) and
@@ -36,13 +41,15 @@ layout(scalar, binding = kMarkActiveTileFocus) buffer TileFocus { uint b_tile_fo
 layout(push_constant) uniform Push {
   uint u_focusDiscs;
   uint u_everything;
+  uint u_reprojected;
 };
 
 bool changed(uint record) { return record != kInvalidIndex && (b_changed_records[record] & kRecordChanged) != 0u; }
+bool view_dependent(uint record) { return record != kInvalidIndex && (b_changed_records[record] & kRecordViewDependent) != 0u; }
 
 // The summed focus weight of a pixel: its surface's, and every disc's it lies in.
 uint focus_weight(uvec2 pixel, uint record) {
-  uint weight = record != kInvalidIndex ? b_changed_records[record] >> kFocusWeightShift : 0u;
+  uint weight = record != kInvalidIndex ? (b_changed_records[record] & ~kRecordViewDependent) >> kFocusWeightShift : 0u;
   const vec2 centre = vec2(pixel) + 0.5;
   for (uint i = 0u; i < min(u_focusDiscs, kMaxFocusDiscs); ++i) {
     const FocusDisc disc = b_focus_discs[i];
@@ -58,10 +65,13 @@ void main() {
   const uint shown = b_display[index].shownRecord;
   const bool wrongSurface = u_everything == 0u && shown != kRecordUnknown && shown != now;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
-  const bool edited = changed(now) || changed(before) || wrongSurface;
+  const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
+  const bool viewChanged = u_reprojected != 0u && !wrongSurface && view_dependent(now);
+  if (u_reprojected != 0u)
+    atomicOr(b_tile_flags[tile], kTileReprojected | ((b_display[index].flags & kShownStill) == 0u ? kTileMoved : 0u));
+  const bool edited = changed(now) || changed(before) || wrongSurface || viewChanged;
   const uint focus = focus_weight(pixel, now);
   if (!edited && focus == 0u) return;
-  const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
   atomicOr(b_tile_flags[tile], kTileActive | kTileScored | (focus != 0u ? kTileFocus : 0u));
   if (edited) atomicAdd(b_tile_change[tile], now != before || wrongSurface ? 2u : 1u);
   if (focus != 0u) atomicAdd(b_tile_focus[tile], focus);

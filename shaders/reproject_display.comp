@@ -14,6 +14,9 @@
 //    (an error too dark is bounded, one too bright is not: an emitter's value never spreads onto
 //    the ceiling beside it) until it is rendered; its records say kRecordRejected, so the
 //    resolve shows its first fresh samples at once and mark_active.comp ranks its tile first.
+// An accepted pixel that moved less than kStillMotion pixels is marked kShownStill: its tile,
+// when all its pixels are, is rendered after every other (the per-object "barely moved" rule:
+// an object's screen motion is its pixels').
 // Kept values are judged by the display rule as any stale value: its bias estimate (D against V)
 // decides how long a view-dependent one (a highlight, a reflection) survives its fresh samples.
 // No kept samples or light-group shares carry over (they are of other pixels' paths).
@@ -144,6 +147,9 @@ void main() {
   texel.stale = texel.shown;
   texel.staleSamples = texel.shownSamples;
   texel.staleRecord = texel.shownRecord;
-  texel.flags = 0u;
+  // Where the surface barely moved on screen the kept value is nearly the pixel's own: stage 1
+  // ranks tiles of such pixels last.
+  const vec2 motion = at - (vec2(pixel) + 0.5);
+  texel.flags = accepted && inFront && dot(motion, motion) < kStillMotion * kStillMotion ? kShownStill : 0u;
   b_display[index] = texel;
 }

@@ -3,7 +3,8 @@
 // whole schedule. Class 0, the active tiles: first those the edit changed, by descending
 // stage-1 change score; then focus tiles (docs/method.md#focus) by descending focus score;
 // then the rest of the active set (an edit that activates every tile) by distance from the
-// seeds. Class 1: discovered tiles by descending weight W(T). Class 2: the other tiles by
+// seeds, and after a reprojection last of all those whose pixels barely moved (kTileReprojected
+// without kTileMoved: what they show is nearly theirs already). Class 1: discovered tiles by descending weight W(T). Class 2: the other tiles by
 // distance from the seeds. The seeds are the active tiles with a change or focus score; with
 // none (a camera edit and no focus) distances are all equal. Ties keep tile-id order because
 // the sort is stable and values start in id order.
@@ -61,7 +62,10 @@ void main() {
   if ((flags & kTileActive) != 0u) {
     if (b_tile_change[tile] != 0u) key = 0x1fffffffu - min(b_tile_change[tile], 0x1fffffffu);
     else if (b_tile_focus[tile] != 0u) key = 0x20000000u | (0x0fffffffu - min(b_tile_focus[tile], 0x0fffffffu));
-    else key = 0x30000000u | seed_distance(x, y);
+    else {
+      const bool still = (flags & (kTileReprojected | kTileMoved)) == kTileReprojected;
+      key = 0x30000000u | (still ? 0x08000000u : 0u) | min(seed_distance(x, y), 0x07ffffffu);
+    }
   } else if (b_tile_weights[tile] > 0ul) {
     // Positive float bits order like the numbers; drop one mantissa bit to fit 30 bits.
     const uint bits = floatBitsToUint(float(b_tile_weights[tile]) / kWeightScale) >> 1u;

@@ -148,7 +148,7 @@ vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWei
   // Stage 2: a shadow cast by a changed element makes the shadowed point's tile a priority.
   const uint blocker = closest_blocker(origin, direction, tMax);
   if (blocker != kInvalidIndex) {
-    if (b_changed_records[blocker] != 0u) discover_vertex(surface.position, occlusionWeight * u_frame.wOcclusion);
+    if ((b_changed_records[blocker] & ~kRecordViewDependent) != 0u) discover_vertex(surface.position, occlusionWeight * u_frame.wOcclusion);
     return vec3(0.0);
   }
 #else

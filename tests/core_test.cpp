@@ -379,5 +379,31 @@ TEST(RunProcess, AChildThatIgnoresItsInputDoesNotBlockOrKillUs) {
   EXPECT_EQ(result.exit_code, 0);
 }
 
+// HiPR ranks view-dependent surfaces first after a camera move: smooth metal, dielectric and
+// coat lobes and refraction count; rough lobes and a matte base do not.
+TEST(Materials, ViewDependenceFollowsTheSmoothLobesAndRefraction) {
+  const MaterialParameters plastic = default_material_params();  // specular roughness 0.3
+  EXPECT_FALSE(material_is_view_dependent(plastic));
+  MaterialParameters m = plastic;
+  m.specular_roughness = 0.1f;
+  EXPECT_TRUE(material_is_view_dependent(m)) << "glossy dielectric";
+  m = plastic;
+  m.base_metalness = 1.0f;
+  EXPECT_TRUE(material_is_view_dependent(m)) << "metal at roughness 0.3";
+  m.specular_roughness = 0.6f;
+  EXPECT_FALSE(material_is_view_dependent(m)) << "rough metal";
+  m.specular_weight = 0.0f;
+  m.specular_roughness = 0.0f;
+  EXPECT_FALSE(material_is_view_dependent(m)) << "no specular lobe";
+  m = plastic;
+  m.transmission_weight = 1.0f;
+  m.specular_roughness = 0.5f;
+  EXPECT_TRUE(material_is_view_dependent(m)) << "refraction";
+  m = plastic;
+  m.coat_weight = 1.0f;
+  m.coat_roughness = 0.0f;
+  EXPECT_TRUE(material_is_view_dependent(m)) << "clear coat";
+}
+
 }  // namespace
 }  // namespace hipr

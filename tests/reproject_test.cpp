@@ -120,6 +120,82 @@ TEST(Reproject, AReflectionThatMovedGivesWayToItsFreshSamples) {
   EXPECT_LT(shown_error, 0.2 * stale_error) << "the fresh samples took over where they disagree";
 }
 
+// HiPR's schedule after `scene`, converged at 4 spp, is seen from `dx` further right.
+std::vector<uint32_t> schedule_after_pan(Scene scene, float dx) {
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Hipr, 8);
+  renderer.add_samples_full_frame(4);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const Scene old = scene;
+  apply_edit(scene, CameraEdit{glm::vec3(dx, 0.0f, 0.0f), std::nullopt});
+  scheduler.on_edit(scene, diff_scenes(old, scene));
+  return renderer.schedule();
+}
+
+// Where each tile of `tiles` stands in the schedule.
+std::vector<size_t> positions(const std::vector<uint32_t>& order, const std::vector<uint32_t>& tiles) {
+  std::vector<size_t> at;
+  for (uint32_t tile : tiles) at.push_back(size_t(std::find(order.begin(), order.end(), tile) - order.begin()));
+  return at;
+}
+
+// The tiles of columns [first, last] of tiles.
+std::vector<uint32_t> tile_columns(uint32_t first, uint32_t last) {
+  std::vector<uint32_t> tiles;
+  for (uint32_t y = 0; y < kSize / kTile; ++y)
+    for (uint32_t x = first; x <= last; ++x) tiles.push_back(y * (kSize / kTile) + x);
+  return tiles;
+}
+
+// A reflection kept from another view is wrong wherever the mirror is: after a camera move the
+// tiles of view-dependent surfaces rank with the rejected ones, before the diffuse rest.
+TEST(Reproject, ViewDependentSurfacesRankWithTheRejectedOnes) {
+  Scene scene = test::make_card_camera_scene(0.5f);
+  MaterialParameters mirror = default_material_params();
+  mirror.base_metalness = 1.0f;
+  mirror.specular_roughness = 0.05f;
+  MaterialParameters matte = default_material_params();
+  matte.specular_weight = 0.0f;
+  ASSERT_TRUE(material_is_view_dependent(mirror));
+  ASSERT_FALSE(material_is_view_dependent(matte));
+  // The mirror on the left half of the view, the matte card on the right half.
+  const glm::mat4 half = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 1.0f, 1.0f));
+  test::add_card(scene, "mirror", glm::translate(glm::mat4(1.0f), {-0.5f, 0.0f, 0.0f}) * half, mirror);
+  test::add_card(scene, "matte", glm::translate(glm::mat4(1.0f), {0.5f, 0.0f, 0.0f}) * half, matte);
+  const std::vector<uint32_t> order = schedule_after_pan(scene, 2.0f * 2.0f / kSize);  // two pixels
+  // The mirror covers tile columns 0-3 (it moved two pixels left; column 3 also shows matte),
+  // the right column saw past the cards' edge (rejected); columns 4-6 are matte and kept.
+  const std::vector<size_t> mirror_at = positions(order, tile_columns(0, 2));
+  const std::vector<size_t> matte_at = positions(order, tile_columns(5, 6));
+  EXPECT_LT(*std::max_element(mirror_at.begin(), mirror_at.end()), *std::min_element(matte_at.begin(), matte_at.end()))
+      << "every mirror tile before every kept matte tile";
+  for (uint32_t tile : tile_columns(kSize / kTile - 1, kSize / kTile - 1))
+    EXPECT_LT(positions(order, {tile})[0], 5u * (kSize / kTile)) << "rejected tile " << tile << " among the first";
+}
+
+// The per-object "barely moved" rule: a surface whose pixels moved less than a quarter pixel
+// shows nearly its own value already, so its tiles are rendered after every other.
+TEST(Reproject, TilesThatBarelyMovedComeLast) {
+  Scene scene = test::make_card_camera_scene(0.5f);
+  MaterialParameters matte = default_material_params();
+  matte.specular_weight = 0.0f;
+  // A far card filling the view (z = 0, 3 from the camera) and a near one (z = 1.5, half as far)
+  // over the left half of the view, taller than it: a sideways move shifts it twice as far.
+  test::add_card(scene, "far", glm::mat4(1.0f), matte);
+  test::add_card(scene, "near",
+                 glm::translate(glm::mat4(1.0f), {-0.5f, 0.0f, 1.5f}) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 1.0f, 1.0f)),
+                 matte);
+  // 32 pixels per unit at the far card: 0.005 moves it 0.16 pixels, the near card 0.32.
+  const std::vector<uint32_t> order = schedule_after_pan(scene, 0.005f);
+  // Columns 0-2: the near card, moved; 5-6: the far card, still (columns 3-4 hold the near card's
+  // edge and 7 the frame's, where pixels are rejected: they rank first).
+  const std::vector<size_t> moved_at = positions(order, tile_columns(0, 2));
+  const std::vector<size_t> still_at = positions(order, tile_columns(5, 6));
+  EXPECT_LT(*std::max_element(moved_at.begin(), moved_at.end()), *std::min_element(still_at.begin(), still_at.end()))
+      << "the far card's tiles last, though they lie nearer the rejected columns";
+  EXPECT_EQ(*std::max_element(still_at.begin(), still_at.end()), order.size() - 1);
+}
+
 TEST(Reproject, AnOrbitEndsOnTheFullFrameImageOfTheNewView) {
   for (const DisplayRule rule : {DisplayRule::Blend, DisplayRule::Difference, DisplayRule::Switch}) {
     Scene scene = load_scene(test::asset("cornell_box.gltf"));

@@ -119,6 +119,12 @@ MaterialParameters default_material_params();
 // acceleration structures then mark them VK_GEOMETRY_OPAQUE_BIT_KHR).
 bool material_is_opaque(const MaterialParameters& m);
 
+// Whether what the material shows depends on where it is seen from enough that a view's image
+// of it does not carry over to another view: refraction, a mirror-like or glossy metal, dielectric
+// or coat (HiPR ranks such surfaces first after a camera move, docs/method.md#camera-moves).
+// Rough reflections and sheen change with the view too, but slowly: they count as diffuse here.
+bool material_is_view_dependent(const MaterialParameters& m);
+
 // Whether the material emits: a positive emission luminance and a colour that is not black (an
 // emission texture only multiplies them). NaN counts as not emitting.
 bool material_emits(const MaterialParameters& m);

@@ -30,10 +30,15 @@ HIPR_CONST uint kTileSettled = 8u;     // the display shows the fresh estimate a
 HIPR_CONST uint kTileFocus = 16u;      // the focus is seen in the tile (stage 1): it may run ahead of the round
 HIPR_CONST uint kTileScored = 32u;     // stage 1 gave the tile a change or focus score (a seed of the order)
 HIPR_CONST uint kTileReshow = 64u;     // within a resolve: show_display.comp rewrites the tile's pixels (set and cleared there)
+HIPR_CONST uint kTileReprojected = 128u;  // stage 1 after a camera edit: the tile's pixels were reprojected
+HIPR_CONST uint kTileMoved = 256u;        // ... and one of them moved on screen by kStillMotion or more, or was rejected
 HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
 // Stage 1's changed-record flags: bit 0 the record is in the changed set E, the bits above
 // its focus weight (kFocusWeightScale units; 0: not a focus).
 HIPR_CONST uint kRecordChanged = 1u;
+// The record's material is view-dependent (material_is_view_dependent): after a camera edit its
+// pixels rank with the rejected ones (mark_active.comp). Not a change: discovery ignores it.
+HIPR_CONST uint kRecordViewDependent = 0x80000000u;
 HIPR_CONST uint kFocusWeightShift = 1u;
 HIPR_CONST float kFocusWeightScale = 16.0f;
 HIPR_CONST uint kFocusWeightMax = 16000u;       // a seed's weight, fixed point (1000 x the scale)
@@ -297,6 +302,10 @@ HIPR_CONST uint kShownGrouped = 1u;
 HIPR_CONST uint kStaleGrouped = 2u;
 HIPR_CONST uint kShownCurrent = 4u;
 HIPR_CONST uint kStaleCurrent = 8u;  // `stale` is an estimate of the scene since the last edit too (relit)
+// Set by reproject_display.comp, cleared by the next capture: the pixel's value was reprojected
+// from less than kStillMotion pixels away (the surface barely moved on screen).
+HIPR_CONST uint kShownStill = 64u;
+HIPR_CONST float kStillMotion = 0.25f;
 
 // Parameters of relight.comp: per light group, the factor (per channel) its radiance is scaled by.
 struct RelightPush {

@@ -33,7 +33,7 @@ ActiveTilesPass::ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, 
                      {abi::kMarkActiveDisplay, &display},
                      {abi::kMarkActiveFocusDiscs, &m_focus_discs},
                      {abi::kMarkActiveTileFocus, &tile_focus}},
-                    2 * sizeof(uint32_t), &scene.descriptor_set()) {
+                    3 * sizeof(uint32_t), &scene.descriptor_set()) {
   tile_change.clear();
   tile_focus.clear();
   m_focus_discs.clear();
@@ -75,14 +75,15 @@ void ActiveTilesPass::set_changed(const GpuScene& scene, const ChangeSet& change
   std::vector<uint32_t> records(std::max<size_t>(record_instance.size(), 1), 0);
   for (size_t r = 0; r < record_instance.size(); ++r)
     records[r] = (in_changed_set[record_instance[r]] ? abi::kRecordChanged : 0u) |
-                 focus_weight[record_instance[r]] << abi::kFocusWeightShift;
+                 focus_weight[record_instance[r]] << abi::kFocusWeightShift |
+                 (scene.record_view_dependent(uint32_t(r)) ? abi::kRecordViewDependent : 0u);
   changed_records.upload(records.data(), records.size() * 4);
   m_disc_count = uint32_t(discs.size());
   if (!discs.empty()) m_focus_discs.upload(discs.data(), discs.size() * sizeof(abi::FocusDisc));
 }
 
-void ActiveTilesPass::record(VkCommandBuffer cmd, bool everything) const {
-  const uint32_t push[2] = {m_disc_count, everything ? 1u : 0u};
+void ActiveTilesPass::record(VkCommandBuffer cmd, bool everything, bool reprojected) const {
+  const uint32_t push[3] = {m_disc_count, everything ? 1u : 0u, reprojected ? 1u : 0u};
   m_mark_active.dispatch(cmd, push, groups_for(m_pixels));
 }
 

@@ -32,8 +32,10 @@ class ActiveTilesPass {
   // kCarryRefocus (no edit).
   void record_carry(VkCommandBuffer cmd, uint32_t mode) const;
   // Records the marking (after the G-buffer of the edited scene is rendered); `everything` as
-  // record_carry's kCarryEverything (a surface shown wrongly then scores nothing).
-  void record(VkCommandBuffer cmd, bool everything) const;
+  // record_carry's kCarryEverything (a surface shown wrongly then scores nothing);
+  // `reprojected`: the display was just reprojected (a camera edit): view-dependent surfaces
+  // score, and tiles whose pixels barely moved are marked to go last.
+  void record(VkCommandBuffer cmd, bool everything, bool reprojected = false) const;
 
   // uint per GeometryRecord: kRecordChanged = in E, above it the focus weight (stage 2's
   // occlusion test reads it too: a focus's shadows are discovered as an edit's are)

@@ -68,7 +68,7 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
     }
     // After a reprojection the screen shows the new view: a pixel showing a surface it does not
     // see (a rejected one) scores, as after any edit.
-    m_active.record(cmd, carry_mode == abi::kCarryEverything && !reproject_from);
+    m_active.record(cmd, carry_mode == abi::kCarryEverything && !reproject_from, reproject_from != nullptr);
     vk::compute_to_compute_barrier(cmd);
     m_reach.record(cmd);
   });

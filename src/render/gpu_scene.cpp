@@ -159,7 +159,11 @@ void GpuScene::upload_textures(const Scene& scene) {
 
 void GpuScene::update_materials(const Scene& scene) {
   std::vector<abi::MaterialBlock> blocks;
-  for (const Material& m : scene.materials) blocks.push_back(pack_material(m.params));
+  m_material_view_dependent.clear();
+  for (const Material& m : scene.materials) {
+    blocks.push_back(pack_material(m.params));
+    m_material_view_dependent.push_back(material_is_view_dependent(m.params) ? 1 : 0);
+  }
   if (materials && materials.size() == blocks.size() * sizeof(abi::MaterialBlock)) {
     materials.upload(blocks.data(), materials.size());
     if (build_blases(scene)) update_instances(scene);  // new BLAS addresses need a new TLAS

@@ -55,6 +55,9 @@ class GpuScene {
   // Node of each GeometryRecord (the viewer outlines a selected node).
   const std::vector<uint32_t>& record_node() const { return m_record_node; }
   uint32_t record_count() const { return uint32_t(m_records.size()); }
+  // Whether a record's material is view-dependent (material_is_view_dependent), as of the last
+  // material update.
+  bool record_view_dependent(uint32_t record) const { return m_material_view_dependent[m_records[record].materialIndex] != 0; }
 
   vk::Buffer positions, normals, tangents, uvs, indices;
   vk::Buffer geometries, materials, textures, texels;
@@ -89,6 +92,7 @@ class GpuScene {
   std::vector<uint32_t> m_record_base;      // per instance
   std::vector<uint32_t> m_record_instance;  // per record
   std::vector<uint32_t> m_record_node;      // per record
+  std::vector<uint8_t> m_material_view_dependent;  // per material
   vk::AccelerationStructure m_tlas;
   SoftwareBvh m_software;  // instead of m_blas and m_tlas on a device without ray queries
   abi::FrameParams m_frame_params{};

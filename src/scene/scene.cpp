@@ -53,6 +53,17 @@ bool material_is_opaque(const MaterialParameters& m) {
   return m.geometry_opacity >= 1.0f && !texture_alpha;
 }
 
+bool material_is_view_dependent(const MaterialParameters& m) {
+  // Roughness thresholds: a lobe this smooth shows recognisable reflections, whose place on the
+  // surface moves with the eye; a dielectric's (4 % at normal incidence) needs to be smoother to
+  // stand out than a metal's. Texture factors multiply these parameters, so they bound them.
+  constexpr float kGlossyMetal = 0.4f, kGlossyDielectric = 0.2f, kGlossyCoat = 0.3f;
+  const bool metal = m.base_metalness >= 0.5f && m.specular_weight > 0.0f && m.specular_roughness < kGlossyMetal;
+  const bool dielectric = m.specular_weight > 0.0f && m.specular_roughness < kGlossyDielectric;
+  const bool coat = m.coat_weight > 0.0f && m.coat_roughness < kGlossyCoat;
+  return m.transmission_weight > 0.0f || metal || dielectric || coat;
+}
+
 bool material_emits(const MaterialParameters& m) {
   return m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f)));
 }
