@@ -172,6 +172,32 @@ TEST_F(ViewerWindow, NoImageCrossesTheHostWhileReRendering) {
   }
 }
 
+// --frames-dir writes what every frame showed, and which script edits it shows; --script-start
+// holds the script back (here to frame 6 instead of 4): the frames before show the scene as
+// loaded, the frames from then on the recolour.
+TEST_F(ViewerWindow, FramesDirHoldsEveryFrameAndTheEditsItShows) {
+  const fs::path frames = s_dir / "frames";
+  fs::create_directories(frames);
+  const test::CommandResult result = run_in_xvfb(view_arguments(
+      "--exit-after-frames 9 --script-start 6 --frames-dir " + quoted(frames) + " --script " +
+      quoted(script("recolour_late.json", kRecolour))));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  std::ifstream in(frames / "frames.json");
+  const nlohmann::json log = nlohmann::json::parse(in);
+  ASSERT_EQ(log.size(), 9u);
+  for (size_t i = 0; i < log.size(); ++i) {
+    EXPECT_EQ(log[i]["frame"].get<uint32_t>(), i + 1);
+    EXPECT_EQ(log[i]["script_edits"].get<uint32_t>(), i + 1 >= 7 ? 1u : 0u) << "frame " << i + 1;
+    ASSERT_TRUE(fs::exists(frames / log[i]["file"].get<std::string>())) << log[i].dump();
+  }
+  // The red wall (left edge, mid height) before and after the recolour to blue.
+  const ImageRGB before = read_image(frames / log[5]["file"].get<std::string>());
+  const ImageRGB after = read_image(frames / log[8]["file"].get<std::string>());
+  const size_t wall = (size_t(64) * before.width + 6) * 3;
+  EXPECT_GT(before.rgb[wall], before.rgb[wall + 2]) << "red before";
+  EXPECT_GT(after.rgb[wall + 2], after.rgb[wall]) << "blue after";
+}
+
 TEST_F(ViewerWindow, ObjectIdOverlayShowsTheEditedScene) {
   const ImageRGB& shot = screenshot("ids-moved", "--exit-after-frames 6 --overlay ids --script " +
                                                      quoted(script("move.json", kMove)));
@@ -410,7 +436,8 @@ TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {
             quoted(dir / "no/such/folder/shot.png"),
         quoted(dir / "missing.gltf"), base + " --visit-spp 0", base + " --policy oracle",
         base + " --display fast", base + " --save " + quoted(dir / "scene.obj"),
-        base + " --save " + quoted(dir / "no/such/folder/a.gltf"), base + " --select teapot"}) {
+        base + " --save " + quoted(dir / "no/such/folder/a.gltf"), base + " --select teapot",
+        base + " --frames-dir " + quoted(dir / "no/such/folder")}) {
     const test::CommandResult result = test::run_command(
         "env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " view " + arguments);
     EXPECT_EQ(result.exit_code, kExitBadInput) << arguments << "\n" << result.output;

@@ -63,6 +63,8 @@ int run_view(ViewCommandOptions& o) {
     const fs::path dir = v.save.has_parent_path() ? v.save.parent_path() : fs::path(".");
     if (!fs::is_directory(dir)) throw InputError("--save folder does not exist: " + dir.string());
   }
+  if (!v.frames_dir.empty() && !fs::is_directory(v.frames_dir))
+    throw InputError("--frames-dir is not a folder: " + v.frames_dir.string());
   if (!v.stats_json.empty()) {
     const fs::path dir =
         v.stats_json.has_parent_path() ? v.stats_json.parent_path() : fs::path(".");
@@ -97,8 +99,10 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--script", options->script,
                   "Edit script (.json) applied as if typed, one edit every --script-every frames");
   cmd->add_option("--script-every", v.script_every,
-                  "Frames between script edits (edit k at frame (k+1) x N)")
+                  "Frames between script edits (edit k at frame (k+1) x N, or --script-start + k x N)")
       ->capture_default_str();
+  cmd->add_option("--script-start", v.script_start,
+                  "Frame of the first script edit (default: --script-every), e.g. after the scene converged");
   cmd->add_option("--screenshot", v.screenshot,
                   "At exit, write what the window shows (.png) or the displayed radiance (.exr)");
   cmd->add_option("--exit-after-frames", v.exit_after_frames,
@@ -133,6 +137,9 @@ Command add_view_command(CLI::App& app) {
                 "No panels or status line: the window shows the render alone");
   cmd->add_option("--stats-json", v.stats_json,
                   "At exit, write fps and per-edit feedback latency (JSON)");
+  cmd->add_option("--frames-dir", v.frames_dir,
+                  "Write every frame's displayed image to this folder (frame_NNNNN.exr, and frames.json: "
+                  "the script edits each shows and its time without the read-back)");
   cmd->add_option("--save", v.save, "At exit, save the edited scene as glTF (.gltf or .glb)");
   cmd->add_option("--select", options->select, "Node selected at start (glTF name or #index)");
   cmd->add_option("--focus-lead", v.focus_lead,

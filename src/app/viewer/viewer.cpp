@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <glm/trigonometric.hpp>
 #include <memory>
@@ -133,6 +134,8 @@ class Viewer {
   bool draw_and_present(const vk::Swapchain::Frame& frame, const DisplayView& view);
   ViewLayout layout() const;
   void write_stats(double seconds) const;
+  void dump_frame(uint32_t frame_index, double frame_seconds);
+  void write_frame_log() const;
   void open_scene();
   void save_scene_file();
   void take_screenshot(const fs::path& path);
@@ -151,6 +154,7 @@ class Viewer {
   ViewerState m_state;
   ViewportInput m_input;
   size_t m_script_next = 0;
+  nlohmann::json m_frame_log = nlohmann::json::array();  // --frames-dir: what each dumped frame shows
   uint64_t m_frames = 0;
   uint64_t m_steps = 0;
   // The renderer whose display buffer the display pass reads (a new session or settings that
@@ -236,8 +240,8 @@ bool Viewer::draw_and_present(const vk::Swapchain::Frame& frame, const DisplayVi
 
 void Viewer::run_script(uint32_t frame) {
   const auto& script = m_options.script;
-  if (m_script_next >= script.size() || frame != (m_script_next + 1) * m_options.script_every)
-    return;
+  const uint64_t first = m_options.script_start > 0 ? m_options.script_start : m_options.script_every;
+  if (m_script_next >= script.size() || frame != first + m_script_next * uint64_t(m_options.script_every)) return;
   // As if typed: the same path as a panel edit (undoable, one on_edit).
   try {
     m_session->edit(script[m_script_next]);
@@ -400,6 +404,18 @@ bool Viewer::present(const ViewLayout& layout) {
   return true;
 }
 
+void Viewer::dump_frame(uint32_t frame_index, double frame_seconds) {
+  char name[32];
+  std::snprintf(name, sizeof(name), "frame_%05u.exr", frame_index);
+  write_image(m_options.frames_dir / name, m_session->displayed());
+  m_frame_log.push_back(
+      {{"frame", frame_index}, {"file", name}, {"script_edits", m_script_next}, {"frame_ms", frame_seconds * 1e3}});
+}
+
+void Viewer::write_frame_log() const {
+  write_text_atomically(m_options.frames_dir / "frames.json", m_frame_log.dump(1) + "\n");
+}
+
 void Viewer::write_stats(double seconds) const {
   nlohmann::json edits = nlohmann::json::array();
   for (const EditRecord& r : m_session->edit_records())
@@ -480,6 +496,10 @@ int Viewer::run() {
       m_rendering_transfer_bytes += vk::host_transfer_bytes() - transferred_at_frame_start;
     }
     m_state.fps = m_state.fps > 0.0 ? 0.9 * m_state.fps + 0.1 / frame_seconds : 1.0 / frame_seconds;
+    if (!m_options.frames_dir.empty()) {
+      dump_frame(frame_index, frame_seconds);
+      frame_timer = Timer();  // the read-back is not the next frame's time
+    }
     if (m_state.request_screenshot) {
       m_state.request_screenshot = false;
       take_screenshot(m_state.screenshot_path);
@@ -505,6 +525,7 @@ int Viewer::run() {
   if (!m_options.screenshot.empty())
     attempt([&] { save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed()); });
   if (!m_options.stats_json.empty()) attempt([&] { write_stats(seconds); });
+  if (!m_options.frames_dir.empty()) attempt([&] { write_frame_log(); });
   app::check_validation(m_ctx);
   if (!failures.empty()) throw InputError(failures);
   return kExitOk;

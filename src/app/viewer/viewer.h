@@ -16,8 +16,9 @@ namespace hipr::viewer {
 
 struct ViewerOptions {
   app::CommonOptions common;  // validated; render size from --size or --width/--height
-  std::vector<Edit> script;   // applied as if typed: edit k at frame (k + 1) * script_every
+  std::vector<Edit> script;   // applied as if typed: edit k at frame script_start + k * script_every
   uint32_t script_every = 10;
+  uint32_t script_start = 0;  // 0: script_every
   std::filesystem::path screenshot;  // written at exit
   uint32_t exit_after_frames = 0;    // 0: run until the window closes
   Overlay overlay = Overlay::None;
@@ -33,6 +34,10 @@ struct ViewerOptions {
   float exposure_ev = 0.0f;
   bool show_ui = true;
   std::filesystem::path stats_json;  // fps and per-edit latency, written at exit
+  // Every presented frame's displayed image (linear EXR) and, at exit, frames.json (per frame:
+  // how many script edits it shows, and its time without the read-back), for measuring what the
+  // screen showed frame by frame.
+  std::filesystem::path frames_dir;
   std::filesystem::path save;        // the edited scene, saved as glTF at exit
   int select = -1;                   // node selected at start (-1: none)
   bool focus_selection = true;       // hipr starts from the selected object (docs/method.md#focus)
