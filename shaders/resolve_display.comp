@@ -6,11 +6,11 @@
 //         accumulation (sum, sum of squares, count + owed bit), the tiles' flags, the display
 //         texels (stale and shown values, their records), the G-buffer (which surface each pixel
 //         sees now), the difference records, FrameParams.
-// Writes: each tile's TileJudgement (its gate and sums; the capture clears it); in the tile
-//         flags kTileShown once the tile's own measure shows its fresh estimate at weight 1/2 or
-//         more, kTileSettled once it shows it alone, and kTileReshow on the tile and (but for
-//         immediate) its eight neighbours, whose pixels' weights depend on its sums; at a capture
-//         the display texels.
+// Writes: each tile's TileJudgement (its gate and regression weight; the capture clears it); in
+//         the tile flags kTileShown once the tile's own measure shows its fresh estimate at
+//         weight 1/2 or more, kTileSettled once it shows it alone, and kTileReshow on the tile
+//         and (but for immediate) the tiles around it whose pixels' windows reach into it
+//         (show_reach); at a capture the display texels.
 // Rules (ResolvePush::rule):
 //  - capture (at an edit): what each pixel shows becomes its stale estimate; with difference
 //    records, a pixel with samples since the last edit keeps them as the old scene's samples when
@@ -182,7 +182,7 @@ void main() {
   const uint tilePixels = u_frame.tileSize * u_frame.tileSize;
   if (u_push.rule == kDisplayCapture) {
     capture(origin, tilePixels);
-    if (gl_LocalInvocationIndex == 0u) b_judgements[tile] = TileJudgement(vec3(0.0), kJudgeNone);
+    if (gl_LocalInvocationIndex == 0u) b_judgements[tile] = TileJudgement(vec3(0.0), kJudgeNone, 0u);
     return;
   }
 
@@ -262,6 +262,6 @@ void main() {
   // where a moved surface appeared counts as shown: the change is on screen.
   if (s_unrendered[0] == 0u && (alpha >= 0.5 || s_resurfaced[0] > 0u || (anyDifferenced && s_judged[0] == 0u)))
     atomicOr(b_tile_flags[tile], kTileShown | (settled ? kTileSettled : 0u));
-  b_judgements[tile] = TileJudgement(s_regression, tile_state(alpha, settled));
+  b_judgements[tile] = TileJudgement(s_regression, tile_state(alpha, settled), u_push.epoch);
   mark_reshow(tile);
 }

@@ -9,7 +9,8 @@
 // clear the tile's kTileReshow (each tile once).
 // Reads:  the tile list, tile flags, judgements, per-pixel accumulation, display texels, the
 //         G-buffer, the difference records, FrameParams.
-// Writes: the display texels of the marked tiles' pixels; clears their kTileReshow.
+// Writes: the display texels of the marked tiles' pixels that a tile judged by this resolve
+//         (TileJudgement::epoch) lies within the window radius of; clears kTileReshow.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -21,12 +22,14 @@ layout(local_size_x = 64) in;  // == kWorkgroupSize; one workgroup per (entry, n
 #include "common/dispatch.glsl"
 
 // A tile is shown in blocks of kBlock x kBlock pixels (one per invocation); each block first
-// gathers the rule's terms of its pixels and of the window radius around them into shared memory.
+// gathers the rule's terms of its pixels and of the window radius around them into shared memory,
+// then sums each pixel's window in two passes (the tent is separable).
 const uint kBlock = 8u;
 const uint kRegion = kBlock + 2u * kDisplayWindowRadius;  // the block with its windows' margins
-shared bool s_owner;                            // this workgroup cleared the tile's kTileReshow
-shared vec2 s_blend[kRegion * kRegion];         // blend pixels: w (f - s)^2, its noise
-shared vec2 s_change[kRegion * kRegion];        // changed difference pixels: w (C' - s)^2, its noise
+shared bool s_owner;                      // this workgroup cleared the tile's kTileReshow
+shared vec4 s_terms[kRegion * kRegion];   // per pixel: blend's w (f - s)^2 and its noise, the
+                                          // difference rule's w (C' - s)^2 and its noise
+shared vec4 s_rows[kRegion * kBlock];     // the terms summed along rows, by the tent
 
 uint tile_of(uvec2 pixel) { return (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize; }
 
@@ -34,51 +37,55 @@ uint tile_of(uvec2 pixel) { return (pixel.y / u_frame.tileSize) * u_frame.tilesX
 // fresh sample, a changed surface, one fresh sample, an unchanged or too bright difference pixel),
 // as resolve_display.comp sums them over a tile; difference terms with the regression weight of
 // the pixel's own tile.
-void gather(uint slot, ivec2 at) {
-  vec2 blend = vec2(0.0), change = vec2(0.0);
-  if (at.x >= 0 && at.y >= 0 && at.x < int(u_frame.width) && at.y < int(u_frame.height)) {
-    const uint index = uint(at.y) * u_frame.width + uint(at.x);
-    const PixelAccum accum = b_accum[index];
-    if (has_fresh_samples(accum)) {
-      const uint n = accum.count & kPixelCountMask;
-      const DisplayTexel texel = b_display[index];
-      if (!resurfaced(index, texel)) {
-        const uint c = differenced_samples(texel, n);
-        if (c > 0u) {
-          const DifferenceRecord record = b_difference[index];
-          if (record_judges(record))
-            change = change_terms(record, texel, accum.sum / float(n), c, b_judgements[tile_of(uvec2(at))].regression);
-        } else if (n >= 2u) {
-          blend = blend_terms(accum, n, texel);
-        }
-      }
-    }
-  }
-  s_blend[slot] = blend;
-  s_change[slot] = change;
+vec4 gather(ivec2 at) {
+  if (at.x < 0 || at.y < 0 || at.x >= int(u_frame.width) || at.y >= int(u_frame.height)) return vec4(0.0);
+  const uint index = uint(at.y) * u_frame.width + uint(at.x);
+  const PixelAccum accum = b_accum[index];
+  if (!has_fresh_samples(accum)) return vec4(0.0);
+  const uint n = accum.count & kPixelCountMask;
+  const DisplayTexel texel = b_display[index];
+  if (resurfaced(index, texel)) return vec4(0.0);
+  const uint c = differenced_samples(texel, n);
+  if (c == 0u) return n >= 2u ? vec4(blend_terms(accum, n, texel), 0.0, 0.0) : vec4(0.0);
+  const DifferenceRecord record = b_difference[index];
+  if (!record_judges(record)) return vec4(0.0);
+  return vec4(0.0, 0.0, change_terms(record, texel, accum.sum / float(n), c, b_judgements[tile_of(uvec2(at))].regression));
 }
 
-// The sums over the window around the block's pixel `local` (in block coordinates), each pixel
-// weighted by a tent, (r + 1 - |dx|) (r + 1 - |dy|): the pixels nearest count most, so a window
-// straddling the edge of a change leans to the pixel's own side, and its effective size
-// (sum k)^2 / sum k^2 is 54 pixels for r = 4, about a tile's 64.
-vec2 window_sum(uvec2 local, bool change) {
+// The tent's weight at an offset d along one axis, r + 1 - |d|: the pixels nearest count most,
+// so a window straddling the edge of a change leans to the pixel's own side; the window's
+// effective size (sum k)^2 / sum k^2 is 54 pixels for r = 4, about a tile's 64.
+float tent(int d) { return float(int(kDisplayWindowRadius) + 1 - abs(d)); }
+
+// Fills s_terms for the block at `blockOrigin`, then s_rows; the caller reads the columns.
+void gather_block(uvec2 blockOrigin) {
+  const uint lane = gl_LocalInvocationIndex;
   const int r = int(kDisplayWindowRadius);
-  vec2 sum = vec2(0.0);
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx) {
-      const uint slot = (local.y + uint(dy + r)) * kRegion + local.x + uint(dx + r);
-      const float weight = float((r + 1 - abs(dx)) * (r + 1 - abs(dy)));
-      sum += weight * (change ? s_change[slot] : s_blend[slot]);
-    }
+  for (uint slot = lane; slot < kRegion * kRegion; slot += gl_WorkGroupSize.x)
+    s_terms[slot] = gather(ivec2(blockOrigin) + ivec2(slot % kRegion, slot / kRegion) - r);
+  barrier();
+  for (uint slot = lane; slot < kRegion * kBlock; slot += gl_WorkGroupSize.x) {
+    const uint row = slot / kBlock, x = slot % kBlock;
+    vec4 sum = vec4(0.0);
+    for (int dx = -r; dx <= r; ++dx) sum += tent(dx) * s_terms[row * kRegion + x + uint(dx + r)];
+    s_rows[slot] = sum;
+  }
+  barrier();
+}
+
+// The tent-weighted sums over the window around the block's pixel `local`: blend's D and V
+// (xy), the difference rule's Dd and Vd (zw).
+vec4 window_sums(uvec2 local) {
+  const int r = int(kDisplayWindowRadius);
+  vec4 sum = vec4(0.0);
+  for (int dy = -r; dy <= r; ++dy) sum += tent(dy) * s_rows[(local.y + uint(dy + r)) * kBlock + local.x];
   return sum;
 }
 
-// The fresh estimate's weight at a blend pixel of a tile in `state`.
-float pixel_alpha(uint state, uvec2 local) {
+// The fresh estimate's weight at a blend pixel of a tile in `state`, its window's D and V in `sums`.
+float pixel_alpha(uint state, vec2 sums) {
   if (state == kJudgeStale) return 0.0;
   if (state != kJudgeWeighed) return 1.0;
-  const vec2 sums = window_sum(local, false);  // D, V
   if (u_push.rule == kDisplaySwitch) return sums_overflowed(sums.x, sums.y) || sums.x > u_push.threshold * sums.y ? 1.0 : 0.0;
   return change_weight(sums.x, sums.y);
 }
@@ -92,15 +99,11 @@ uint mixed_samples(float a, uint n, uint staleSamples) {
 }
 
 // Difference rule: a changed pixel shows X = s + b (C' - s), C' = C + a (f - C), a its tile's
-// regression weight, b judged over its window; an unchanged one (C = s exactly) or one with a
-// sample too bright to judge shows s.
-void show_difference(inout DisplayTexel texel, uint index, uvec2 local, vec3 regression, vec3 fresh, uint n, uint c) {
+// regression weight, b judged over its window (Dd, Vd in `sums`); an unchanged one (C = s
+// exactly) or one with a sample too bright to judge shows s.
+void show_difference(inout DisplayTexel texel, uint index, vec2 sums, vec3 regression, vec3 fresh, uint n, uint c) {
   const DifferenceRecord record = b_difference[index];
-  float shrink = 0.0;
-  if (record_judges(record)) {
-    const vec2 sums = window_sum(local, true);  // Dd, Vd
-    shrink = change_weight(sums.x, sums.y);
-  }
+  const float shrink = record_judges(record) ? change_weight(sums.x, sums.y) : 0.0;
   texel.shown = shrink == 0.0 ? texel.stale
                               : max(texel.stale + shrink * (corrected_estimate(record, texel.stale, fresh, c, regression) - texel.stale), vec3(0.0));
   texel.shownSamples = mixed_samples(shrink * (regression.x + regression.y + regression.z) / 3.0, n, texel.staleSamples);
@@ -108,7 +111,8 @@ void show_difference(inout DisplayTexel texel, uint index, uvec2 local, vec3 reg
   texel.flags = (texel.flags & ~kShownGrouped) | kShownCurrent;
 }
 
-void show_pixel(uint index, uvec2 local, TileJudgement judgement) {
+// `sums`: the window's sums (window_sums), where the tile needs them.
+void show_pixel(uint index, vec4 sums, TileJudgement judgement) {
   const PixelAccum accum = b_accum[index];
   if (!has_fresh_samples(accum)) return;
   const uint n = accum.count & kPixelCountMask;
@@ -117,11 +121,11 @@ void show_pixel(uint index, uvec2 local, TileJudgement judgement) {
   const bool surfaceChanged = resurfaced(index, texel);
   const uint c = differenced_samples(texel, n);
   if (judgement.state != kJudgeSettled && !surfaceChanged && c > 0u) {
-    show_difference(texel, index, local, judgement.regression, fresh, n, c);
+    show_difference(texel, index, sums.zw, judgement.regression, fresh, n, c);
     b_display[index] = texel;
     return;
   }
-  const float alpha = surfaceChanged ? 1.0 : pixel_alpha(judgement.state, local);
+  const float alpha = surfaceChanged ? 1.0 : pixel_alpha(judgement.state, sums.xy);
   if (alpha == 0.0) return;  // the pixel keeps what it shows
   texel.flags &= ~kShownGrouped;  // what is shown now is not the stale estimate alone
   if (alpha == 1.0) {
@@ -137,6 +141,18 @@ void show_pixel(uint index, uvec2 local, TileJudgement judgement) {
     texel.flags = (texel.flags & kStaleCurrent) != 0u ? texel.flags | kShownCurrent : texel.flags & ~kShownCurrent;
   }
   b_display[index] = texel;
+}
+
+// Whether a tile this resolve judged lies within the window radius of the pixels [lo, hi): only
+// then can what they show have changed (their own tile's gate and regression, or the terms of a
+// pixel in their windows).
+bool reached(uvec2 lo, uvec2 hi) {
+  const ivec2 first = max(ivec2(lo) - int(kDisplayWindowRadius), ivec2(0)) / int(u_frame.tileSize);
+  const ivec2 last = min(ivec2(hi) - 1 + int(kDisplayWindowRadius), ivec2(u_frame.width, u_frame.height) - 1) / int(u_frame.tileSize);
+  for (int y = first.y; y <= last.y; ++y)
+    for (int x = first.x; x <= last.x; ++x)
+      if (b_judgements[uint(y) * u_frame.tilesX + uint(x)].epoch == u_push.epoch) return true;
+  return false;
 }
 
 void main() {
@@ -165,14 +181,11 @@ void main() {
   const uint blocks = (u_frame.tileSize + kBlock - 1u) / kBlock;
   for (uint block = 0u; block < blocks * blocks; ++block) {
     const uvec2 blockOrigin = origin + uvec2(block % blocks, block / blocks) * kBlock;
-    if (windows) {
-      barrier();  // the previous block is done with the shared terms
-      for (uint slot = lane; slot < kRegion * kRegion; slot += gl_WorkGroupSize.x)
-        gather(slot, ivec2(blockOrigin) + ivec2(slot % kRegion, slot / kRegion) - int(kDisplayWindowRadius));
-      barrier();
-    }
+    if (any(greaterThanEqual(blockOrigin, tileEnd)) || !reached(blockOrigin, min(blockOrigin + kBlock, tileEnd))) continue;
+    if (windows) gather_block(blockOrigin);
     const uvec2 local = uvec2(lane % kBlock, lane / kBlock);
     const uvec2 pixel = blockOrigin + local;
-    if (all(lessThan(pixel, tileEnd))) show_pixel(pixel.y * u_frame.width + pixel.x, local, judgement);
+    if (all(lessThan(pixel, tileEnd))) show_pixel(pixel.y * u_frame.width + pixel.x, windows ? window_sums(local) : vec4(0.0), judgement);
+    barrier();  // the next block's gather overwrites what this one's pixels read
   }
 }

@@ -280,6 +280,7 @@ struct DifferenceRecord {
 struct TileJudgement {
   vec3 regression;  // difference rule: the weight a of f against C, per channel
   uint state;       // kJudge*
+  uint epoch;       // ResolvePush::epoch of the resolve that judged it (0: the capture)
 };
 // show_display.comp weighs a pixel by the display rule's sums over the square of
 // (2 kDisplayWindowRadius + 1)^2 pixels around it (9 x 9: about an 8 x 8 tile's statistics),
@@ -442,6 +443,7 @@ struct ResolvePush {
   float threshold;  // switch: show the fresh estimate when D > threshold * V (see the shader)
   uint useGBuffer;  // 1: the G-buffer describes the current scene (stage 1 ran since the last edit)
   uint difference;  // 1: the film keeps DifferenceRecords (the capture maintains them)
+  uint epoch;       // this resolve's number (> 0): show_display.comp skips pixels no tile it judged reaches
 };
 
 // Per-dispatch parameters of display.comp: the rendered image is drawn into the window at

@@ -80,12 +80,18 @@ void ResolvePass::record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t 
                               rule,
                               kSwitchThreshold,
                               m_gbuffers.is_current() ? 1u : 0u,
-                              m_difference ? 1u : 0u};
+                              m_difference ? 1u : 0u,
+                              next_epoch()};
   vk::compute_to_compute_barrier(cmd);
   m_judge.dispatch(cmd, &push, tiles.count);
   if (rule == abi::kDisplayCapture) return;
   vk::compute_to_compute_barrier(cmd);
   m_show.dispatch(cmd, &push, tiles.count * show_neighbourhood(rule, m_tile_size));
+}
+
+uint32_t ResolvePass::next_epoch() const {
+  if (++m_epoch == 0) m_epoch = 1;  // 0 marks what the capture cleared
+  return m_epoch;
 }
 
 ImageRGB ResolvePass::displayed_image() const {

@@ -1,8 +1,8 @@
 #pragma once
 // What the screen shows (resolve_display.comp): a display buffer apart from the accumulation.
 // At an edit the shown image is captured as the stale estimate; resolves then judge per tile, by
-// the display rule, when and how much its fresh estimate replaces the stale one, and weigh each
-// pixel by its neighbourhood's judgements (docs/method.md, "The display after an edit").
+// the display rule, when its fresh estimate may replace the stale one, and weigh each pixel's mix
+// over the pixels around it (show_display.comp; docs/method.md, "The display after an edit").
 #include <cstdint>
 #include <vector>
 
@@ -40,10 +40,12 @@ class ResolvePass {
   void clear();
 
   vk::Buffer display;     // DisplayTexel per pixel
-  vk::Buffer judgements;  // TileJudgement per tile: the sums the next resolve's neighbours read
+  vk::Buffer judgements;  // TileJudgement per tile: its gate and regression weight, for showing its pixels
 
  private:
   void record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t rule) const;
+  // A number for the next recorded resolve (ResolvePush::epoch), never 0.
+  uint32_t next_epoch() const;
   // Both kernels' set 0 (shaders/shared/bindings/resolve.h).
   std::vector<vk::BufferBinding> bindings(const TileState& tiles, const Film& film, const GBufferPass& gbuffers) const;
 
@@ -52,6 +54,7 @@ class ResolvePass {
   bool m_difference;  // the film keeps difference records
   uint32_t m_tile_count;
   uint32_t m_tile_size;
+  mutable uint32_t m_epoch = 0;  // the last resolve's number
   vk::ComputePipeline m_judge;  // resolve_display.comp
   vk::ComputePipeline m_show;   // show_display.comp
 };
