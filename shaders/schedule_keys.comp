@@ -4,10 +4,11 @@
 // stage-1 change score; then focus tiles (docs/method.md#focus) by descending focus score;
 // then the rest of the active set (an edit that activates every tile) by distance from the
 // seeds, and after a reprojection last of all those whose pixels barely moved (kTileReprojected
-// without kTileMoved: what they show is nearly theirs already). Class 1: discovered tiles by descending weight W(T). Class 2: the other tiles by
-// distance from the seeds. The seeds are the active tiles with a change or focus score; with
-// none (a camera edit and no focus) distances are all equal. Ties keep tile-id order because
-// the sort is stable and values start in id order.
+// without kTileMoved: what they show is nearly theirs already). Class 1: discovered tiles by
+// descending weight W(T). Class 2: the other tiles by distance from the seeds. The seeds are the
+// active tiles with a change or focus score; with none (a camera edit and no focus) distances
+// are all equal. Ties keep tile-id order because the sort is stable and values start in id
+// order.
 // Pass 0 (u_pass == 0): per tile, columns to the nearest seed tile in its row.
 // Pass 1: keys from flags, scores, weights and the 2D distance (min over rows).
 #extension GL_GOOGLE_include_directive : require
