@@ -29,7 +29,7 @@ layout(push_constant) uniform Push { uint u_mode; };  // kCarryEdit, kCarryEvery
 void main() {
   const uint tile = dispatch_index();
   if (tile >= u_frame.tileCount) return;
-  const uvec2 origin = uvec2(tile % u_frame.tilesX, tile / u_frame.tilesX) * u_frame.tileSize;
+  const uvec2 origin = tile_origin(tile);
   const bool owed = (b_accum[origin.y * u_frame.width + origin.x].count & kPixelOwed) != 0u;
   const uint ranked = b_tile_flags[tile] & (kTileActive | kTileDiscovered);
   const bool carried = owed && ranked != 0u;

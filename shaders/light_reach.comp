@@ -109,7 +109,7 @@ void main() {
   const float shown = max(luminance(b_display[index].shown), 0.0);
   const float now = max(shown + luminance(change), delta);
   const float r = now > 0.0 && delta < 3.0e38 ? min(delta / now, 1.0) : 0.0;
-  const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
+  const uint tile = tile_of_pixel(pixel);
   atomicOr(b_tile_flags[tile], kTileActive | kTileScored);
   atomicAdd(b_tile_change[tile], 1u + uint(kReachScoreScale * r * r + 0.5));
 }

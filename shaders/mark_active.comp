@@ -65,7 +65,7 @@ void main() {
   const uint shown = b_display[index].shownRecord;
   const bool wrongSurface = u_everything == 0u && shown != kRecordUnknown && shown != now;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
-  const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
+  const uint tile = tile_of_pixel(pixel);
   const bool viewChanged = u_reprojected != 0u && !wrongSurface && view_dependent(now);
   if (u_reprojected != 0u)
     atomicOr(b_tile_flags[tile], kTileReprojected | ((b_display[index].flags & kShownStill) == 0u ? kTileMoved : 0u));

@@ -10,7 +10,7 @@
 //         the tile flags kTileShown once the tile's own measure shows its fresh estimate at
 //         weight 1/2 or more, kTileSettled once it shows it alone, and kTileReshow on the tile
 //         and (but for immediate) the tiles around it whose pixels' windows reach into it
-//         (show_reach); at a capture the display texels.
+//         (ResolvePush::showReach); at a capture the display texels.
 // Rules (ResolvePush::rule):
 //  - capture (at an edit): what each pixel shows becomes its stale estimate; with difference
 //    records, a pixel with samples since the last edit keeps them as the old scene's samples when
@@ -160,7 +160,7 @@ void judge_change(uvec2 origin, uint tilePixels) {
 // The tile and the tiles with a pixel whose window reaches into it are shown again (only the
 // tile for immediate, which shows each pixel by itself).
 void mark_reshow(uint tile) {
-  const int reach = int(show_reach(u_push.rule));
+  const int reach = int(u_push.showReach);
   const ivec2 at = ivec2(tile % u_frame.tilesX, tile / u_frame.tilesX);
   for (int dy = -reach; dy <= reach; ++dy)
     for (int dx = -reach; dx <= reach; ++dx) {

@@ -5,7 +5,7 @@
 // pixels around each pixel (kDisplayWindowRadius), not over its tile, so that no tile grid shows.
 // The rules: resolve_display.comp.
 // Dispatch: per schedule entry as resolve_display.comp, times the (2 reach + 1)^2 tiles around
-// it (show_reach); workgroup g shows neighbour g % that of entry g / that, if it is the first to
+// it (ResolvePush::showReach); workgroup g shows neighbour g % that of entry g / that, if it is the first to
 // clear the tile's kTileReshow (each tile once).
 // Reads:  the tile list, tile flags, judgements, per-pixel accumulation, display texels, the
 //         G-buffer, the difference records, FrameParams.
@@ -31,8 +31,6 @@ shared vec4 s_terms[kRegion * kRegion];   // per pixel: blend's w (f - s)^2 and 
                                           // difference rule's w (C' - s)^2 and its noise
 shared vec4 s_rows[kRegion * kBlock];     // the terms summed along rows, by the tent
 
-uint tile_of(uvec2 pixel) { return (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize; }
-
 // The rule's terms of the pixel at `at` (zero where it takes no part: outside the image, no
 // fresh sample, a changed surface, one fresh sample, an unchanged or too bright difference pixel),
 // as resolve_display.comp sums them over a tile; difference terms with the regression weight of
@@ -49,7 +47,7 @@ vec4 gather(ivec2 at) {
   if (c == 0u) return n >= 2u ? vec4(blend_terms(accum, n, texel), 0.0, 0.0) : vec4(0.0);
   const DifferenceRecord record = b_difference[index];
   if (!record_judges(record)) return vec4(0.0);
-  return vec4(0.0, 0.0, change_terms(record, texel, accum.sum / float(n), c, b_judgements[tile_of(uvec2(at))].regression));
+  return vec4(0.0, 0.0, change_terms(record, texel, accum.sum / float(n), c, b_judgements[tile_of_pixel(uvec2(at))].regression));
 }
 
 // The tent's weight at an offset d along one axis, r + 1 - |d|: the pixels nearest count most,
@@ -156,7 +154,7 @@ bool reached(uvec2 lo, uvec2 hi) {
 }
 
 void main() {
-  const uint reach = show_reach(u_push.rule), side = 2u * reach + 1u;
+  const uint reach = u_push.showReach, side = 2u * reach + 1u;
   const uint group = dispatch_group();
   const uint entry = group / (side * side);
   if (entry >= u_push.tileCount) return;

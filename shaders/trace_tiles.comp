@@ -299,7 +299,7 @@ void main() {
   const uint pixelIndex = pixel.y * u_frame.width + pixel.x;
   // No camera ray of this tile can reach any instance's bounds (src/render/background_tiles.cpp):
   // its samples are what a miss gives, with the same random numbers, without a ray query.
-  const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
+  const uint tile = tile_of_pixel(pixel);
   const bool backgroundTile = b_tile_background[tile] != 0u;
   PixelAccum accum = b_accum[pixelIndex];
   const bool restart = (accum.count & kPixelOwed) != 0u;  // first visit since an edit

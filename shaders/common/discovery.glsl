@@ -33,7 +33,7 @@ void discover_vertex(vec3 x, float weight) {
   if (!project_to_pixel(x, pixel, depth)) return;
   const float seen = b_gbuffer[pixel.y * u_frame.width + pixel.x].depth;
   if (abs(depth - seen) > u_frame.depthEpsilon * seen) return;  // hidden from the camera
-  const uint tile = (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize;
+  const uint tile = tile_of_pixel(pixel);
   atomicAdd(b_tile_weights[tile], uint64_t(min(weight, 1.0e6) * kWeightScale + 0.5));
   atomicOr(b_tile_flags[tile], kTileDiscovered);
 }

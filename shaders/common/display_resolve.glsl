@@ -16,8 +16,6 @@ layout(push_constant, scalar) uniform Push { ResolvePush u_push; };
 
 #include "common/difference.glsl"
 
-uvec2 tile_origin(uint tile) { return uvec2(tile % u_frame.tilesX, tile / u_frame.tilesX) * u_frame.tileSize; }
-
 // Pixel index of the tile's local-th pixel, or kInvalidIndex outside the image.
 uint tile_pixel_index(uvec2 origin, uint local) {
   const uvec2 pixel = origin + uvec2(local % u_frame.tileSize, local / u_frame.tileSize);
@@ -30,12 +28,6 @@ uint current_record(uint index) { return u_push.useGBuffer != 0u ? b_gbuffer[ind
 // The pixel's stale estimate depicts another surface than the pixel shows now.
 bool resurfaced(uint index, DisplayTexel texel) {
   return texel.staleRecord != kRecordUnknown && u_push.useGBuffer != 0u && texel.staleRecord != b_gbuffer[index].record;
-}
-
-// How many tiles around a judged tile hold pixels whose window reaches into it: they are shown
-// again with it (none for immediate, which shows each pixel by itself). ResolvePass mirrors it.
-uint show_reach(uint rule) {
-  return rule == kDisplayImmediate ? 0u : (kDisplayWindowRadius + u_frame.tileSize - 1u) / u_frame.tileSize;
 }
 
 bool has_fresh_samples(PixelAccum accum) { return (accum.count & kPixelOwed) == 0u && (accum.count & kPixelCountMask) > 0u; }

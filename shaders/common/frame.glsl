@@ -7,4 +7,10 @@
 
 layout(scalar, set = kSceneSet, binding = kSceneFrame) readonly buffer Frame { FrameParams u_frame; };
 
+// The tile a pixel belongs to (TileState::tile_of on the host).
+uint tile_of_pixel(uvec2 pixel) { return (pixel.y / u_frame.tileSize) * u_frame.tilesX + pixel.x / u_frame.tileSize; }
+
+// A tile's first pixel.
+uvec2 tile_origin(uint tile) { return uvec2(tile % u_frame.tilesX, tile / u_frame.tilesX) * u_frame.tileSize; }
+
 #endif

@@ -19,7 +19,7 @@ bool tile_pixel(uint listOffset, uint tileCount, uint tileStride, uint groupsPer
   const uint tile = b_tiles[listOffset + listIndex];
   const uint flags = b_tile_flags[tile];
   if ((flags & requireFlags) != requireFlags || (flags & skipFlags) != 0u) return false;
-  pixel = uvec2((tile % u_frame.tilesX) * tileSize + local % tileSize, (tile / u_frame.tilesX) * tileSize + local / tileSize);
+  pixel = tile_origin(tile) + uvec2(local % tileSize, local / tileSize);
   return pixel.x < u_frame.width && pixel.y < u_frame.height;
 }
 

@@ -444,6 +444,7 @@ struct ResolvePush {
   uint useGBuffer;  // 1: the G-buffer describes the current scene (stage 1 ran since the last edit)
   uint difference;  // 1: the film keeps DifferenceRecords (the capture maintains them)
   uint epoch;       // this resolve's number (> 0): show_display.comp skips pixels no tile it judged reaches
+  uint showReach;   // tiles around a judged one that hold pixels whose window reaches into it (0 for immediate)
 };
 
 // Per-dispatch parameters of display.comp: the rendered image is drawn into the window at

@@ -20,12 +20,10 @@ uint32_t kernel_rule(DisplayRule rule, bool difference) {
   return abi::kDisplayBlend;
 }
 
-// show_display.comp's workgroups per schedule entry: the entry's tile and the tiles around it
-// whose pixels' windows reach into it (show_reach in shaders/common/display_resolve.glsl);
-// immediate shows each pixel by itself.
-uint32_t show_neighbourhood(uint32_t kernel_rule, uint32_t tile_size) {
-  const uint32_t reach = kernel_rule == abi::kDisplayImmediate ? 0u : (abi::kDisplayWindowRadius + tile_size - 1u) / tile_size;
-  return (2u * reach + 1u) * (2u * reach + 1u);
+// How many tiles around a judged tile hold pixels whose window reaches into it: show_display.comp
+// shows them again with it. Immediate shows each pixel by itself.
+uint32_t show_reach(uint32_t kernel_rule, uint32_t tile_size) {
+  return kernel_rule == abi::kDisplayImmediate ? 0u : (abi::kDisplayWindowRadius + tile_size - 1u) / tile_size;
 }
 
 }  // namespace
@@ -81,12 +79,14 @@ void ResolvePass::record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t 
                               kSwitchThreshold,
                               m_gbuffers.is_current() ? 1u : 0u,
                               m_difference ? 1u : 0u,
-                              next_epoch()};
+                              next_epoch(),
+                              show_reach(rule, m_tile_size)};
   vk::compute_to_compute_barrier(cmd);
   m_judge.dispatch(cmd, &push, tiles.count);
   if (rule == abi::kDisplayCapture) return;
   vk::compute_to_compute_barrier(cmd);
-  m_show.dispatch(cmd, &push, tiles.count * show_neighbourhood(rule, m_tile_size));
+  const uint32_t side = 2u * push.showReach + 1u;  // workgroups per entry: the tiles around it
+  m_show.dispatch(cmd, &push, tiles.count * side * side);
 }
 
 uint32_t ResolvePass::next_epoch() const {
