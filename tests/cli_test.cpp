@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "hipr/edits.h"
 #include "hipr/scene_loader.h"
 #include "image/tonemap.h"
 #include "image/image_io.h"
@@ -392,6 +393,57 @@ TEST(Replay, FocusOpsChangeTheOrderOnly) {
   expect_one_error_line(result);
   EXPECT_NE(result.output.find("teapot"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "x"));
+}
+
+// Geometry edits through `hipr replay`: every policy ends on the same image, --save writes a
+// validator-clean scene whose render is the edited scene's (a duplicate, a deform, a delete),
+// and an import (which saving cannot hold yet) or a path out of the script's folder is bad
+// input that writes nothing.
+TEST(Replay, GeometryEditsSaveAndRenderAsTheEditedScene) {
+  const fs::path dir = test::temp_dir("replay_geometry");
+  const fs::path script = dir / "geometry.json";
+  std::ofstream(script) << R"({"edits": [
+      {"op": "duplicate", "node": "short_block", "as": "short_block_2", "translate": [-0.25, 0, 0.2]},
+      {"op": "deform", "node": "tall_block", "matrix": [1,0,0,0, 0,1.3,0,0, 0,0,1,0, 0,0,0,1]},
+      {"op": "delete", "node": "short_block"}]})";
+  const std::string size = " --width 32 --height 32 --spp 2 --tile 8 --max-depth 4 -q";
+  std::vector<float> reference;
+  for (const char* policy : {"hipr", "full"}) {
+    const fs::path out = dir / policy;
+    const test::CommandResult result =
+        test::run_hipr("replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(script) + " -o " +
+                       quoted(out) + " --policy " + policy + " --save " + quoted(out / "edited.gltf") + size);
+    ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+    const ImageRGB final_image = read_image(out / "final.exr");
+    if (reference.empty()) reference = final_image.rgb;
+    EXPECT_EQ(final_image.rgb, reference) << policy;
+  }
+  const fs::path saved = dir / "hipr" / "edited.gltf";
+  ASSERT_TRUE(fs::exists(saved));
+  const Scene reloaded = load_scene(saved);
+  EXPECT_THROW(find_node(reloaded, "short_block"), InputError) << "deleted";
+  EXPECT_NO_THROW(find_node(reloaded, "short_block_2"));
+  ASSERT_EQ(test::run_hipr("render " + quoted(saved) + " -o " + quoted(dir / "saved.exr") + size).exit_code, kExitOk);
+  EXPECT_EQ(read_image(dir / "saved.exr").rgb, reference) << "the saved scene renders as the edited one";
+
+  // An import of a file beside the script: rendered, but not saved.
+  fs::copy_file(test::asset("cornell_sphere.glb"), dir / "sphere.glb");
+  const fs::path import_script = dir / "import.json";
+  std::ofstream(import_script) << R"({"edits": [{"op": "import", "file": "sphere.glb", "translate": [0, 0.1, 0]}]})";
+  const std::string import_base = "replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(import_script);
+  EXPECT_EQ(test::run_hipr(import_base + " -o " + quoted(dir / "imported") + size).exit_code, kExitOk);
+  test::CommandResult result =
+      test::run_hipr(import_base + " -o " + quoted(dir / "no") + " --save " + quoted(dir / "no.gltf") + size);
+  expect_one_error_line(result);
+  EXPECT_FALSE(fs::exists(dir / "no.gltf"));
+  EXPECT_FALSE(fs::exists(dir / "no"));
+
+  const fs::path escape = dir / "escape.json";
+  std::ofstream(escape) << R"({"edits": [{"op": "import", "file": "../x.glb"}]})";
+  result = test::run_hipr("replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(escape) + " -o " +
+                          quoted(dir / "esc") + size);
+  expect_one_error_line(result);
+  EXPECT_FALSE(fs::exists(dir / "esc"));
 }
 
 TEST(Replay, BadPolicyOrUnknownNameWritesNothing) {

@@ -3,6 +3,8 @@
 // set. Skips when node or the
 // validator package (installed into tools/node_modules by tools/setup-deps.sh) is absent.
 #include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 #include <sys/wait.h>
 
 #include <array>
@@ -68,6 +70,7 @@ std::vector<Report> validate(const std::vector<fs::path>& files) {
 
 void expect_no_new_errors(const Report& original, const Report& saved, const std::string& what) {
   EXPECT_LE(saved.errors, original.errors) << what;
+  EXPECT_LE(saved.warnings, original.warnings) << what << ": new warnings";
   for (const auto& [code, count] : saved.error_codes) {
     const auto it = original.error_codes.find(code);
     EXPECT_TRUE(it != original.error_codes.end() && count <= it->second) << what << ": new error " << code;
@@ -95,8 +98,19 @@ TEST(GltfValidator, SavedScenesHaveNoNewErrors) {
     // Every OpenPBR parameter of material 0 set (extensions added, values beyond glTF's ranges).
     apply_edit(scene, test::every_parameter_edit("#0", 1));
     save_scene(scene, out / "every_parameter.gltf");
+    // Geometry edits: the first object duplicated and deformed (new nodes, a mesh written anew),
+    // the last one deleted (unlisted).
+    const std::vector<Instance> instances = scene.instances();
+    if (!instances.empty()) {
+      const std::string first = "#" + std::to_string(instances.front().node);
+      apply_edit(scene, DuplicateEdit{first, "validator_copy", glm::vec3(0.1f)});
+      apply_edit(scene, DeformEdit{first, glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 1.2f, 1.0f)), nullptr});
+      if (instances.size() > 1) apply_edit(scene, DeleteEdit{"#" + std::to_string(instances.back().node)});
+    }
+    save_scene(scene, out / "geometry.gltf");
+    save_scene(scene, out / "geometry.glb");
     const std::vector<std::string> names = {"unedited.gltf", "unedited.glb", "edited.gltf", "edited.glb",
-                                            "every_parameter.gltf"};
+                                            "every_parameter.gltf", "geometry.gltf", "geometry.glb"};
     std::vector<fs::path> files = {source};
     for (const std::string& name : names) files.push_back(out / name);
     const std::vector<Report> reports = validate(files);

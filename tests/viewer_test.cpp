@@ -10,6 +10,7 @@
 #include "app/viewer/camera_controller.h"
 #include "app/viewer/edit_history.h"
 #include "app/viewer/overlays.h"
+#include "app/viewer/scene_edits.h"
 #include "app/viewer/session.h"
 #include "app/viewer/view_layout.h"
 #include "app/viewer/viewer_state.h"
@@ -755,6 +756,46 @@ TEST(Session, ADragLeavesNoGhostWhereTheObjectWas) {
   }
   ASSERT_GT(strong, 10u);
   EXPECT_LE(double(ghosts), 0.1 * double(strong)) << ghosts << " of " << strong << " strongly changed tiles";
+}
+
+// Ctrl+D, Delete and Import are session edits like any other: the copy becomes the selection,
+// a delete clears it, each re-renders to the fresh image of the edited scene, and undoing all
+// three comes back to the original image bit for bit.
+TEST(Session, DuplicateDeleteAndImportReRenderAndUndo) {
+  const SessionSettings s = small_settings();
+  Session session(test::context(), cornell(), s);
+  ViewerState state;
+  converge(session);
+  const ImageRGB original = session.displayed();
+
+  state.selected_node = int(node_index(session.scene(), "short_block"));
+  duplicate_selection(session, state);
+  ASSERT_GE(state.selected_node, 0);
+  EXPECT_EQ(session.scene().nodes[size_t(state.selected_node)].name, "short_block.1");
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
+  EXPECT_NE(session.displayed().rgb, original.rgb);
+
+  state.selected_node = int(node_index(session.scene(), "tall_block"));
+  delete_selection(session, state);
+  EXPECT_EQ(state.selected_node, -1);
+  ASSERT_TRUE(state.messages.empty()) << state.messages.back().text;
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
+
+  ASSERT_TRUE(try_edit(session, state, ImportEdit{test::asset("cornell_sphere.glb"), "", glm::vec3(0.0f, 0.1f, 0.0f)}));
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
+  EXPECT_FALSE(try_edit(session, state, ImportEdit{test::asset("missing.glb"), "", glm::vec3(0.0f)}));
+  EXPECT_EQ(state.messages.size(), 1u) << "a bad file is a message, the scene unchanged";
+
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(session.undo());
+  converge(session);
+  EXPECT_EQ(session.displayed().rgb, original.rgb);
+  // The copy the undo took away is no selection.
+  state.selected_node = int(session.scene().nodes.size()) + 3;
+  EXPECT_FALSE(selected_node(session, state).has_value());
+  EXPECT_EQ(state.selected_node, -1);
 }
 
 }  // namespace

@@ -85,9 +85,66 @@ struct FocusEdit {
   bool clear = false;  // drops every seed (and adds none)
 };
 
+// Geometry edits (docs/method.md#geometry-edits). Nodes keep their indices through all of them:
+// copies and imports are appended, a delete detaches the node from its parent (and drops it
+// from the end of the list when an edit appended it there), and the inverses put back exactly
+// the hierarchy before. A scene without a camera first gets its default one as a node, so that
+// the view does not follow the bounds the edit changes.
+
+// A copy of the node and its subtree beside it (the same parent), moved by `translate` in the
+// parent's frame. Copies share the meshes; a copied light is a light of its own. The copy is
+// named `as` (empty: "<node>.1", ".2"... whichever is free), its descendants "<as>/<name>".
+struct DuplicateEdit {
+  std::string node;
+  std::string as;
+  glm::vec3 translate{0.0f};
+};
+
+// Removes the node and its subtree from the scene.
+struct DeleteEdit {
+  std::string node;
+};
+
+// Adds a glTF file's default scene as one new root node `as` (empty: the file's stem) at
+// `translate`: its meshes, materials, textures and punctual lights come along, its cameras and
+// environment do not. load_edit_script makes a script's path relative to the script's folder
+// and refuses one that leaves it.
+struct ImportEdit {
+  std::filesystem::path file;
+  std::string as;
+  glm::vec3 translate{0.0f};
+};
+
+// Transforms the vertices of the node's mesh by `matrix` (in the mesh's own frame): a change of
+// the geometry, which every node using the mesh shows.
+struct DeformEdit {
+  std::string node;
+  glm::mat4 matrix{1.0f};
+  // Made by inverse_edit only: the mesh to put back (exactly, instead of the inverse matrix).
+  std::shared_ptr<const Mesh> restore;
+};
+
+// What a duplicate, delete or import changes: the hierarchy, the lights and cameras (small,
+// copied whole) and how many meshes, materials, textures and images there are (those only grow).
+struct SceneStructure {
+  std::vector<Node> nodes;
+  std::vector<uint32_t> root_nodes;
+  std::vector<std::vector<uint32_t>> children;
+  std::vector<PunctualLight> lights;
+  std::vector<Camera> cameras;
+  std::vector<std::string> extensions_used;
+  size_t meshes = 0, materials = 0, textures = 0, images = 0;
+};
+
+// Made by inverse_edit only (the undo of a duplicate, delete or import): puts the structure back.
+struct StructureEdit {
+  std::shared_ptr<const SceneStructure> restore;
+};
+
 // "emission" edits are material edits restricted to emission keys.
 using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit, CameraEdit,
-                          EnvironmentEdit, FocusEdit>;
+                          EnvironmentEdit, FocusEdit, DuplicateEdit, DeleteEdit, ImportEdit, DeformEdit,
+                          StructureEdit>;
 
 // Whether the edit is a focus op (no change of the scene).
 inline bool is_focus(const Edit& edit) { return std::holds_alternative<FocusEdit>(edit); }
@@ -98,7 +155,8 @@ std::vector<Edit> load_edit_script(const std::filesystem::path& path);
 std::vector<Edit> parse_edit_script(const std::string& json_text, const std::string& name,
                                     const std::filesystem::path& base = {});
 
-// The node an edit names: its glTF name (the first of that name) or "#index"; throws InputError.
+// The node an edit names: its glTF name (the first of that name in the scene) or "#index";
+// throws InputError, also for a node that is not in the scene (deleted).
 size_t find_node(const Scene& scene, const std::string& name);
 
 // Applies one edit to the scene; throws InputError for an unknown node, material or key.

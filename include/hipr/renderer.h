@@ -75,6 +75,10 @@ struct SceneStats {
   size_t light_count = 0;        // entries of the light table (emissive triangles, lights, environment)
   size_t cutout_geometries = 0;  // geometries that need an alpha test (not marked opaque)
   float scene_radius = 1.0f;
+  // The mesh acceleration structures the last update_scene built (a new, deformed or re-cut
+  // mesh each), and the time they took, device wait included.
+  uint32_t blas_builds = 0;
+  double blas_build_seconds = 0.0;
 };
 
 // Per pixel, the difference estimate C = stale + sum_i d_i / c after an edit

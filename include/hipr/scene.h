@@ -26,7 +26,16 @@ struct MeshPrimitive {
 struct Mesh {
   std::string name;
   std::vector<MeshPrimitive> primitives;
+  // A fingerprint of what the primitives hold (mesh_revision), set when they are made or changed
+  // (a load, an import, a deform): what copies the mesh (the GPU's buffers, a diff's snapshot)
+  // compare to tell whether it changed without comparing vertices. Equal for two loads of one
+  // file, so their scenes diff as the same.
+  uint64_t revision = 0;
 };
+
+// The fingerprint of the mesh's geometry: its primitives' vertices and indices (not their
+// materials, which an import renumbers).
+uint64_t mesh_revision(const Mesh& mesh);
 
 struct Node {
   std::string name;
@@ -129,6 +138,10 @@ bool material_is_view_dependent(const MaterialParameters& m);
 // emission texture only multiplies them). NaN counts as not emitting.
 bool material_emits(const MaterialParameters& m);
 
+// The texture slots of a material (indices into Scene::textures or abi::kInvalidIndex), in a
+// fixed order.
+std::vector<uint32_t*> texture_slots(MaterialParameters& m);
+
 struct Scene {
   std::filesystem::path source;
   std::string content_hash;  // of every byte read to build the scene
@@ -152,6 +165,20 @@ struct Scene {
   std::pair<glm::vec3, glm::vec3> bounds() const;
   std::vector<uint32_t> root_nodes;  // of the default scene
   std::vector<std::vector<uint32_t>> children;  // per node
+
+  // Per node, whether it is in the scene: reachable from root_nodes. A deleted node is one no
+  // longer reachable (edits detach it from its parent, so that nodes keep their indices; nodes
+  // of the file that its default scene does not list are not in the scene either).
+  std::vector<bool> reachable_nodes() const;
+  // The nodes in the scene that carry a punctual light, in index order.
+  std::vector<uint32_t> light_nodes() const;
+  // How many nodes and punctual lights the file had: edits append after them and delete only
+  // what they appended (the file's own deleted nodes stay, detached, so that saving can patch
+  // the file's JSON by index).
+  size_t loaded_node_count = 0;
+  size_t loaded_light_count = 0;
+  // Mesh::revision of each mesh the file had, as loaded (saving writes the deformed ones again).
+  std::vector<uint64_t> loaded_mesh_revisions;
 };
 
 }  // namespace hipr

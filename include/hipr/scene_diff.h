@@ -34,10 +34,16 @@ struct LightChange {
 };
 
 struct ChangeSet {
-  std::vector<uint32_t> instances;  // indices into Scene::instances() (the changed set E)
+  // Indices into the edited scene's Scene::instances(): the changed set E (instances moved,
+  // shown, hidden, added, deformed or re-materialed).
+  std::vector<uint32_t> instances;
+  // Nodes whose instances left the scene (deleted): E's part that only the image before the
+  // edit shows.
+  std::vector<uint32_t> departed;
   std::vector<LightChange> lights;  // punctual lights that changed
   bool materials = false;           // material parameters changed: patch the material table
   bool transforms = false;          // an instance moved, appeared or disappeared: rebuild the TLAS
+  bool geometry = false;            // meshes added, removed or deformed: upload vertices, build BLASes
   bool light_tables = false;        // emitters or punctual lights changed: rebuild light tables
   bool camera = false;              // the view changed
   Camera camera_before;             // the view before the edit (when `camera`)
@@ -53,16 +59,18 @@ struct ChangeSet {
 
   // Nothing but the view changed: the image before the edit can be reprojected into the new one.
   bool camera_only() const {
-    return camera && instances.empty() && lights.empty() && !materials && !transforms && !light_tables && !environment;
+    return camera && instances.empty() && departed.empty() && lights.empty() && !materials && !transforms &&
+           !geometry && !light_tables && !environment;
   }
 
   bool empty() const {
-    return instances.empty() && lights.empty() && !materials && !transforms && !light_tables &&
-           !camera && !environment;
+    return instances.empty() && departed.empty() && lights.empty() && !materials && !transforms && !geometry &&
+           !light_tables && !camera && !environment;
   }
 };
 
-// Both states must come from the same loaded scene (same meshes and instances), as edits keep.
+// Both states must come from the same loaded scene, edited: instances are paired by their node
+// (edits keep node indices), meshes by index and revision.
 ChangeSet diff_scenes(const Scene& before, const Scene& after);
 
 // What diff_scenes reads of a scene, copied without the geometry (vertex positions only when the

@@ -10,11 +10,12 @@
 #include "rng.glsl"
 #include "vertices.glsl"
 
-// A uniform number in [0,1) fixed by the ray and the triangle: the same ray makes the same
-// choice whatever tile order or dispatch size produced it, so renders stay deterministic.
-float cutout_random(vec3 origin, vec3 direction, uint record, uint primitive) {
+// A uniform number in [0,1) fixed by the ray and the triangle (its record's identity and its
+// primitive): the same ray makes the same choice whatever tile order, dispatch size or edit
+// history produced it, so renders stay deterministic.
+float cutout_random(vec3 origin, vec3 direction, uint identity, uint primitive) {
   const uvec4 h = rng_hash4(uvec4(floatBitsToUint(origin), primitive));
-  return float(rng_hash4(uvec4(floatBitsToUint(direction), record) ^ h).x >> 8u) * (1.0 / 16777216.0);
+  return float(rng_hash4(uvec4(floatBitsToUint(direction), identity) ^ h).x >> 8u) * (1.0 / 16777216.0);
 }
 
 // Opacity at a point of the triangle: geometry_opacity x base colour texture alpha (unless
@@ -35,7 +36,7 @@ bool cutout_hit(uint record, uint primitive, vec2 bary, vec3 origin, vec3 direct
   float cutoff;
   const float opacity = cutout_opacity(record, primitive, bary, cutoff);
   if (cutoff >= 0.0) return opacity >= cutoff;
-  return cutout_random(origin, direction, record, primitive) < opacity;
+  return cutout_random(origin, direction, b_geometries[record].identity, primitive) < opacity;
 }
 
 // The mean of cutout_hit over rays: what light sampling weights an emitter's radiance by, so

@@ -107,6 +107,11 @@ struct GeometryRecord {
   uint firstIndex;    // into the index buffer
   uint vertexOffset;  // added to every index
   uint lightOffset;   // first Light of this primitive's emissive triangles, or kInvalidIndex
+  // The record's index in a fresh upload of the scene (records in Scene::instances() order).
+  // Edits that add or remove instances keep every other record where it is (stored G-buffers
+  // name records), so the index may differ; what must not differ, the cutout's random choice,
+  // keys on this.
+  uint identity;
 };
 
 // OpenPBR 1.1 surface parameters (names follow the spec). The foundation BSDF reads the base

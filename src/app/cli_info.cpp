@@ -56,8 +56,7 @@ int run_info(const InfoOptions& o) {
         emissive_triangles += p.indices.size() / 3;
     }
   }
-  size_t punctual = 0;
-  for (const Node& node : scene.nodes) punctual += node.light >= 0 ? 1 : 0;
+  const size_t punctual = scene.light_nodes().size();
 
   std::printf("scene      %s\n", o.scene.string().c_str());
   std::printf("hash       %s\n", scene.content_hash.c_str());
@@ -75,11 +74,10 @@ int run_info(const InfoOptions& o) {
   std::printf("textures   %zu (on %zu images)\n", scene.textures.size(), scene.images.size());
   std::printf("lights     %zu punctual, %zu emissive triangles\n", punctual, emissive_triangles);
   std::printf("env        %s\n", environment_description(scene).c_str());
-  for (const Node& node : scene.nodes)
-    if (node.light >= 0) {
-      const PunctualLight& l = scene.lights[size_t(node.light)];
-      std::printf("  %-24s %s, intensity %g\n", node.name.c_str(), light_type_name(l.type), l.intensity);
-    }
+  for (uint32_t n : scene.light_nodes()) {
+    const PunctualLight& l = scene.lights[size_t(scene.nodes[n].light)];
+    std::printf("  %-24s %s, intensity %g\n", scene.nodes[n].name.c_str(), light_type_name(l.type), l.intensity);
+  }
   // Emitters whose light edits the hipr policy relights at once (render/light_groups.h).
   const LightGroups groups = assign_light_groups(scene, RenderSettings{}.light_groups);
   std::printf("groups     %s%s\n", joined(groups.names, "none").c_str(),

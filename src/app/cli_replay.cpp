@@ -11,8 +11,11 @@
 #include "core/error.h"
 #include "core/file_util.h"
 #include "core/log.h"
+#include "core/memory_usage.h"
+#include "vk/buffer.h"
 #include "core/timer.h"
 #include "hipr/edit_pipeline.h"
+#include "hipr/scene_writer.h"
 #include "hipr/scheduler.h"
 #include "image/debug_images.h"
 #include "image/image_io.h"
@@ -55,6 +58,7 @@ struct ReplayOptions {
   bool no_reproject = false;
   std::string display;           // empty = the policy's own rule
   uint32_t focus_lead = kDefaultFocusLead;
+  fs::path save;  // empty: the edited scene is not saved
 };
 
 std::string step_name(size_t edit, uint32_t step) {
@@ -88,13 +92,24 @@ int run_replay(ReplayOptions& o) {
   const std::vector<Edit> edits = load_edit_script(o.edits);
   // Check every name before rendering or writing anything: a typo in edit 5 must not cost
   // four renders and leave a half-filled folder.
-  {
-    Scene probe = scene;
-    for (const Edit& edit : edits) apply_edit(probe, edit);
-  }
+  Scene probe = scene;
+  for (const Edit& edit : edits) apply_edit(probe, edit);
   std::error_code ec;
+  const bool had_output = fs::exists(o.output, ec);
   fs::create_directories(o.output, ec);
   if (!fs::is_directory(o.output)) throw InputError("cannot create output folder " + o.output.string());
+  // The edited scene is the same before the renders as after them: saved first (the output
+  // folder may hold it), a problem with it (an unwritable path, what the writer cannot hold)
+  // costs no render and leaves no folder behind.
+  if (!o.save.empty()) {
+    try {
+      save_scene(probe, o.save);
+    } catch (const InputError&) {
+      if (!had_output) fs::remove(o.output, ec);
+      throw;
+    }
+  }
+  probe = Scene();
 
   const vk::Context ctx(context_options(o.common));
   Renderer renderer(ctx, scene, o.common.render);
@@ -163,7 +178,11 @@ int run_replay(ReplayOptions& o) {
                                 {"work_after_first_step", work_after_first_step},
                                 {"overhead_seconds", scheduler.overhead_seconds()},
                                 {"parts", edit_times_json(scheduler.edit_times())},
-                                {"overhead_share_of_full_pass", scheduler.overhead_seconds() / pass_seconds}});
+                                {"overhead_share_of_full_pass", scheduler.overhead_seconds() / pass_seconds},
+                                {"blas_builds", renderer.scene_stats().blas_builds},
+                                {"blas_build_seconds", renderer.scene_stats().blas_build_seconds},
+                                {"device_bytes", vk::device_bytes_in_use()},
+                                {"resident_bytes", resident_bytes()}});
     log::info("edit " + std::to_string(e + 1) + " (" + describe(edits[e]) + "): " + std::to_string(steps) + " steps, " +
               std::to_string(timer.seconds()) + " s");
   }
@@ -201,6 +220,8 @@ Command add_replay_command(CLI::App& app) {
   cmd->add_option("--focus-lead", options->focus_lead,
                   "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
       ->capture_default_str();
+  cmd->add_option("--save", options->save,
+                  "Also write the edited scene (after every edit) as glTF (.gltf or .glb); written before rendering");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_replay(*options); }};
 }

@@ -14,6 +14,7 @@ ActiveTilesPass::ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, 
     : changed_records(ctx, std::max<size_t>(scene.record_count(), 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       tile_change(ctx, size_t(tiles.count()) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       tile_focus(ctx, size_t(tiles.count()) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      m_ctx(ctx),
       m_focus_discs(ctx, sizeof(abi::FocusDisc) * abi::kMaxFocusDiscs, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_pixels(pixels),
       m_tiles(tiles.count()),
@@ -53,13 +54,13 @@ uint32_t fixed_focus_weight(float weight) {
 
 }  // namespace
 
-void ActiveTilesPass::set_changed(const GpuScene& scene, const ChangeSet& changes, const Focus& focus) {
+bool ActiveTilesPass::set_changed(const GpuScene& scene, const ChangeSet& changes, const Focus& focus) {
   // One pass over the records: per instance whether it is in E and its summed focus weight,
   // then each record looks up its own.
   const std::vector<uint32_t>& record_instance = scene.record_instance();
-  const size_t instances = std::max<size_t>(record_instance.empty() ? 0 : *std::max_element(record_instance.begin(),
-                                                                                           record_instance.end()) + 1,
-                                            1);
+  size_t instances = 1;
+  for (uint32_t instance : record_instance)
+    if (instance != abi::kInvalidIndex) instances = std::max<size_t>(instances, instance + 1);
   std::vector<uint8_t> in_changed_set(instances, 0);
   std::vector<uint32_t> focus_weight(instances, 0);
   for (uint32_t instance : changes.instances)
@@ -73,13 +74,25 @@ void ActiveTilesPass::set_changed(const GpuScene& scene, const ChangeSet& change
       discs.push_back({*seed.pixel, seed.radius, weight});
   }
   std::vector<uint32_t> records(std::max<size_t>(record_instance.size(), 1), 0);
-  for (size_t r = 0; r < record_instance.size(); ++r)
-    records[r] = (in_changed_set[record_instance[r]] ? abi::kRecordChanged : 0u) |
-                 focus_weight[record_instance[r]] << abi::kFocusWeightShift |
-                 (scene.record_view_dependent(uint32_t(r)) ? abi::kRecordViewDependent : 0u);
+  for (size_t r = 0; r < record_instance.size(); ++r) {
+    const uint32_t instance = record_instance[r];
+    records[r] = instance == abi::kInvalidIndex
+                     ? abi::kRecordChanged
+                     : (in_changed_set[instance] ? abi::kRecordChanged : 0u) |
+                           focus_weight[instance] << abi::kFocusWeightShift |
+                           (scene.record_view_dependent(uint32_t(r)) ? abi::kRecordViewDependent : 0u);
+  }
+  bool replaced = false;
+  if (changed_records.size() < records.size() * 4) {
+    // Records only grow (GpuScene reuses free ones): twice as many leaves room for the next.
+    changed_records = vk::Buffer(m_ctx, records.size() * 2 * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    m_mark_active.bind_buffer(abi::kMarkActiveChangedRecords, changed_records);
+    replaced = true;
+  }
   changed_records.upload(records.data(), records.size() * 4);
   m_disc_count = uint32_t(discs.size());
   if (!discs.empty()) m_focus_discs.upload(discs.data(), discs.size() * sizeof(abi::FocusDisc));
+  return replaced;
 }
 
 void ActiveTilesPass::record(VkCommandBuffer cmd, bool everything, bool reprojected) const {

@@ -26,7 +26,10 @@ class ActiveTilesPass {
 
   // Marks the GeometryRecords of the changed instances (the set E the kernels test) and the
   // focus's records and discs with their weights.
-  void set_changed(const GpuScene& scene, const ChangeSet& changes, const Focus& focus);
+  // Free records (an instance that left: ChangeSet::departed) count as changed, for the
+  // G-buffer before the edit shows them. Returns whether changed_records was replaced (grown
+  // with the scene's records): passes that bind it must bind it again.
+  bool set_changed(const GpuScene& scene, const ChangeSet& changes, const Focus& focus);
   // Records the tile state the plan starts from (before the G-buffer is rendered): `mode` is
   // kCarryEdit, kCarryEverything (every tile active: an edit no G-buffer can localize) or
   // kCarryRefocus (no edit).
@@ -44,6 +47,7 @@ class ActiveTilesPass {
   vk::Buffer tile_focus;   // uint per tile: the focus score (stage 3 orders by it after the change)
 
  private:
+  const vk::Context& m_ctx;
   vk::Buffer m_focus_discs;  // abi::FocusDisc[kMaxFocusDiscs]
   uint32_t m_disc_count = 0;
   uint32_t m_pixels, m_tiles;

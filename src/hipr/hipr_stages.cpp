@@ -53,7 +53,7 @@ void HiprStages::set_focus(const Focus& focus) { m_focus = focus; }
 
 uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer,
                                const Camera* reproject_from) {
-  m_active.set_changed(m_parts.scene, changes, m_focus);
+  if (m_active.set_changed(m_parts.scene, changes, m_focus)) m_discovery.rebind();
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     if (render_gbuffer) {
       m_parts.gbuffers.record_keep_previous(cmd);

@@ -54,6 +54,8 @@ class HiprStages final : public HiprStageRunner {
     m_discovery.set_features(features);
     m_reach.set_kernel_features(features);
   }
+  // Binds the scene's buffers that an edit replaced (GpuScene::layout_generation) again.
+  void rebind_scene_buffers() { m_discovery.rebind(); }
   // Dispatches stage 2's and stage 3's kernels over no tile and the light reach over no light
   // (they compile, nothing changes); makes the reprojection's kernel and copy.
   void record_warm_up(VkCommandBuffer cmd);

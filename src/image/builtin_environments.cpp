@@ -249,7 +249,7 @@ std::optional<Environment> make_environment(const std::filesystem::path& source,
 
 SceneLighting scene_lighting(const Scene& scene) {
   SceneLighting lighting;
-  for (const Node& node : scene.nodes) lighting.punctual_lights += node.light >= 0 ? 1 : 0;
+  lighting.punctual_lights = scene.light_nodes().size();
   for (const Instance& instance : scene.instances()) {
     if (!instance.visible) continue;
     for (const MeshPrimitive& p : scene.meshes[instance.mesh].primitives) {

@@ -125,28 +125,39 @@ uint32_t BackgroundTiles::build_tree(std::vector<Node>& nodes, size_t leaf_size,
   return index;
 }
 
-BackgroundTiles::BackgroundTiles(const Scene& scene) {
-  for (const Mesh& mesh : scene.meshes) {
-    MeshTree tree;
-    std::vector<Triangle> triangles;
-    for (const MeshPrimitive& p : mesh.primitives)
-      for (size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-        Triangle triangle{{glm::vec3(HUGE_VALF), glm::vec3(-HUGE_VALF)}, glm::vec3(0.0f)};
-        for (size_t k = 0; k < 3; ++k) {
-          if (p.indices[t + k] >= p.positions.size()) continue;  // the loader rejects these
-          const glm::vec3& v = p.positions[p.indices[t + k]];
-          tree.unbounded = tree.unbounded || !finite(glm::dvec3(v));
-          triangle.box = {glm::min(triangle.box.first, v), glm::max(triangle.box.second, v)};
-        }
-        triangle.centre = 0.5f * (triangle.box.first + triangle.box.second);
-        if (triangle.box.first.x <= triangle.box.second.x) triangles.push_back(triangle);
-      }
-    if (!triangles.empty() && !tree.unbounded) {
-      const size_t leaf_size = std::max(kLeafTriangles, triangles.size() / kMaxLeaves);
-      build_tree(tree.nodes, leaf_size, triangles.begin(), triangles.end());
-    }
-    m_meshes.push_back(std::move(tree));
+BackgroundTiles::BackgroundTiles(const Scene& scene) { update_meshes(scene); }
+
+void BackgroundTiles::update_meshes(const Scene& scene) {
+  m_meshes.resize(scene.meshes.size());
+  m_revisions.resize(scene.meshes.size(), 0);
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    if (m < m_built && m_revisions[m] == scene.meshes[m].revision) continue;
+    m_meshes[m] = build_mesh_tree(scene.meshes[m]);
+    m_revisions[m] = scene.meshes[m].revision;
   }
+  m_built = scene.meshes.size();
+}
+
+BackgroundTiles::MeshTree BackgroundTiles::build_mesh_tree(const Mesh& mesh) {
+  MeshTree tree;
+  std::vector<Triangle> triangles;
+  for (const MeshPrimitive& p : mesh.primitives)
+    for (size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+      Triangle triangle{{glm::vec3(HUGE_VALF), glm::vec3(-HUGE_VALF)}, glm::vec3(0.0f)};
+      for (size_t k = 0; k < 3; ++k) {
+        if (p.indices[t + k] >= p.positions.size()) continue;  // the loader rejects these
+        const glm::vec3& v = p.positions[p.indices[t + k]];
+        tree.unbounded = tree.unbounded || !finite(glm::dvec3(v));
+        triangle.box = {glm::min(triangle.box.first, v), glm::max(triangle.box.second, v)};
+      }
+      triangle.centre = 0.5f * (triangle.box.first + triangle.box.second);
+      if (triangle.box.first.x <= triangle.box.second.x) triangles.push_back(triangle);
+    }
+  if (!triangles.empty() && !tree.unbounded) {
+    const size_t leaf_size = std::max(kLeafTriangles, triangles.size() / kMaxLeaves);
+    build_tree(tree.nodes, leaf_size, triangles.begin(), triangles.end());
+  }
+  return tree;
 }
 
 std::vector<uint32_t> BackgroundTiles::mask(const Scene& scene, uint32_t width, uint32_t height,
@@ -204,7 +215,8 @@ std::vector<uint32_t> BackgroundTiles::mask(const Scene& scene, uint32_t width, 
   };
 
   for (const Instance& instance : scene.instances()) {
-    if (!instance.visible || instance.mesh >= m_meshes.size()) continue;
+    if (!instance.visible) continue;
+    if (instance.mesh >= m_meshes.size()) return nothing_is_background();  // not bounded yet: anywhere
     const MeshTree& tree = m_meshes[instance.mesh];
     if (tree.unbounded) return nothing_is_background();
     if (tree.nodes.empty()) continue;

@@ -18,8 +18,10 @@ namespace hipr {
 
 class BackgroundTiles {
  public:
-  // Object-space bounds of every mesh, once: geometry never changes after loading.
+  // Object-space bounds of every mesh.
   explicit BackgroundTiles(const Scene& scene);
+  // Bounds again for the meshes an edit added or deformed (by Mesh::revision).
+  void update_meshes(const Scene& scene);
 
   // One entry per tile, row-major (tiles of tile_size x tile_size pixels over width x height):
   // 1 where only background can be seen, for the scene's current camera and instances.
@@ -48,7 +50,11 @@ class BackgroundTiles {
   static uint32_t build_tree(std::vector<Node>& nodes, size_t leaf_size, std::vector<Triangle>::iterator first,
                              std::vector<Triangle>::iterator last);
 
+  static MeshTree build_mesh_tree(const Mesh& mesh);
+
   std::vector<MeshTree> m_meshes;
+  std::vector<uint64_t> m_revisions;  // per mesh: Mesh::revision of its tree
+  size_t m_built = 0;                 // meshes [0, m_built) have trees
 };
 
 }  // namespace hipr

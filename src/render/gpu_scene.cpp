@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "core/timer.h"
 #include "render/bsdf_tables.h"
 #include "render/environment_tables.h"
 #include "render/material_packing.h"
@@ -13,29 +14,12 @@ namespace hipr {
 
 GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_group_budget)
     : m_ctx(ctx), m_groups(assign_light_groups(scene, light_group_budget)) {
-  // Never empty: a buffer of no bytes cannot be bound.
-  std::vector<uint32_t> material_group_table = m_groups.material;
-  if (material_group_table.empty()) material_group_table.push_back(abi::kInvalidIndex);
-  material_groups = vk::make_storage_buffer(ctx, material_group_table);
+  upload_material_groups(scene);
   upload_geometry(scene);
   upload_textures(scene);
-  update_materials(scene);
+  upload_materials(scene);
   build_blases(scene);
   upload_environment(scene);
-
-  // Records are fixed for the scene's lifetime: one per (instance, primitive), hidden included.
-  const std::vector<Instance> instances = scene.instances();
-  for (size_t i = 0; i < instances.size(); ++i) {
-    m_record_base.push_back(uint32_t(m_records.size()));
-    const Mesh& mesh = scene.meshes[instances[i].mesh];
-    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-      const PrimitiveRange& r = m_ranges[instances[i].mesh][p];
-      m_records.push_back({mesh.primitives[p].material, r.first_index, r.vertex_offset, abi::kInvalidIndex});
-      m_record_instance.push_back(uint32_t(i));
-      m_record_node.push_back(instances[i].node);
-    }
-  }
-  geometries = vk::make_storage_buffer(ctx, m_records);
   bsdf_tables = vk::make_storage_buffer(ctx, bsdf_table_data());
   frame_buffer = vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1));
   std::vector<vk::BindingSlot> slots;
@@ -44,7 +28,98 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
   if (ctx.software_traversal())
     for (uint32_t b = abi::kSceneBlasNodes; b <= abi::kSceneTlasInstances; ++b) slots.push_back({b});
   m_set = std::make_unique<vk::DescriptorSet>(ctx, slots);
+  update_instances(scene);  // gives the instances their records: in a fresh upload, in order
+}
+
+void GpuScene::upload_material_groups(const Scene& scene) {
+  // Materials an edit brought in emit into no group (light_groups.h). Never empty: a buffer of
+  // no bytes cannot be bound.
+  std::vector<uint32_t> table(std::max<size_t>(scene.materials.size(), 1), kNoLightGroup);
+  for (size_t m = 0; m < std::min(table.size(), m_groups.material.size()); ++m) table[m] = m_groups.material[m];
+  if (material_groups && material_groups.size() >= table.size() * sizeof(uint32_t)) {
+    material_groups.upload(table.data(), table.size() * sizeof(uint32_t));
+  } else {
+    material_groups = vk::make_storage_buffer(m_ctx, table);
+    ++m_layout_generation;
+  }
+}
+
+void GpuScene::update_geometry(const Scene& scene) {
+  upload_geometry(scene);
+  if (scene.textures.size() != m_uploaded_textures || scene.images.size() != m_uploaded_images) upload_textures(scene);
+  upload_material_groups(scene);
+  upload_materials(scene);
+  build_blases(scene);
   update_instances(scene);
+}
+
+uint32_t GpuScene::allocate_records(uint32_t count) {
+  for (auto it = m_free.begin(); it != m_free.end(); ++it) {
+    if (it->second < count) continue;
+    const uint32_t base = it->first;
+    it->first += count;
+    it->second -= count;
+    if (it->second == 0) m_free.erase(it);
+    return base;
+  }
+  const uint32_t base = uint32_t(m_records.size());
+  m_records.resize(base + count, {0, 0, 0, abi::kInvalidIndex, abi::kInvalidIndex});
+  m_record_instance.resize(base + count, abi::kInvalidIndex);
+  m_record_node.resize(base + count, abi::kInvalidIndex);
+  return base;
+}
+
+void GpuScene::assign_records(const Scene& scene, const std::vector<Instance>& instances) {
+  // Instances still showing the mesh they had keep their records.
+  std::unordered_map<uint32_t, Slot> kept;
+  for (const Instance& instance : instances) {
+    const auto it = m_slots.find(instance.node);
+    if (it != m_slots.end() && it->second.mesh == instance.mesh && it->second.count == m_ranges[instance.mesh].size()) {
+      kept.emplace(instance.node, it->second);
+      m_slots.erase(it);
+    }
+  }
+  if (!m_slots.empty() || kept.size() != instances.size()) ++m_records_generation;
+  for (const auto& [node, slot] : m_slots) {  // the rest left: their records are free
+    for (uint32_t r = slot.base; r < slot.base + slot.count; ++r) {
+      m_records[r] = {0, 0, 0, abi::kInvalidIndex, abi::kInvalidIndex};
+      m_record_instance[r] = m_record_node[r] = abi::kInvalidIndex;
+    }
+    if (slot.count > 0) m_free.emplace_back(slot.base, slot.count);
+  }
+  // Neighbouring free ranges merge, so that a later instance of any size fits where they were.
+  std::sort(m_free.begin(), m_free.end());
+  std::vector<std::pair<uint32_t, uint32_t>> merged;
+  for (const auto& range : m_free) {
+    if (!merged.empty() && merged.back().first + merged.back().second == range.first) merged.back().second += range.second;
+    else merged.push_back(range);
+  }
+  m_free = std::move(merged);
+  m_slots = std::move(kept);
+
+  const size_t capacity = m_records.size();
+  m_record_base.assign(instances.size(), 0);
+  uint32_t identity = 0;  // the record's index in a fresh upload
+  for (size_t i = 0; i < instances.size(); ++i) {
+    const Instance& instance = instances[i];
+    const uint32_t count = uint32_t(m_ranges[instance.mesh].size());
+    auto it = m_slots.find(instance.node);
+    if (it == m_slots.end()) it = m_slots.emplace(instance.node, Slot{allocate_records(count), count, instance.mesh}).first;
+    m_record_base[i] = it->second.base;
+    const Mesh& mesh = scene.meshes[instance.mesh];
+    for (uint32_t p = 0; p < count; ++p) {
+      const PrimitiveRange& range = m_ranges[instance.mesh][p];
+      const uint32_t r = it->second.base + p;
+      m_records[r] = {mesh.primitives[p].material, range.first_index, range.vertex_offset, abi::kInvalidIndex, identity++};
+      m_record_instance[r] = uint32_t(i);
+      m_record_node[r] = instance.node;
+    }
+  }
+  if (!geometries || m_records.size() != capacity) {
+    // Never empty: a buffer of no bytes cannot be bound.
+    geometries = vk::make_storage_buffer(m_ctx, m_records.empty() ? std::vector<abi::GeometryRecord>(1) : m_records);
+    ++m_layout_generation;
+  }
 }
 
 void GpuScene::set_frame(const abi::FrameParams& params) {
@@ -102,9 +177,11 @@ void GpuScene::upload_geometry(const Scene& scene) {
   uvs = vk::make_storage_buffer(m_ctx, all_uvs);
   indices = vk::make_storage_buffer(m_ctx, all_indices, build_input);
 
+  // The BLASes hold their own copy of the triangles: meshes that stay keep theirs.
   m_blas.resize(scene.meshes.size());
-  m_has_blas.assign(scene.meshes.size(), false);
-  m_blas_opaque.assign(scene.meshes.size(), {});
+  m_has_blas.resize(scene.meshes.size(), false);
+  m_blas_opaque.resize(scene.meshes.size());
+  m_blas_revision.resize(scene.meshes.size(), 0);
 }
 
 bool GpuScene::build_blases(const Scene& scene) {
@@ -113,11 +190,16 @@ bool GpuScene::build_blases(const Scene& scene) {
   // traversal builds its own mesh BVH at the same moments.
   bool rebuilt = false;
   m_info.cutout_geometries = 0;
+  const Timer timer;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     std::vector<bool> opaque;
     for (const MeshPrimitive& p : scene.meshes[m].primitives) opaque.push_back(material_is_opaque(scene.materials[p.material].params));
     m_info.cutout_geometries += size_t(std::count(opaque.begin(), opaque.end(), false));
-    if (m_ranges[m].empty() || (m_has_blas[m] && opaque == m_blas_opaque[m])) continue;
+    if (m_ranges[m].empty()) {
+      m_has_blas[m] = false;
+      continue;
+    }
+    if (m_has_blas[m] && opaque == m_blas_opaque[m] && m_blas_revision[m] == scene.meshes[m].revision) continue;
     rebuilt = true;
     if (m_ctx.software_traversal()) {
       m_software.set_mesh(m, scene.meshes[m], opaque);
@@ -132,9 +214,12 @@ bool GpuScene::build_blases(const Scene& scene) {
       m_blas[m] = vk::build_blas(m_ctx, geometry);
     }
     m_has_blas[m] = true;
+    ++m_info.blas_builds;
     m_blas_opaque[m] = std::move(opaque);
+    m_blas_revision[m] = scene.meshes[m].revision;
   }
   if (rebuilt && m_ctx.software_traversal()) m_software.upload_meshes(m_ctx);
+  if (rebuilt) m_info.blas_build_seconds += timer.seconds();
   return rebuilt;
 }
 
@@ -155,27 +240,32 @@ void GpuScene::upload_textures(const Scene& scene) {
   }
   textures = vk::make_storage_buffer(m_ctx, infos);
   texels = vk::make_storage_buffer(m_ctx, packed);
+  m_uploaded_textures = scene.textures.size();
+  m_uploaded_images = scene.images.size();
 }
 
 void GpuScene::update_materials(const Scene& scene) {
+  upload_materials(scene);
+  if (build_blases(scene)) update_instances(scene);  // new BLAS addresses need a new TLAS
+  bind_set();
+}
+
+void GpuScene::upload_materials(const Scene& scene) {
   std::vector<abi::MaterialBlock> blocks;
   m_material_view_dependent.clear();
   for (const Material& m : scene.materials) {
     blocks.push_back(pack_material(m.params));
     m_material_view_dependent.push_back(material_is_view_dependent(m.params) ? 1 : 0);
   }
-  if (materials && materials.size() == blocks.size() * sizeof(abi::MaterialBlock)) {
+  if (materials && materials.size() == blocks.size() * sizeof(abi::MaterialBlock))
     materials.upload(blocks.data(), materials.size());
-    if (build_blases(scene)) update_instances(scene);  // new BLAS addresses need a new TLAS
-  } else {
+  else
     materials = vk::make_storage_buffer(m_ctx, blocks);
-  }
-  bind_set();
 }
 
 void GpuScene::update_instances(const Scene& scene) {
   const std::vector<Instance> instances = scene.instances();
-  if (instances.size() != m_record_base.size()) throw InternalError("instance count changed after upload");
+  assign_records(scene, instances);
   const auto [lo, hi] = scene.bounds();
   m_info.scene_radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
   m_info.triangle_count = 0;

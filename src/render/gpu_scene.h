@@ -2,9 +2,15 @@
 // The scene as the kernels see it: shared vertex/index buffers, one BLAS per mesh, a TLAS of
 // instances (or, without ray queries, hipr's own two-level BVH), material/texture/light tables, the environment, the BSDF tables and the frame
 // parameters, all in one descriptor set (set 1 of every kernel that reads the scene:
-// shaders/shared/bindings/scene.h). Geometry is uploaded once; edits update only what they
-// touch (materials, instances + lights, or lights alone) and the set follows.
+// shaders/shared/bindings/scene.h). Edits update only what they touch (geometry, materials,
+// instances + lights, or lights alone) and the set follows.
+//
+// Records (one per instance and primitive) keep their index while their instance stays in the
+// scene: the G-buffers and the display name surfaces by record, and must go on meaning the same
+// surface after an edit adds or removes others. A removed instance's records are free for a
+// later one; records are grouped per instance, in no particular order.
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "hipr/renderer.h"
@@ -30,8 +36,13 @@ class GpuScene {
   // edit that makes a material need the alpha test, or no longer need it, rebuilds the BLAS of
   // the meshes using it and the TLAS.
   void update_materials(const Scene& scene);
-  // Rebuilds the TLAS (transforms, visibility) and the light tables that depend on them.
+  // Rebuilds the TLAS (transforms, visibility, instances added or removed: records follow) and
+  // the light tables that depend on them.
   void update_instances(const Scene& scene);
+  // After meshes were added, removed or deformed (ChangeSet::geometry): uploads the vertices,
+  // textures and material tables again, builds the BLAS of each new or changed mesh (the others
+  // keep theirs), then updates the instances.
+  void update_geometry(const Scene& scene);
   // Rebuilds the light tables alone (punctual lights, emission strengths).
   void update_lights(const Scene& scene);
   // Uploads another environment map (or none) and its sampling tables. Its entry in the light
@@ -49,10 +60,16 @@ class GpuScene {
   const vk::DescriptorSet& descriptor_set() const { return *m_set; }
 
   const SceneStats& info() const { return m_info; }
+  // Starts counting the BLAS builds of an update (SceneStats::blas_builds) from zero.
+  void reset_build_stats() {
+    m_info.blas_builds = 0;
+    m_info.blas_build_seconds = 0.0;
+  }
   const LightTables& light_tables() const { return m_lights; }
-  // Instance index of each GeometryRecord (records are grouped per instance).
+  // Instance index of each GeometryRecord (records are grouped per instance; kInvalidIndex for a
+  // free record, which no instance of the scene holds).
   const std::vector<uint32_t>& record_instance() const { return m_record_instance; }
-  // Node of each GeometryRecord (the viewer outlines a selected node).
+  // Node of each GeometryRecord (the viewer outlines a selected node; kInvalidIndex when free).
   const std::vector<uint32_t>& record_node() const { return m_record_node; }
   uint32_t record_count() const { return uint32_t(m_records.size()); }
   // Whether a record's material is view-dependent (material_is_view_dependent), as of the last
@@ -64,7 +81,19 @@ class GpuScene {
   vk::Buffer lights, light_cdf, environment;
   vk::Buffer bsdf_tables, frame_buffer;
 
+  // How the buffers other passes bind besides the set (material_groups) and the record count
+  // changed: a counter that grows when they are replaced, so passes know to bind them again.
+  uint64_t layout_generation() const { return m_layout_generation; }
+  // Grows when instances were added or removed (record_instance and record_node changed).
+  uint64_t records_generation() const { return m_records_generation; }
+
  private:
+  // The records of one instance: [base, base + count), for as long as its node shows that mesh.
+  struct Slot {
+    uint32_t base;
+    uint32_t count;
+    uint32_t mesh;
+  };
   struct PrimitiveRange {
     uint32_t first_index;
     uint32_t vertex_offset;
@@ -74,6 +103,12 @@ class GpuScene {
   void upload_geometry(const Scene& scene);
   void upload_textures(const Scene& scene);
   void upload_environment(const Scene& scene);
+  void upload_material_groups(const Scene& scene);
+  void upload_materials(const Scene& scene);
+  // Gives every instance its slot (keeping those of instances still there), frees the others'
+  // and fills the records.
+  void assign_records(const Scene& scene, const std::vector<Instance>& instances);
+  uint32_t allocate_records(uint32_t count);
   // (Re)builds the BLAS of every mesh whose per-primitive opacity flags differ from the built
   // ones; returns whether any was rebuilt.
   bool build_blases(const Scene& scene);
@@ -88,6 +123,11 @@ class GpuScene {
   std::vector<vk::AccelerationStructure> m_blas;      // one per mesh (empty meshes: none)
   std::vector<bool> m_has_blas;
   std::vector<std::vector<bool>> m_blas_opaque;       // per mesh, per primitive, as built
+  std::vector<uint64_t> m_blas_revision;              // per mesh: Mesh::revision as built
+  size_t m_uploaded_textures = 0, m_uploaded_images = 0;
+  uint64_t m_layout_generation = 0, m_records_generation = 0;
+  std::unordered_map<uint32_t, Slot> m_slots;             // per node with an instance
+  std::vector<std::pair<uint32_t, uint32_t>> m_free;      // free records: (base, count)
   std::vector<abi::GeometryRecord> m_records;
   std::vector<uint32_t> m_record_base;      // per instance
   std::vector<uint32_t> m_record_instance;  // per record

@@ -59,11 +59,7 @@ const std::vector<KernelFeature>& kernel_feature_table() {
        nullptr, false},
       {1u << 11, "HIPR_FEATURE_EMISSION", "emissive triangles", is_emissive, nullptr, false},
       {1u << 12, "HIPR_FEATURE_PUNCTUAL_LIGHTS", "punctual lights", nullptr,
-       [](const Scene& s) {
-         for (const Node& node : s.nodes)
-           if (node.light >= 0) return true;
-         return false;
-       },
+       [](const Scene& s) { return !s.light_nodes().empty(); },
        false},
       {1u << 13, "HIPR_FEATURE_ENVIRONMENT", "environment", nullptr,
        [](const Scene& s) { return s.environment.has_value(); }, false},

@@ -20,9 +20,8 @@ LightGroups assign_light_groups(const Scene& scene, uint32_t budget) {
     }
   };
   if (scene.environment) add(groups.environment, "environment");
-  for (size_t n = 0; n < scene.nodes.size(); ++n)
-    if (scene.nodes[n].light >= 0)
-      add(groups.node[n], "light " + (scene.nodes[n].name.empty() ? "#" + std::to_string(n) : scene.nodes[n].name));
+  for (uint32_t n : scene.light_nodes())
+    add(groups.node[n], "light " + (scene.nodes[n].name.empty() ? "#" + std::to_string(n) : scene.nodes[n].name));
   // Emissive materials that some instance (shown or hidden) uses.
   std::vector<bool> used(scene.materials.size(), false);
   for (const Instance& instance : scene.instances())

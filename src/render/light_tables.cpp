@@ -93,9 +93,8 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
   }
 
   // Punctual lights: one per node that references a light.
-  for (uint32_t n = 0; n < scene.nodes.size(); ++n) {
+  for (uint32_t n : scene.light_nodes()) {
     const Node& node = scene.nodes[n];
-    if (node.light < 0) continue;
     abi::Light light = punctual_light(scene.lights[size_t(node.light)], scene.world_transform(n));
     light.group = groups.of_node(n);
     const double lum = luminance(light.intensity);

@@ -52,6 +52,16 @@ OverlayPass::OverlayPass(const vk::Context& ctx, const GpuScene& scene, const Ov
                   {abi::kOverlayOutput, nullptr}},
                  sizeof(abi::OverlayPush)) {}
 
+void OverlayPass::update_records(const GpuScene& scene) {
+  const std::vector<abi::OverlayRecord> records = overlay_records(scene);
+  if (m_records.size() >= records.size() * sizeof(abi::OverlayRecord)) {
+    m_records.upload(records.data(), records.size() * sizeof(abi::OverlayRecord));
+  } else {
+    m_records = vk::make_storage_buffer(m_ctx, records);
+    m_pipeline.bind_buffer(abi::kOverlayRecords, m_records);
+  }
+}
+
 void OverlayPass::render(uint32_t mode, uint32_t selected_node, const vk::Buffer& output) {
   m_pipeline.bind_buffer(abi::kOverlayOutput, output);
   abi::OverlayPush push{mode, selected_node, 0u, m_width, m_height, m_tile_size, m_tiles_x, m_tile_count};

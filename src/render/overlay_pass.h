@@ -26,6 +26,8 @@ class OverlayPass {
 
   // Writes the overlay (`mode`: abi::kOverlay*; `selected_node` outlined on top, kInvalidIndex:
   // none) into `output` (uint RGBA8 per pixel), submits and waits.
+  // The records' instances and nodes again (after an edit added or removed instances).
+  void update_records(const GpuScene& scene);
   void render(uint32_t mode, uint32_t selected_node, const vk::Buffer& output);
 
  private:

@@ -56,6 +56,8 @@ struct Renderer::Impl {
         relight(c, film, resolve, gpu.light_groups().count, s.width, s.height),
         trace(c, gpu, tiles, film, resolve.display, s, features),
         background(scene) {
+    layout_seen = gpu.layout_generation();
+    records_seen = gpu.records_generation();
     update_background(scene);
     gpu.set_frame(make_frame_params(scene, gpu, settings));
     warm_up_trace();
@@ -90,6 +92,18 @@ struct Renderer::Impl {
       hipr->set_kernel_features(features);
       if (settings.compile_kernels_early) ctx.submit_and_wait([&](VkCommandBuffer cmd) { hipr->record_warm_up(cmd); });
     }
+  }
+
+  // An edit that replaced buffers the passes bind beside the scene's set (GpuScene::
+  // layout_generation): bind them again; one that added or removed instances: the overlay's
+  // records follow.
+  void rebind_if_replaced() {
+    if (overlays && gpu.records_generation() != records_seen) overlays->update_records(gpu);
+    records_seen = gpu.records_generation();
+    if (gpu.layout_generation() == layout_seen) return;
+    layout_seen = gpu.layout_generation();
+    trace.rebind();
+    if (hipr) hipr->rebind_scene_buffers();
   }
 
   // Which tiles' camera rays cannot hit anything, for the scene's camera and instances.
@@ -137,6 +151,8 @@ struct Renderer::Impl {
   std::unique_ptr<HiprStages> hipr;  // made on first use
   std::unique_ptr<OverlayPass> overlays;  // the viewer's, made on first use
   SampleTarget sample_target;        // the scheduler's round targets (set_sample_target)
+  uint64_t layout_seen = 0;          // GpuScene::layout_generation the passes are bound to
+  uint64_t records_seen = 0;         // GpuScene::records_generation the overlay shows
 };
 
 Renderer::Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
@@ -171,12 +187,19 @@ void Renderer::add_samples(std::span<const uint32_t> tiles, uint32_t samples_per
 void Renderer::add_samples_full_frame(uint32_t samples_per_pixel) { add_samples(m->tiles.all(), samples_per_pixel); }
 
 void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
-  if (changes.materials) m->gpu.update_materials(scene);
-  m->ensure_features(scene);  // materials, lights: anything may bring in a feature
+  m->gpu.reset_build_stats();
+  if (changes.geometry) {
+    m->gpu.update_geometry(scene);  // includes materials, instances and light tables
+    m->background.update_meshes(scene);
+  } else if (changes.materials) {
+    m->gpu.update_materials(scene);
+  }
+  m->ensure_features(scene);  // materials, lights, imports: anything may bring in a feature
   if (changes.environment_map) m->gpu.update_environment(scene);  // its light entry follows below
-  if (changes.transforms) m->gpu.update_instances(scene);  // includes the light tables
-  else if (changes.light_tables) m->gpu.update_lights(scene);
-  if (changes.transforms || changes.camera) m->update_background(scene);
+  if (changes.transforms && !changes.geometry) m->gpu.update_instances(scene);  // includes the light tables
+  else if (changes.light_tables && !changes.geometry) m->gpu.update_lights(scene);
+  if (changes.transforms || changes.geometry || changes.camera) m->update_background(scene);
+  m->rebind_if_replaced();
   if (!changes.empty()) m->gbuffers.set_stale();
   m->gpu.set_frame(make_frame_params(scene, m->gpu, m->settings));
 }

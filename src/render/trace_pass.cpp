@@ -54,6 +54,11 @@ void TracePass::set_features(uint32_t features) {
   compile();
 }
 
+void TracePass::rebind() {
+  for (const vk::BufferBinding& b : m_bindings)
+    if (b.buffer) m_pipeline->bind_buffer(b.binding, *b.buffer);
+}
+
 abi::TracePush TracePass::push(uint32_t offset, uint32_t count, uint32_t samples_per_pixel) const {
   abi::TracePush push{};
   push.listOffset = offset;

@@ -27,6 +27,8 @@ class TracePass {
 
   // Recompiles the kernel with other features (an edit brought in a new one).
   void set_features(uint32_t features);
+  // Binds the listed buffers again (after an edit replaced some: GpuScene::layout_generation).
+  void rebind();
 
   // Parameters of a dispatch over schedule entries [offset, offset + count).
   abi::TracePush push(uint32_t offset, uint32_t count, uint32_t samples_per_pixel) const;

@@ -135,6 +135,24 @@ FocusEdit read_focus(const EditReader& r) {
   return focus;
 }
 
+// A file an edit script names: relative to the script's folder, which it may not leave (neither
+// by ".." nor by a link), as a scene's own files may not leave the scene's.
+std::filesystem::path script_file(const EditReader& r, const std::filesystem::path& base, const std::string& name) {
+  namespace fs = std::filesystem;
+  const fs::path relative(name);
+  if (name.empty() || relative.is_absolute() || relative.has_root_name())
+    r.fail("\"" + name + "\" must be a path relative to the script's folder");
+  const fs::path normal = relative.lexically_normal();
+  if (!normal.empty() && *normal.begin() == "..") r.fail("\"" + name + "\" leaves the script's folder");
+  const fs::path path = base / relative;
+  std::error_code ec;
+  const fs::path folder = fs::weakly_canonical(base.empty() ? fs::path(".") : base, ec);
+  const fs::path target = fs::weakly_canonical(path, ec);
+  const fs::path inside = target.lexically_relative(folder);
+  if (ec || inside.empty() || *inside.begin() == "..") r.fail("\"" + name + "\" leaves the script's folder");
+  return path;
+}
+
 Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
   if (!r.edit().is_object()) r.fail("an edit must be a JSON object");
   const std::string op = r.string("op");
@@ -203,7 +221,29 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
     return e;
   }
   if (op == "focus") return read_focus(r);
-  r.fail("unknown op \"" + op + "\" (transform, material, light, emission, visibility, camera, environment, focus)");
+  if (op == "duplicate") {
+    r.only_keys({"op", "node", "as", "translate"});
+    return DuplicateEdit{r.string("node"), r.edit().contains("as") ? r.string("as") : "",
+                         r.vec3("translate").value_or(glm::vec3(0.0f))};
+  }
+  if (op == "delete") {
+    r.only_keys({"op", "node"});
+    return DeleteEdit{r.string("node")};
+  }
+  if (op == "import") {
+    r.only_keys({"op", "file", "as", "translate"});
+    return ImportEdit{script_file(r, base, r.string("file")), r.edit().contains("as") ? r.string("as") : "",
+                      r.vec3("translate").value_or(glm::vec3(0.0f))};
+  }
+  if (op == "deform") {
+    r.only_keys({"op", "node", "matrix"});
+    const std::optional<glm::mat4> matrix = r.matrix();
+    if (!matrix) r.fail("a deform needs a \"matrix\" (16 numbers, column-major)");
+    return DeformEdit{r.string("node"), *matrix, nullptr};
+  }
+  r.fail("unknown op \"" + op +
+         "\" (transform, material, light, emission, visibility, camera, environment, focus, duplicate, delete, "
+         "import, deform)");
 }
 
 }  // namespace

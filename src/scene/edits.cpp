@@ -9,6 +9,7 @@
 #include "hipr/edits.h"
 #include "image/builtin_environments.h"
 #include "scene/default_camera.h"
+#include "scene/geometry_edits.h"
 #include "scene/material_parameters.h"
 
 namespace hipr {
@@ -89,21 +90,8 @@ struct Applier {
   void operator()(const VisibilityEdit& e) const { scene.nodes[find_node(scene, e.node)].visible = e.visible; }
 
   void operator()(const CameraEdit& e) const {
-    int node = scene.camera_node();
-    if (node < 0) {
-      // No camera in the file: materialize the default one so the edit has something to move.
-      const Camera camera = resolve_camera(scene);
-      scene.cameras.push_back(camera);
-      Node camera_node;
-      camera_node.name = "camera";
-      camera_node.camera = int(scene.cameras.size() - 1);
-      camera_node.local = camera.camera_to_world;
-      scene.nodes.push_back(camera_node);
-      scene.children.emplace_back();
-      node = int(scene.nodes.size() - 1);
-      scene.root_nodes.push_back(uint32_t(node));
-    }
-    move_node(scene.nodes[size_t(node)].local, e.translate, e.matrix);
+    // No camera in the file: materialize the default one so the edit has something to move.
+    move_node(scene.nodes[pin_default_camera(scene)].local, e.translate, e.matrix);
   }
 
   void operator()(const EnvironmentEdit& e) const {
@@ -129,6 +117,12 @@ struct Applier {
   void operator()(const FocusEdit& e) const {
     if (e.node) find_node(scene, *e.node);  // an unknown name is refused like any edit's
   }
+
+  void operator()(const DuplicateEdit& e) const { apply_duplicate(scene, e); }
+  void operator()(const DeleteEdit& e) const { apply_delete(scene, e); }
+  void operator()(const ImportEdit& e) const { apply_import(scene, e); }
+  void operator()(const DeformEdit& e) const { apply_deform(scene, e); }
+  void operator()(const StructureEdit& e) const { apply_structure(scene, e); }
 };
 
 // Builds the inverse of an edit from the scene before it (see inverse_edit).
@@ -189,12 +183,35 @@ struct Inverter {
     if (e.node) find_node(scene, *e.node);
     return e;  // the scene is the same before and after
   }
+
+  Edit operator()(const DuplicateEdit& e) const {
+    check_duplicate(scene, e);
+    return structure_undo(scene);
+  }
+  Edit operator()(const DeleteEdit& e) const {
+    find_node(scene, e.node);
+    return structure_undo(scene);
+  }
+  // (The file is read when the import is applied: a bad one is refused then, changing nothing.)
+  Edit operator()(const ImportEdit&) const { return structure_undo(scene); }
+  Edit operator()(const DeformEdit& e) const {
+    check_deform(scene, e);
+    const Node& node = scene.nodes[find_node(scene, e.node)];
+    return DeformEdit{e.node, glm::mat4(1.0f), std::make_shared<const Mesh>(scene.meshes[size_t(node.mesh)])};
+  }
+  Edit operator()(const StructureEdit&) const { return structure_undo(scene); }
 };
 
 }  // namespace
 
 size_t find_node(const Scene& scene, const std::string& name) {
-  return find_by_name(scene.nodes, name, [](const Node& n) { return n.name; }, "node");
+  const size_t node = find_by_name(scene.nodes, name, [](const Node& n) { return n.name; }, "node");
+  const std::vector<bool> in_scene = scene.reachable_nodes();
+  if (in_scene[node]) return node;
+  // A deleted node of that name (or one the file keeps out of its scene): look for a live one.
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    if (in_scene[n] && scene.nodes[n].name == name) return n;
+  throw InputError("no node named '" + name + "' in the scene");
 }
 
 Edit inverse_edit(const Scene& scene, const Edit& edit) {
@@ -214,6 +231,11 @@ std::string describe(const Edit& edit) {
       if (e.source) return "environment " + e.source->filename().string();
       return e.sets_sun() ? "environment sun" : "environment";
     }
+    std::string operator()(const DuplicateEdit& e) const { return "duplicate " + e.node + (e.as.empty() ? "" : " as " + e.as); }
+    std::string operator()(const DeleteEdit& e) const { return "delete " + e.node; }
+    std::string operator()(const ImportEdit& e) const { return "import " + e.file.filename().string(); }
+    std::string operator()(const DeformEdit& e) const { return "deform " + e.node; }
+    std::string operator()(const StructureEdit&) const { return "restore nodes"; }
     std::string operator()(const FocusEdit& e) const {
       if (e.clear) return "focus clear";
       std::string text = "focus";

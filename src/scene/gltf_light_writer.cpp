@@ -40,6 +40,16 @@ void write_light(Json& json, const PunctualLight& light, const std::string& what
   }
 }
 
+Json new_light(const PunctualLight& light, const std::string& what) {
+  Json json = Json::object();
+  if (!light.name.empty()) json["name"] = light.name;
+  json["type"] = light.type == LightType::Point ? "point" : light.type == LightType::Spot ? "spot" : "directional";
+  if (light.type == LightType::Spot)
+    json["spot"] = {{"innerConeAngle", json_number(light.inner_cone)}, {"outerConeAngle", json_number(light.outer_cone)}};
+  write_light(json, light, what);
+  return json;
+}
+
 }  // namespace
 
 void write_lights(Json& doc, const std::vector<PunctualLight>& lights, const std::string& name) {
@@ -49,10 +59,17 @@ void write_lights(Json& doc, const std::vector<PunctualLight>& lights, const std
       doc["extensions"]["KHR_lights_punctual"].contains("lights"))
     list = &doc["extensions"]["KHR_lights_punctual"]["lights"];
   const size_t count = list && list->is_array() ? list->size() : 0;
-  if (count != lights.size())
+  if (count > lights.size())
     throw InputError(name + ": the scene has " + std::to_string(lights.size()) + " punctual lights but its file " +
                      std::to_string(count) + ": the file changed since it was loaded");
   for (size_t i = 0; i < count; ++i) write_light((*list)[i], lights[i], name + ": light " + std::to_string(i));
+  if (count == lights.size()) return;
+  // Lights edits added (a duplicated lamp): appended, written whole.
+  if (!list) {
+    doc["extensions"]["KHR_lights_punctual"]["lights"] = Json::array();
+    list = &doc["extensions"]["KHR_lights_punctual"]["lights"];
+  }
+  for (size_t i = count; i < lights.size(); ++i) list->push_back(new_light(lights[i], name + ": light " + std::to_string(i)));
 }
 
 }  // namespace hipr::gltf

@@ -132,23 +132,45 @@ void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
   for (size_t i = 0; i < camera_count; ++i) write_camera(doc["cameras"][i], scene.cameras[i]);
   for (size_t i = camera_count; i < scene.cameras.size(); ++i) doc["cameras"].push_back(new_camera(scene.cameras[i]));
 
+  // The loader's default scene: "scene", else the first; none without scenes (every
+  // parentless node is a root then).
+  Json* roots = nullptr;
+  if (doc.contains("scenes") && doc["scenes"].is_array() && !doc["scenes"].empty()) {
+    const size_t index = doc.contains("scene") && doc["scene"].is_number_integer() ? doc["scene"].get<size_t>() : 0;
+    if (index < doc["scenes"].size()) roots = &doc["scenes"][index];
+  }
+  const auto unlist = [](Json& owner, const char* key, size_t node) {
+    if (!owner.contains(key) || !owner[key].is_array()) return;
+    Json& list = owner[key];
+    for (size_t k = list.size(); k-- > 0;)
+      if (list[k].is_number_integer() && list[k].get<size_t>() == node) list.erase(k);
+    if (list.empty()) owner.erase(key);  // glTF wants these lists non-empty
+  };
+  const std::vector<bool> reachable = scene.reachable_nodes();
   for (size_t i = 0; i < node_count; ++i) {
     Json& node = doc["nodes"][i];
     const glm::mat4 loaded = loaded_transform(node);
     if (loaded != scene.nodes[i].local) write_transform(node, loaded, scene.nodes[i].local, animated(doc, i));
     write_visibility(node, scene.nodes[i].visible);
+    // A deleted node: its parent (or the scene) no longer lists it; it stays in the file, unused.
+    const int parent = scene.nodes[i].parent;
+    const std::vector<uint32_t>& siblings = parent >= 0 ? scene.children[size_t(parent)] : scene.root_nodes;
+    if (std::find(siblings.begin(), siblings.end(), uint32_t(i)) != siblings.end()) continue;
+    if (parent >= 0) unlist(doc["nodes"][size_t(parent)], "children", i);
+    else if (roots) unlist(*roots, "nodes", i);
   }
+  // Nodes edits appended, but those no longer in the scene: numbered after the file's.
+  std::vector<size_t> written(scene.nodes.size(), SIZE_MAX);
+  for (size_t i = 0; i < node_count; ++i) written[i] = i;
+  size_t next = node_count;
+  for (size_t i = node_count; i < scene.nodes.size(); ++i)
+    if (reachable[i]) written[i] = next++;
   for (size_t i = node_count; i < scene.nodes.size(); ++i) {
+    if (!reachable[i]) continue;
     doc["nodes"].push_back(new_node(scene.nodes[i]));
     const int parent = scene.nodes[i].parent;
-    if (parent >= 0) {
-      doc["nodes"][size_t(parent)]["children"].push_back(i);
-    } else if (doc.contains("scenes") && doc["scenes"].is_array() && !doc["scenes"].empty()) {
-      // The loader's default scene: "scene", else the first.
-      const size_t index = doc.contains("scene") && doc["scene"].is_number_integer() ? doc["scene"].get<size_t>() : 0;
-      if (index < doc["scenes"].size()) doc["scenes"][index]["nodes"].push_back(i);
-    }
-    // Without scenes every parentless node is a root already.
+    if (parent >= 0) doc["nodes"][written[size_t(parent)]]["children"].push_back(written[i]);
+    else if (roots) (*roots)["nodes"].push_back(written[i]);
   }
 }
 

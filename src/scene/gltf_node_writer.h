@@ -12,7 +12,9 @@ namespace hipr::gltf {
 // translation-only change of a TRS node keeps TRS form, any other change writes `matrix` (TRS
 // for a node an animation targets, where glTF forbids a matrix); a hidden node gets
 // KHR_node_visibility "visible": false. Nodes and cameras the scene has beyond the file's are
-// appended (roots of the default scene). `name` names the file in messages.
+// appended (roots of the default scene) when they are in the scene; a file's node that a delete
+// took out of the scene is unlisted from its parent's children (or the scene's nodes) and stays,
+// unused. `name` names the file in messages.
 void write_nodes(Json& doc, const Scene& scene, const std::string& name);
 
 }  // namespace hipr::gltf

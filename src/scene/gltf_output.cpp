@@ -118,12 +118,32 @@ void write_glb(const SourceDocument& source, Json doc, const fs::path& path) {
         first["byteLength"].get<size_t>() <= bin.size())
       bin.resize(first["byteLength"].get<size_t>());
     has_bin = true;
+    // Further buffers join the chunk (in a GLB they would need URIs, and a data: URI there is
+    // what validators warn about): their views move to buffer 0, at the offset each lands at
+    // (4-aligned: no component is larger, so every accessor stays aligned).
+    std::vector<size_t> base(doc["buffers"].size(), 0);
     for (size_t i = 1; i < doc["buffers"].size(); ++i) {
-      Json& buffer = doc["buffers"][i];
-      if (!buffer.contains("uri") || !buffer["uri"].is_string() || is_data_uri(buffer["uri"])) continue;
-      buffer["uri"] =
-          data_uri("application/octet-stream", read_uri(source, buffer["uri"], "buffer " + std::to_string(i)));
+      const Json& buffer = doc["buffers"][i];
+      if (!buffer.contains("uri") || !buffer["uri"].is_string())
+        throw InputError(source.name + ": buffer " + std::to_string(i) + " has no uri");
+      std::vector<unsigned char> bytes = read_uri(source, buffer["uri"], "buffer " + std::to_string(i));
+      if (buffer.contains("byteLength") && buffer["byteLength"].is_number_unsigned() &&
+          buffer["byteLength"].get<size_t>() <= bytes.size())
+        bytes.resize(buffer["byteLength"].get<size_t>());
+      bin.resize((bin.size() + 3) / 4 * 4, 0);
+      base[i] = bin.size();
+      bin.insert(bin.end(), bytes.begin(), bytes.end());
+      grown = true;
     }
+    if (doc["buffers"].size() > 1 && has_array(doc, "bufferViews"))
+      for (Json& view : doc["bufferViews"]) {
+        if (!view.is_object() || !view.contains("buffer") || !view["buffer"].is_number_unsigned()) continue;
+        const size_t buffer = view["buffer"].get<size_t>();
+        if (buffer == 0 || buffer >= base.size()) continue;
+        view["buffer"] = 0;
+        view["byteOffset"] = base[buffer] + view.value("byteOffset", size_t(0));
+      }
+    doc["buffers"].erase(doc["buffers"].begin() + 1, doc["buffers"].end());
   }
   if (has_array(doc, "images")) {
     for (size_t i = 0; i < doc["images"].size(); ++i) {

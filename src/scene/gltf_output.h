@@ -3,8 +3,9 @@
 //
 // .glb: one self-contained file. Buffer 0 becomes the BIN chunk (read from the source's BIN
 // chunk, file or data: URI); images stored as files or data: URIs are appended to it as new
-// buffer views (with their mimeType); any further buffer becomes a data: URI. Indices of
-// existing buffers, views and images never change, so nothing else in the document moves.
+// buffer views (with their mimeType), and so is every further buffer (its views then point at
+// buffer 0, which is all the document keeps). Indices of views and images never change, so
+// nothing else in the document moves.
 //
 // .gltf: into the source's own folder, the document keeps referencing the source's side files
 // by their URIs. Into another folder, every side file is copied beside it under the same

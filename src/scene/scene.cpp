@@ -3,6 +3,8 @@
 
 #include <limits>
 
+#include "core/hash.h"
+
 namespace hipr {
 
 MaterialParameters default_material_params() {
@@ -38,12 +40,34 @@ MaterialParameters default_material_params() {
   m.alpha_cutoff = -1.0f;
   m.coat_normal_scale = 1.0f;
   m.thin_film_thickness_min = 0.0f;
-  for (uint32_t* texture : {&m.transmission_texture, &m.clearcoat_texture, &m.clearcoat_roughness_texture,
-                            &m.clearcoat_normal_texture, &m.sheen_color_texture, &m.sheen_roughness_texture,
-                            &m.specular_texture, &m.specular_color_texture, &m.iridescence_texture,
-                            &m.iridescence_thickness_texture, &m.anisotropy_texture})
-    *texture = abi::kInvalidIndex;
+  for (uint32_t* texture : texture_slots(m)) *texture = abi::kInvalidIndex;
   return m;
+}
+
+std::vector<uint32_t*> texture_slots(MaterialParameters& m) {
+  return {&m.base_color_texture,          &m.metallic_roughness_texture,    &m.normal_texture,
+          &m.emission_texture,            &m.transmission_texture,          &m.clearcoat_texture,
+          &m.clearcoat_roughness_texture, &m.clearcoat_normal_texture,      &m.sheen_color_texture,
+          &m.sheen_roughness_texture,     &m.specular_texture,              &m.specular_color_texture,
+          &m.iridescence_texture,         &m.iridescence_thickness_texture, &m.anisotropy_texture};
+}
+
+uint64_t mesh_revision(const Mesh& mesh) {
+  Hasher hash;
+  const auto add = [&](const auto& values) {
+    const uint64_t count = values.size();
+    hash.add(&count, sizeof count);
+    hash.add(values.data(), values.size() * sizeof(values[0]));
+  };
+  for (const MeshPrimitive& p : mesh.primitives) {
+    add(p.positions);
+    add(p.normals);
+    add(p.tangents);
+    add(p.uvs);
+    add(p.uvs1);
+    add(p.indices);
+  }
+  return hash.value();
 }
 
 bool material_is_opaque(const MaterialParameters& m) {
@@ -109,6 +133,27 @@ int Scene::camera_node() const {
     stack.insert(stack.end(), kids.rbegin(), kids.rend());
   }
   return -1;
+}
+
+std::vector<bool> Scene::reachable_nodes() const {
+  std::vector<bool> reachable(nodes.size(), false);
+  std::vector<uint32_t> stack(root_nodes.begin(), root_nodes.end());
+  while (!stack.empty()) {
+    const uint32_t index = stack.back();
+    stack.pop_back();
+    if (reachable[index]) continue;  // the loader guarantees a tree; this only bounds the walk
+    reachable[index] = true;
+    stack.insert(stack.end(), children[index].begin(), children[index].end());
+  }
+  return reachable;
+}
+
+std::vector<uint32_t> Scene::light_nodes() const {
+  const std::vector<bool> reachable = reachable_nodes();
+  std::vector<uint32_t> result;
+  for (uint32_t n = 0; n < nodes.size(); ++n)
+    if (reachable[n] && nodes[n].light >= 0) result.push_back(n);
+  return result;
 }
 
 std::pair<glm::vec3, glm::vec3> Scene::bounds() const {

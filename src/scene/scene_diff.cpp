@@ -53,21 +53,42 @@ std::optional<glm::vec3> light_factor(const PunctualLight& before, const Punctua
   return channel_factor(before.color * before.intensity, after.color * after.intensity);
 }
 
+// Per node, its instance in `instances`, or -1.
+std::vector<int> instance_of_node(const Scene& scene, const std::vector<Instance>& instances) {
+  std::vector<int> of(scene.nodes.size(), -1);
+  for (size_t i = 0; i < instances.size(); ++i) of[instances[i].node] = int(i);
+  return of;
+}
+
+bool emits_any(const Scene& scene, uint32_t mesh) {
+  for (const MeshPrimitive& p : scene.meshes[mesh].primitives)
+    if (material_emits(scene.materials[p.material].params)) return true;
+  return false;
+}
+
+// A light that was not there (or no longer is): the same light, dark.
+PlacedLight dark(PlacedLight light) {
+  light.light.intensity = 0.0f;
+  return light;
+}
+
 }  // namespace
 
 ChangeSet diff_scenes(const Scene& before, const Scene& after) {
   ChangeSet changes;
   const std::vector<Instance> old_instances = before.instances();
   const std::vector<Instance> new_instances = after.instances();
-  if (old_instances.size() != new_instances.size() || before.materials.size() != after.materials.size() ||
-      before.lights.size() != after.lights.size())
-    throw InternalError("scene diff between different scenes");
 
   // Whether every change so far is an emitter scaled by a factor (emitter_scales).
   bool linear = true;
   std::vector<EmitterScale> scales;
-  std::vector<bool> material_changed(after.materials.size(), false);
-  for (size_t m = 0; m < after.materials.size(); ++m) {
+  std::vector<bool> material_changed(after.materials.size(), true);  // new ones count as changed
+  if (before.materials.size() != after.materials.size()) {
+    changes.materials = true;
+    linear = false;
+  }
+  for (size_t m = 0; m < std::min(before.materials.size(), after.materials.size()); ++m) {
+    material_changed[m] = false;
     if (same_bytes(before.materials[m].params, after.materials[m].params)) continue;
     material_changed[m] = true;
     changes.materials = true;
@@ -77,36 +98,68 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     else linear = false;
   }
 
+  changes.geometry = before.meshes.size() != after.meshes.size();
+  for (size_t m = 0; m < std::min(before.meshes.size(), after.meshes.size()); ++m)
+    changes.geometry = changes.geometry || before.meshes[m].revision != after.meshes[m].revision;
+  if (changes.geometry) linear = false;
+
+  const std::vector<int> old_of_node = instance_of_node(before, old_instances);
+  const std::vector<int> new_of_node = instance_of_node(after, new_instances);
   for (size_t i = 0; i < new_instances.size(); ++i) {
-    const Instance& a = old_instances[i];
     const Instance& b = new_instances[i];
-    bool changed = a.world != b.world || a.visible != b.visible;
+    const int old = b.node < old_of_node.size() ? old_of_node[b.node] : -1;
+    // Another mesh (or the same index holding other vertices) is a new instance.
+    const bool same_mesh = old >= 0 && old_instances[size_t(old)].mesh == b.mesh &&
+                           before.meshes[b.mesh].revision == after.meshes[b.mesh].revision;
+    bool changed = !same_mesh || old_instances[size_t(old)].world != b.world || old_instances[size_t(old)].visible != b.visible;
     if (changed) {
       linear = false;
       changes.transforms = true;
-      for (const MeshPrimitive& p : after.meshes[b.mesh].primitives)
-        if (material_emits(after.materials[p.material].params)) changes.light_tables = true;
+      if (emits_any(after, b.mesh) || (old >= 0 && emits_any(before, old_instances[size_t(old)].mesh)))
+        changes.light_tables = true;
     }
     for (const MeshPrimitive& p : after.meshes[b.mesh].primitives) changed = changed || material_changed[p.material];
     if (changed) changes.instances.push_back(uint32_t(i));
   }
+  for (const Instance& a : old_instances) {
+    if (a.node < new_of_node.size() && new_of_node[a.node] >= 0) continue;
+    changes.departed.push_back(a.node);
+    changes.transforms = true;
+    linear = false;
+    if (emits_any(before, a.mesh)) changes.light_tables = true;
+  }
 
-  for (uint32_t n = 0; n < after.nodes.size(); ++n) {
-    const int light = after.nodes[n].light;
-    if (light < 0) continue;
-    // A light node the scene before did not have counts as moved (edits add none today; a camera
-    // edit may add its camera's node).
-    const glm::mat4 new_world = after.world_transform(n);
-    const glm::mat4 old_world = n < before.nodes.size() ? before.world_transform(n) : new_world;
-    const bool moved = n >= before.nodes.size() || old_world != new_world;
-    if (moved || !same_light(before.lights[size_t(light)], after.lights[size_t(light)])) {
-      changes.lights.push_back({n, {before.lights[size_t(light)], old_world}, {after.lights[size_t(light)], new_world}});
+  // Punctual lights, paired by node: one that appeared was dark before, one that left is after.
+  const std::vector<uint32_t> old_lights = before.light_nodes();
+  const std::vector<uint32_t> new_lights = after.light_nodes();
+  const auto placed = [](const Scene& scene, uint32_t n) {
+    return PlacedLight{scene.lights[size_t(scene.nodes[n].light)], scene.world_transform(n)};
+  };
+  const auto had_light = [&](uint32_t n) { return std::binary_search(old_lights.begin(), old_lights.end(), n); };
+  for (uint32_t n : new_lights) {
+    const PlacedLight now = placed(after, n);
+    if (!had_light(n)) {
+      changes.lights.push_back({n, dark(now), now});
       changes.light_tables = true;
-      const std::optional<glm::vec3> factor =
-          moved ? std::nullopt : light_factor(before.lights[size_t(light)], after.lights[size_t(light)]);
+      linear = false;
+      continue;
+    }
+    const PlacedLight was = placed(before, n);
+    const bool moved = was.world != now.world;
+    if (moved || !same_light(was.light, now.light)) {
+      changes.lights.push_back({n, was, now});
+      changes.light_tables = true;
+      const std::optional<glm::vec3> factor = moved ? std::nullopt : light_factor(was.light, now.light);
       if (factor) scales.push_back({EmitterScale::Kind::PunctualLight, n, *factor});
       else linear = false;
     }
+  }
+  for (uint32_t n : old_lights) {
+    if (std::binary_search(new_lights.begin(), new_lights.end(), n)) continue;
+    const PlacedLight was = placed(before, n);
+    changes.lights.push_back({n, was, dark(was)});
+    changes.light_tables = true;
+    linear = false;
   }
 
   const Camera old_camera = resolve_camera(before);
@@ -146,12 +199,15 @@ Scene diff_snapshot(const Scene& scene) {
   s.cameras = scene.cameras;
   s.root_nodes = scene.root_nodes;
   s.children = scene.children;
+  s.loaded_node_count = scene.loaded_node_count;
+  s.loaded_light_count = scene.loaded_light_count;
   // Without a camera node the default camera frames the scene's bounds: keep positions then.
   const bool need_positions = scene.camera_node() < 0;
   s.meshes.reserve(scene.meshes.size());
   for (const Mesh& mesh : scene.meshes) {
     Mesh copy;
     copy.name = mesh.name;
+    copy.revision = mesh.revision;
     for (const MeshPrimitive& primitive : mesh.primitives) {
       MeshPrimitive p;
       p.material = primitive.material;

@@ -161,6 +161,7 @@ class Converter {
         const std::string what = object("mesh", mi, source.name) + " primitive " + std::to_string(pi);
         if (auto primitive = convert_primitive(source.primitives[pi], what)) mesh.primitives.push_back(std::move(*primitive));
       }
+      mesh.revision = mesh_revision(mesh);
       m_scene.meshes.push_back(std::move(mesh));
     }
   }
@@ -383,6 +384,9 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   Scene scene;
   scene.source = path;
   Converter(model, scene, name).run();
+  scene.loaded_node_count = scene.nodes.size();
+  scene.loaded_light_count = scene.lights.size();
+  for (const Mesh& mesh : scene.meshes) scene.loaded_mesh_revisions.push_back(mesh.revision);
   const std::string choice = options.environment.string();
   const SceneLighting lighting = scene_lighting(scene);
   if (choice == kStudioEnvironmentName || (choice == kAutoEnvironment && !lighting.lights_itself())) {

@@ -15,6 +15,7 @@
 #include "hipr/scene_writer.h"
 #include "scene/gltf_light_writer.h"
 #include "scene/gltf_material_writer.h"
+#include "scene/gltf_mesh_writer.h"
 #include "scene/gltf_node_writer.h"
 #include "scene/gltf_output.h"
 #include "scene/gltf_source.h"
@@ -62,6 +63,7 @@ void save_scene(const Scene& scene, const fs::path& path) {
   const gltf::SourceDocument source = gltf::read_source(scene.source);
   gltf::Json doc = source.json;
   try {
+    gltf::write_meshes(doc, scene, source.name);
     gltf::write_nodes(doc, scene, source.name);
     gltf::write_lights(doc, scene.lights, source.name);
     gltf::write_materials(doc, scene.materials, source.name);

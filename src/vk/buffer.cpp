@@ -11,6 +11,7 @@ namespace hipr::vk {
 namespace {
 
 std::atomic<uint64_t> g_transferred{0};  // host_transfer_bytes()
+std::atomic<uint64_t> g_device_bytes{0};  // device_bytes_in_use()
 
 uint32_t find_memory_type(const Context& ctx, uint32_t allowed, VkMemoryPropertyFlags wanted,
                           VkMemoryPropertyFlags fallback) {
@@ -60,6 +61,8 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
   alloc.memoryTypeIndex = type;
   try {
     VK_CHECK(vkAllocateMemory(ctx.device(), &alloc, nullptr, &m_memory));
+    m_allocated = req.size;
+    g_device_bytes += m_allocated;
     VK_CHECK(vkBindBufferMemory(ctx.device(), m_buffer, m_memory, 0));
     if (is_host_visible(ctx, type)) VK_CHECK(vkMapMemory(ctx.device(), m_memory, 0, VK_WHOLE_SIZE, 0, &m_mapped));
   } catch (...) {
@@ -83,6 +86,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     m_memory = std::exchange(other.m_memory, VK_NULL_HANDLE);
     m_size = std::exchange(other.m_size, 0);
     m_address = std::exchange(other.m_address, 0);
+    m_allocated = std::exchange(other.m_allocated, 0);
     m_mapped = std::exchange(other.m_mapped, nullptr);
   }
   return *this;
@@ -92,6 +96,8 @@ void Buffer::release() {
   if (!m_ctx) return;
   if (m_buffer) vkDestroyBuffer(m_ctx->device(), m_buffer, nullptr);
   if (m_memory) vkFreeMemory(m_ctx->device(), m_memory, nullptr);  // also unmaps
+  g_device_bytes -= m_allocated;
+  m_allocated = 0;
   m_buffer = VK_NULL_HANDLE;
   m_memory = VK_NULL_HANDLE;
   m_mapped = nullptr;
@@ -135,5 +141,6 @@ void Buffer::clear() {
 }
 
 uint64_t host_transfer_bytes() { return g_transferred.load(std::memory_order_relaxed); }
+uint64_t device_bytes_in_use() { return g_device_bytes.load(std::memory_order_relaxed); }
 
 }  // namespace hipr::vk

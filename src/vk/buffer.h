@@ -56,6 +56,7 @@ class Buffer {
   VkDeviceMemory m_memory = VK_NULL_HANDLE;
   VkDeviceSize m_size = 0;
   VkDeviceAddress m_address = 0;
+  VkDeviceSize m_allocated = 0;  // bytes of m_memory (device_bytes_in_use)
   void* m_mapped = nullptr;
 };
 
@@ -63,6 +64,10 @@ class Buffer {
 // process started: the one place such copies happen, so counting here counts them all (the
 // viewer reports them per frame).
 uint64_t host_transfer_bytes();
+
+// Bytes of device memory every live Buffer holds (acceleration structures live in Buffers too):
+// what shows whether repeated edits leak.
+uint64_t device_bytes_in_use();
 
 // Creates a storage buffer holding `values` (at least one element's worth of bytes).
 template <typename T>

@@ -50,6 +50,11 @@ void file_section(Session& session, ViewerState& state) {
   ImGui::InputText("##save", &state.save_path);
   ImGui::SameLine();
   if (ImGui::Button("Save")) state.request_save = true;
+  // A glTF file's scene, added as one new object (at its own origin).
+  ImGui::InputText("##import", &state.import_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Import") && !state.import_path.empty())
+    try_edit(session, state, ImportEdit{state.import_path, "", glm::vec3(0.0f)});
   ImGui::InputText("##shot", &state.screenshot_path);
   ImGui::SameLine();
   if (ImGui::Button("Screenshot")) state.request_screenshot = true;
@@ -189,16 +194,6 @@ void display_section(ViewerState& state) {
 }
 
 }  // namespace
-
-bool try_edit(Session& session, ViewerState& state, const Edit& edit) {
-  try {
-    session.edit(edit);
-    return true;
-  } catch (const InputError& e) {
-    state.error(e.what());
-    return false;
-  }
-}
 
 bool ui_edit(Session& session, ViewerState& state, const Edit& edit) {
   if (!state.ui_group_open && ImGui::IsAnyItemActive()) {

@@ -6,6 +6,7 @@
 // leave everything else to the main loop as requests in ViewerState.
 #include <string>
 
+#include "app/viewer/scene_edits.h"
 #include "app/viewer/session.h"
 #include "app/viewer/viewer_state.h"
 
@@ -18,19 +19,12 @@ void draw_side_panel(Session& session, ViewerState& state, float x, float height
 void draw_status_line(const Session& session, const ViewerState& state, float x, float y,
                       float width);
 
-// An edit; a refusal (InputError) becomes a message and returns false, the scene unchanged.
-bool try_edit(Session& session, ViewerState& state, const Edit& edit);
 // An edit from a widget. While any widget stays active (a slider or colour being dragged) its
 // edits form one undo step. Returns false when the scene refused it (shown as a message).
 bool ui_edit(Session& session, ViewerState& state, const Edit& edit);
 // Closes that undo step once no widget is active; call once per frame after the panels.
 void end_ui_edit_group(Session& session, ViewerState& state);
 
-// How edits name a node or material: its name when that finds it, else "#index".
-std::string node_reference(const Scene& scene, uint32_t node);
-std::string material_reference(const Scene& scene, uint32_t material);
-// For labels: the name, or "#index" for unnamed ones.
-std::string node_label(const Scene& scene, uint32_t node);
 
 // Sections of the side panel (scene_panels.cpp).
 void scene_tree_section(Session& session, ViewerState& state);

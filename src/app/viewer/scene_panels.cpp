@@ -17,18 +17,6 @@
 namespace hipr::viewer {
 namespace {
 
-std::string index_reference(uint32_t index) { return "#" + std::to_string(index); }
-
-template <typename Items, typename NameOf>
-std::string reference(const Items& items, uint32_t index, NameOf name_of) {
-  const std::string& name = name_of(items[index]);
-  // The edit model resolves a name to its first holder; "#..." would read as an index.
-  if (name.empty() || name[0] == '#') return index_reference(index);
-  for (uint32_t i = 0; i < items.size(); ++i)
-    if (name_of(items[i]) == name) return i == index ? name : index_reference(index);
-  return index_reference(index);
-}
-
 // Drag speed for an unbounded value: about 1% of its size, so small and large values both move.
 float drag_speed(float value, float floor) { return std::max(std::abs(value) * 0.01f, floor); }
 
@@ -89,19 +77,6 @@ void material_editor(Session& session, ViewerState& state, uint32_t material) {
 
 }  // namespace
 
-std::string node_reference(const Scene& scene, uint32_t node) {
-  return reference(scene.nodes, node, [](const Node& n) -> const std::string& { return n.name; });
-}
-
-std::string material_reference(const Scene& scene, uint32_t material) {
-  return reference(scene.materials, material,
-                   [](const Material& m) -> const std::string& { return m.name; });
-}
-
-std::string node_label(const Scene& scene, uint32_t node) {
-  return scene.nodes[node].name.empty() ? index_reference(node) : scene.nodes[node].name;
-}
-
 void scene_tree_section(Session& session, ViewerState& state) {
   if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::BeginChild("tree", ImVec2(0.0f, 160.0f), true);
@@ -111,14 +86,25 @@ void scene_tree_section(Session& session, ViewerState& state) {
 
 void selection_section(Session& session, ViewerState& state) {
   if (!ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const Scene& scene = session.scene();
-  if (state.selected_node < 0 || size_t(state.selected_node) >= scene.nodes.size()) {
+  const std::optional<uint32_t> selected = selected_node(session, state);
+  if (!selected) {
     ImGui::TextDisabled("Click an object in the view (or a node above).");
     return;
   }
-  const uint32_t node = uint32_t(state.selected_node);
+  const uint32_t node = *selected;
+  ImGui::Text("%s", node_label(session.scene(), node).c_str());
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Duplicate")) {  // Ctrl+D
+    duplicate_selection(session, state);
+    return;  // the selection is the copy now: drawn next frame
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Delete")) {  // Delete
+    delete_selection(session, state);
+    return;
+  }
+  const Scene& scene = session.scene();
   const Node& n = scene.nodes[node];
-  ImGui::Text("%s", node_label(scene, node).c_str());
   const std::string reference = node_reference(scene, node);
   float translation[3] = {n.local[3].x, n.local[3].y, n.local[3].z};
   const auto [lo, hi] = session.bounds();
@@ -155,8 +141,7 @@ void lights_section(Session& session, ViewerState& state) {
   if (!ImGui::CollapsingHeader("Lights")) return;
   const Scene& scene = session.scene();
   bool any = false;
-  for (uint32_t node = 0; node < scene.nodes.size(); ++node) {
-    if (scene.nodes[node].light < 0) continue;
+  for (uint32_t node : scene.light_nodes()) {
     any = true;
     const PunctualLight& light = scene.lights[size_t(scene.nodes[node].light)];
     const std::string reference = node_reference(scene, node);

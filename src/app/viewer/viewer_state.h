@@ -39,6 +39,7 @@ struct ViewerState {
   uint32_t steps_per_frame = 0;   // > 0: a fixed number of steps instead (scripts, tests)
 
   std::string open_path, save_path, screenshot_path;
+  std::string import_path;  // the File panel's Import field
   std::string environment_file;   // the last environment file shown, offered in the Environment panel
   std::string environment_input;  // the Environment panel's file field
   bool request_open = false;

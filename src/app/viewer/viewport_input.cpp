@@ -68,6 +68,7 @@ void ViewportInput::key(Session& session, ViewerState& state, const KeyPress& pr
     if (k == GLFW_KEY_Z) press.shift ? session.redo() : session.undo();
     if (k == GLFW_KEY_Y) session.redo();
     if (k == GLFW_KEY_S && !press.repeat) state.request_save = true;
+    if (k == GLFW_KEY_D && !press.repeat) duplicate_selection(session, state);
     return;
   }
   if (k == GLFW_KEY_F12 && !press.repeat) state.request_screenshot = true;
@@ -79,9 +80,14 @@ void ViewportInput::key(Session& session, ViewerState& state, const KeyPress& pr
   if (k >= GLFW_KEY_0 && k <= GLFW_KEY_3) state.overlay = overlays[k - GLFW_KEY_0];
   if (k == GLFW_KEY_ESCAPE) state.selected_node = -1;
 
+  const std::optional<uint32_t> selected = selected_node(session, state);
+  if (!selected) return;
+  if (k == GLFW_KEY_DELETE) {
+    delete_selection(session, state);
+    return;
+  }
   const Scene& scene = session.scene();
-  if (state.selected_node < 0 || size_t(state.selected_node) >= scene.nodes.size()) return;
-  const uint32_t node = uint32_t(state.selected_node);
+  const uint32_t node = *selected;
   if (k == GLFW_KEY_H)
     try_edit(session, state,
              VisibilityEdit{node_reference(scene, node), !scene.nodes[node].visible});

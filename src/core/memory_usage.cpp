@@ -1,0 +1,17 @@
+#include "core/memory_usage.h"
+
+#include <unistd.h>
+
+#include <fstream>
+
+namespace hipr {
+
+uint64_t resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  uint64_t total_pages = 0, resident_pages = 0;
+  if (!(statm >> total_pages >> resident_pages)) return 0;
+  const long page = sysconf(_SC_PAGESIZE);
+  return page > 0 ? resident_pages * uint64_t(page) : 0;
+}
+
+}  // namespace hipr

@@ -1,0 +1,27 @@
+#pragma once
+// The geometry edits (duplicate, delete, import, deform) and their undo, applied to the scene
+// model: see hipr/edits.h for what each does.
+#include "hipr/edits.h"
+
+namespace hipr {
+
+void apply_duplicate(Scene& scene, const DuplicateEdit& edit);
+void apply_delete(Scene& scene, const DeleteEdit& edit);
+void apply_import(Scene& scene, const ImportEdit& edit);
+void apply_deform(Scene& scene, const DeformEdit& edit);
+void apply_structure(Scene& scene, const StructureEdit& edit);
+
+// Throw the InputError the apply_ function would, without changing anything (inverse_edit
+// checks an edit before building its undo). An import is checked when it loads its file.
+void check_duplicate(const Scene& scene, const DuplicateEdit& edit);
+void check_deform(const Scene& scene, const DeformEdit& edit);
+
+// The undo of a duplicate, delete or import: the structure as it is now.
+StructureEdit structure_undo(const Scene& scene);
+
+// Without a camera node the view frames the scene's bounds; edits that would move the view
+// (moving the camera, changing what the bounds hold) first make that view a camera node.
+// Returns the camera node.
+size_t pin_default_camera(Scene& scene);
+
+}  // namespace hipr

@@ -1,0 +1,19 @@
+#pragma once
+// Scene meshes -> glTF JSON, for the meshes whose vertices edits changed (deform): their
+// triangles, written again from the scene into a buffer of their own.
+#include <string>
+
+#include "hipr/scene.h"
+#include "scene/gltf_json_values.h"
+
+namespace hipr::gltf {
+
+// Rewrites the primitives of every mesh of doc whose scene mesh is not as loaded (its revision
+// differs from Scene::loaded_mesh_revisions): positions, normals, tangents, texture coordinates
+// and indices (a triangle list) as the scene holds them, in one new buffer (a data: URI;
+// write_glb and write_gltf keep it so), on the same materials. Morph targets go (the deformed
+// vertices replace what they morphed). Throws InputError for meshes the file does not have
+// (imported ones: not written yet). `name` names the file in messages.
+void write_meshes(Json& doc, const Scene& scene, const std::string& name);
+
+}  // namespace hipr::gltf

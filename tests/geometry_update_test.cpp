@@ -1,0 +1,249 @@
+// Geometry edits on the GPU: after a duplicate, delete, import or deform (and their undo) the
+// incremental update leaves the renderer exactly where a fresh upload of the edited scene would,
+// every policy ends on exactly the full-frame image, stage 1 finds what left and what came, and
+// records stay flat over many duplicate/delete cycles.
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "bench/oracle_policy.h"
+#include "hipr/edits.h"
+#include "hipr/renderer.h"
+#include "hipr/scene_diff.h"
+#include "hipr/scene_loader.h"
+#include "hipr/scheduler.h"
+#include "render/gpu_scene.h"
+#include "vk/buffer.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+
+RenderSettings settings() { return test::render_settings(32, 32, 16, 6, 4); }
+
+ImageRGB fresh_render(const Scene& scene, uint32_t spp) {
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(spp);
+  return renderer.image();
+}
+
+glm::mat4 stretch() { return glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 1.6f, 1.0f)); }
+glm::mat4 mirror() { return glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)); }
+
+struct OpCase {
+  const char* name;
+  std::vector<Edit> edits;  // applied one after another, each followed by an update
+};
+
+void PrintTo(const OpCase& c, std::ostream* out) { *out << c.name; }
+
+std::vector<OpCase> op_cases() {
+  const std::filesystem::path sphere = test::asset("cornell_sphere.glb");
+  return {
+      {"duplicate", {DuplicateEdit{"short_block", "copy", glm::vec3(-0.3f, 0.0f, 0.2f)}}},
+      {"delete", {DeleteEdit{"tall_block"}}},
+      {"delete_first_instance", {DeleteEdit{"floor"}}},
+      {"import", {ImportEdit{sphere, "sphere", glm::vec3(0.1f, 0.1f, 0.0f)}}},
+      {"deform", {DeformEdit{"tall_block", stretch(), nullptr}}},
+      {"deform_mirrored", {DeformEdit{"tall_block", mirror(), nullptr}}},
+      // A freed record range taken by a later instance of another size; an instance whose node
+      // is gone and back.
+      {"delete_then_duplicate",
+       {DeleteEdit{"short_block"}, DuplicateEdit{"tall_block", "copy", glm::vec3(0.2f, 0.0f, 0.0f)}}},
+      {"import_delete_import",
+       {ImportEdit{sphere, "a", {}}, DeleteEdit{"a"}, ImportEdit{sphere, "b", glm::vec3(0.0f, 0.1f, 0.0f)}}},
+  };
+}
+
+class GeometryUpdate : public ::testing::TestWithParam<OpCase> {};
+
+// Render, edit, update, restart -> the same samples as a renderer made for the edited scene; and
+// the undo, updated the same way, gives back the image before.
+TEST_P(GeometryUpdate, MatchesAFreshUploadBitForBitAndUndoes) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  const ImageRGB original = fresh_render(scene, 2);
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(2);
+  std::vector<Edit> undo;
+  for (const Edit& edit : GetParam().edits) {
+    undo.push_back(inverse_edit(scene, edit));
+    const Scene before = scene;
+    apply_edit(scene, edit);
+    const ChangeSet changes = diff_scenes(before, scene);
+    ASSERT_FALSE(changes.empty()) << describe(edit);
+    renderer.update_scene(scene, changes);
+    renderer.reset();
+    renderer.add_samples_full_frame(2);
+    const ImageRGB fresh = fresh_render(scene, 2);
+    EXPECT_EQ(renderer.image().rgb, fresh.rgb) << describe(edit);
+    EXPECT_NE(fresh_render(before, 2).rgb, fresh.rgb) << describe(edit) << " changed nothing visible";
+  }
+  for (auto it = undo.rbegin(); it != undo.rend(); ++it) {
+    const Scene before = scene;
+    apply_edit(scene, *it);
+    renderer.update_scene(scene, diff_scenes(before, scene));
+  }
+  renderer.reset();
+  renderer.add_samples_full_frame(2);
+  EXPECT_EQ(renderer.image().rgb, original.rgb) << "undone";
+}
+
+INSTANTIATE_TEST_SUITE_P(Ops, GeometryUpdate, ::testing::ValuesIn(op_cases()),
+                         [](const auto& param_info) { return std::string(param_info.param.name); });
+
+// Records keep their index while their instance stays, so after a delete the records of later
+// instances are not where a fresh upload puts them: the cutout's random choice keys on the
+// record's identity (its index in a fresh upload), not its index.
+TEST(GeometryUpdate, CutoutChoicesDoNotDependOnWhereRecordsSit) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  apply_edit(scene, MaterialEdit{"white", {{"geometry_opacity", {0.5f}}}});
+  Renderer renderer(test::context(), scene, settings());
+  const Scene before = scene;
+  apply_edit(scene, DeleteEdit{"floor"});
+  renderer.update_scene(scene, diff_scenes(before, scene));
+  renderer.add_samples_full_frame(2);
+  EXPECT_EQ(renderer.image().rgb, fresh_render(scene, 2).rgb);
+}
+
+// Many duplicate/delete cycles reuse the records the deleted copies had: the record table (and
+// every buffer sized by it) and the device memory stay as they were after the first cycle.
+TEST(GeometryUpdate, DuplicateDeleteCyclesKeepRecordsAndDeviceMemoryFlat) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  GpuScene gpu(test::context(), scene);
+  const uint32_t records = gpu.record_count();
+  Renderer renderer(test::context(), scene, settings());
+  renderer.hipr_stages();  // its buffers too
+  uint32_t after_first = 0;
+  uint64_t device_after_first = 0;
+  const auto update = [&](const Edit& edit) {
+    const Scene before = scene;
+    apply_edit(scene, edit);
+    const ChangeSet changes = diff_scenes(before, scene);
+    gpu.update_instances(scene);
+    renderer.update_scene(scene, changes);
+    renderer.hipr_stages()->stage1_visibility(changes);
+  };
+  for (int i = 0; i < 200; ++i) {
+    update(DuplicateEdit{i % 3 ? "short_block" : "tall_block", "copy", glm::vec3(0.01f * float(i % 5))});
+    if (i == 0) after_first = gpu.record_count();
+    EXPECT_EQ(gpu.record_count(), after_first) << i;
+    update(DeleteEdit{"copy"});
+    if (i == 0) device_after_first = vk::device_bytes_in_use();
+  }
+  EXPECT_GT(after_first, records);
+  EXPECT_EQ(gpu.record_count(), after_first);
+  EXPECT_EQ(gpu.info().instance_count, scene.instances().size());
+  EXPECT_EQ(vk::device_bytes_in_use(), device_after_first);
+}
+
+// Stage 1 after a delete finds the tiles where the deleted block was (the G-buffer before the
+// edit shows it), and after a duplicate where the copy is.
+TEST(GeometryUpdate, StageOneMarksWhereTheNodeWasAndWhereTheCopyIs) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  RenderSettings s = test::render_settings(64, 64, 8, 4, 2);
+  Renderer renderer(test::context(), scene, s);
+  renderer.refresh_gbuffer();
+  std::vector<uint32_t> was = renderer.gbuffer_instances();
+  const std::vector<Instance> old_instances = scene.instances();
+  uint32_t tall = UINT32_MAX;
+  for (uint32_t i = 0; i < old_instances.size(); ++i)
+    if (scene.nodes[old_instances[i].node].name == "tall_block") tall = i;
+  const auto tiles_showing = [&](const std::vector<uint32_t>& pixel_instances, uint32_t instance) {
+    std::vector<bool> tiles(renderer.tile_count(), false);
+    for (size_t p = 0; p < pixel_instances.size(); ++p)
+      if (pixel_instances[p] == instance) tiles[(p / s.width / s.tile_size) * renderer.tiles_x() + (p % s.width) / s.tile_size] = true;
+    return tiles;
+  };
+  const std::vector<bool> tall_tiles = tiles_showing(was, tall);
+
+  Scene before = scene;
+  apply_edit(scene, DeleteEdit{"tall_block"});
+  ChangeSet changes = diff_scenes(before, scene);
+  renderer.update_scene(scene, changes);
+  renderer.hipr_stages()->stage1_visibility(changes);
+  std::vector<uint32_t> flags = renderer.tile_flags();
+  size_t marked = 0, expected = 0;
+  for (size_t t = 0; t < flags.size(); ++t) {
+    if (!tall_tiles[t]) continue;
+    ++expected;
+    marked += (flags[t] & abi::kTileActive) ? 1 : 0;
+  }
+  ASSERT_GT(expected, 0u);
+  EXPECT_EQ(marked, expected) << "every tile that showed the deleted block is active";
+  size_t active = 0;
+  for (uint32_t f : flags) active += (f & abi::kTileActive) ? 1 : 0;
+  EXPECT_LT(active, flags.size()) << "tiles that never showed it stay as they were";
+
+  before = scene;
+  apply_edit(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.25f, 0.0f, 0.0f)});
+  changes = diff_scenes(before, scene);
+  renderer.update_scene(scene, changes);
+  renderer.hipr_stages()->stage1_visibility(changes);
+  flags = renderer.tile_flags();
+  const std::vector<uint32_t> now = renderer.gbuffer_instances();
+  ASSERT_EQ(changes.instances.size(), 1u);
+  const std::vector<bool> copy_tiles = tiles_showing(now, changes.instances[0]);
+  size_t copy_expected = 0, copy_marked = 0;
+  for (size_t t = 0; t < flags.size(); ++t) {
+    if (!copy_tiles[t]) continue;
+    ++copy_expected;
+    copy_marked += (flags[t] & abi::kTileActive) ? 1 : 0;
+  }
+  ASSERT_GT(copy_expected, 0u);
+  EXPECT_EQ(copy_marked, copy_expected);
+}
+
+// Scheduling: whatever the policy and display rule, the display ends on exactly the full-frame
+// image of the edited scene after each geometry edit.
+struct PolicyCase {
+  Policy policy;
+  DisplayRule display;
+};
+
+class GeometryEveryPolicy : public ::testing::TestWithParam<PolicyCase> {};
+
+TEST_P(GeometryEveryPolicy, ConvergesToTheFullFrameImageOfTheEditedScene) {
+  const PolicyCase c = GetParam();
+  const RenderSettings s = test::render_settings(48, 40, 8, 6, 13);
+  const uint32_t spp = 3;
+  const auto full_frame = [&](const Scene& scene) {
+    Renderer renderer(test::context(), scene, s);
+    renderer.add_samples_full_frame(spp);
+    renderer.resolve_display_all(DisplayRule::Immediate);
+    return renderer.displayed_image();
+  };
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, s);
+  ImageRGB expected;
+  Scheduler scheduler(renderer, bench::make_bench_policy(c.policy, expected), 7);
+  scheduler.set_display_rule(c.display);
+  renderer.add_samples_full_frame(spp);
+  const std::vector<Edit> edits = {DuplicateEdit{"short_block", "copy", glm::vec3(-0.3f, 0.0f, 0.25f)},
+                                   DeformEdit{"tall_block", stretch(), nullptr}, DeleteEdit{"short_block"},
+                                   ImportEdit{test::asset("cornell_sphere.glb"), "sphere", glm::vec3(0.0f, 0.1f, 0.0f)}};
+  for (const Edit& edit : edits) {
+    const Scene before = scene;
+    apply_edit(scene, edit);
+    expected = full_frame(scene);
+    scheduler.on_edit(scene, diff_scenes(before, scene));
+    for (int step = 0; step < 10000 && scheduler.work_since_edit() < double(spp); ++step) scheduler.step();
+    EXPECT_EQ(scheduler.displayed_image().rgb, expected.rgb) << describe(edit);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Policies, GeometryEveryPolicy,
+                         ::testing::Values(PolicyCase{Policy::Hipr, DisplayRule::Difference},
+                                           PolicyCase{Policy::Hipr, DisplayRule::Blend},
+                                           PolicyCase{Policy::Full, DisplayRule::Immediate},
+                                           PolicyCase{Policy::Scanline, DisplayRule::Immediate},
+                                           PolicyCase{Policy::Spiral, DisplayRule::Switch},
+                                           PolicyCase{Policy::Random, DisplayRule::Immediate},
+                                           PolicyCase{Policy::Oracle, DisplayRule::Difference}),
+                         [](const auto& param_info) {
+                           return policy_name(param_info.param.policy) + "_" + display_rule_name(param_info.param.display);
+                         });
+
+}  // namespace
+}  // namespace hipr
