@@ -426,16 +426,22 @@ TEST(Replay, GeometryEditsSaveAndRenderAsTheEditedScene) {
   ASSERT_EQ(test::run_hipr("render " + quoted(saved) + " -o " + quoted(dir / "saved.exr") + size).exit_code, kExitOk);
   EXPECT_EQ(read_image(dir / "saved.exr").rgb, reference) << "the saved scene renders as the edited one";
 
-  // An import of a file beside the script: rendered, but not saved.
+  // An import of a file beside the script (its meshes, materials and lamp), saved as .glb.
   fs::copy_file(test::asset("cornell_sphere.glb"), dir / "sphere.glb");
   const fs::path import_script = dir / "import.json";
-  std::ofstream(import_script) << R"({"edits": [{"op": "import", "file": "sphere.glb", "translate": [0, 0.1, 0]}]})";
+  std::ofstream(import_script) << R"({"edits": [{"op": "import", "file": "sphere.glb", "translate": [0.3, 0.1, 0]}]})";
   const std::string import_base = "replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(import_script);
-  EXPECT_EQ(test::run_hipr(import_base + " -o " + quoted(dir / "imported") + size).exit_code, kExitOk);
-  test::CommandResult result =
-      test::run_hipr(import_base + " -o " + quoted(dir / "no") + " --save " + quoted(dir / "no.gltf") + size);
+  ASSERT_EQ(test::run_hipr(import_base + " -o " + quoted(dir / "imported") + " --save " + quoted(dir / "imported.glb") + size)
+                .exit_code,
+            kExitOk);
+  ASSERT_EQ(test::run_hipr("render " + quoted(dir / "imported.glb") + " -o " + quoted(dir / "imported.exr") + size).exit_code,
+            kExitOk);
+  EXPECT_EQ(read_image(dir / "imported.exr").rgb, read_image(dir / "imported" / "final.exr").rgb);
+
+  // A save the writer refuses (here a format it does not write) is bad input, before any render.
+  test::CommandResult result = test::run_hipr(import_base + " -o " + quoted(dir / "no") + " --save " +
+                                              quoted(dir / "no.obj") + size);
   expect_one_error_line(result);
-  EXPECT_FALSE(fs::exists(dir / "no.gltf"));
   EXPECT_FALSE(fs::exists(dir / "no"));
 
   const fs::path escape = dir / "escape.json";

@@ -348,6 +348,26 @@ TEST_F(ViewerWindow, SavedSceneReloadsToTheEditedScene) {
         << "new validator error " << code;
 }
 
+// Geometry edits as the viewer's script applies them (as if typed: Ctrl+D, Delete...): the
+// saved file holds the copy and the deformed mesh, not the deleted block.
+TEST_F(ViewerWindow, GeometryEditsAreSavedAsMade) {
+  const char* edits = R"({"edits": [
+    {"op": "duplicate", "node": "short_block", "as": "short_block_2", "translate": [-0.25, 0.0, 0.2]},
+    {"op": "deform", "node": "tall_block", "matrix": [1,0,0,0, 0,1.3,0,0, 0,0,1,0, 0,0,0,1]},
+    {"op": "delete", "node": "short_block"}]})";
+  const fs::path saved = s_dir / "geometry.glb";
+  const test::CommandResult result =
+      run_in_xvfb(view_arguments("--exit-after-frames 13 --save " + quoted(saved) + " --script " +
+                                 quoted(script("geometry.json", edits))));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  Scene expected = load_scene(test::asset("cornell_box.gltf"));
+  for (const Edit& edit : parse_edit_script(edits, "geometry.json")) apply_edit(expected, edit);
+  const Scene reloaded = load_scene(saved);
+  EXPECT_TRUE(diff_scenes(expected, reloaded).empty()) << "the saved file loads as the edited scene";
+  EXPECT_THROW(find_node(reloaded, "short_block"), InputError);
+  EXPECT_NO_THROW(find_node(reloaded, "short_block_2"));
+}
+
 // A light edit re-renders first where the light reaches (docs/method.md#light-reach): the
 // lamp's range cut to 0.2 m at frame 24, the lamp moved 5 cm at frame 48 (24 steps of 4 of the 64
 // tiles after the first edit: every tile has been re-rendered, none carries that edit's rank),

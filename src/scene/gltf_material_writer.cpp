@@ -22,6 +22,7 @@
 #include "scene/gltf_material_table.h"
 #include "scene/gltf_materials.h"
 #include "scene/material_parameters.h"
+#include "shaders/shared/abi.h"
 
 namespace hipr::gltf {
 namespace {
@@ -206,6 +207,34 @@ std::vector<std::string> material_extensions_written() {
   std::vector<std::string> out = row_extensions();
   out.push_back(kEmissiveStrength);
   return out;
+}
+
+std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials, const std::string& name) {
+  const size_t count = doc.contains("materials") && doc["materials"].is_array() ? doc["materials"].size() : 0;
+  if (materials.size() <= count + 1) return materials;
+  std::vector<Material> ordered(materials.begin(), materials.begin() + std::ptrdiff_t(count));
+  if (!doc.contains("materials") || !doc["materials"].is_array()) doc["materials"] = Json::array();
+  for (size_t i = count + 1; i < materials.size(); ++i) {
+    M params = materials[i].params;
+    for (uint32_t* slot : texture_slots(params))
+      if (*slot != abi::kInvalidIndex)
+        throw InputError(name + ": saving imported material '" + materials[i].name +
+                         "' is not supported yet: it has textures");
+    Json stub = Json::object();
+    stub["name"] = materials[i].name;
+    if (params.alpha_cutoff >= 0.0f) {
+      stub["alphaMode"] = "MASK";
+      stub["alphaCutoff"] = json_number(params.alpha_cutoff);
+    } else if (!(params.flags & abi::kMaterialIgnoreTextureAlpha)) {
+      stub["alphaMode"] = "BLEND";
+    }
+    if (params.flags & abi::kMaterialDoubleSided) stub["doubleSided"] = true;
+    if (!(params.flags & abi::kMaterialThinWalled)) stub["extensions"][kVolume]["thicknessFactor"] = 1.0;
+    doc["materials"].push_back(std::move(stub));
+    ordered.push_back(materials[i]);
+  }
+  ordered.push_back(materials[count]);  // glTF's default
+  return ordered;
 }
 
 void write_materials(Json& doc, const std::vector<Material>& materials, const std::string& name) {

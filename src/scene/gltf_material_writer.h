@@ -15,6 +15,14 @@ namespace hipr::gltf {
 // rewritten. `name` names the file in messages.
 void write_materials(Json& doc, const std::vector<Material>& materials, const std::string& name);
 
+// Materials an import brought (the scene's beyond the file's and glTF's default, which comes
+// right after the file's): appended to doc["materials"] as stubs holding what write_materials
+// does not write (name, alphaMode and cutoff, doubleSided, a volume's thickness). Returns the
+// scene's materials in the order write_materials then wants: the file's, the appended ones,
+// glTF's default. Throws InputError for an imported material with textures (saving their
+// images is not supported yet). `name` names the file in messages.
+std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials, const std::string& name);
+
 // The glTF extensions write_materials may add to a material (for extensionsUsed).
 std::vector<std::string> material_extensions_written();
 

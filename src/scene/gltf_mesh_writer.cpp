@@ -80,8 +80,10 @@ Json primitive_json(AccessorWriter& out, const MeshPrimitive& p, size_t file_mat
     attributes["TEXCOORD_1"] = out.add(p.uvs1, kFloat, "VEC2", kArrayBuffer);
   Json primitive = {{"attributes", std::move(attributes)},
                     {"indices", out.add(p.indices, kUnsignedInt, "SCALAR", kElementArrayBuffer)}};
-  // The scene's last material past the file's is glTF's default: a primitive without one.
+  // The scene's materials: the file's, glTF's default (a primitive without one), then imported
+  // ones, which write_new_materials appends to the file's.
   if (p.material < file_materials) primitive["material"] = p.material;
+  else if (p.material > file_materials) primitive["material"] = p.material - 1;
   return primitive;
 }
 
@@ -90,24 +92,35 @@ Json primitive_json(AccessorWriter& out, const MeshPrimitive& p, size_t file_mat
 void write_meshes(Json& doc, const Scene& scene, const std::string& name) {
   const size_t file_meshes = doc.contains("meshes") && doc["meshes"].is_array() ? doc["meshes"].size() : 0;
   const size_t file_materials = doc.contains("materials") && doc["materials"].is_array() ? doc["materials"].size() : 0;
-  if (scene.meshes.size() > file_meshes || scene.loaded_mesh_revisions.size() != file_meshes)
-    throw InputError(name + ": saving imported objects is not supported yet (their meshes are not in the file)");
+  if (scene.loaded_mesh_revisions.size() != file_meshes || scene.meshes.size() < file_meshes)
+    throw InputError(name + ": the scene has other meshes than its file: the file changed since it was loaded");
   std::vector<size_t> deformed;
-  for (size_t m = 0; m < scene.meshes.size(); ++m)
+  for (size_t m = 0; m < file_meshes; ++m)
     if (scene.meshes[m].revision != scene.loaded_mesh_revisions[m] && !scene.meshes[m].primitives.empty())
       deformed.push_back(m);
-  if (deformed.empty()) return;
+  if (deformed.empty() && scene.meshes.size() == file_meshes) return;
 
   if (!doc.contains("buffers") || !doc["buffers"].is_array()) doc["buffers"] = Json::array();
   const size_t buffer = doc["buffers"].size();
   doc["buffers"].push_back(Json::object());  // filled below, once its bytes are known
   AccessorWriter out(doc, buffer);
+  const auto primitives_of = [&](const Mesh& mesh) {
+    Json primitives = Json::array();
+    for (const MeshPrimitive& p : mesh.primitives) primitives.push_back(primitive_json(out, p, file_materials));
+    return primitives;
+  };
   for (size_t m : deformed) {
     Json& mesh = doc["meshes"][m];
-    Json primitives = Json::array();
-    for (const MeshPrimitive& p : scene.meshes[m].primitives) primitives.push_back(primitive_json(out, p, file_materials));
-    mesh["primitives"] = std::move(primitives);
+    mesh["primitives"] = primitives_of(scene.meshes[m]);
     mesh.erase("weights");  // the morph targets went with the old primitives
+  }
+  // Imported meshes, appended in the scene's order: their indices stay the scene's.
+  if (!doc.contains("meshes") || !doc["meshes"].is_array()) doc["meshes"] = Json::array();
+  for (size_t m = file_meshes; m < scene.meshes.size(); ++m) {
+    Json mesh = {{"name", scene.meshes[m].name}, {"primitives", primitives_of(scene.meshes[m])}};
+    if (scene.meshes[m].primitives.empty())  // glTF wants a primitive: one triangle of nothing
+      mesh["primitives"] = primitives_of(Mesh{"", {MeshPrimitive{{glm::vec3(0.0f)}, {}, {}, {}, {}, {0, 0, 0}, 0}}, 0});
+    doc["meshes"].push_back(std::move(mesh));
   }
   doc["buffers"][buffer] = {{"byteLength", out.bytes().size()},
                             {"uri", "data:application/octet-stream;base64," + base64_encode(out.bytes())}};

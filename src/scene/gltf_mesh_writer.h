@@ -9,11 +9,12 @@
 namespace hipr::gltf {
 
 // Rewrites the primitives of every mesh of doc whose scene mesh is not as loaded (its revision
-// differs from Scene::loaded_mesh_revisions): positions, normals, tangents, texture coordinates
-// and indices (a triangle list) as the scene holds them, in one new buffer (a data: URI;
-// write_glb and write_gltf keep it so), on the same materials. Morph targets go (the deformed
-// vertices replace what they morphed). Throws InputError for meshes the file does not have
-// (imported ones: not written yet). `name` names the file in messages.
+// differs from Scene::loaded_mesh_revisions), and appends the meshes the scene has beyond the
+// file's (imported): positions, normals, tangents, texture coordinates and indices (a triangle
+// list) as the scene holds them, in one new buffer (a data: URI; write_glb moves it into the
+// BIN chunk), on the scene's materials as write_new_materials numbers them. Morph targets go
+// (the deformed vertices replace what they morphed). Call before write_new_materials. `name`
+// names the file in messages.
 void write_meshes(Json& doc, const Scene& scene, const std::string& name);
 
 }  // namespace hipr::gltf

@@ -38,6 +38,7 @@ void declare_extensions(gltf::Json& doc) {
   std::vector<std::pair<const char*, std::string>> written;
   for (const std::string& e : gltf::material_extensions_written()) written.push_back({"materials", e});
   written.push_back({"nodes", "KHR_node_visibility"});
+  written.push_back({"nodes", "KHR_lights_punctual"});  // an imported lamp in a scene without one
   for (const auto& [kind, extension] : written) {
     if (!uses_extension(doc, kind, extension)) continue;
     if (!doc.contains("extensionsUsed") || !doc["extensionsUsed"].is_array())
@@ -63,10 +64,11 @@ void save_scene(const Scene& scene, const fs::path& path) {
   const gltf::SourceDocument source = gltf::read_source(scene.source);
   gltf::Json doc = source.json;
   try {
-    gltf::write_meshes(doc, scene, source.name);
+    gltf::write_meshes(doc, scene, source.name);  // before the imported materials are appended
+    const std::vector<Material> materials = gltf::write_new_materials(doc, scene.materials, source.name);
     gltf::write_nodes(doc, scene, source.name);
     gltf::write_lights(doc, scene.lights, source.name);
-    gltf::write_materials(doc, scene.materials, source.name);
+    gltf::write_materials(doc, materials, source.name);
   } catch (const nlohmann::json::exception& e) {
     // The source was read again from disk: it may have been rewritten since it was loaded.
     throw InputError(source.name + ": its JSON no longer has the structure it was loaded with (" +
