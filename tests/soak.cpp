@@ -8,6 +8,8 @@
 #include <random>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "hipr/edit_pipeline.h"
 #include "hipr/edits.h"
 #include "hipr/renderer.h"
@@ -27,14 +29,15 @@ long resident_kib() {
   return -1;
 }
 
-// One edit of a random op with random values in range (names of the shipped cornell_sphere).
-Edit random_edit(std::mt19937& rng) {
+// One edit of a random op with random values in range (names of the shipped cornell_sphere;
+// the geometry ops duplicate a node as "copy" or delete the copy, and deform the sphere).
+Edit random_edit(std::mt19937& rng, const Scene& scene) {
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   const auto pick = [&](std::initializer_list<const char*> names) {
     return std::string(names.begin()[rng() % names.size()]);
   };
   const glm::vec3 step = (glm::vec3(u(rng), u(rng), u(rng)) - 0.5f) * 0.02f;
-  switch (rng() % 9) {
+  switch (rng() % 11) {
     case 0: return TransformEdit{pick({"sphere", "tall_block", "light", "lamp"}), step, std::nullopt};
     case 1: return MaterialEdit{pick({"white", "red", "green"}), {{"base_color", {u(rng), u(rng), u(rng)}}}};
     case 2: return MaterialEdit{pick({"white", "red", "green"}), {{"specular_roughness", {u(rng)}}}};
@@ -43,6 +46,17 @@ Edit random_edit(std::mt19937& rng) {
     case 5: return VisibilityEdit{pick({"sphere", "tall_block", "light"}), u(rng) < 0.7f};
     case 6: return CameraEdit{step * 0.5f, std::nullopt};
     case 7: return EnvironmentEdit{.intensity = 0.01f * u(rng), .rotation = 6.0f * u(rng)};
+    case 9: {
+      bool has_copy = false;
+      const std::vector<bool> in_scene = scene.reachable_nodes();
+      for (size_t n = 0; n < scene.nodes.size(); ++n) has_copy = has_copy || (in_scene[n] && scene.nodes[n].name == "copy");
+      if (has_copy) return DeleteEdit{"copy"};
+      return DuplicateEdit{pick({"sphere", "tall_block", "lamp"}), "copy", step * 10.0f};
+    }
+    case 10: {
+      const float scale = 1.0f + 0.1f * (u(rng) - 0.5f);
+      return DeformEdit{"sphere", glm::scale(glm::mat4(1.0f), glm::vec3(scale, 1.0f / scale, 1.0f)), nullptr};
+    }
     default:
       return EnvironmentEdit{.source = std::filesystem::path(pick({"studio", "sky", "studio"})),
                              .intensity = 0.001f + 0.01f * u(rng)};
@@ -70,7 +84,7 @@ int main(int argc, char** argv) {
   std::string samples;  // resident KiB every tenth of the run
   long first = 0, last = 0;
   for (int e = 1; e <= edits; ++e) {
-    pipeline.apply(random_edit(rng));
+    pipeline.apply(random_edit(rng, scene));
     scheduler.step();
     if (e % std::max(edits / 10, 1) == 0) {
       last = resident_kib();

@@ -32,9 +32,10 @@ def main():
     parser.add_argument("node")
     parser.add_argument("--cycles", type=int, default=1000)
     parser.add_argument("--hipr", default="build/hipr")
-    parser.add_argument("extra", nargs=argparse.REMAINDER)
-    args = parser.parse_args()
-    extra = [a for a in args.extra if a != "--"]
+    argv = sys.argv[1:]
+    split = argv.index("--") if "--" in argv else len(argv)
+    args = parser.parse_args(argv[:split])
+    extra = argv[split + 1:]
 
     with tempfile.TemporaryDirectory() as tmp:
         folder = pathlib.Path(tmp)

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The edit soak: EDITS (default 10000) random edits of every op (transform, material, light,
-# emission, visibility, camera, environment intensity/rotation and switches) on the shipped
-# cornell_sphere at 32x32, one scheduling step each, then converged; prints whether the image is
-# the full-frame render of the final scene bit for bit and the resident memory every tenth.
+# emission, visibility, camera, environment intensity/rotation and switches, duplicate/delete,
+# deform) on the shipped cornell_sphere at 32x32, one scheduling step each, then converged;
+# prints whether the image is the full-frame render of the final scene bit for bit and the
+# resident memory every tenth.
 # usage: bash tools/soak.sh [EDITS] [SEED]
 set -euo pipefail
 cd "$(dirname "$0")/.."
