@@ -13,7 +13,9 @@
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
+#include "hipr/scene_writer.h"
 #include "hipr/scheduler.h"
+#include "image/error_metrics.h"
 #include "render/gpu_scene.h"
 #include "vk/buffer.h"
 #include "test_support.h"
@@ -193,6 +195,36 @@ TEST(GeometryUpdate, StageOneMarksWhereTheNodeWasAndWhereTheCopyIs) {
   }
   ASSERT_GT(copy_expected, 0u);
   EXPECT_EQ(copy_marked, copy_expected);
+}
+
+// A textured import saved (its images as PNGs of the decoded texels, its samplers, texture
+// references and transforms) renders as the edited scene, from .gltf and .glb: within noise,
+// as the issue asks, and in fact far closer (the loader normalizes normals and tangents again,
+// which moves their last bits: nothing else differs).
+TEST(GeometryUpdate, ASavedTexturedImportRendersAsTheEditedScene) {
+  if (!test::shared_scenes_available()) GTEST_SKIP() << "no shared scenes (DamagedHelmet)";
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  apply_edit(scene, ImportEdit{test::shared_scene("DamagedHelmet/DamagedHelmet.glb"), "helmet",
+                               glm::vec3(0.28f, 0.25f, 0.28f)});
+  apply_edit(scene, TransformEdit{"helmet", std::nullopt,
+                                  glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.28f, 0.25f, 0.28f)),
+                                             glm::vec3(0.15f))});
+  const ImageRGB edited = fresh_render(scene, 2);
+  RenderSettings other_seed = settings();
+  other_seed.seed = 1;
+  Renderer noise(test::context(), scene, other_seed);
+  noise.add_samples_full_frame(2);
+  const double noise_level = relmse(noise.image(), edited);
+  ASSERT_GT(noise_level, 0.0);
+  const std::filesystem::path dir = test::temp_dir("textured_import");
+  for (const char* name : {"helmet.gltf", "helmet.glb"}) {
+    save_scene(scene, dir / name);
+    const Scene reloaded = load_scene(dir / name);
+    EXPECT_EQ(reloaded.images.size(), scene.images.size()) << name;
+    for (size_t i = 0; i < scene.images.size() && i < reloaded.images.size(); ++i)
+      EXPECT_EQ(reloaded.images[i].rgba8, scene.images[i].rgba8) << name << ": image " << i << " lossless";
+    EXPECT_LT(relmse(fresh_render(reloaded, 2), edited), 1e-3 * noise_level) << name;
+  }
 }
 
 // Scheduling: whatever the policy and display rule, the display ends on exactly the full-frame

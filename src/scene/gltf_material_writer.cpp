@@ -20,6 +20,7 @@
 #include "core/error.h"
 #include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_material_table.h"
+#include "scene/gltf_texture_writer.h"
 #include "scene/gltf_materials.h"
 #include "scene/material_parameters.h"
 #include "shaders/shared/abi.h"
@@ -209,17 +210,35 @@ std::vector<std::string> material_extensions_written() {
   return out;
 }
 
-std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials, const std::string& name) {
+// The texture slots of a material the file does not have, as textureInfo objects where the
+// loader reads them (gltf_materials.cpp and the extension rows of gltf_material_table.cpp).
+void write_texture_references(Json& m, const M& params, TextureWriter& textures) {
+  const auto set = [&](Json& owner, const char* key, uint32_t texture) {
+    if (texture != abi::kInvalidIndex) owner[key] = textures.texture_info(texture);
+  };
+  Json& pbr = m["pbrMetallicRoughness"];
+  pbr = Json::object();
+  set(pbr, "baseColorTexture", params.base_color_texture);
+  set(pbr, "metallicRoughnessTexture", params.metallic_roughness_texture);
+  if (pbr.empty()) m.erase("pbrMetallicRoughness");
+  set(m, "normalTexture", params.normal_texture);
+  if (params.normal_texture != abi::kInvalidIndex && params.normal_scale != 1.0f)
+    m["normalTexture"]["scale"] = json_number(params.normal_scale);
+  set(m, "emissiveTexture", params.emission_texture);
+  for (const TextureRow& row : texture_rows()) {
+    uint32_t texture = 0;
+    std::memcpy(&texture, reinterpret_cast<const char*>(&params) + row.field, sizeof texture);
+    if (texture != abi::kInvalidIndex) set(m["extensions"][row.extension], row.key, texture);
+  }
+}
+
+std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials, TextureWriter& textures) {
   const size_t count = doc.contains("materials") && doc["materials"].is_array() ? doc["materials"].size() : 0;
   if (materials.size() <= count + 1) return materials;
   std::vector<Material> ordered(materials.begin(), materials.begin() + std::ptrdiff_t(count));
   if (!doc.contains("materials") || !doc["materials"].is_array()) doc["materials"] = Json::array();
   for (size_t i = count + 1; i < materials.size(); ++i) {
-    M params = materials[i].params;
-    for (uint32_t* slot : texture_slots(params))
-      if (*slot != abi::kInvalidIndex)
-        throw InputError(name + ": saving imported material '" + materials[i].name +
-                         "' is not supported yet: it has textures");
+    const M& params = materials[i].params;
     Json stub = Json::object();
     stub["name"] = materials[i].name;
     if (params.alpha_cutoff >= 0.0f) {
@@ -230,6 +249,7 @@ std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>
     }
     if (params.flags & abi::kMaterialDoubleSided) stub["doubleSided"] = true;
     if (!(params.flags & abi::kMaterialThinWalled)) stub["extensions"][kVolume]["thicknessFactor"] = 1.0;
+    write_texture_references(stub, params, textures);
     doc["materials"].push_back(std::move(stub));
     ordered.push_back(materials[i]);
   }

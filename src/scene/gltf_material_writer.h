@@ -6,6 +6,7 @@
 
 #include "hipr/scene.h"
 #include "scene/gltf_json_values.h"
+#include "scene/gltf_texture_writer.h"
 
 namespace hipr::gltf {
 
@@ -17,11 +18,10 @@ void write_materials(Json& doc, const std::vector<Material>& materials, const st
 
 // Materials an import brought (the scene's beyond the file's and glTF's default, which comes
 // right after the file's): appended to doc["materials"] as stubs holding what write_materials
-// does not write (name, alphaMode and cutoff, doubleSided, a volume's thickness). Returns the
-// scene's materials in the order write_materials then wants: the file's, the appended ones,
-// glTF's default. Throws InputError for an imported material with textures (saving their
-// images is not supported yet). `name` names the file in messages.
-std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials, const std::string& name);
+// does not write (name, alphaMode and cutoff, doubleSided, a volume's thickness, the texture
+// references, written through `textures`). Returns the scene's materials in the order
+// write_materials then wants: the file's, the appended ones, glTF's default.
+std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials, TextureWriter& textures);
 
 // The glTF extensions write_materials may add to a material (for extensionsUsed).
 std::vector<std::string> material_extensions_written();

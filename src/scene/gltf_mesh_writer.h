@@ -4,6 +4,7 @@
 #include <string>
 
 #include "hipr/scene.h"
+#include "scene/gltf_buffer_writer.h"
 #include "scene/gltf_json_values.h"
 
 namespace hipr::gltf {
@@ -11,10 +12,10 @@ namespace hipr::gltf {
 // Rewrites the primitives of every mesh of doc whose scene mesh is not as loaded (its revision
 // differs from Scene::loaded_mesh_revisions), and appends the meshes the scene has beyond the
 // file's (imported): positions, normals, tangents, texture coordinates and indices (a triangle
-// list) as the scene holds them, in one new buffer (a data: URI; write_glb moves it into the
-// BIN chunk), on the scene's materials as write_new_materials numbers them. Morph targets go
+// list) as the scene holds them, into `out`, on the scene's materials as write_new_materials
+// numbers them. Morph targets go
 // (the deformed vertices replace what they morphed). Call before write_new_materials. `name`
 // names the file in messages.
-void write_meshes(Json& doc, const Scene& scene, const std::string& name);
+void write_meshes(Json& doc, const Scene& scene, BufferWriter& out, const std::string& name);
 
 }  // namespace hipr::gltf

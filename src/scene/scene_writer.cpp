@@ -33,6 +33,12 @@ bool uses_extension(const gltf::Json& doc, const char* kind, const std::string& 
   });
 }
 
+void declare_extension(gltf::Json& doc, const std::string& extension) {
+  if (!doc.contains("extensionsUsed") || !doc["extensionsUsed"].is_array()) doc["extensionsUsed"] = gltf::Json::array();
+  gltf::Json& used = doc["extensionsUsed"];
+  if (std::find(used.begin(), used.end(), extension) == used.end()) used.push_back(extension);
+}
+
 // Lists in extensionsUsed the extensions the writer gave materials or nodes.
 void declare_extensions(gltf::Json& doc) {
   std::vector<std::pair<const char*, std::string>> written;
@@ -40,11 +46,7 @@ void declare_extensions(gltf::Json& doc) {
   written.push_back({"nodes", "KHR_node_visibility"});
   written.push_back({"nodes", "KHR_lights_punctual"});  // an imported lamp in a scene without one
   for (const auto& [kind, extension] : written) {
-    if (!uses_extension(doc, kind, extension)) continue;
-    if (!doc.contains("extensionsUsed") || !doc["extensionsUsed"].is_array())
-      doc["extensionsUsed"] = gltf::Json::array();
-    gltf::Json& used = doc["extensionsUsed"];
-    if (std::find(used.begin(), used.end(), extension) == used.end()) used.push_back(extension);
+    if (uses_extension(doc, kind, extension)) declare_extension(doc, extension);
   }
 }
 
@@ -64,11 +66,15 @@ void save_scene(const Scene& scene, const fs::path& path) {
   const gltf::SourceDocument source = gltf::read_source(scene.source);
   gltf::Json doc = source.json;
   try {
-    gltf::write_meshes(doc, scene, source.name);  // before the imported materials are appended
-    const std::vector<Material> materials = gltf::write_new_materials(doc, scene.materials, source.name);
+    gltf::BufferWriter buffer(doc);  // for what is written anew: meshes, imported images
+    gltf::write_meshes(doc, scene, buffer, source.name);  // before the imported materials are appended
+    gltf::TextureWriter textures(doc, scene, buffer);
+    const std::vector<Material> materials = gltf::write_new_materials(doc, scene.materials, textures);
     gltf::write_nodes(doc, scene, source.name);
     gltf::write_lights(doc, scene.lights, source.name);
     gltf::write_materials(doc, materials, source.name);
+    buffer.finish();
+    if (textures.uses_transform()) declare_extension(doc, "KHR_texture_transform");
   } catch (const nlohmann::json::exception& e) {
     // The source was read again from disk: it may have been rewritten since it was loaded.
     throw InputError(source.name + ": its JSON no longer has the structure it was loaded with (" +
