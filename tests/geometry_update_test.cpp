@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench/oracle_policy.h"
+#include "hipr/edit_pipeline.h"
 #include "hipr/edits.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
@@ -225,6 +226,24 @@ TEST(GeometryUpdate, ASavedTexturedImportRendersAsTheEditedScene) {
       EXPECT_EQ(reloaded.images[i].rgba8, scene.images[i].rgba8) << name << ": image " << i << " lossless";
     EXPECT_LT(relmse(fresh_render(reloaded, 2), edited), 1e-3 * noise_level) << name;
   }
+}
+
+// A focus names instances by number: a delete before them renumbers them, and the focus follows
+// its node (what left drops out).
+TEST(GeometryUpdate, TheFocusFollowsItsObjectsThroughADelete) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Hipr, 4);
+  EditPipeline pipeline(scene, scheduler);
+  pipeline.apply(FocusEdit{.node = "tall_block"});
+  pipeline.apply(FocusEdit{.node = "floor"});
+  pipeline.apply(DeleteEdit{"floor"});
+  const std::vector<Instance> instances = scene.instances();
+  ASSERT_EQ(pipeline.focus().seeds.size(), 2u);
+  ASSERT_EQ(pipeline.focus().seeds[0].instances.size(), 1u);
+  EXPECT_EQ(scene.nodes[instances[pipeline.focus().seeds[0].instances[0]].node].name, "tall_block");
+  EXPECT_TRUE(pipeline.focus().seeds[1].instances.empty()) << "the floor left";
+  EXPECT_EQ(scheduler.focus(), pipeline.focus());
 }
 
 // Scheduling: whatever the policy and display rule, the display ends on exactly the full-frame

@@ -19,7 +19,10 @@ ChangeSet change_scene(Scene& scene, const std::function<void(Scene&)>& change);
 
 class EditPipeline {
  public:
-  EditPipeline(Scene& scene, Scheduler& scheduler) : m_scene(scene), m_scheduler(scheduler) {}
+  // `focus`: the focus the scheduler follows already (the viewer's), which edits that add or
+  // remove instances renumber as they do the script's focus ops'.
+  EditPipeline(Scene& scene, Scheduler& scheduler, Focus focus = {})
+      : m_scene(scene), m_scheduler(scheduler), m_focus(std::move(focus)) {}
 
   // Applies the edit (InputError for an unknown name or key, the scene then unchanged) and,
   // when it changed anything, lets the scheduler re-render. Returns what changed. A focus op

@@ -50,6 +50,10 @@ void validate_focus_seed(const FocusSeed& seed, const std::string& where);
 // the focus would hold more than kMaxFocusDiscs discs.
 Focus with_focus_edit(const Scene& scene, Focus focus, const FocusEdit& edit);
 
+// `focus` after an edit that added or removed instances (Scene::instances() before and after
+// it): each seed's instances renumbered by their node, those that left dropped.
+Focus follow_instances(const Focus& focus, const std::vector<Instance>& before, const std::vector<Instance>& after);
+
 // The pixels the focus covers, row-major, 1 where a pixel sees one of its instances
 // (`pixel_instances`: the instance each pixel sees, as Renderer::gbuffer_instances) or where its
 // centre lies in one of its discs; stage 1 marks the tiles of these pixels.

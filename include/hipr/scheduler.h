@@ -55,6 +55,9 @@ class Scheduler {
   // order; with a converged count, the focus's tiles also run ahead (set_converged_spp). An
   // empty focus clears it. Policies other than hipr keep their order.
   void set_focus(const Focus& focus);
+  // The same focus renumbered by an edit that added or removed instances (follow_instances),
+  // for the plan the next on_edit makes: stored, nothing planned now.
+  void renumber_focus(const Focus& focus) { m_focus = focus; }
   const Focus& focus() const { return m_focus; }
   // The samples per pixel the render converges to (where its user stops stepping: the work
   // since the edit reaches it exactly when every pixel has it); 0, the default: unknown. Known,

@@ -24,6 +24,24 @@ FocusSeed focus_on_node(const Scene& scene, size_t node, float weight) {
   return seed;
 }
 
+Focus follow_instances(const Focus& focus, const std::vector<Instance>& before, const std::vector<Instance>& after) {
+  std::vector<uint32_t> now_of_node;  // node -> its instance after, or UINT32_MAX
+  for (uint32_t i = 0; i < after.size(); ++i) {
+    if (after[i].node >= now_of_node.size()) now_of_node.resize(after[i].node + 1, UINT32_MAX);
+    now_of_node[after[i].node] = i;
+  }
+  Focus followed = focus;
+  for (FocusSeed& seed : followed.seeds) {
+    std::vector<uint32_t> instances;
+    for (uint32_t i : seed.instances) {
+      if (i >= before.size() || before[i].node >= now_of_node.size()) continue;
+      if (const uint32_t now = now_of_node[before[i].node]; now != UINT32_MAX) instances.push_back(now);
+    }
+    seed.instances = std::move(instances);
+  }
+  return followed;
+}
+
 void validate_focus_seed(const FocusSeed& seed, const std::string& where) {
   if (!std::isfinite(seed.weight) || seed.weight <= 0.0f || seed.weight > kMaxFocusWeight)
     throw InputError(where + ": a focus weight must be in (0, " + std::to_string(int(kMaxFocusWeight)) + "]");

@@ -64,7 +64,13 @@ void Session::rebuild() {
 
 void Session::changed(const std::function<void(Scene&)>& change, const std::string& what) {
   const Timer started;  // the latency includes on_edit itself (GPU update, stage 1)
-  if (EditPipeline(m_scene, *m_scheduler).apply(change).empty()) return;  // e.g. a slider released where it started
+  const std::vector<Instance> before = m_script_focus.empty() ? std::vector<Instance>{} : m_scene.instances();
+  // The pipeline renumbers the scheduler's focus for the edit's plan when instances come or go.
+  if (EditPipeline(m_scene, *m_scheduler, m_scheduler->focus()).apply(change).empty()) return;  // e.g. a slider released where it started
+  if (!m_script_focus.empty()) {  // a duplicate or delete renumbers the instances the seeds name
+    m_script_focus = follow_instances(m_script_focus, before, m_scene.instances());
+    update_focus();
+  }
   m_awaiting_change = true;
   m_steps_since_edit = 0;
   m_since_edit = started;
