@@ -185,34 +185,28 @@ TEST(GeometryEdits, DeformMovesTheVerticesOfEveryUserOfTheMesh) {
 
 TEST(GeometryEdits, TheDiffPairsInstancesByNode) {
   Scene scene = cornell();
-  Scene before = scene;
-  apply_edit(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.1f, 0.0f, 0.0f)});
-  ChangeSet changes = diff_scenes(before, scene);
+  ChangeSet changes = test::edit_scene(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.1f, 0.0f, 0.0f)});
   ASSERT_EQ(changes.instances.size(), 1u) << "only the copy is new; the instances after it did not change";
   EXPECT_EQ(scene.nodes[scene.instances()[changes.instances[0]].node].name, "copy");
   EXPECT_TRUE(changes.transforms);
   EXPECT_FALSE(changes.geometry);
 
-  before = scene;
-  apply_edit(scene, DeleteEdit{"tall_block"});
-  changes = diff_scenes(before, scene);
+  const size_t tall = find_node(scene, "tall_block");
+  changes = test::edit_scene(scene, DeleteEdit{"tall_block"});
   EXPECT_TRUE(changes.instances.empty());
-  ASSERT_EQ(changes.departed.size(), 1u);
-  EXPECT_EQ(before.nodes[changes.departed[0]].name, "tall_block");
+  EXPECT_EQ(changes.departed, std::vector<uint32_t>{uint32_t(tall)});
 
-  before = scene;
-  apply_edit(scene, DeformEdit{"short_block", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.1f, 0.0f)), nullptr});
-  changes = diff_scenes(before, scene);
+  changes = test::edit_scene(
+      scene, DeformEdit{"short_block", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.1f, 0.0f)), nullptr});
   EXPECT_TRUE(changes.geometry);
   EXPECT_EQ(changes.instances.size(), 2u) << "the block and its copy share the mesh";
 
-  before = scene;
-  apply_edit(scene, ImportEdit{test::asset("cornell_sphere.glb"), "sphere", {}});
-  changes = diff_scenes(before, scene);
+  changes = test::edit_scene(scene, ImportEdit{test::asset("cornell_sphere.glb"), "sphere", {}});
   EXPECT_TRUE(changes.geometry);
   EXPECT_TRUE(changes.materials);
   EXPECT_EQ(changes.instances.size(), load_scene(test::asset("cornell_sphere.glb")).instances().size());
   EXPECT_TRUE(diff_scenes(scene, scene).empty());
+  EXPECT_TRUE(diff_scenes(cornell(), cornell()).empty()) << "two loads of one file are the same scene";
 }
 
 // The same objects (by node), placed alike, with the same triangles on the same materials, and

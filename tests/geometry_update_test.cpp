@@ -72,22 +72,9 @@ TEST_P(GeometryUpdate, MatchesAFreshUploadBitForBitAndUndoes) {
   std::vector<Edit> undo;
   for (const Edit& edit : GetParam().edits) {
     undo.push_back(inverse_edit(scene, edit));
-    const Scene before = scene;
-    apply_edit(scene, edit);
-    const ChangeSet changes = diff_scenes(before, scene);
-    ASSERT_FALSE(changes.empty()) << describe(edit);
-    renderer.update_scene(scene, changes);
-    renderer.reset();
-    renderer.add_samples_full_frame(2);
-    const ImageRGB fresh = fresh_render(scene, 2);
-    EXPECT_EQ(renderer.image().rgb, fresh.rgb) << describe(edit);
-    EXPECT_NE(fresh_render(before, 2).rgb, fresh.rgb) << describe(edit) << " changed nothing visible";
+    test::expect_update_matches_fresh(renderer, scene, edit);
   }
-  for (auto it = undo.rbegin(); it != undo.rend(); ++it) {
-    const Scene before = scene;
-    apply_edit(scene, *it);
-    renderer.update_scene(scene, diff_scenes(before, scene));
-  }
+  for (auto it = undo.rbegin(); it != undo.rend(); ++it) renderer.update_scene(scene, test::edit_scene(scene, *it));
   renderer.reset();
   renderer.add_samples_full_frame(2);
   EXPECT_EQ(renderer.image().rgb, original.rgb) << "undone";
@@ -103,9 +90,7 @@ TEST(GeometryUpdate, CutoutChoicesDoNotDependOnWhereRecordsSit) {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
   apply_edit(scene, MaterialEdit{"white", {{"geometry_opacity", {0.5f}}}});
   Renderer renderer(test::context(), scene, settings());
-  const Scene before = scene;
-  apply_edit(scene, DeleteEdit{"floor"});
-  renderer.update_scene(scene, diff_scenes(before, scene));
+  renderer.update_scene(scene, test::edit_scene(scene, DeleteEdit{"floor"}));
   renderer.add_samples_full_frame(2);
   EXPECT_EQ(renderer.image().rgb, fresh_render(scene, 2).rgb);
 }
@@ -121,9 +106,7 @@ TEST(GeometryUpdate, DuplicateDeleteCyclesKeepRecordsAndDeviceMemoryFlat) {
   uint32_t after_first = 0;
   uint64_t device_after_first = 0;
   const auto update = [&](const Edit& edit) {
-    const Scene before = scene;
-    apply_edit(scene, edit);
-    const ChangeSet changes = diff_scenes(before, scene);
+    const ChangeSet changes = test::edit_scene(scene, edit);
     gpu.update_instances(scene);
     renderer.update_scene(scene, changes);
     renderer.hipr_stages()->stage1_visibility(changes);
@@ -160,42 +143,35 @@ TEST(GeometryUpdate, StageOneMarksWhereTheNodeWasAndWhereTheCopyIs) {
     return tiles;
   };
   const std::vector<bool> tall_tiles = tiles_showing(was, tall);
+  // Stage 1 after the edit; then how many of the tiles `showing` names (asked after stage 1) it
+  // made active, of how many.
+  const auto stage1_marks = [&](const ChangeSet& changes, const std::function<std::vector<bool>()>& showing) {
+    renderer.update_scene(scene, changes);
+    renderer.hipr_stages()->stage1_visibility(changes);
+    const std::vector<uint32_t> flags = renderer.tile_flags();
+    const std::vector<bool> tiles = showing();
+    size_t marked = 0, expected = 0, active = 0;
+    for (size_t t = 0; t < flags.size(); ++t) {
+      active += (flags[t] & abi::kTileActive) ? 1 : 0;
+      if (!tiles[t]) continue;
+      ++expected;
+      marked += (flags[t] & abi::kTileActive) ? 1 : 0;
+    }
+    EXPECT_LT(active, flags.size()) << "tiles that never showed the change stay as they were";
+    return std::pair(marked, expected);
+  };
 
-  Scene before = scene;
-  apply_edit(scene, DeleteEdit{"tall_block"});
-  ChangeSet changes = diff_scenes(before, scene);
-  renderer.update_scene(scene, changes);
-  renderer.hipr_stages()->stage1_visibility(changes);
-  std::vector<uint32_t> flags = renderer.tile_flags();
-  size_t marked = 0, expected = 0;
-  for (size_t t = 0; t < flags.size(); ++t) {
-    if (!tall_tiles[t]) continue;
-    ++expected;
-    marked += (flags[t] & abi::kTileActive) ? 1 : 0;
-  }
+  const auto [marked, expected] =
+      stage1_marks(test::edit_scene(scene, DeleteEdit{"tall_block"}), [&] { return tall_tiles; });
   ASSERT_GT(expected, 0u);
   EXPECT_EQ(marked, expected) << "every tile that showed the deleted block is active";
-  size_t active = 0;
-  for (uint32_t f : flags) active += (f & abi::kTileActive) ? 1 : 0;
-  EXPECT_LT(active, flags.size()) << "tiles that never showed it stay as they were";
 
-  before = scene;
-  apply_edit(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.25f, 0.0f, 0.0f)});
-  changes = diff_scenes(before, scene);
-  renderer.update_scene(scene, changes);
-  renderer.hipr_stages()->stage1_visibility(changes);
-  flags = renderer.tile_flags();
-  const std::vector<uint32_t> now = renderer.gbuffer_instances();
+  const ChangeSet changes = test::edit_scene(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.25f, 0.0f, 0.0f)});
   ASSERT_EQ(changes.instances.size(), 1u);
-  const std::vector<bool> copy_tiles = tiles_showing(now, changes.instances[0]);
-  size_t copy_expected = 0, copy_marked = 0;
-  for (size_t t = 0; t < flags.size(); ++t) {
-    if (!copy_tiles[t]) continue;
-    ++copy_expected;
-    copy_marked += (flags[t] & abi::kTileActive) ? 1 : 0;
-  }
+  const auto [copy_marked, copy_expected] =
+      stage1_marks(changes, [&] { return tiles_showing(renderer.gbuffer_instances(), changes.instances[0]); });
   ASSERT_GT(copy_expected, 0u);
-  EXPECT_EQ(copy_marked, copy_expected);
+  EXPECT_EQ(copy_marked, copy_expected) << "every tile that shows the copy is active";
 }
 
 // A textured import saved (its images as PNGs of the decoded texels, its samplers, texture
@@ -275,10 +251,9 @@ TEST_P(GeometryEveryPolicy, ConvergesToTheFullFrameImageOfTheEditedScene) {
                                    DeformEdit{"tall_block", stretch(), nullptr}, DeleteEdit{"short_block"},
                                    ImportEdit{test::asset("cornell_sphere.glb"), "sphere", glm::vec3(0.0f, 0.1f, 0.0f)}};
   for (const Edit& edit : edits) {
-    const Scene before = scene;
-    apply_edit(scene, edit);
+    const ChangeSet changes = test::edit_scene(scene, edit);
     expected = full_frame(scene);
-    scheduler.on_edit(scene, diff_scenes(before, scene));
+    scheduler.on_edit(scene, changes);
     for (int step = 0; step < 10000 && scheduler.work_since_edit() < double(spp); ++step) scheduler.step();
     EXPECT_EQ(scheduler.displayed_image().rgb, expected.rgb) << describe(edit);
   }

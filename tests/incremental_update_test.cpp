@@ -30,18 +30,8 @@ TEST_P(IncrementalUpdate, MatchesAFreshUploadBitForBit) {
   Scene scene = load_scene(test::asset(name == "cornell_box" ? "cornell_box.gltf" : "cornell_sphere.glb"));
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(2);
-  for (const Edit& edit : load_edit_script(test::asset(name + ".edits.json"))) {
-    const Scene before = scene;
-    apply_edit(scene, edit);
-    const ChangeSet changes = diff_scenes(before, scene);
-    EXPECT_FALSE(changes.empty()) << describe(edit);
-    renderer.update_scene(scene, changes);
-    renderer.reset();
-    renderer.add_samples_full_frame(2);
-    const ImageRGB fresh = fresh_render(scene, 2);
-    EXPECT_EQ(renderer.image().rgb, fresh.rgb) << describe(edit);
-    EXPECT_NE(fresh_render(before, 2).rgb, fresh.rgb) << describe(edit) << " changed nothing visible";
-  }
+  for (const Edit& edit : load_edit_script(test::asset(name + ".edits.json")))
+    test::expect_update_matches_fresh(renderer, scene, edit);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scripts, IncrementalUpdate, ::testing::Values("cornell_box", "cornell_sphere"));
@@ -143,19 +133,6 @@ Environment banded_environment() {
   return env;
 }
 
-// Applies `edit`, updates the renderer, restarts it: it must render what a fresh upload of the
-// edited scene renders, and that must differ from the scene before.
-void expect_update_matches_fresh(Renderer& renderer, Scene& scene, const Edit& edit) {
-  const Scene before = scene;
-  apply_edit(scene, edit);
-  renderer.update_scene(scene, diff_scenes(before, scene));
-  renderer.reset();
-  renderer.add_samples_full_frame(2);
-  const ImageRGB fresh = fresh_render(scene, 2);
-  EXPECT_EQ(renderer.image().rgb, fresh.rgb) << describe(edit);
-  EXPECT_NE(fresh_render(before, 2).rgb, fresh.rgb) << describe(edit) << " changed nothing visible";
-}
-
 // Intensity and rotation reach the kernels through the frame parameters and the light
 // selection table: after the update the renderer matches a fresh upload bit for bit.
 TEST(IncrementalUpdate, EnvironmentEditMatchesAFreshUpload) {
@@ -164,7 +141,7 @@ TEST(IncrementalUpdate, EnvironmentEditMatchesAFreshUpload) {
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(1);
   for (const Edit& edit : {Edit{EnvironmentEdit{.rotation = 2.0f}}, Edit{EnvironmentEdit{.intensity = 3.0f}}})
-    expect_update_matches_fresh(renderer, scene, edit);
+    test::expect_update_matches_fresh(renderer, scene, edit);
 }
 
 // Switching the environment on, to another map, re-making the sky and switching it off upload
@@ -181,7 +158,7 @@ TEST(IncrementalUpdate, EnvironmentSwitchMatchesAFreshUpload) {
       EnvironmentEdit{.sun_azimuth_degrees = 150.0f},
       EnvironmentEdit{.source = std::filesystem::path("none")},
   };
-  for (const Edit& edit : edits) expect_update_matches_fresh(renderer, scene, edit);
+  for (const Edit& edit : edits) test::expect_update_matches_fresh(renderer, scene, edit);
 }
 
 // Stage 1 cannot see the environment in the G-buffer: its edit makes every tile active.

@@ -80,6 +80,29 @@ RenderSettings render_settings(uint32_t width, uint32_t height, uint32_t tile_si
   return s;
 }
 
+ChangeSet edit_scene(Scene& scene, const Edit& edit) {
+  const Scene before = diff_snapshot(scene);
+  apply_edit(scene, edit);
+  return diff_scenes(before, scene);
+}
+
+void expect_update_matches_fresh(Renderer& renderer, Scene& scene, const Edit& edit, uint32_t spp) {
+  const auto fresh_render = [&](const Scene& s) {
+    Renderer fresh(context(), s, renderer.settings());
+    fresh.add_samples_full_frame(spp);
+    return fresh.image();
+  };
+  const ImageRGB before = fresh_render(scene);
+  const ChangeSet changes = edit_scene(scene, edit);
+  EXPECT_FALSE(changes.empty()) << describe(edit);
+  renderer.update_scene(scene, changes);
+  renderer.reset();
+  renderer.add_samples_full_frame(spp);
+  const ImageRGB fresh = fresh_render(scene);
+  EXPECT_EQ(renderer.image().rgb, fresh.rgb) << describe(edit);
+  EXPECT_NE(before.rgb, fresh.rgb) << describe(edit) << " changed nothing visible";
+}
+
 void discover_all(Renderer& renderer, uint32_t samples_per_pixel) {
   HiprStageRunner& stages = *renderer.hipr_stages();
   stages.build_schedule();

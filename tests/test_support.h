@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "hipr/edits.h"
 #include "hipr/renderer.h"
 #include "hipr/scene.h"
 #include "image/image_io.h"
@@ -26,6 +27,12 @@ const vk::Context& context();
 RenderSettings render_settings(uint32_t width, uint32_t height, uint32_t tile_size, uint32_t max_depth, uint32_t seed);
 // HiPR's stage 2 over every active tile in one dispatch, after ordering the schedule.
 void discover_all(Renderer& renderer, uint32_t samples_per_pixel);
+// Applies the edit to `scene` and returns what it changed (diff_scenes of before and after).
+ChangeSet edit_scene(Scene& scene, const Edit& edit);
+// Applies `edit`, updates the renderer and restarts it with `spp` samples per pixel: it must
+// render what a renderer made for the edited scene (same settings) renders, bit for bit, the
+// edit must change something, and that must differ from the scene before (non-fatal checks).
+void expect_update_matches_fresh(Renderer& renderer, Scene& scene, const Edit& edit, uint32_t spp = 2);
 
 struct CommandResult {
   int exit_code = -1;
