@@ -26,11 +26,8 @@ namespace {
 
 RenderSettings settings() { return test::render_settings(32, 32, 16, 6, 4); }
 
-ImageRGB fresh_render(const Scene& scene, uint32_t spp) {
-  Renderer renderer(test::context(), scene, settings());
-  renderer.add_samples_full_frame(spp);
-  return renderer.image();
-}
+// A renderer made for the scene, its samples checked (non-fatally) to be finite.
+ImageRGB fresh_render(const Scene& scene, uint32_t spp) { return test::render_finite(scene, settings(), spp); }
 
 glm::mat4 stretch() { return glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 1.6f, 1.0f)); }
 glm::mat4 mirror() { return glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)); }
