@@ -175,7 +175,7 @@ TEST(GeometryUpdate, StageOneMarksWhereTheNodeWasAndWhereTheCopyIs) {
 // references and transforms) renders as the edited scene, from .gltf and .glb: within noise,
 // as the issue asks, and in fact far closer (the loader normalizes normals and tangents again,
 // which moves their last bits: nothing else differs).
-TEST(GeometryUpdate, ASavedTexturedImportRendersAsTheEditedScene) {
+TEST(TexturedImport, SavedRendersAsTheEditedScene) {
   if (!test::shared_scenes_available()) GTEST_SKIP() << "no shared scenes (DamagedHelmet)";
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
   apply_edit(scene, ImportEdit{test::shared_scene("DamagedHelmet/DamagedHelmet.glb"), "helmet",
@@ -199,6 +199,23 @@ TEST(GeometryUpdate, ASavedTexturedImportRendersAsTheEditedScene) {
       EXPECT_EQ(reloaded.images[i].rgba8, scene.images[i].rgba8) << name << ": image " << i << " lossless";
     EXPECT_LT(relmse(fresh_render(reloaded, 2), edited), 1e-3 * noise_level) << name;
   }
+}
+
+// Imports into a textured scene append their images to the device's texels (the scene's stay
+// where they are); an undone import's images are replaced by the next one's at the same
+// indices. Each update renders as a fresh upload does.
+TEST(TexturedImport, AppendsItsImagesAndUpdatesAsAFreshUpload) {
+  if (!test::shared_scenes_available()) GTEST_SKIP() << "no shared scenes (DamagedHelmet, SheenChair)";
+  Scene scene = load_scene(test::shared_scene("DamagedHelmet/DamagedHelmet.glb"), {.environment = "studio"});
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(1);
+  const Edit chair = ImportEdit{test::shared_scene("SheenChair/SheenChair.gltf"), "chair", glm::vec3(0.5f, -0.6f, 0.0f)};
+  const Edit undo = inverse_edit(scene, chair);
+  test::expect_update_matches_fresh(renderer, scene, chair);
+  test::expect_update_matches_fresh(renderer, scene, undo);
+  test::expect_update_matches_fresh(
+      renderer, scene,
+      ImportEdit{test::shared_scene("DamagedHelmet/DamagedHelmet.glb"), "helmet", glm::vec3(0.6f, 0.0f, -0.5f)});
 }
 
 // A focus names instances by number: a delete before them renumbers them, and the focus follows

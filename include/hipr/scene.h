@@ -62,7 +62,13 @@ struct Image {
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<uint8_t> rgba8;  // row-major, top row first
+  // A fingerprint of the texels (image_revision), set when they are decoded: what tells the GPU's
+  // copy that the image at an index is another one (an import after an undone import).
+  uint64_t revision = 0;
 };
+
+// The fingerprint of the image's size and texels.
+uint64_t image_revision(const Image& image);
 
 // One way a material reads an image: colour space, sampler, UV set and UV transform.
 struct Texture {

@@ -46,7 +46,7 @@ void GpuScene::upload_material_groups(const Scene& scene) {
 
 void GpuScene::update_geometry(const Scene& scene) {
   upload_geometry(scene);
-  if (scene.textures.size() != m_uploaded_textures || scene.images.size() != m_uploaded_images) upload_textures(scene);
+  upload_textures(scene);  // the images an import brought, only
   upload_material_groups(scene);
   upload_materials(scene);
   build_blases(scene);
@@ -224,24 +224,43 @@ bool GpuScene::build_blases(const Scene& scene) {
 }
 
 void GpuScene::upload_textures(const Scene& scene) {
-  // Texels once per image; every texture reference on it points at the same offset.
-  std::vector<uint32_t> packed, image_offset;
-  for (const Image& image : scene.images) {
-    image_offset.push_back(uint32_t(packed.size()));
-    const size_t start = packed.size();
-    packed.resize(start + image.rgba8.size() / 4);
-    std::memcpy(packed.data() + start, image.rgba8.data(), image.rgba8.size() / 4 * 4);
+  // Texels once per image, one image after another; every texture reference on it points at
+  // the same offset. Images only come and go at the end of the list (imports and their undo):
+  // the leading ones the buffer holds already (same revision) stay where they are, on the device.
+  size_t kept = 0;
+  while (kept < std::min(m_image_revision.size(), scene.images.size()) &&
+         m_image_revision[kept] == scene.images[kept].revision)
+    ++kept;
+  const size_t kept_texels = kept == 0 ? 0 : m_image_offset[kept - 1] + scene.images[kept - 1].rgba8.size() / 4;
+  m_image_offset.resize(kept);
+  m_image_revision.resize(kept);
+  std::vector<uint32_t> added;  // the texels of the images after the kept ones
+  for (size_t i = kept; i < scene.images.size(); ++i) {
+    const Image& image = scene.images[i];
+    m_image_offset.push_back(uint32_t(kept_texels + added.size()));
+    m_image_revision.push_back(image.revision);
+    const size_t start = added.size();
+    added.resize(start + image.rgba8.size() / 4);
+    std::memcpy(added.data() + start, image.rgba8.data(), image.rgba8.size() / 4 * 4);
+  }
+  if (!texels || !added.empty()) {
+    vk::Buffer grown(m_ctx, VkDeviceSize(kept_texels + added.size()) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (kept_texels > 0)
+      m_ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+        const VkBufferCopy region{0, 0, VkDeviceSize(kept_texels) * sizeof(uint32_t)};
+        vkCmdCopyBuffer(cmd, texels.handle(), grown.handle(), 1, &region);
+      });
+    if (!added.empty())
+      grown.upload(added.data(), added.size() * sizeof(uint32_t), VkDeviceSize(kept_texels) * sizeof(uint32_t));
+    texels = std::move(grown);
   }
   std::vector<abi::TextureInfo> infos;
   for (const Texture& t : scene.textures) {
     if (t.image >= scene.images.size()) throw InternalError("texture references a missing image");
     const Image& image = scene.images[t.image];
-    infos.push_back({image_offset[t.image], image.width, image.height, t.flags, t.uv_transform_u, t.uv_transform_v});
+    infos.push_back({m_image_offset[t.image], image.width, image.height, t.flags, t.uv_transform_u, t.uv_transform_v});
   }
   textures = vk::make_storage_buffer(m_ctx, infos);
-  texels = vk::make_storage_buffer(m_ctx, packed);
-  m_uploaded_textures = scene.textures.size();
-  m_uploaded_images = scene.images.size();
 }
 
 void GpuScene::update_materials(const Scene& scene) {

@@ -124,7 +124,8 @@ class GpuScene {
   std::vector<bool> m_has_blas;
   std::vector<std::vector<bool>> m_blas_opaque;       // per mesh, per primitive, as built
   std::vector<uint64_t> m_blas_revision;              // per mesh: Mesh::revision as built
-  size_t m_uploaded_textures = 0, m_uploaded_images = 0;
+  std::vector<uint32_t> m_image_offset;    // per image: its first texel in `texels`
+  std::vector<uint64_t> m_image_revision;  // per image: Image::revision of what `texels` holds
   uint64_t m_layout_generation = 0, m_records_generation = 0;
   std::unordered_map<uint32_t, Slot> m_slots;             // per node with an instance
   std::vector<std::pair<uint32_t, uint32_t>> m_free;      // free records: (base, count)

@@ -128,6 +128,7 @@ uint32_t TextureTable::image_for(const tinygltf::Texture& source, int texture, c
     image = fallback_image(image.name);
     m_fallbacks.insert(uint32_t(m_scene.images.size()));
   }
+  image.revision = image_revision(image);
   m_scene.images.push_back(std::move(image));
   m_images[key] = uint32_t(m_scene.images.size() - 1);
   return uint32_t(m_scene.images.size() - 1);

@@ -52,6 +52,13 @@ std::vector<uint32_t*> texture_slots(MaterialParameters& m) {
           &m.iridescence_texture,         &m.iridescence_thickness_texture, &m.anisotropy_texture};
 }
 
+uint64_t image_revision(const Image& image) {
+  Hasher hash;
+  hash.add(&image.width, sizeof image.width).add(&image.height, sizeof image.height);
+  hash.add(image.rgba8.data(), image.rgba8.size());
+  return hash.value();
+}
+
 uint64_t mesh_revision(const Mesh& mesh) {
   Hasher hash;
   const auto add = [&](const auto& values) {
