@@ -73,6 +73,7 @@ void expect_undo_restores(Scene& scene, const Edit& edit) {
     }
   EXPECT_EQ(scene.materials.size(), before.materials.size());
   EXPECT_EQ(scene.instances().size(), before.instances().size());
+  EXPECT_EQ(scene.content_hash, before.content_hash);
 }
 
 TEST(GeometryEdits, DuplicateCopiesTheNodeBesideItAtTheOffset) {
@@ -143,6 +144,7 @@ TEST(GeometryEdits, ImportAppendsTheFilesSceneUnderANewNode) {
   EXPECT_EQ(scene.meshes.size(), meshes + other.meshes.size());
   EXPECT_EQ(scene.materials.size(), materials + other.materials.size());
   EXPECT_EQ(scene.instances().size(), instances + other.instances().size());
+  EXPECT_NE(scene.content_hash, cornell().content_hash) << "cached references must tell the scenes apart";
   const size_t root = find_node(scene, "cornell_sphere");  // the file's stem
   EXPECT_EQ(scene.nodes[root].parent, -1);
   // Every imported instance sits one metre up, its primitives on the imported materials.

@@ -133,6 +133,7 @@ struct SceneStructure {
   std::vector<PunctualLight> lights;
   std::vector<Camera> cameras;
   std::vector<std::string> extensions_used;
+  std::string content_hash;
   size_t meshes = 0, materials = 0, textures = 0, images = 0;
 };
 

@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/hash.h"
 #include "hipr/scene_loader.h"
 #include "scene/default_camera.h"
 #include "shaders/shared/abi.h"
@@ -213,6 +214,8 @@ void apply_import(Scene& scene, const ImportEdit& edit) {
   Scene other = load_scene(edit.file);  // first: a bad file changes nothing
   const std::string name = new_node_name(scene, edit.as, edit.file.stem().string());
   pin_default_camera(scene);
+  // The scene's fingerprint (what cached references are keyed by) covers the imported bytes.
+  scene.content_hash = Hasher().add(scene.content_hash).add(other.content_hash).hex();
   append_scene(scene, std::move(other), name, edit.translate);
 }
 
@@ -243,6 +246,7 @@ StructureEdit structure_undo(const Scene& scene) {
   structure->lights = scene.lights;
   structure->cameras = scene.cameras;
   structure->extensions_used = scene.extensions_used;
+  structure->content_hash = scene.content_hash;
   structure->meshes = scene.meshes.size();
   structure->materials = scene.materials.size();
   structure->textures = scene.textures.size();
@@ -261,6 +265,7 @@ void apply_structure(Scene& scene, const StructureEdit& edit) {
   scene.lights = s.lights;
   scene.cameras = s.cameras;
   scene.extensions_used = s.extensions_used;
+  scene.content_hash = s.content_hash;
   scene.meshes.resize(s.meshes);
   scene.materials.resize(s.materials);
   scene.textures.resize(s.textures);
