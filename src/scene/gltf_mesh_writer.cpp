@@ -1,9 +1,6 @@
 #include "scene/gltf_mesh_writer.h"
 
-#include <cstring>
-
 #include "core/error.h"
-
 
 namespace hipr::gltf {
 namespace {
