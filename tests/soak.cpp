@@ -4,7 +4,6 @@
 // On lavapipe device memory is host memory, so the resident set size counts both.
 // usage: hipr_soak [EDITS] [SEED]   (prints one JSON object; exit 1 when the image differs)
 #include <cstdio>
-#include <fstream>
 #include <random>
 #include <string>
 
@@ -16,18 +15,12 @@
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
 #include "core/log.h"
+#include "core/memory_usage.h"
 #include "vk/context.h"
 
 namespace {
 
 using namespace hipr;
-
-long resident_kib() {
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmRSS:", 0) == 0) return std::stol(line.substr(6));
-  return -1;
-}
 
 // One edit of a random op with random values in range (names of the shipped cornell_sphere;
 // the geometry ops duplicate a node as "copy" or delete the copy, and deform the sphere).
@@ -87,7 +80,7 @@ int main(int argc, char** argv) {
     pipeline.apply(random_edit(rng, scene));
     scheduler.step();
     if (e % std::max(edits / 10, 1) == 0) {
-      last = resident_kib();
+      last = long(resident_bytes() / 1024);
       if (!first) first = last;
       samples += (samples.empty() ? "" : ", ") + std::to_string(last);
     }

@@ -83,6 +83,18 @@ class ViewerWindow : public ::testing::Test {
     return write_script(s_dir, name, json);
   }
 
+  // Runs the viewer for `frames` frames with `edits` as its script (saved as `name`) and --save
+  // to `saved`; returns the box with the edits applied, which the saved file must load as.
+  static Scene save_from_viewer(const char* edits, const std::string& name, const fs::path& saved, int frames) {
+    const test::CommandResult result =
+        run_in_xvfb(view_arguments("--exit-after-frames " + std::to_string(frames) + " --save " + quoted(saved) +
+                                   " --script " + quoted(script(name, edits))));
+    EXPECT_EQ(result.exit_code, kExitOk) << result.output;
+    Scene expected = load_scene(test::asset("cornell_box.gltf"));
+    for (const Edit& edit : parse_edit_script(edits, name)) apply_edit(expected, edit);
+    return expected;
+  }
+
   static fs::path s_dir;
 };
 
@@ -319,12 +331,8 @@ TEST_F(ViewerWindow, SavedSceneReloadsToTheEditedScene) {
     {"op": "visibility", "node": "short_block", "visible": false},
     {"op": "camera", "translate": [0.0, 0.02, -0.1]}]})";
   const fs::path saved = s_dir / "edited.gltf";
-  const test::CommandResult result =
-      run_in_xvfb(view_arguments("--exit-after-frames 17 --save " + quoted(saved) + " --script " +
-                                 quoted(script("save.json", edits))));
-  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
-  Scene expected = load_scene(test::asset("cornell_box.gltf"));
-  for (const Edit& edit : parse_edit_script(edits, "save.json")) apply_edit(expected, edit);
+  const Scene expected = save_from_viewer(edits, "save.json", saved, 17);
+  ASSERT_TRUE(fs::exists(saved));
   const Scene reloaded = load_scene(saved);
   EXPECT_TRUE(diff_scenes(expected, reloaded).empty())
       << "the saved file loads as the edited scene";
@@ -356,12 +364,8 @@ TEST_F(ViewerWindow, GeometryEditsAreSavedAsMade) {
     {"op": "deform", "node": "tall_block", "matrix": [1,0,0,0, 0,1.3,0,0, 0,0,1,0, 0,0,0,1]},
     {"op": "delete", "node": "short_block"}]})";
   const fs::path saved = s_dir / "geometry.glb";
-  const test::CommandResult result =
-      run_in_xvfb(view_arguments("--exit-after-frames 13 --save " + quoted(saved) + " --script " +
-                                 quoted(script("geometry.json", edits))));
-  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
-  Scene expected = load_scene(test::asset("cornell_box.gltf"));
-  for (const Edit& edit : parse_edit_script(edits, "geometry.json")) apply_edit(expected, edit);
+  const Scene expected = save_from_viewer(edits, "geometry.json", saved, 13);
+  ASSERT_TRUE(fs::exists(saved));
   const Scene reloaded = load_scene(saved);
   EXPECT_TRUE(diff_scenes(expected, reloaded).empty()) << "the saved file loads as the edited scene";
   EXPECT_THROW(find_node(reloaded, "short_block"), InputError);

@@ -128,14 +128,14 @@ uint32_t BackgroundTiles::build_tree(std::vector<Node>& nodes, size_t leaf_size,
 BackgroundTiles::BackgroundTiles(const Scene& scene) { update_meshes(scene); }
 
 void BackgroundTiles::update_meshes(const Scene& scene) {
+  const size_t built = m_meshes.size();  // meshes [0, built) have trees, of m_revisions
   m_meshes.resize(scene.meshes.size());
   m_revisions.resize(scene.meshes.size(), 0);
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    if (m < m_built && m_revisions[m] == scene.meshes[m].revision) continue;
+    if (m < built && m_revisions[m] == scene.meshes[m].revision) continue;
     m_meshes[m] = build_mesh_tree(scene.meshes[m]);
     m_revisions[m] = scene.meshes[m].revision;
   }
-  m_built = scene.meshes.size();
 }
 
 BackgroundTiles::MeshTree BackgroundTiles::build_mesh_tree(const Mesh& mesh) {

@@ -54,7 +54,6 @@ class BackgroundTiles {
 
   std::vector<MeshTree> m_meshes;
   std::vector<uint64_t> m_revisions;  // per mesh: Mesh::revision of its tree
-  size_t m_built = 0;                 // meshes [0, m_built) have trees
 };
 
 }  // namespace hipr

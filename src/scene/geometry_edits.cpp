@@ -225,17 +225,17 @@ void check_deform(const Scene& scene, const DeformEdit& edit) {
 }
 
 void apply_deform(Scene& scene, const DeformEdit& edit) {
-  check_deform(scene, edit);
   const size_t mesh = mesh_of(scene, edit.node);
-  if (!edit.restore) pin_default_camera(scene);  // an undo leaves the pinned view as it is
-  if (edit.restore) {
+  if (edit.restore) {  // an undo: the pinned view stays as it is
     if (edit.restore->primitives.size() != scene.meshes[mesh].primitives.size())
       throw InternalError("a deform's undo for another mesh");
     scene.meshes[mesh] = *edit.restore;  // its revision with it: the vertices are those again
-  } else {
-    deform_mesh(scene.meshes[mesh], edit.matrix);
-    scene.meshes[mesh].revision = mesh_revision(scene.meshes[mesh]);
+    return;
   }
+  check_affine(edit.matrix);
+  pin_default_camera(scene);
+  deform_mesh(scene.meshes[mesh], edit.matrix);
+  scene.meshes[mesh].revision = mesh_revision(scene.meshes[mesh]);
 }
 
 StructureEdit structure_undo(const Scene& scene) {
