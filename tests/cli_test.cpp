@@ -490,7 +490,8 @@ TEST(Bench, WritesCurvesSummaryAndPlot) {
                               quoted(dir / "cache") + " -o ";
   const test::CommandResult result = test::run_hipr(command + quoted(dir / "a"));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
-  for (const char* file : {"curves.csv", "summary.json", "plot.png", "edit1_reference.png", "edit2_hipr_work1.png"})
+  for (const char* file : {"curves.csv", "summary.json", "plot.png", "edit1_reference.png", "edit1_reference.exr",
+                           "edit2_hipr_work0.png", "edit2_hipr_work0.exr", "edit2_hipr_work1.png"})
     EXPECT_TRUE(fs::exists(dir / "a" / file)) << file;
   EXPECT_EQ(files_in(dir / "cache").size(), 3u) << "one reference per scene state: before the edits, after each";
 

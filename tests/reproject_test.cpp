@@ -24,13 +24,14 @@ constexpr uint32_t kSize = 64, kTile = 8;
 
 RenderSettings settings() { return test::render_settings(kSize, kSize, kTile, 4, 21); }
 
-// The card camera's card (filling the frame) lit unevenly by a lamp, so that pixels differ.
-Scene lit_card() {
+// The card camera's card (filling the frame, unless moved by `card`) lit unevenly by a lamp, so
+// that pixels differ.
+Scene lit_card(const glm::mat4& card = glm::mat4(1.0f)) {
   Scene scene = test::make_card_camera_scene(0.0f);
   MaterialParameters white = default_material_params();
   white.base_color = glm::vec3(0.8f);
   white.specular_weight = 0.0f;
-  test::add_card(scene, "card", glm::mat4(1.0f), white);
+  test::add_card(scene, "card", card, white);
   PunctualLight lamp;
   lamp.intensity = 1.5f;
   scene.lights.push_back(lamp);
@@ -71,6 +72,36 @@ TEST(Reproject, APanReprojectsExactlyWhereNothingIsDisoccluded) {
   // of tiles) are the ones scored, first in the schedule.
   const std::vector<uint32_t> order = renderer.schedule();
   for (uint32_t i = 0; i < kSize / kTile; ++i) EXPECT_EQ(order[i] % (kSize / kTile), kSize / kTile - 1) << i;
+}
+
+// A silhouette's pixels mix, by their footprint, the card in front and the black behind it; after
+// a move the mix moves with the card, whatever the pixel's own surface did. The lit card covers
+// x < 32.3 pixels, so pixel 32 is three tenths card but sees the background through its centre;
+// a pan of two pixels carries the card to x < 30.3.
+TEST(Reproject, ASilhouetteMovesWithTheSurfaceInFront) {
+  const float edge = 32.3f / kSize * 2.0f - 1.0f;  // in card units: the frame spans [-1, 1]
+  Scene scene = lit_card(glm::translate(glm::mat4(1.0f), {(edge - 1.0f) / 2.0f, 0.0f, 0.0f}) *
+                         glm::scale(glm::mat4(1.0f), glm::vec3((edge + 1.0f) / 2.0f, 1.0f, 1.0f)));
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Hipr, 8);
+  renderer.add_samples_full_frame(4);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const ImageRGB before = scheduler.displayed_image();
+  ASSERT_GT(at(before, 32, 20, 0), 0.0f) << "the old edge pixel mixes in some card";
+  ASSERT_LT(at(before, 32, 20, 0), 0.5f * at(before, 31, 20, 0)) << "mostly black";
+  const Scene old = scene;
+  apply_edit(scene, CameraEdit{glm::vec3(2.0f * 2.0f / kSize, 0.0f, 0.0f), std::nullopt});
+  scheduler.on_edit(scene, diff_scenes(old, scene));
+  const ImageRGB after = scheduler.displayed_image();
+  // Every pixel shows the old one two to its right: the card, its edge pixels (the mix at x = 30
+  // sees the background, as x = 32 did), and the black beyond, but for x = 31, which the card
+  // uncovered and nothing old shows. The background does not move (it is reprojected by
+  // direction), so only the edge's mix is carried by the card's motion.
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x + 2 < kSize; ++x) {
+      if (x == 31) continue;
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(at(after, x, y, c), at(before, x + 2, y, c)) << x << "," << y;
+    }
 }
 
 // A smooth mirror filling the frame, reflecting a bright panel behind the camera over half of

@@ -150,16 +150,18 @@ void BenchReport::write_curves(const fs::path& path) const {
 }
 
 void BenchReport::write_images() const {
-  for (size_t e = 0; e < m_edits.size(); ++e) {
-    const std::string stem = "edit" + std::to_string(e + 1);
-    write_image(m_folder / (stem + "_reference.png"), m_edits[e].reference);
-    for (const auto& [name, run] : m_edits[e].runs)
-      for (const auto& [work, image] : run.captures) {
-        char label[32];
-        std::snprintf(label, sizeof label, "_work%g.png", work);
-        write_image(m_folder / (stem + "_" + name + label), image);
-      }
-  }
+  // Tone-mapped to look at, linear to measure (`hipr compare`).
+  for (const char* format : {".png", ".exr"})
+    for (size_t e = 0; e < m_edits.size(); ++e) {
+      const std::string stem = "edit" + std::to_string(e + 1);
+      write_image(m_folder / (stem + "_reference" + format), m_edits[e].reference);
+      for (const auto& [name, run] : m_edits[e].runs)
+        for (const auto& [work, image] : run.captures) {
+          char label[32];
+          std::snprintf(label, sizeof label, "_work%g%s", work, format);
+          write_image(m_folder / (stem + "_" + name + label), image);
+        }
+    }
 }
 
 void BenchReport::write() const {

@@ -25,8 +25,8 @@ struct PolicyRunOptions {
   double dense_until = 16.0;     // evaluate after every step until this much work, then sparser
   uint32_t sparse_every = 8;     // steps between evaluations after that (0 counts as 1)
   FlipOptions flip;
-  std::vector<double> capture_work = {0.25,
-                                      1.0};  // keep the displayed image at these amounts of work
+  // Keep the displayed image at these amounts of work (0: what the edit itself shows).
+  std::vector<double> capture_work = {0.0, 0.25, 1.0};
   Focus focus;  // handed to the scheduler before the edit (docs/method.md#focus); empty: none
   uint32_t focus_lead = kDefaultFocusLead;  // visits the focus's tiles run ahead (Scheduler::set_focus_lead)
   // One entry per pixel, non-zero in the region whose error is also measured (focus_relmse);
