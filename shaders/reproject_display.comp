@@ -12,9 +12,8 @@
 //  - beside a silhouette (another surface in its 3x3 neighbourhood): the old mix where the
 //    surface in front carried the silhouette, or the pixel's own reading where that is darker
 //    (a curved silhouette moves slower than its surface);
-//  - near an old edge: the blend of those of the four that show its surface alone, or the mean
-//    of what the old view saw of its surface within two pixels, or the darkest of the four that
-//    shows its surface at about the depth expected;
+//  - near an old edge: the blend of those of the four that show its surface alone, or else the
+//    darkest of the four that shows its surface at about the depth expected;
 //  - rejected (off-screen before, disoccluded, another surface in front): what the old view saw
 //    of its surface nearby, or the darkest of the four, until it is rendered; its records say
 //    kRecordRejected, so the resolve shows its first fresh samples at once and
@@ -73,7 +72,8 @@ void main() {
   vec3 value = vec3(0.0);
   float inverseDepth = 0.0;
   uint samples = 0xffffffffu;
-  // The darkest of the four on screen, of the same surface where one is: the last resort.
+  // The darkest of the four on screen, of the same surface where one is: the last resort (an
+  // error too dark is bounded, relMSE at most 1/2 per pixel; one too bright is not).
   uint fill = kInvalidIndex;
   float fillLuminance = 3.0e38;
   bool fillSameRecord = false;
@@ -129,8 +129,9 @@ void main() {
     texel.shown = b_before[fill].shown;
     texel.shownSamples = b_before[fill].shownSamples / 4u;
   } else {
-    // Off-screen or behind the old camera without a nearby view of the surface: the old view's
-    // nearest pixel, or the pixel itself.
+    // Rejected: what the old view saw of the surface nearby; failing that the darkest of the
+    // four, or off-screen or behind the old camera the old view's nearest pixel, or the pixel
+    // itself.
     if (fill == kInvalidIndex) {
       const uvec2 nearest = inFront ? uvec2(clamp(at, vec2(0.0), vec2(u_frame.width - 1u, u_frame.height - 1u))) : pixel;
       fill = nearest.y * u_frame.width + nearest.x;

@@ -104,6 +104,40 @@ TEST(Reproject, ASilhouetteMovesWithTheSurfaceInFront) {
     }
 }
 
+// Beside an emitter a mix read a fraction of a pixel off is far off: an emitting card in front of
+// the lit card (its edge three tenths into a pixel column, as above) moves two pixels with a
+// pan, and no pixel that sees the lit card shows the emitter's light carried over, where the
+// silhouette rule would carry the mixes of its edge.
+TEST(Reproject, AnEmittersEdgeIsNeverCarriedOntoWhatLiesBehind) {
+  const float edge = 32.3f / kSize * 2.0f - 1.0f;
+  Scene scene = lit_card();
+  MaterialParameters glow = test::black_material();
+  glow.emission_color = glm::vec3(1.0f);
+  glow.emission_luminance = 20.0f;
+  // Just in front of the lit card: both move by about the same two pixels.
+  test::add_card(scene, "glow",
+                 glm::translate(glm::mat4(1.0f), {(edge - 1.0f) / 2.0f, 0.0f, 0.01f}) *
+                     glm::scale(glm::mat4(1.0f), glm::vec3((edge + 1.0f) / 2.0f, 1.0f, 1.0f)),
+                 glow);
+  Renderer renderer(test::context(), scene, settings());
+  Scheduler scheduler(renderer, Policy::Hipr, 8);
+  renderer.add_samples_full_frame(4);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const ImageRGB before = scheduler.displayed_image();
+  float lit = 0.0f;  // the brightest pixel of the lit card away from the emitter
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 36; x < kSize; ++x) lit = std::max(lit, at(before, x, y, 0));
+  ASSERT_GT(at(before, 32, 20, 0), 4.0f * lit) << "the old edge pixel mixes in much light";
+  const Scene old = scene;
+  apply_edit(scene, CameraEdit{glm::vec3(2.0f * 2.0f / kSize, 0.0f, 0.0f), std::nullopt});
+  scheduler.on_edit(scene, diff_scenes(old, scene));
+  const ImageRGB after = scheduler.displayed_image();
+  // x = 30 now mixes as x = 32 did, but its centre sees the lit card: it is kept at the lit
+  // card's value (too dark, which is bounded) until it is rendered.
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 30; x < kSize; ++x) ASSERT_LE(at(after, x, y, 0), 1.5f * lit) << x << "," << y;
+}
+
 // A smooth mirror filling the frame, reflecting a bright panel behind the camera over half of
 // it: the reflection's edge moves on screen otherwise than the mirror's surface does.
 Scene mirror_card() {
