@@ -45,38 +45,56 @@ layout(scalar, binding = kReachTileChange) buffer TileChange { uint b_tile_chang
 // u_lights changed lights: b_reach_lights[i] before the edit, b_reach_lights[u_lights + i] after.
 layout(push_constant) uniform Push { uint u_lights; };
 
-// What `light` adds to the pixel: its direct radiance toward the camera (0 where shadowed, out
-// of range or cone). `reached` tells whether its light gets to the surface at all: unblocked,
-// and on the camera's side of it or through a BSDF that passes it on (a mirror or a pane of glass
-// shows the change only by what it reflects, but is lit all the same).
-vec3 direct_from(Light light, SurfaceHit surface, BsdfPoint bsdf, vec3 wo, out bool reached) {
-  reached = false;
+// What `light` would add to the pixel unshadowed: its direct radiance toward the camera (0 out
+// of range or cone), and the shadow ray that decides it. `lit` tells whether its light may get to
+// the surface at all: it arrives, on the camera's side of it or through a BSDF that passes it on
+// (a mirror or a pane of glass shows the change only by what it reflects, but is lit all the
+// same).
+struct Arrival {
+  bool lit;
+  vec3 radiance;
+  vec3 origin, toward;
+  float tMax;
+};
+
+Arrival arrival_from(Light light, SurfaceHit surface, BsdfPoint bsdf, vec3 wo) {
+  Arrival a;
+  a.lit = false;
+  a.radiance = vec3(0.0);
   vec3 direction, arriving;
   float distance = kFloatMax;
   if (light.type == kLightDirectional) {
     direction = -light.direction;
     arriving = light.intensity;
   } else if (!point_light_arrival(light, surface.position, direction, distance, arriving)) {
-    return vec3(0.0);
+    return a;
   }
-  if (!(max3(arriving) > 0.0)) return vec3(0.0);
+  if (!(max3(arriving) > 0.0)) return a;
   const vec3 f = bsdf_eval(bsdf, direction);
   const bool cameraSide = dot(direction, surface.geometricNormal) * dot(wo, surface.geometricNormal) > 0.0;
-  if (!(max3(f) > 0.0) && !cameraSide) return vec3(0.0);
+  if (!(max3(f) > 0.0) && !cameraSide) return a;
   const vec3 side = dot(direction, surface.geometricNormal) >= 0.0 ? surface.geometricNormal : -surface.geometricNormal;
-  const vec3 origin = offset_ray_origin(surface.position, side);
-  float tMax = kFloatMax;
-  vec3 toward = direction;
+  a.origin = offset_ray_origin(surface.position, side);
+  a.tMax = kFloatMax;
+  a.toward = direction;
   if (distance < kFloatMax) {
-    const vec3 toLight = surface.position + direction * distance - origin;
-    tMax = length(toLight);
-    if (!(tMax > 0.0)) return vec3(0.0);
-    toward = toLight / tMax;
-    tMax *= 0.99999;
+    const vec3 toLight = surface.position + direction * distance - a.origin;
+    a.tMax = length(toLight);
+    if (!(a.tMax > 0.0)) return a;
+    a.toward = toLight / a.tMax;
+    a.tMax *= 0.99999;
   }
-  if (trace_occluded(origin, toward, tMax)) return vec3(0.0);
-  reached = true;
-  return max(f, vec3(0.0)) * arriving;
+  a.lit = true;
+  a.radiance = max(f, vec3(0.0)) * arriving;
+  return a;
+}
+
+// Whether two states of a light cast the same shadow ray from a surface: the same kind at the
+// same place (point, spot) or travelling the same way (directional). An edit of the colour,
+// intensity, range, cone or aim alone leaves the shadows as they were: one ray tells both.
+bool same_shadow_ray(Light before, Light after) {
+  return before.type == after.type &&
+         (before.type == kLightDirectional ? before.direction == after.direction : before.position == after.position);
 }
 
 void main() {
@@ -97,11 +115,17 @@ void main() {
   bool anyReached = false;
   vec3 change = vec3(0.0);
   for (uint i = 0u; i < min(u_lights, kMaxReachLights); ++i) {
-    bool reachedBefore, reachedAfter;
-    const vec3 before = direct_from(b_reach_lights[i], surface, bsdf, wo, reachedBefore);
-    const vec3 after = direct_from(b_reach_lights[u_lights + i], surface, bsdf, wo, reachedAfter);
+    const Light lightBefore = b_reach_lights[i], lightAfter = b_reach_lights[u_lights + i];
+    const Arrival before = arrival_from(lightBefore, surface, bsdf, wo);
+    const Arrival after = arrival_from(lightAfter, surface, bsdf, wo);
+    // Reached: lit and unblocked (0 where shadowed).
+    const bool blockedBefore = before.lit && trace_occluded(before.origin, before.toward, before.tMax);
+    const bool blockedAfter = after.lit && (before.lit && same_shadow_ray(lightBefore, lightAfter)
+                                                ? blockedBefore
+                                                : trace_occluded(after.origin, after.toward, after.tMax));
+    const bool reachedBefore = before.lit && !blockedBefore, reachedAfter = after.lit && !blockedAfter;
     anyReached = anyReached || reachedBefore || reachedAfter;
-    change += after - before;
+    change += (reachedAfter ? after.radiance : vec3(0.0)) - (reachedBefore ? before.radiance : vec3(0.0));
   }
   if (!anyReached) return;
   // The pixel's value after the edit, as far as the screen and the direct light tell.
