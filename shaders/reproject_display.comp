@@ -114,8 +114,9 @@ void main() {
   vec3 estimate;
   uint estimateSamples;
   // A pure value of the pixel's surface may stand for it unless it emits beside another surface
-  // (its true value is a mix, far darker).
-  const bool pureIsSafe = !(emits(now.record) && beside_another_surface(pixel, now.record));
+  // (its true value is a mix, far darker). Not looked up for accepted pixels, which need no such
+  // value.
+  const bool pureIsSafe = accepted || !(emits(now.record) && beside_another_surface(pixel, now.record));
   if (accepted) {
     texel.shown = value;
     texel.shownSamples = samples;

@@ -4,15 +4,9 @@
 
 namespace hipr::gltf {
 
-Json& BufferWriter::list(const char* key) {
-  if (!m_doc.contains(key) || !m_doc[key].is_array()) m_doc[key] = Json::array();
-  return m_doc[key];
-}
-
 size_t BufferWriter::buffer_index() {
   if (m_buffer == SIZE_MAX) {
-    m_buffer = list("buffers").size();
-    list("buffers").push_back(Json::object());  // filled by finish(), once the bytes are known
+    m_buffer = append_to(m_doc, "buffers", Json::object());  // filled by finish(), once the bytes are known
   }
   return m_buffer;
 }
@@ -24,8 +18,7 @@ size_t BufferWriter::add_view(const void* bytes, size_t size, int target) {
   if (size > 0) std::memcpy(m_bytes.data() + offset, bytes, size);
   Json view = {{"buffer", buffer_index()}, {"byteOffset", offset}, {"byteLength", size}};
   if (target) view["target"] = target;
-  list("bufferViews").push_back(std::move(view));
-  return list("bufferViews").size() - 1;
+  return append_to(m_doc, "bufferViews", std::move(view));
 }
 
 void BufferWriter::finish() {

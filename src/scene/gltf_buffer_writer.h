@@ -25,8 +25,7 @@ class BufferWriter {
                      {"componentType", component_type},
                      {"count", values.size() * sizeof(T) / element_size(type)},
                      {"type", type}};
-    list("accessors").push_back(std::move(accessor));
-    return list("accessors").size() - 1;
+    return append_to(m_doc, "accessors", std::move(accessor));
   }
   // Appends the buffer to the document, when anything went into it.
   void finish();
@@ -35,7 +34,6 @@ class BufferWriter {
   static size_t element_size(const std::string& type) {
     return type == "SCALAR" ? 4 : type == "VEC2" ? 8 : type == "VEC3" ? 12 : 16;
   }
-  Json& list(const char* key);
   size_t buffer_index();
 
   Json& m_doc;

@@ -55,6 +55,21 @@ void put_numbers(Json& object, const char* key, const std::vector<float>& wanted
   object[key] = std::move(array);
 }
 
+Json& array_member(Json& object, const char* key) {
+  if (!object.contains(key) || !object[key].is_array()) object[key] = Json::array();
+  return object[key];
+}
+
+size_t append_to(Json& object, const char* key, Json value) {
+  Json& array = array_member(object, key);
+  array.push_back(std::move(value));
+  return array.size() - 1;
+}
+
+size_t array_length(const Json& object, const char* key) {
+  return object.is_object() && object.contains(key) && object[key].is_array() ? object[key].size() : 0;
+}
+
 void erase_extra(Json& owner, const char* key) {
   if (!owner.contains("extras") || !owner["extras"].is_object() || !owner["extras"].contains(key)) return;
   owner["extras"].erase(key);

@@ -41,6 +41,14 @@ void edit_object(Json& parent, const char* key, Edit&& edit) {
   if (!object.empty() || parent.contains(key)) parent[key] = std::move(object);
 }
 
+// object[key] as an array, made an empty one where it is absent or something else (a list the
+// writer appends to).
+Json& array_member(Json& object, const char* key);
+// Appends `value` to array_member(object, key); returns its index there.
+size_t append_to(Json& object, const char* key, Json value);
+// The length of object[key] when it is an array, else 0 (how many of a kind the file has).
+size_t array_length(const Json& object, const char* key);
+
 // Removes extras[key]; drops `extras` when that leaves it empty.
 void erase_extra(Json& owner, const char* key);
 

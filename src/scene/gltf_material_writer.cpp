@@ -233,10 +233,9 @@ void write_texture_references(Json& m, const M& params, TextureWriter& textures)
 }
 
 std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials, TextureWriter& textures) {
-  const size_t count = doc.contains("materials") && doc["materials"].is_array() ? doc["materials"].size() : 0;
+  const size_t count = array_length(doc, "materials");
   if (materials.size() <= count + 1) return materials;
   std::vector<Material> ordered(materials.begin(), materials.begin() + std::ptrdiff_t(count));
-  if (!doc.contains("materials") || !doc["materials"].is_array()) doc["materials"] = Json::array();
   for (size_t i = count + 1; i < materials.size(); ++i) {
     const M& params = materials[i].params;
     Json stub = Json::object();
@@ -250,7 +249,7 @@ std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>
     if (params.flags & abi::kMaterialDoubleSided) stub["doubleSided"] = true;
     if (!(params.flags & abi::kMaterialThinWalled)) stub["extensions"][kVolume]["thicknessFactor"] = 1.0;
     write_texture_references(stub, params, textures);
-    doc["materials"].push_back(std::move(stub));
+    append_to(doc, "materials", std::move(stub));  // after the textures added their keys
     ordered.push_back(materials[i]);
   }
   ordered.push_back(materials[count]);  // glTF's default
@@ -258,7 +257,7 @@ std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>
 }
 
 void write_materials(Json& doc, const std::vector<Material>& materials, const std::string& name) {
-  const size_t count = doc.contains("materials") && doc["materials"].is_array() ? doc["materials"].size() : 0;
+  const size_t count = array_length(doc, "materials");
   if (materials.size() != count + 1)
     throw InputError(name + ": the scene has " + std::to_string(materials.size()) + " materials but its file " +
                      std::to_string(count) + " (+1 default): the file changed since it was loaded");

@@ -47,8 +47,7 @@ Json primitive_json(Json& doc, BufferWriter& out, const MeshPrimitive& p, size_t
 }  // namespace
 
 void write_meshes(Json& doc, const Scene& scene, BufferWriter& out, const std::string& name) {
-  const size_t file_meshes = doc.contains("meshes") && doc["meshes"].is_array() ? doc["meshes"].size() : 0;
-  const size_t file_materials = doc.contains("materials") && doc["materials"].is_array() ? doc["materials"].size() : 0;
+  const size_t file_meshes = array_length(doc, "meshes"), file_materials = array_length(doc, "materials");
   if (scene.loaded_mesh_revisions.size() != file_meshes || scene.meshes.size() < file_meshes)
     throw InputError(name + ": the scene has other meshes than its file: the file changed since it was loaded");
   std::vector<size_t> deformed;
@@ -68,12 +67,12 @@ void write_meshes(Json& doc, const Scene& scene, BufferWriter& out, const std::s
     mesh.erase("weights");  // the morph targets went with the old primitives
   }
   // Imported meshes, appended in the scene's order: their indices stay the scene's.
-  if (!doc.contains("meshes") || !doc["meshes"].is_array()) doc["meshes"] = Json::array();
+  // (No reference into doc is held across writing: a new top-level key may move the others.)
   for (size_t m = file_meshes; m < scene.meshes.size(); ++m) {
     Json mesh = {{"name", scene.meshes[m].name}, {"primitives", primitives_of(scene.meshes[m])}};
     if (scene.meshes[m].primitives.empty())  // glTF wants a primitive: one triangle of nothing
       mesh["primitives"] = primitives_of(Mesh{"", {MeshPrimitive{{glm::vec3(0.0f)}, {}, {}, {}, {}, {0, 0, 0}, 0}}, 0});
-    doc["meshes"].push_back(std::move(mesh));
+    append_to(doc, "meshes", std::move(mesh));
   }
 }
 

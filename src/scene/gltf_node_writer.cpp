@@ -121,10 +121,7 @@ Json new_node(const Node& node) {
 }  // namespace
 
 void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
-  const auto size_of = [&](const char* key) {
-    return doc.contains(key) && doc[key].is_array() ? doc[key].size() : size_t(0);
-  };
-  const size_t node_count = size_of("nodes"), camera_count = size_of("cameras");
+  const size_t node_count = array_length(doc, "nodes"), camera_count = array_length(doc, "cameras");
   if (scene.nodes.size() < node_count || scene.cameras.size() < camera_count)
     throw InputError(name +
                      ": the scene has fewer nodes or cameras than its file: the file changed since it was loaded");

@@ -32,19 +32,13 @@ std::vector<unsigned char> png_of(const Image& image) {
 
 }  // namespace
 
-Json& TextureWriter::list(const char* key) {
-  if (!m_doc.contains(key) || !m_doc[key].is_array()) m_doc[key] = Json::array();
-  return m_doc[key];
-}
-
 size_t TextureWriter::image(uint32_t index) {
   if (const auto it = m_images.find(index); it != m_images.end()) return it->second;
   const Image& source = m_scene.images.at(index);
   const std::vector<unsigned char> png = png_of(source);
   Json image = {{"name", source.name}, {"bufferView", m_out.add_view(png.data(), png.size(), 0)},
                 {"mimeType", "image/png"}};
-  list("images").push_back(std::move(image));
-  return m_images[index] = list("images").size() - 1;
+  return m_images[index] = append_to(m_doc, "images", std::move(image));
 }
 
 size_t TextureWriter::sampler(uint32_t flags) {
@@ -53,8 +47,7 @@ size_t TextureWriter::sampler(uint32_t flags) {
   Json sampler = {{"magFilter", (key & kTextureNearest) ? kNearest : kLinear},
                   {"wrapS", wrap(key, kTextureClampU, kTextureMirrorU)},
                   {"wrapT", wrap(key, kTextureClampV, kTextureMirrorV)}};
-  list("samplers").push_back(std::move(sampler));
-  return m_samplers[key] = list("samplers").size() - 1;
+  return m_samplers[key] = append_to(m_doc, "samplers", std::move(sampler));
 }
 
 Json TextureWriter::texture_info(uint32_t index) {
@@ -63,8 +56,7 @@ Json TextureWriter::texture_info(uint32_t index) {
   if (it == m_textures.end()) {
     Json texture = {{"sampler", sampler(t.flags)}, {"source", image(t.image)}};
     if (!t.name.empty()) texture["name"] = t.name;
-    list("textures").push_back(std::move(texture));
-    it = m_textures.emplace(index, list("textures").size() - 1).first;
+    it = m_textures.emplace(index, append_to(m_doc, "textures", std::move(texture))).first;
   }
   Json info = {{"index", it->second}};
   if (t.flags & kTextureUv1) info["texCoord"] = 1;

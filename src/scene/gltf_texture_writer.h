@@ -24,7 +24,6 @@ class TextureWriter {
  private:
   size_t image(uint32_t image);
   size_t sampler(uint32_t flags);
-  Json& list(const char* key);
 
   Json& m_doc;
   const Scene& m_scene;

@@ -34,8 +34,7 @@ bool uses_extension(const gltf::Json& doc, const char* kind, const std::string& 
 }
 
 void declare_extension(gltf::Json& doc, const std::string& extension) {
-  if (!doc.contains("extensionsUsed") || !doc["extensionsUsed"].is_array()) doc["extensionsUsed"] = gltf::Json::array();
-  gltf::Json& used = doc["extensionsUsed"];
+  gltf::Json& used = gltf::array_member(doc, "extensionsUsed");
   if (std::find(used.begin(), used.end(), extension) == used.end()) used.push_back(extension);
 }
 
