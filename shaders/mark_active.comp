@@ -4,7 +4,8 @@
 // the pixel no longer sees (left there by an earlier edit whose tiles were not re-rendered yet:
 // the starting point of a drag).
 // Reads: both G-buffers, the changed-record flags, the surface each displayed pixel depicts.
-// Writes: kTileActive | kTileScored (and kTileFocus where the focus is) into the tile flags, and
+// Writes: kTileActive | kTileScored (and kTileFocus where the focus is, kTileLead there and where a
+// pixel leads) into the tile flags, each pixel's bit of the pixel-lead bits, and
 // per tile a change score that orders the active tiles: 1 per pixel showing a changed element,
 // 2 where the pixel shows another surface than before or than the screen shows (an object moved
 // in or out: the largest changes on screen, while a moved object's own inside often looks much
@@ -14,6 +15,14 @@
 // or refraction kept from another view is wrong) 1, so both rank first; every tile is marked
 // kTileReprojected, and kTileMoved where a pixel is not kShownStill (schedule_keys.comp renders
 // tiles that barely moved last).
+// The pixels that lead after an edit (docs/method.md#the-edits-lead) get their bit in the
+// pixel-lead bits, every other pixel has it cleared: those whose surface changed (now != before,
+// or the screen shows another surface) and, when the edit moved geometry (u_moved: an object
+// moved, appeared, disappeared or was deformed), those that show a changed element. Their fresh
+// estimate is on screen from its first samples and no difference from the old scene steadies it
+// (every path from a moved surface changed), so more samples there lower the displayed error
+// most. Their tiles get kTileLead, as the focus's do. Not after a camera edit or one that
+// activates every tile: the change is then everywhere.
 // The focus (docs/method.md#focus) is marked here too: a pixel whose surface now is a focus
 // record, or which lies in a focus disc, makes its tile active and adds its focus weight to the
 // tile's focus score. The focus orders tiles after the edit's (schedule_keys.comp) and
@@ -36,12 +45,14 @@ layout(scalar, binding = kMarkActiveTileChange) buffer TileChange { uint b_tile_
 layout(scalar, binding = kMarkActiveDisplay) readonly buffer Display { DisplayTexel b_display[]; };
 layout(scalar, binding = kMarkActiveFocusDiscs) readonly buffer FocusDiscs { FocusDisc b_focus_discs[]; };
 layout(scalar, binding = kMarkActiveTileFocus) buffer TileFocus { uint b_tile_focus[]; };
+layout(scalar, binding = kMarkActivePixelLead) buffer PixelLead { uint b_pixel_lead[]; };
 // u_everything: the edit activates every tile (carry_tiles.comp did); a surface shown wrongly
 // then scores nothing: it is everywhere (a camera move), and would bury the focus's order.
 layout(push_constant) uniform Push {
   uint u_focusDiscs;
   uint u_everything;
   uint u_reprojected;
+  uint u_moved;
 };
 
 bool changed(uint record) { return record != kInvalidIndex && (b_changed_records[record] & kRecordChanged) != 0u; }
@@ -70,9 +81,16 @@ void main() {
   if (u_reprojected != 0u)
     atomicOr(b_tile_flags[tile], kTileReprojected | ((b_display[index].flags & kShownStill) == 0u ? kTileMoved : 0u));
   const bool edited = changed(now) || changed(before) || wrongSurface || viewChanged;
+  const bool leads = edited && u_everything == 0u && u_reprojected == 0u &&
+                     (now != before || wrongSurface || (u_moved != 0u && changed(now)));
+  const uint bit = 1u << (index % 32u);
+  if (leads)
+    atomicOr(b_pixel_lead[index / 32u], bit);
+  else
+    atomicAnd(b_pixel_lead[index / 32u], ~bit);
   const uint focus = focus_weight(pixel, now);
   if (!edited && focus == 0u) return;
-  atomicOr(b_tile_flags[tile], kTileActive | kTileScored | (focus != 0u ? kTileFocus : 0u));
+  atomicOr(b_tile_flags[tile], kTileActive | kTileScored | (focus != 0u ? kTileFocus | kTileLead : 0u) | (leads ? kTileLead : 0u));
   if (edited) atomicAdd(b_tile_change[tile], now != before || wrongSurface ? 2u : 1u);
   if (focus != 0u) atomicAdd(b_tile_focus[tile], focus);
 }

@@ -35,12 +35,15 @@
 //    under every rule: f is then at least as good, and this is what makes every schedule end on
 //    the unbiased image. A tile that shows f alone stays so until the next edit (no flicker).
 //    (Before the first edit there is no stale estimate: the scheduler resolves with immediate.)
+//    A relit pixel (kStaleCurrent: its stale estimate is already the edited scene's, converged)
+//    keeps it until its fresh samples are as many, under every rule but immediate, and judges
+//    nothing meanwhile (keeps_current_stale).
 //  - difference (docs/method.md#the-difference-estimate): blend, except for pixels whose n fresh
 //    samples all have a kept sample of the scene the stale estimate is of (n <= valid): with
 //    d_i = new_i - old_i (same random numbers),
 //      C  = s + sum_i d_i / n           (unbiased: s and the kept samples estimate the old scene)
 //      C' = C + a (f - C)               a per channel = -sum w d (old - s) / sum w (old - s)^2 over
-//                                       the tile's changed pixels, clamped to [-1, 1]: how much
+//                                       the tile's changed pixels, clamped to [-7, 1]: how much
 //                                       of the old samples' noise the new ones replaced (0: an
 //                                       added change, C is best; 1: paths replaced, f is best; a
 //                                       recolour by k: 1 - k); the mix with the least variance
@@ -205,6 +208,7 @@ void main() {
       continue;
     }
     if (n < texel.staleSamples) shortOfStale += 1u;
+    if (keeps_current_stale(texel, n)) continue;  // relit: shown as it is, judges nothing
     if (differenced_samples(texel, n) > 0u) {
       const DifferenceRecord record = b_difference[index];
       differenced += 1u;

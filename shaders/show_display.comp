@@ -32,7 +32,8 @@ shared vec4 s_terms[kRegion * kRegion];   // per pixel: blend's w (f - s)^2 and 
 shared vec4 s_rows[kRegion * kBlock];     // the terms summed along rows, by the tent
 
 // The rule's terms of the pixel at `at` (zero where it takes no part: outside the image, no
-// fresh sample, a changed surface, one fresh sample, an unchanged or too bright difference pixel),
+// fresh sample, a changed surface, a relit value, one fresh sample, an unchanged or too bright
+// difference pixel),
 // as resolve_display.comp sums them over a tile; difference terms with the regression weight of
 // the pixel's own tile.
 vec4 gather(ivec2 at) {
@@ -42,7 +43,7 @@ vec4 gather(ivec2 at) {
   if (!has_fresh_samples(accum)) return vec4(0.0);
   const uint n = accum.count & kPixelCountMask;
   const DisplayTexel texel = b_display[index];
-  if (resurfaced(index, texel)) return vec4(0.0);
+  if (resurfaced(index, texel) || keeps_current_stale(texel, n)) return vec4(0.0);
   const uint c = differenced_samples(texel, n);
   if (c == 0u) return n >= 2u ? vec4(blend_terms(accum, n, texel), 0.0, 0.0) : vec4(0.0);
   const DifferenceRecord record = b_difference[index];
@@ -117,6 +118,9 @@ void show_pixel(uint index, vec4 sums, TileJudgement judgement) {
   const vec3 fresh = accum.sum / float(n);
   DisplayTexel texel = b_display[index];
   const bool surfaceChanged = resurfaced(index, texel);
+  // A relit value stays as it is (and with it its light groups: a slider dragged further relights
+  // it again).
+  if (!surfaceChanged && keeps_current_stale(texel, n)) return;
   const uint c = differenced_samples(texel, n);
   if (judgement.state != kJudgeSettled && !surfaceChanged && c > 0u) {
     show_difference(texel, index, sums.zw, judgement.regression, fresh, n, c);

@@ -1,7 +1,8 @@
 #version 460
 // Path-tracing megakernel over a list of tiles.
 // Reads:  scene buffers (geometry, materials, textures, lights, environment), the TLAS,
-//         the tile list (tile ids in render order), the background-tile mask and FrameParams.
+//         the tile list (tile ids in render order), the background-tile mask, the tile flags and
+//         pixel-lead bits (which target a pixel's visit brings it to) and FrameParams.
 // Writes: per-pixel accumulation (radiance sum, sum of squares, sample count), each light group's
 //         share of the sum (HIPR_LIGHT_GROUPS > 0), the difference records (HIPR_DIFFERENCE 1: the
 //         first samples' values and, after an edit, their differences from the old scene's; reads
@@ -25,6 +26,7 @@ layout(scalar, binding = kTraceAccumulation) buffer Accumulation { PixelAccum b_
 layout(scalar, binding = kTraceStats) buffer Stats { RenderStats b_stats; };
 layout(scalar, binding = kTraceTileFlags) buffer TileFlags { uint b_tile_flags[]; };
 layout(scalar, binding = kTraceTileBackground) readonly buffer TileBackground { uint b_tile_background[]; };
+layout(scalar, binding = kTracePixelLead) readonly buffer PixelLead { uint b_pixel_lead[]; };
 layout(scalar, binding = kTraceGroupSums) buffer GroupSums { vec3 b_group_sums[]; };
 layout(scalar, binding = kTraceMaterialGroups) readonly buffer MaterialGroups { uint b_material_groups[]; };
 
@@ -307,7 +309,11 @@ void main() {
   // re-planned midway (a new focus) still leaves every pixel with the same count, and the
   // focus's tiles run ahead to their own target (docs/method.md#focus).
   const bool focusTile = u_push.focusTarget != 0u && (b_tile_flags[tile] & kTileFocus) != 0u;
-  const uint target = focusTile ? u_push.focusTarget : u_push.sampleTarget;
+  uint target = focusTile ? u_push.focusTarget : u_push.sampleTarget;
+  // A pixel stage 1 saw change most (a moved object, a surface it no longer sees) runs ahead to
+  // the edit's lead (docs/method.md#the-edits-lead).
+  if (target != 0u && u_push.leadTarget != 0u && (b_pixel_lead[pixelIndex / 32u] & (1u << (pixelIndex % 32u))) != 0u)
+    target = max(target, u_push.leadTarget);
   const uint have = restart ? 0u : accum.count;
   const uint samples = target == 0u ? u_push.samplesPerPixel : (have >= target ? 0u : target - have);
   if (samples == 0u) return;

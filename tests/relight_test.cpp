@@ -211,5 +211,28 @@ TEST(Relight, TheSchedulerShowsItAtOnceAndEndsOnTheFreshRender) {
   EXPECT_EQ(scheduler.displayed_image().rgb, render(scene, settings(), 32).rgb);
 }
 
+// The relit image is the edited scene's estimate from every converged sample: while pixels have
+// fewer fresh samples than that, the weighing rules show it as it is (fresh noise cannot improve
+// it), and the run still ends on the full-frame render.
+TEST(Relight, TheRelitValueStaysUntilTheFreshSamplesAreAsMany) {
+  for (const DisplayRule rule : {DisplayRule::Difference, DisplayRule::Blend}) {
+    Scene scene = sphere_box();
+    Renderer renderer(test::context(), scene, settings());
+    Scheduler scheduler(renderer, Policy::Hipr, 4);
+    scheduler.set_display_rule(rule);
+    scheduler.set_first_visit_spp(2);
+    while (scheduler.work_since_edit() < 8.0) scheduler.step();
+    const Scene before = scene;
+    apply_edit(scene, LightEdit{"lamp", 0.5f, glm::vec3(1.0f, 0.8f, 0.6f), std::nullopt});
+    scheduler.on_edit(scene, diff_scenes(before, scene));
+    ASSERT_TRUE(scheduler.relit());
+    const ImageRGB relit = scheduler.displayed_image();
+    while (scheduler.work_since_edit() < 6.0) scheduler.step();  // every pixel has 2 to 6 samples
+    EXPECT_EQ(scheduler.displayed_image().rgb, relit.rgb) << display_rule_name(rule);
+    while (scheduler.work_since_edit() < 8.0) scheduler.step();
+    EXPECT_EQ(scheduler.displayed_image().rgb, render(scene, settings(), 8).rgb) << display_rule_name(rule);
+  }
+}
+
 }  // namespace
 }  // namespace hipr

@@ -17,7 +17,7 @@ namespace {
 
 // HiPR's stages as calls: stage 1 reports `active` tiles (stage1_focus `focus_active`).
 struct FakeStages final : HiprStageRunner {
-  uint32_t active = 3, focus_active = 2, seeded = 3;
+  uint32_t active = 3, focus_active = 2, seeded = 3, leading = 0, discovered = 0;
   uint32_t stage1_calls = 0, focus_calls = 0, schedule_builds = 0;
   std::vector<std::pair<uint32_t, uint32_t>> stage2;  // (offset, count) per call
   Focus focus;
@@ -28,6 +28,8 @@ struct FakeStages final : HiprStageRunner {
   void set_focus(const Focus& f) override { focus = f; }
   void set_reprojection(bool) override {}
   uint32_t seeded_tiles() const override { return seeded; }
+  uint32_t lead_tiles() const override { return leading; }
+  uint32_t discovered_tiles() const override { return discovered; }
   uint32_t stage1_focus() override {
     ++focus_calls;
     return focus_active;
@@ -45,8 +47,8 @@ struct FakeRenderer final : ProgressiveRenderer {
   TileGrid grid{32, 24, 8, 4, 3, 5};
   std::vector<uint32_t> tile_samples = std::vector<uint32_t>(12, 0);
   std::vector<bool> tile_owed = std::vector<bool>(12, false);
-  uint32_t target = 0, focus_target = 0;
-  std::vector<std::pair<uint32_t, uint32_t>> lead_calls;  // render_focus_lead (offset, count)
+  uint32_t target = 0, focus_target = 0, lead_target = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> lead_calls;  // render_lead (offset, count)
   std::vector<uint32_t> order;
   std::vector<uint32_t> rendered;       // tile ids, in the order rendered
   std::vector<uint32_t> samples_given;  // spp per render_schedule call
@@ -74,16 +76,17 @@ struct FakeRenderer final : ProgressiveRenderer {
     samples_given.push_back(spp);
     step_rules.push_back(then_resolve);
   }
-  void render_focus_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule>) override {
+  void render_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule>) override {
     lead_calls.emplace_back(offset, count);
   }
   void mark_all_owed() override {
     ++owed_marks;
     tile_owed.assign(tile_owed.size(), true);
   }
-  void set_sample_target(uint32_t t, uint32_t focus) override {
+  void set_sample_target(uint32_t t, uint32_t focus, uint32_t lead) override {
     target = t;
     focus_target = focus;
+    lead_target = lead;
   }
   std::pair<uint32_t, uint32_t> sample_count_range() const override {
     uint32_t fewest = UINT32_MAX, most = 0;
@@ -244,6 +247,60 @@ TEST(SchedulingInterface, AfterACameraEditTheLeadComesOnceTheFocusIsVisited) {
   EXPECT_TRUE(scheduler.leading_steps_pending());
   scheduler.step();  // stage 2 goes on from entry 3
   EXPECT_EQ(renderer.stages->stage2.back(), (std::pair<uint32_t, uint32_t>{3, 2}));
+}
+
+// After an edit, the pixels stage 1 saw change most lead (docs/method.md#the-edits-lead): once
+// the active tiles and the strongly discovered ones had their first visit, lead steps over the
+// leading entries bring them to the round target plus the lead (never past the converged
+// count), then the round goes on. A new focus plans no edit lead; a lead of 0 is none.
+TEST(SchedulingInterface, TheEditsLeadComesAfterTheStronglyDiscoveredTiles) {
+  FakeRenderer renderer;
+  renderer.stages.emplace();
+  renderer.stages->leading = 2;     // tiles with pixels that lead
+  renderer.stages->discovered = 4;  // strongly discovered tiles after the 3 active ones
+  Scheduler scheduler(renderer, Policy::Hipr, 2);
+  scheduler.set_first_visit_spp(2);
+  scheduler.set_converged_spp(16);
+  scheduler.set_edit_lead(3);
+  scheduler.on_edit(Scene{}, ChangeSet{});
+  scheduler.step();  // stage 2: entries 0, 1
+  scheduler.step();  // stage 2: entry 2, then the sort
+  EXPECT_EQ(renderer.lead_target, 0u) << "no lead before the discovered tiles' first visit";
+  scheduler.step();  // entries 3, 4
+  scheduler.step();  // entries 5, 6: the last strongly discovered
+  EXPECT_TRUE(renderer.lead_calls.empty());
+  scheduler.step();  // the lead begins
+  EXPECT_EQ(renderer.lead_target, 2u + 3u) << "the round's 2 and the lead's 3 visits";
+  scheduler.step();
+  scheduler.step();
+  // A lead step holds 2 x 2 / 3 tiles (one): about a first visit's work.
+  EXPECT_EQ(renderer.lead_calls, (std::vector<std::pair<uint32_t, uint32_t>>{{0, 1}, {1, 1}, {2, 1}}));
+  const size_t rendered = renderer.rendered.size();
+  scheduler.step();  // the round goes on from entry 7
+  ASSERT_EQ(renderer.rendered.size(), rendered + 2);
+  EXPECT_EQ(renderer.rendered[rendered], renderer.order[7]);
+  for (int s = 0; s < 3; ++s) scheduler.step();  // the round ends: the lead target stays
+  EXPECT_EQ(renderer.target, 3u);
+  EXPECT_EQ(renderer.lead_target, 5u);
+
+  // Held at the converged count.
+  scheduler.set_converged_spp(4);
+  scheduler.on_edit(Scene{}, ChangeSet{});
+  while (renderer.lead_target == 0 && scheduler.work_since_edit() < 4.0) scheduler.step();
+  EXPECT_EQ(renderer.lead_target, 4u);
+  // A focus plans no edit lead.
+  renderer.lead_calls.clear();
+  scheduler.set_focus({{FocusSeed{.pixel = glm::vec2(3.0f, 4.0f), .radius = 2.0f}}});
+  EXPECT_EQ(renderer.lead_target, 0u);
+  scheduler.set_focus({});
+  renderer.lead_calls.clear();
+  // Without a lead nothing runs ahead.
+  scheduler.set_edit_lead(0);
+  scheduler.set_converged_spp(16);
+  scheduler.on_edit(Scene{}, ChangeSet{});
+  for (int s = 0; s < 8; ++s) scheduler.step();
+  EXPECT_EQ(renderer.lead_target, 0u);
+  EXPECT_TRUE(renderer.lead_calls.empty());
 }
 
 TEST(SchedulingInterface, HiprNeedsARendererWithItsStages) {

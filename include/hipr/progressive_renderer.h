@@ -59,6 +59,12 @@ class HiprStageRunner {
   // Of the last stage 1's active tiles, how many have a change or focus score: they lead its
   // order, the rest of the active set (an edit that activates every tile) follows them.
   virtual uint32_t seeded_tiles() const = 0;
+  // Of them, how many (not the focus's) hold a pixel that leads after the edit (a moved object,
+  // a surface the pixel no longer sees: docs/method.md#the-edits-lead).
+  virtual uint32_t lead_tiles() const = 0;
+  // After the last build_schedule: how many tiles stage 2 discovered besides the active ones
+  // (they follow the active tiles in the schedule).
+  virtual uint32_t discovered_tiles() const = 0;
 };
 
 class ProgressiveRenderer {
@@ -76,17 +82,18 @@ class ProgressiveRenderer {
   // those stage 2 rendered) and, with `then_resolve`, resolves their display.
   virtual void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
                                std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
-  // Brings the focus's tiles among schedule entries [offset, offset + count) to the focus target
-  // (set_sample_target; the other tiles are left alone) and, with `then_resolve`, resolves them.
-  virtual void render_focus_lead(uint32_t offset, uint32_t count,
-                                 std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
+  // Brings the focus's tiles and the pixels that lead after the edit among schedule entries
+  // [offset, offset + count) to their targets (set_sample_target; the rest is left alone) and,
+  // with `then_resolve`, resolves them.
+  virtual void render_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
   // Every pixel owes a restart: its next visit drops its old samples.
   virtual void mark_all_owed() = 0;
   // The scheduler's round target: from now on a visit brings each pixel to `target` samples
   // since its last restart, adding none where it has them (0: a visit adds samples_per_pixel,
   // whatever the pixel has). A round re-planned midway then still ends uniform. The tiles where
   // stage 1 saw the focus are brought to `focus_target` instead (0: `target`): they run ahead.
-  virtual void set_sample_target(uint32_t target, uint32_t focus_target = 0) = 0;
+  // The pixels stage 1 marked to lead after the edit are brought to at least `lead_target`.
+  virtual void set_sample_target(uint32_t target, uint32_t focus_target = 0, uint32_t lead_target = 0) = 0;
   // The fewest and the most samples a pixel has since its last restart (owed pixels count as
   // 0).
   virtual std::pair<uint32_t, uint32_t> sample_count_range() const = 0;

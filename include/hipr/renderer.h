@@ -124,10 +124,9 @@ class Renderer final : public ProgressiveRenderer {
   void set_schedule(std::span<const uint32_t> order) override;
   void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
                        std::optional<DisplayRule> then_resolve = std::nullopt) override;
-  void render_focus_lead(uint32_t offset, uint32_t count,
-                         std::optional<DisplayRule> then_resolve = std::nullopt) override;
+  void render_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve = std::nullopt) override;
   void mark_all_owed() override;
-  void set_sample_target(uint32_t target, uint32_t focus_target = 0) override;
+  void set_sample_target(uint32_t target, uint32_t focus_target = 0, uint32_t lead_target = 0) override;
   std::pair<uint32_t, uint32_t> sample_count_range() const override;  // reads the accumulation back
   ImageRGB image() const;                       // per-pixel mean radiance
   std::vector<uint32_t> sample_counts() const;  // per pixel

@@ -17,6 +17,9 @@ namespace hipr {
 
 // Visits the focus's tiles run ahead of the round unless set (Scheduler::set_focus_lead).
 inline constexpr uint32_t kDefaultFocusLead = 3;
+// Visits the pixels that lead after an edit get before the rest of the round unless set
+// (Scheduler::set_edit_lead).
+inline constexpr uint32_t kDefaultEditLead = 6;
 
 class Scheduler {
  public:
@@ -66,6 +69,13 @@ class Scheduler {
   void set_converged_spp(uint32_t spp);
   void set_focus_lead(uint32_t visits);
   uint32_t focus_lead() const { return m_focus_lead; }
+  // After an edit, the pixels stage 1 saw change most (those that show a moved, shown, hidden or
+  // deformed object, or a surface they no longer see: their fresh estimate is on screen from its
+  // first samples, with nothing to steady it) get `visits` more visits once the edit's tiles had
+  // their first, before the rest of the round (docs/method.md#the-edits-lead). Needs the converged
+  // count (set_converged_spp), which they never pass; 0: off. Policies other than hipr ignore it.
+  void set_edit_lead(uint32_t visits) { m_edit_lead = visits; }
+  uint32_t edit_lead() const { return m_edit_lead; }
 
   ImageRGB displayed_image() const { return m_renderer.displayed_image(); }
   // Samples rendered since the last edit, in full-frame 1-spp passes (the work unit of
@@ -113,6 +123,10 @@ class Scheduler {
   void planned();
   // The leading steps have passed the seeded entries: the focus's lead steps come next.
   void begin_lead();
+  // The first round reached the tiles after the discovered ones: the edit's lead steps come next.
+  void begin_edit_lead();
+  // Tiles per lead step.
+  uint32_t lead_step_tiles() const;
 
   ProgressiveRenderer& m_renderer;
   std::unique_ptr<SchedulingPolicy> m_policy;
@@ -141,6 +155,10 @@ class Scheduler {
   uint32_t m_lead_at = 0;     // leading entries [0, m_lead_at) hold the edit's and the focus's tiles
   bool m_lead_begun = false;  // the leading steps have passed them
   uint32_t m_focus_target = 0;  // what the focus's tiles are brought to (0: the round target)
+  uint32_t m_edit_lead = kDefaultEditLead;
+  uint32_t m_edit_lead_target = 0;  // what the pixels that lead after the edit are brought to (0: none)
+  std::optional<uint32_t> m_edit_lead_at;  // the schedule entry before which the edit's lead pass runs
+  bool m_edit_plan = false;         // the last plan was an edit's (not a new focus's)
   uint32_t m_converged_spp = 0;
   uint32_t m_focus_lead = kDefaultFocusLead;
 };

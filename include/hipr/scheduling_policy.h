@@ -67,6 +67,18 @@ class SchedulingPolicy {
     (void)renderer;
     return 0;
   }
+  // Of the last plan's seeded leading entries, how many hold pixels that lead after the edit
+  // (HiPR: stage 1's pixel-lead bits); 0: none, no edit lead.
+  virtual uint32_t lead_tiles(ProgressiveRenderer& renderer) {
+    (void)renderer;
+    return 0;
+  }
+  // After finish_leading: how many schedule entries after the leading ones hold tiles the
+  // leading steps found changed too (HiPR: discovered); the edit's lead waits for them.
+  virtual uint32_t discovered_entries(ProgressiveRenderer& renderer) {
+    (void)renderer;
+    return 0;
+  }
   // The user's focus changed (docs/method.md#focus; no edit: nothing restarts). A policy that
   // follows it keeps it for every later plan, re-plans now and returns its leading entries as
   // plan() does; the others return nothing and keep their order.

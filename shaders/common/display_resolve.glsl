@@ -32,6 +32,15 @@ bool resurfaced(uint index, DisplayTexel texel) {
 
 bool has_fresh_samples(PixelAccum accum) { return (accum.count & kPixelOwed) == 0u && (accum.count & kPixelCountMask) > 0u; }
 
+// The stale estimate is already an unbiased estimate of the scene since the last edit (relit by
+// linearity: relight.comp) with more samples than the pixel's n fresh ones: the weighing rules
+// keep it until the fresh count catches up (the gate that ends every schedule on the fresh
+// estimate alone) instead of judging it as a possibly wrong value, which let fresh noise through
+// wherever D exceeded V by chance. `immediate` shows f as always.
+bool keeps_current_stale(DisplayTexel texel, uint n) {
+  return u_push.rule != kDisplayImmediate && (texel.flags & kStaleCurrent) != 0u && n < texel.staleSamples;
+}
+
 // How many of the pixel's samples have a difference: all n while n <= the kept samples; 0 (no
 // difference estimate: blend judges the pixel) without kept samples or past them.
 uint differenced_samples(DisplayTexel texel, uint n) {
@@ -51,9 +60,14 @@ vec3 corrected_estimate(DifferenceRecord record, vec3 stale, vec3 fresh, uint c,
 }
 
 // The regression weight a of f against C per channel, -sum w d (old - s) / sum w (old - s)^2,
-// clamped to [-1, 1] (0 where no old sample strayed from s).
+// clamped to [kRegressionLow, 1] (0 where no old sample strayed from s). A recolour by k wants
+// 1 - k: the bound lets a channel grow up to 8x noise-free (the Cornell wall made blue: 18x in
+// blue), while a tile whose paths did not all scale alike (some through the recoloured wall,
+// some not) amplifies a stray old sample's noise by at most 7. With -63 such a pixel showed 48x
+// its value (CornellBox, one pixel near the floor, relMSE 1.1 -> 6.3 for a step).
+const float kRegressionLow = -7.0;
 vec3 regression_weight(vec3 cross, vec3 spread) {
-  return mix(vec3(0.0), clamp(-cross / max(spread, vec3(1e-30)), -1.0, 1.0), greaterThan(spread, vec3(0.0)));
+  return mix(vec3(0.0), clamp(-cross / max(spread, vec3(1e-30)), kRegressionLow, 1.0), greaterThan(spread, vec3(0.0)));
 }
 
 // Sums that overflowed (radiance near float's range) cannot judge noise: the fresh estimate is

@@ -32,6 +32,7 @@ HIPR_CONST uint kTileScored = 32u;     // stage 1 gave the tile a change or focu
 HIPR_CONST uint kTileReshow = 64u;     // within a resolve: show_display.comp rewrites the tile's pixels (set and cleared there)
 HIPR_CONST uint kTileReprojected = 128u;  // stage 1 after a camera edit: the tile's pixels were reprojected
 HIPR_CONST uint kTileMoved = 256u;        // ... and one of them moved on screen by kStillMotion or more, or was rejected
+HIPR_CONST uint kTileLead = 512u;         // stage 1: the tile may run ahead of the round (the focus, or a pixel that leads after an edit)
 HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
 // Stage 1's changed-record flags: bit 0 the record is in the changed set E, the bits above
 // its focus weight (kFocusWeightScale units; 0: not a focus).
@@ -415,6 +416,10 @@ struct TracePush {
   // With a round target: the target of the tiles flagged kTileFocus (the focus runs ahead of the
   // round, never past the count the render converges to); 0: sampleTarget.
   uint focusTarget;
+  // With a round target: the target of the pixels stage 1 marked in the pixel-lead bits (after an
+  // edit, those that show a moved, shown or hidden object or a surface they no longer see: their
+  // fresh estimate is on screen from its first samples; docs/method.md#the-edits-lead); 0: none.
+  uint leadTarget;
 };
 
 // A pinhole view as FrameParams holds it: what reproject_display.comp needs of the camera before

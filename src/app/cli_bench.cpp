@@ -57,6 +57,7 @@ struct BenchOptions {
   bool no_reproject = false;
   bool cold_start = false;  // measure the render of the scene as loaded, from nothing, first
   uint32_t focus_lead = kDefaultFocusLead;
+  uint32_t edit_lead = kDefaultEditLead;
 };
 
 // The edits' own JSON text, one per edit: with the scene's hash it names a scene state.
@@ -249,6 +250,7 @@ int run_bench(BenchOptions& o) {
   run_options.target_spp = o.common.spp;
   run_options.max_steps = o.steps;
   run_options.focus_lead = o.focus_lead;
+  run_options.edit_lead = o.edit_lead;
 
   const nlohmann::json recorded = {{"width", settings.width},
                                    {"height", settings.height},
@@ -265,6 +267,7 @@ int run_bench(BenchOptions& o) {
                                    {"steps", o.steps},
                                    {"drag_work_per_edit", o.drag},
                                    {"focus_lead", o.focus_lead},
+                                   {"edit_lead", o.edit_lead},
                                    {"max_depth", settings.max_depth},
                                    {"seed", settings.seed},
                                    {"sampler", sampler_name(settings.sampler)},
@@ -395,6 +398,9 @@ Command add_bench_command(CLI::App& app) {
                 "hipr: restart camera edits without reprojecting the image before them (for comparison)");
   cmd->add_option("--focus-lead", options->focus_lead,
                   "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
+      ->capture_default_str();
+  cmd->add_option("--edit-lead", options->edit_lead,
+                  "Visits the pixels that show what an edit moved (or a surface they no longer see) get ahead of the rest (0: none)")
       ->capture_default_str();
   cmd->add_flag("--cold-start", options->cold_start,
                 "First measure the scene as loaded rendered from nothing (with the focus of the script's first "

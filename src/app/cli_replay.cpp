@@ -58,6 +58,7 @@ struct ReplayOptions {
   bool no_reproject = false;
   std::string display;           // empty = the policy's own rule
   uint32_t focus_lead = kDefaultFocusLead;
+  uint32_t edit_lead = kDefaultEditLead;
   fs::path save;  // empty: the edited scene is not saved
 };
 
@@ -122,6 +123,7 @@ int run_replay(ReplayOptions& o) {
   scheduler.set_reproject(!o.no_reproject);
   scheduler.set_converged_spp(o.common.spp);
   scheduler.set_focus_lead(o.focus_lead);
+  scheduler.set_edit_lead(o.edit_lead);
   // Converge the scene as loaded; the last 1-spp pass is timed: the unit of the overhead share.
   for (uint32_t done = 0; done + 1 < o.common.spp; done += 16) renderer.add_samples_full_frame(std::min(16u, o.common.spp - 1 - done));
   const Timer pass_timer;
@@ -219,6 +221,9 @@ Command add_replay_command(CLI::App& app) {
                 "hipr: restart camera edits without reprojecting the image before them");
   cmd->add_option("--focus-lead", options->focus_lead,
                   "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
+      ->capture_default_str();
+  cmd->add_option("--edit-lead", options->edit_lead,
+                  "Visits the pixels that show what an edit moved (or a surface they no longer see) get ahead of the rest (0: none)")
       ->capture_default_str();
   cmd->add_option("--save", options->save,
                   "Also write the edited scene (after every edit) as glTF (.gltf or .glb); written before rendering");

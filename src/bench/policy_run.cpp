@@ -83,6 +83,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
   scheduler.set_reproject(options.reproject);
   scheduler.set_converged_spp(options.target_spp);
   scheduler.set_focus_lead(options.focus_lead);
+  scheduler.set_edit_lead(options.edit_lead);
   if (!options.focus.empty()) scheduler.set_focus(options.focus);  // what the user looked at before the edit
 
   PolicyRun run;
@@ -133,6 +134,7 @@ PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const Po
                       options.visit_spp);
   scheduler.set_converged_spp(options.target_spp);
   scheduler.set_focus_lead(options.focus_lead);
+  scheduler.set_edit_lead(options.edit_lead);
   PolicyRun run;
   double wall = 0.0;
   const auto evaluate = [&](uint32_t step) {

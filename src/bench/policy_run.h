@@ -29,6 +29,7 @@ struct PolicyRunOptions {
   std::vector<double> capture_work = {0.0, 0.25, 1.0};
   Focus focus;  // handed to the scheduler before the edit (docs/method.md#focus); empty: none
   uint32_t focus_lead = kDefaultFocusLead;  // visits the focus's tiles run ahead (Scheduler::set_focus_lead)
+  uint32_t edit_lead = kDefaultEditLead;    // visits the pixels an edit moved get ahead (Scheduler::set_edit_lead)
   // One entry per pixel, non-zero in the region whose error is also measured (focus_relmse);
   // empty: none.
   std::vector<uint8_t> focus_region;

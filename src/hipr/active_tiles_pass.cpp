@@ -33,8 +33,9 @@ ActiveTilesPass::ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, 
                      {abi::kMarkActiveTileChange, &tile_change},
                      {abi::kMarkActiveDisplay, &display},
                      {abi::kMarkActiveFocusDiscs, &m_focus_discs},
-                     {abi::kMarkActiveTileFocus, &tile_focus}},
-                    3 * sizeof(uint32_t), &scene.descriptor_set()) {
+                     {abi::kMarkActiveTileFocus, &tile_focus},
+                     {abi::kMarkActivePixelLead, &tiles.pixel_lead}},
+                    4 * sizeof(uint32_t), &scene.descriptor_set()) {
   tile_change.clear();
   tile_focus.clear();
   m_focus_discs.clear();
@@ -95,8 +96,8 @@ bool ActiveTilesPass::set_changed(const GpuScene& scene, const ChangeSet& change
   return replaced;
 }
 
-void ActiveTilesPass::record(VkCommandBuffer cmd, bool everything, bool reprojected) const {
-  const uint32_t push[3] = {m_disc_count, everything ? 1u : 0u, reprojected ? 1u : 0u};
+void ActiveTilesPass::record(VkCommandBuffer cmd, bool everything, bool reprojected, bool moved) const {
+  const uint32_t push[4] = {m_disc_count, everything ? 1u : 0u, reprojected ? 1u : 0u, moved ? 1u : 0u};
   m_mark_active.dispatch(cmd, push, groups_for(m_pixels));
 }
 

@@ -37,8 +37,10 @@ class ActiveTilesPass {
   // Records the marking (after the G-buffer of the edited scene is rendered); `everything` as
   // record_carry's kCarryEverything (a surface shown wrongly then scores nothing);
   // `reprojected`: the display was just reprojected (a camera edit): view-dependent surfaces
-  // score, and tiles whose pixels barely moved are marked to go last.
-  void record(VkCommandBuffer cmd, bool everything, bool reprojected = false) const;
+  // score, and tiles whose pixels barely moved are marked to go last. `moved`: the edit moved,
+  // showed, hid or deformed geometry: the pixels that show a changed element lead (kTileLead and
+  // the pixel-lead bits), besides those whose surface changed.
+  void record(VkCommandBuffer cmd, bool everything, bool reprojected = false, bool moved = false) const;
 
   // uint per GeometryRecord: kRecordChanged = in E, above it the focus weight (stage 2's
   // occlusion test reads it too: a focus's shadows are discovered as an edit's are)

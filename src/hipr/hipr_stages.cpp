@@ -39,7 +39,8 @@ uint32_t HiprStages::stage1_visibility(const ChangeSet& changes) {
   const bool everything = changes.camera || changes.environment || !LightReachPass::can_follow(changes);
   m_reach.set_changed(everything ? ChangeSet{} : changes);
   return mark_tiles(changes, everything ? abi::kCarryEverything : abi::kCarryEdit, true,
-                    m_reprojection && changes.camera_only() ? &changes.camera_before : nullptr);
+                    m_reprojection && changes.camera_only() ? &changes.camera_before : nullptr,
+                    changes.transforms || changes.geometry);
 }
 
 uint32_t HiprStages::stage1_focus() {
@@ -52,7 +53,7 @@ uint32_t HiprStages::stage1_focus() {
 void HiprStages::set_focus(const Focus& focus) { m_focus = focus; }
 
 uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer,
-                               const Camera* reproject_from) {
+                               const Camera* reproject_from, bool moved) {
   if (m_active.set_changed(m_parts.scene, changes, m_focus)) m_discovery.rebind();
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     if (render_gbuffer) {
@@ -68,7 +69,7 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
     }
     // After a reprojection the screen shows the new view: a pixel showing a surface it does not
     // see (a rejected one) scores, as after any edit.
-    m_active.record(cmd, carry_mode == abi::kCarryEverything && !reproject_from, reproject_from != nullptr);
+    m_active.record(cmd, carry_mode == abi::kCarryEverything && !reproject_from, reproject_from != nullptr, moved);
     vk::compute_to_compute_barrier(cmd);
     m_reach.record(cmd);
   });
@@ -77,10 +78,12 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
   const std::vector<uint32_t> flags = m_parts.tiles.flags.download_all<uint32_t>();
   uint32_t active = 0;
   m_seeded = 0;
+  m_lead_tiles = 0;
   for (uint32_t f : flags) {
     if ((f & abi::kTileActive) == 0) continue;
     ++active;
     if (f & abi::kTileScored) ++m_seeded;
+    if ((f & abi::kTileLead) && (f & abi::kTileFocus) == 0) ++m_lead_tiles;
   }
   return active;
 }
@@ -93,6 +96,7 @@ void HiprStages::stage2_discover(uint32_t offset, uint32_t count, uint32_t sampl
   push.requireFlags = abi::kTileActive;
   push.sampleTarget = m_parts.sample_target.round;
   push.focusTarget = m_parts.sample_target.focus;
+  push.leadTarget = m_parts.sample_target.lead;
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     m_discovery.record(cmd, push);
     if (then_resolve) m_parts.resolve.record(cmd, {push.listOffset, push.tileCount, push.requireFlags, 0}, *then_resolve);
@@ -101,6 +105,18 @@ void HiprStages::stage2_discover(uint32_t offset, uint32_t count, uint32_t sampl
 
 void HiprStages::build_schedule() {
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m_schedule.record(cmd); });
+  // The discovered tiles that changed strongly: the edit's lead waits for their first visit
+  // (Scheduler::begin_edit_lead). Weights fall off smoothly from the strongest (a moved object's
+  // old shadow) to faint colour bleeding that reaches everywhere in a closed room; a sixteenth
+  // of the strongest is where they stop being worth more than the lead.
+  const std::vector<uint32_t> flags = m_parts.tiles.flags.download_all<uint32_t>();
+  const std::vector<uint64_t> weights = m_tile_weights.download_all<uint64_t>();
+  uint64_t strongest = 0;
+  for (size_t t = 0; t < flags.size(); ++t)
+    if ((flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive)) strongest = std::max(strongest, weights[t]);
+  m_discovered = 0;
+  for (size_t t = 0; t < flags.size(); ++t)
+    if ((flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive) && weights[t] * 16 >= strongest) ++m_discovered;
 }
 
 void HiprStages::record_warm_up(VkCommandBuffer cmd) {

@@ -21,6 +21,7 @@ namespace hipr {
 struct SampleTarget {
   uint32_t round = 0;
   uint32_t focus = 0;
+  uint32_t lead = 0;
 };
 
 // What the stages share with the rest of the renderer.
@@ -48,6 +49,8 @@ class HiprStages final : public HiprStageRunner {
   void set_focus(const Focus& focus) override;
   uint32_t stage1_focus() override;
   uint32_t seeded_tiles() const override { return m_seeded; }
+  uint32_t lead_tiles() const override { return m_lead_tiles; }
+  uint32_t discovered_tiles() const override { return m_discovered; }
 
   // Recompiles stage 2's kernel with other kernel features.
   void set_kernel_features(uint32_t features) {
@@ -66,9 +69,9 @@ class HiprStages final : public HiprStageRunner {
  private:
   // Records stage 1's carry (kCarry* mode) and marking, then counts the active tiles. With
   // `reproject_from` (a camera edit and nothing else) the display is reprojected from that view
-  // into the new G-buffer's first.
+  // into the new G-buffer's first. `moved`: the edit moved geometry (ActiveTilesPass::record).
   uint32_t mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer,
-                      const Camera* reproject_from = nullptr);
+                      const Camera* reproject_from = nullptr, bool moved = false);
 
   RenderParts m_parts;
   vk::Buffer m_tile_weights;  // uint64 per tile: W(T) x abi::kWeightScale
@@ -79,6 +82,8 @@ class HiprStages final : public HiprStageRunner {
   SchedulePass m_schedule;
   Focus m_focus;          // marked by every stage 1
   uint32_t m_seeded = 0;  // active tiles with a change or focus score at the last stage 1
+  uint32_t m_lead_tiles = 0;  // of them, tiles with a pixel that leads after the edit
+  uint32_t m_discovered = 0;  // at the last build_schedule, discovered tiles that are not active
   bool m_reprojection = true;
 };
 

@@ -87,6 +87,8 @@ class HiprPolicy final : public SchedulingPolicy {
   }
   void finish_leading(ProgressiveRenderer& renderer) override { stages_of(renderer).build_schedule(); }
   uint32_t seeded_leading(ProgressiveRenderer& renderer) override { return stages_of(renderer).seeded_tiles(); }
+  uint32_t lead_tiles(ProgressiveRenderer& renderer) override { return stages_of(renderer).lead_tiles(); }
+  uint32_t discovered_entries(ProgressiveRenderer& renderer) override { return stages_of(renderer).discovered_tiles(); }
   // The focus is a changed set for ordering only: stage 1 marks where it is seen (after what
   // an edit left unrendered), stage 2 discovers from there, stage 3 orders the rest outward.
   std::optional<uint32_t> refocus(ProgressiveRenderer& renderer, const Focus& focus) override {

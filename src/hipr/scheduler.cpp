@@ -55,6 +55,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   if (HiprStageRunner* stages = m_renderer.hipr_stages()) stages->set_reprojection(m_reproject);
   m_leading = std::min(m_policy->plan(m_renderer, changes), m_tile_count);
   m_leading_cursor = 0;
+  m_edit_plan = true;
   planned();
   m_renderer.mark_all_owed();
   m_times.plan_seconds = schedule_timer.seconds();
@@ -67,11 +68,12 @@ std::optional<DisplayRule> Scheduler::step_display_rule() const {
 
 void Scheduler::step() {
   const Timer step_timer;
+  if (m_edit_lead_at && !lead_pass_pending() && !leading_steps_pending() && m_cursor >= *m_edit_lead_at) begin_edit_lead();
   const bool first_visit = m_first_round && m_edited && !m_policy->whole_passes();
   const uint32_t spp = first_visit ? m_first_visit_spp : m_visit_spp;
   if (lead_pass_pending()) {
-    const uint32_t count = std::min(m_tiles_per_step, m_lead_end - m_lead_cursor);
-    m_renderer.render_focus_lead(m_lead_cursor, count, step_display_rule());
+    const uint32_t count = std::min(lead_step_tiles(), m_lead_end - m_lead_cursor);
+    m_renderer.render_lead(m_lead_cursor, count, step_display_rule());
     m_times.step_seconds += step_timer.seconds();
     m_times.steps += 1;
     m_lead_cursor += count;
@@ -94,6 +96,9 @@ void Scheduler::step() {
       m_policy->finish_leading(m_renderer);
       m_times.sort_seconds += timer.seconds();
       m_cursor = m_leading;
+      // The edit's lead comes once the tiles stage 2 discovered had their first visit too.
+      if (m_edit_plan && m_edit_lead > 0 && m_converged_spp > *m_round_target && m_policy->lead_tiles(m_renderer) > 0)
+        m_edit_lead_at = m_leading + m_policy->discovered_entries(m_renderer);
       if (!lead_pass_pending() && m_cursor == m_tile_count) end_round();  // every tile was a leading one
     }
     return;
@@ -108,6 +113,7 @@ void Scheduler::step() {
 void Scheduler::end_round() {
   m_cursor = 0;
   m_first_round = false;
+  m_edit_lead_at.reset();  // a lead the first round did not reach: every pixel gets more now
   if (m_round_target) set_round_target(*m_round_target + m_visit_spp);
   // A whole-pass policy shows a whole pass when it completes, as a full-frame progressive viewer
   // presents each frame. Like every policy's per-step display pass, this counts as rendering.
@@ -121,13 +127,15 @@ void Scheduler::set_round_target(uint32_t target) {
   m_focus_target = 0;
   if (m_focus_ahead && m_follows_focus && !m_focus.empty() && m_focus_lead > 0 && m_converged_spp > target)
     m_focus_target = std::min(target + m_focus_lead * m_visit_spp, m_converged_spp);
-  m_renderer.set_sample_target(target, m_focus_target);
+  m_renderer.set_sample_target(target, m_focus_target, m_edit_lead_target);
 }
 
 void Scheduler::planned() {
   m_focus_ahead = false;  // until the leading steps have visited the focus once
   m_lead_begun = false;
   m_lead_cursor = m_lead_end = 0;
+  m_edit_lead_target = 0;
+  m_edit_lead_at.reset();
   m_lead_at = std::min(m_policy->seeded_leading(m_renderer), m_leading);
   if (m_round_target) set_round_target(*m_round_target);
 }
@@ -141,6 +149,24 @@ void Scheduler::begin_lead() {
   set_round_target(*m_round_target);
   m_lead_cursor = 0;
   m_lead_end = m_focus_target ? m_lead_at : 0;
+}
+
+uint32_t Scheduler::lead_step_tiles() const {
+  // The edit's lead gives a tile's marked pixels several visits at once: fewer tiles per step
+  // keep a step's work near a first visit's (the display is resolved, and a viewer presents,
+  // after each step).
+  if (m_edit_lead_target == 0 || m_edit_lead == 0) return m_tiles_per_step;
+  return std::max(1u, m_tiles_per_step * m_first_visit_spp / (m_edit_lead * m_visit_spp));
+}
+
+void Scheduler::begin_edit_lead() {
+  // The pixels that lead after the edit are brought to the lead target in a pass over the
+  // leading entries that hold them (once per edit: the target stays, and the rounds pass it).
+  m_edit_lead_at.reset();
+  m_edit_lead_target = std::min(*m_round_target + m_edit_lead * m_visit_spp, m_converged_spp);
+  set_round_target(*m_round_target);
+  m_lead_cursor = 0;
+  m_lead_end = m_lead_at;
 }
 
 void Scheduler::set_converged_spp(uint32_t spp) {
@@ -171,6 +197,7 @@ void Scheduler::set_focus(const Focus& focus) {
   m_cursor = 0;
   m_leading = std::min(*leading, m_tile_count);
   m_leading_cursor = 0;
+  m_edit_plan = false;
   planned();
   m_times.focus_seconds += timer.seconds();
 }

@@ -124,6 +124,7 @@ struct Renderer::Impl {
     push.skipFlags = skip;
     push.sampleTarget = sample_target.round;
     push.focusTarget = sample_target.focus;
+    push.leadTarget = sample_target.lead;
     ctx.submit_and_wait([&](VkCommandBuffer cmd) {
       trace.record(cmd, push);
       if (then_resolve) resolve.record(cmd, {offset, count, require, skip}, *then_resolve);
@@ -211,13 +212,13 @@ void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples
   m->trace_entries(offset, count, samples_per_pixel, 0u, skip_active ? abi::kTileActive : 0u, then_resolve);
 }
 
-void Renderer::render_focus_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve) {
-  if (m->sample_target.focus == 0) return;
-  m->trace_entries(offset, count, 1, abi::kTileFocus, 0u, then_resolve);
+void Renderer::render_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve) {
+  if (m->sample_target.focus == 0 && m->sample_target.lead == 0) return;
+  m->trace_entries(offset, count, 1, abi::kTileLead, 0u, then_resolve);
 }
 
-void Renderer::set_sample_target(uint32_t target, uint32_t focus_target) {
-  m->sample_target = {target, focus_target};
+void Renderer::set_sample_target(uint32_t target, uint32_t focus_target, uint32_t lead_target) {
+  m->sample_target = {target, focus_target, lead_target};
 }
 
 std::pair<uint32_t, uint32_t> Renderer::sample_count_range() const {

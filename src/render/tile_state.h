@@ -31,6 +31,9 @@ class TileState {
   void set_background(const std::vector<uint32_t>& mask);
 
   vk::Buffer schedule, flags, background;
+  // One bit per pixel (row-major, 32 per uint): the pixel leads after the edit (HiPR's stage 1
+  // sets it; the trace kernel brings such pixels to the edit's lead target).
+  vk::Buffer pixel_lead;
 
  private:
   uint32_t m_tile_size, m_tiles_x, m_tiles_y;

@@ -31,7 +31,8 @@ TracePass::TracePass(const vk::Context& ctx, const GpuScene& scene, const TileSt
                  {abi::kTraceGroupSums, &film.group_sums},
                  {abi::kTraceMaterialGroups, &scene.material_groups},
                  {abi::kTraceDifference, &film.difference},
-                 {abi::kTraceDisplay, &display}},
+                 {abi::kTraceDisplay, &display},
+                 {abi::kTracePixelLead, &tiles.pixel_lead}},
       m_difference(film.keeps_difference()),
       m_discovery(!discovery.empty()) {
   m_bindings.insert(m_bindings.end(), discovery.begin(), discovery.end());

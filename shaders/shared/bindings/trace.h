@@ -19,6 +19,7 @@ HIPR_CONST uint kTraceGroupSums = 8u;       // vec3 per pixel and light group: t
 HIPR_CONST uint kTraceMaterialGroups = 9u;  // uint per material: its emission's light group, or kInvalidIndex
 HIPR_CONST uint kTraceDifference = 10u;     // DifferenceRecord per pixel (HIPR_DIFFERENCE 1)
 HIPR_CONST uint kTraceDisplay = 11u;        // DisplayTexel per pixel, read: the stale estimate (HIPR_DIFFERENCE 1)
+HIPR_CONST uint kTracePixelLead = 12u;      // one bit per pixel (row-major, 32 per uint): it leads after the edit
 // Stage 2 only (HIPR_DISCOVERY 1, common/discovery.glsl)
 HIPR_CONST uint kTraceGBuffer = 5u;         // GBufferTexel per pixel of the edited scene
 HIPR_CONST uint kTraceChangedRecords = 6u;  // uint per GeometryRecord: 1 = in the changed set E

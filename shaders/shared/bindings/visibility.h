@@ -23,6 +23,7 @@ HIPR_CONST uint kMarkActiveTileChange = 4u;      // uint per tile: how much of i
 HIPR_CONST uint kMarkActiveDisplay = 5u;         // DisplayTexel per pixel: which surface the screen shows
 HIPR_CONST uint kMarkActiveFocusDiscs = 6u;      // FocusDisc[kMaxFocusDiscs]: screen discs of the focus
 HIPR_CONST uint kMarkActiveTileFocus = 7u;       // uint per tile: summed focus weight of its pixels
+HIPR_CONST uint kMarkActivePixelLead = 8u;       // one bit per pixel: it leads after the edit (set or cleared here)
 // light_reach.comp
 HIPR_CONST uint kReachGBuffer = 0u;     // GBufferTexel per pixel, this scene state
 HIPR_CONST uint kReachLights = 1u;      // Light[2 x kMaxReachLights]: each changed light before, then after

@@ -145,6 +145,9 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--focus-lead", v.focus_lead,
                   "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
       ->capture_default_str();
+  cmd->add_option("--edit-lead", v.edit_lead,
+                  "Visits the pixels that show what an edit moved (or a surface they no longer see) get ahead of the rest (0: none)")
+      ->capture_default_str();
   cmd->add_flag_function("--no-focus", [&v](int64_t) { v.focus_selection = false; },
                          "hipr does not start from the selected object (the HiPR panel's \"focus: selection\")");
   add_common_options(*cmd, v.common);

@@ -132,6 +132,10 @@ void hipr_section(Session& session, ViewerState& state) {
   int lead = int(settings.focus_lead);
   if (ImGui::SliderInt("focus lead", &lead, 0, 16)) session.set_focus_lead(uint32_t(std::max(lead, 0)));
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("visits the focus runs ahead of the rest (0: it only orders)");
+  int edit_lead = int(settings.edit_lead);
+  if (ImGui::SliderInt("edit lead", &edit_lead, 0, 16)) session.set_edit_lead(uint32_t(std::max(edit_lead, 0)));
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("after an edit, visits the pixels of a moved object (or a surface they no longer see) get ahead");
   ImGui::InputInt("n (tile px)", &state.tile_size_input);
   state.tile_size_input = std::clamp(state.tile_size_input, 1, 256);
   ImGui::SameLine();

@@ -37,6 +37,7 @@ std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy po
   scheduler->set_reproject(m_settings.reproject);
   scheduler->set_converged_spp(m_settings.spp);  // rendering pauses there: the focus never passes it
   scheduler->set_focus_lead(m_settings.focus_lead);
+  scheduler->set_edit_lead(m_settings.edit_lead);
   return scheduler;
 }
 
@@ -180,6 +181,11 @@ const std::vector<uint32_t>& Session::instance_ids() {
 Renderer::PixelHit Session::pick(uint32_t x, uint32_t y) {
   ensure_gbuffer();
   return m_renderer->gbuffer_at(x, y);
+}
+
+void Session::set_edit_lead(uint32_t visits) {
+  m_settings.edit_lead = visits;
+  m_scheduler->set_edit_lead(visits);
 }
 
 void Session::set_focus_lead(uint32_t visits) {

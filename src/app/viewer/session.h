@@ -30,6 +30,7 @@ struct SessionSettings {
   bool relight = true;  // relighting by linearity at light edits (Scheduler::set_relight)
   bool reproject = true;  // reprojection at camera moves (Scheduler::set_reproject)
   uint32_t focus_lead = kDefaultFocusLead;  // visits the focus's tiles run ahead (Scheduler::set_focus_lead)
+  uint32_t edit_lead = kDefaultEditLead;    // visits the pixels an edit moved get ahead (Scheduler::set_edit_lead)
 };
 
 // How one change reached the screen: the feedback latency of the measurements.
@@ -110,6 +111,7 @@ class Session {
   void set_relight(bool relight);  // from the next edit on
   void set_reproject(bool reproject);  // from the next camera move on
   void set_focus_lead(uint32_t visits);  // at once
+  void set_edit_lead(uint32_t visits);   // from the next edit
   void set_tile_size(uint32_t tile_size);
   void set_sampler(Sampler sampler);  // rebuilds the renderer: the image restarts
   void set_hipr_parameters(const HiprParameters& parameters);

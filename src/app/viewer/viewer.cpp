@@ -84,6 +84,7 @@ class Viewer {
     settings.relight = options.relight;
     settings.reproject = options.reproject;
     settings.focus_lead = options.focus_lead;
+    settings.edit_lead = options.edit_lead;
     settings.display = options.display_rule;
     settings.spp = options.common.spp;
     m_state.open_path = scene.source.string();

@@ -42,6 +42,7 @@ struct ViewerOptions {
   int select = -1;                   // node selected at start (-1: none)
   bool focus_selection = true;       // hipr starts from the selected object (docs/method.md#focus)
   uint32_t focus_lead = kDefaultFocusLead;  // visits the focus's tiles run ahead of the rest
+  uint32_t edit_lead = kDefaultEditLead;    // visits the pixels an edit moved get ahead of the rest
 };
 
 // Runs the viewer on a loaded scene until the window closes or the frame count is reached.
