@@ -90,7 +90,8 @@ void main() {
     atomicAnd(b_pixel_lead[index / 32u], ~bit);
   const uint focus = focus_weight(pixel, now);
   if (!edited && focus == 0u) return;
-  atomicOr(b_tile_flags[tile], kTileActive | kTileScored | (focus != 0u ? kTileFocus | kTileLead : 0u) | (leads ? kTileLead : 0u));
+  atomicOr(b_tile_flags[tile],
+           kTileActive | kTileScored | (focus != 0u ? kTileFocus | kTileLead : 0u) | (leads ? kTileLead : 0u));
   if (edited) atomicAdd(b_tile_change[tile], now != before || wrongSurface ? 2u : 1u);
   if (focus != 0u) atomicAdd(b_tile_focus[tile], focus);
 }

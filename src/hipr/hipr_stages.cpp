@@ -113,10 +113,12 @@ void HiprStages::build_schedule() {
   const std::vector<uint64_t> weights = m_tile_weights.download_all<uint64_t>();
   uint64_t strongest = 0;
   for (size_t t = 0; t < flags.size(); ++t)
-    if ((flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive)) strongest = std::max(strongest, weights[t]);
+    if ((flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive))
+      strongest = std::max(strongest, weights[t]);
   m_discovered = 0;
   for (size_t t = 0; t < flags.size(); ++t)
-    if ((flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive) && weights[t] * 16 >= strongest) ++m_discovered;
+    if ((flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive) && weights[t] * 16 >= strongest)
+      ++m_discovered;
 }
 
 void HiprStages::record_warm_up(VkCommandBuffer cmd) {

@@ -68,7 +68,8 @@ std::optional<DisplayRule> Scheduler::step_display_rule() const {
 
 void Scheduler::step() {
   const Timer step_timer;
-  if (m_edit_lead_at && !lead_pass_pending() && !leading_steps_pending() && m_cursor >= *m_edit_lead_at) begin_edit_lead();
+  if (m_edit_lead_at && !lead_pass_pending() && !leading_steps_pending() && m_cursor >= *m_edit_lead_at)
+    begin_edit_lead();
   const bool first_visit = m_first_round && m_edited && !m_policy->whole_passes();
   const uint32_t spp = first_visit ? m_first_visit_spp : m_visit_spp;
   if (lead_pass_pending()) {

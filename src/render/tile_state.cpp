@@ -20,7 +20,8 @@ TileState::TileState(const vk::Context& ctx, const RenderSettings& s)
   schedule = tile_buffer(ctx, count());
   flags = tile_buffer(ctx, count());
   background = tile_buffer(ctx, count());
-  pixel_lead = vk::Buffer(ctx, (size_t(s.width) * s.height + 31) / 32 * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  pixel_lead =
+      vk::Buffer(ctx, (size_t(s.width) * s.height + 31) / 32 * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   flags.clear();
   pixel_lead.clear();
   m_all.resize(count());
