@@ -36,26 +36,31 @@ else
   echo "(no $shared: the real-scene benchmarks are skipped)"
 fi
 
-# The difference estimate's ablation: hipr with the blend display rule (what it refines) on the
-# same edits. Results in OUTDIR/blend_<scene>.
+# Ablations on the same edits: hipr with the blend display rule (what the difference estimate
+# refines), in OUTDIR/blend_<scene>, and hipr without the edit's lead (--edit-lead 0), in
+# OUTDIR/nolead_<scene>.
 ablate() {
-  local name=$1
-  shift
-  echo "== blend $name"
-  rm -rf "${out:?}/blend_$name"
-  build/hipr bench "$@" -o "$out/blend_$name" --width "$size" --height "$size" --spp "$spp" --policies hipr \
-    --display blend
+  local variant=$1 name=$2
+  shift 2
+  local flags=(--display blend)
+  [ "$variant" = nolead ] && flags=(--edit-lead 0)
+  echo "== $variant $name"
+  rm -rf "${out:?}/${variant}_$name"
+  build/hipr bench "$@" -o "$out/${variant}_$name" --width "$size" --height "$size" --spp "$spp" --policies hipr \
+    "${flags[@]}"
 }
-ablate cornell_box assets/scenes/cornell_box.gltf assets/scenes/cornell_box.edits.json
-ablate cornell_sphere assets/scenes/cornell_sphere.glb assets/scenes/cornell_sphere.edits.json
-if [ -d "$shared" ]; then
-  ablate CornellBox "$shared/CornellBox/cornellBox.gltf" tools/bench/CornellBox.edits.json
-  ablate GlassVaseFlowers "$shared/GlassVaseFlowers/GlassVaseFlowers.glb" tools/bench/GlassVaseFlowers.edits.json \
-    --env "$studio"
-  ablate SheenChair "$shared/SheenChair/SheenChair.gltf" tools/bench/SheenChair.edits.json --env "$studio"
-  ablate LightsPunctualLamp "$shared/LightsPunctualLamp/LightsPunctualLamp.gltf" \
-    tools/bench/LightsPunctualLamp.edits.json
-fi
+for variant in blend nolead; do
+  ablate $variant cornell_box assets/scenes/cornell_box.gltf assets/scenes/cornell_box.edits.json
+  ablate $variant cornell_sphere assets/scenes/cornell_sphere.glb assets/scenes/cornell_sphere.edits.json
+  if [ -d "$shared" ]; then
+    ablate $variant CornellBox "$shared/CornellBox/cornellBox.gltf" tools/bench/CornellBox.edits.json
+    ablate $variant GlassVaseFlowers "$shared/GlassVaseFlowers/GlassVaseFlowers.glb" \
+      tools/bench/GlassVaseFlowers.edits.json --env "$studio"
+    ablate $variant SheenChair "$shared/SheenChair/SheenChair.gltf" tools/bench/SheenChair.edits.json --env "$studio"
+    ablate $variant LightsPunctualLamp "$shared/LightsPunctualLamp/LightsPunctualLamp.gltf" \
+      tools/bench/LightsPunctualLamp.edits.json
+  fi
+done
 
 # Drags: 20 small moves in a row, one every 1/16 of a frame's work, in steps of 1/64 of the frame
 # (as the viewer spends a frame's budget), for hipr and full.

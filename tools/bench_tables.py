@@ -141,19 +141,22 @@ def focus_table(focuses):
     return lines
 
 
-def difference_table(summaries, blends):
-    """hipr with its difference estimate (the default display) against hipr with blend (the
-    ablation, OUTDIR/blend_<scene>) and full: relMSE and FLIP AUC(1), relMSE AUC(4)."""
+def difference_table(summaries, blends, leads):
+    """hipr (the difference estimate, the edit's lead) against its ablations, hipr with blend
+    (OUTDIR/blend_<scene>) and hipr without the lead (OUTDIR/nolead_<scene>, when measured), and
+    full: relMSE and FLIP AUC(1), relMSE AUC(4)."""
     keys = [("auc_relmse", "relMSE AUC(1)"), ("auc_flip", "FLIP AUC(1)"), ("auc_relmse_4", "relMSE AUC(4)")]
-    lines = ["#### After an edit: hipr (difference estimate) against hipr with blend and full", "",
-             "| scene | edit | " + " | ".join(f"{t}: hipr | blend | full | hipr / full | blend / full"
-                                            for _, t in keys) + " |",
-             "|---|---|" + "---:|" * (5 * len(keys))]
-    ratios = {key: ([], []) for key, _ in keys}
+    lead = bool(leads)
+    columns = "hipr | blend | full | hipr / full | blend / full" + (" | no lead / full" if lead else "")
+    lines = ["#### After an edit: hipr against hipr with blend, hipr without the edit's lead and full", "",
+             "| scene | edit | " + " | ".join(f"{t}: {columns}" for _, t in keys) + " |",
+             "|---|---|" + "---:|" * ((6 if lead else 5) * len(keys))]
+    ratios = {key: ([], [], []) for key, _ in keys}
     for scene, summary in summaries:
-        if scene not in blends:
+        if scene not in blends or (lead and scene not in leads):
             continue
-        for edit, ablated in zip(summary["edits"], blends[scene]["edits"]):
+        unled = leads[scene]["edits"] if lead else [None] * len(summary["edits"])
+        for edit, ablated, without in zip(summary["edits"], blends[scene]["edits"], unled):
             p, q = edit["policies"], ablated["policies"]
             if "hipr" not in p or "full" not in p or "hipr" not in q:
                 continue
@@ -163,14 +166,19 @@ def difference_table(summaries, blends):
                 cells += [f"{h:.4g}", f"{b:.4g}", f"{f:.4g}", f"{h / f:.3f}", f"{b / f:.3f}"]
                 ratios[key][0].append(h / f)
                 ratios[key][1].append(b / f)
+                if lead:
+                    n = num(without["policies"]["hipr"][key])
+                    cells.append(f"{n / f:.3f}")
+                    ratios[key][2].append(n / f)
             lines.append(f"| {scene} | {edit['name']} | " + " | ".join(cells) + " |")
     lines.append("")
     for key, title in keys:
-        with_diff, with_blend = ratios[key]
-        if with_diff:
-            lines.append(f"- {title} hipr / full, geometric mean over {len(with_diff)} edits: "
-                         f"{geomean(with_diff):.3f} (blend: {geomean(with_blend):.3f}); "
-                         f"worst {max(with_diff):.3f}")
+        with_all, with_blend, without_lead = ratios[key]
+        if with_all:
+            lines.append(f"- {title} hipr / full, geometric mean over {len(with_all)} edits: "
+                         f"{geomean(with_all):.3f} (blend: {geomean(with_blend):.3f}"
+                         + (f"; no lead: {geomean(without_lead):.3f}" if without_lead else "")
+                         + f"); worst {max(with_all):.3f}")
     return lines
 
 
@@ -203,12 +211,14 @@ def throughput_lines(folder):
 def main(argv):
     if len(argv) != 2:
         sys.exit(__doc__)
-    summaries, drags, lights, blends, focuses = [], [], {}, {}, []
+    summaries, drags, lights, blends, leads, focuses = [], [], {}, {}, {}, []
     for path in sorted(glob.glob(os.path.join(argv[1], "*", "summary.json"))):
         with open(path) as f:
             name = os.path.basename(os.path.dirname(path))
             if name.startswith("blend_"):
                 blends[name.removeprefix("blend_")] = json.load(f)
+            elif name.startswith("nolead_"):
+                leads[name.removeprefix("nolead_")] = json.load(f)
             elif name.startswith("focus_"):
                 focuses.append((name.removeprefix("focus_"), json.load(f)))
             elif name.startswith("lights_"):
@@ -223,7 +233,7 @@ def main(argv):
         out += auc_table(summaries, "auc_relmse_4", "relMSE AUC over the first 4 work units") + [""]
         out += ratio_lines(summaries) + [""]
     if summaries and blends:
-        out += difference_table(summaries, blends) + [""]
+        out += difference_table(summaries, blends, leads) + [""]
         out += feedback_table(summaries) + [""]
     if drags:
         out += drag_table(drags) + [""]
