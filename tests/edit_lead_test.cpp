@@ -18,13 +18,6 @@ namespace {
 
 RenderSettings settings() { return test::render_settings(64, 48, 8, 6, 33); }
 
-ImageRGB fresh(const Scene& scene, uint32_t spp) {
-  Renderer renderer(test::context(), scene, settings());
-  renderer.add_samples_full_frame(spp);
-  renderer.resolve_display_all(DisplayRule::Immediate);
-  return renderer.displayed_image();
-}
-
 // The index of `node`'s instance in Scene::instances() (what the G-buffer reports).
 uint32_t instance_of(const Scene& scene, const char* node) {
   const size_t index = find_node(scene, node);
@@ -79,7 +72,7 @@ TEST(EditLead, AMovedObjectsPixelsRunAheadThenEveryPixelEndsEven) {
   }
   const std::vector<uint32_t> final_counts = renderer.sample_counts();
   EXPECT_TRUE(std::all_of(final_counts.begin(), final_counts.end(), [&](uint32_t c) { return c == spp; }));
-  EXPECT_EQ(scheduler.displayed_image().rgb, fresh(scene, spp).rgb);
+  EXPECT_EQ(scheduler.displayed_image().rgb, test::full_frame_display(scene, s, spp).rgb);
 }
 
 // A recolour moves nothing: its pixels keep their difference estimate (two kept samples) and

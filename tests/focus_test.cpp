@@ -26,12 +26,7 @@ RenderSettings settings() { return test::render_settings(64, 48, 8, 6, 21); }
 Scene cornell() { return load_scene(test::asset("cornell_box.gltf")); }
 
 // A full-frame render of `scene`, as a display shows it.
-ImageRGB fresh(const Scene& scene, uint32_t spp) {
-  Renderer renderer(test::context(), scene, settings());
-  renderer.add_samples_full_frame(spp);
-  renderer.resolve_display_all(DisplayRule::Immediate);
-  return renderer.displayed_image();
-}
+ImageRGB fresh(const Scene& scene, uint32_t spp) { return test::full_frame_display(scene, settings(), spp); }
 
 void run_to_convergence(Scheduler& scheduler, uint32_t spp) {
   for (int s = 0; s < 10000 && scheduler.work_since_edit() < double(spp); ++s) scheduler.step();

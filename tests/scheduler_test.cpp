@@ -24,13 +24,8 @@ void run_to_convergence(Scheduler& scheduler, uint32_t spp) {
   for (int s = 0; s < 10000 && scheduler.work_since_edit() < double(spp); ++s) scheduler.step();
 }
 
-// A full-frame render of `scene`, as a display shows it (the same GPU division of the same sums).
-ImageRGB fresh(const Scene& scene, uint32_t spp) {
-  Renderer renderer(test::context(), scene, settings());
-  renderer.add_samples_full_frame(spp);
-  renderer.resolve_display_all(DisplayRule::Immediate);
-  return renderer.displayed_image();
-}
+// A full-frame render of `scene`, as a display shows it.
+ImageRGB fresh(const Scene& scene, uint32_t spp) { return test::full_frame_display(scene, settings(), spp); }
 
 struct PolicyCase {
   Policy policy;

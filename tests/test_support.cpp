@@ -154,6 +154,13 @@ bool all_finite(const ImageRGB& image) {
   return true;
 }
 
+ImageRGB full_frame_display(const Scene& scene, const RenderSettings& settings, uint32_t spp) {
+  Renderer renderer(context(), scene, settings);
+  renderer.add_samples_full_frame(spp);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  return renderer.displayed_image();
+}
+
 ImageRGB render_finite(const Scene& scene, const RenderSettings& settings, uint32_t spp) {
   Renderer renderer(context(), scene, settings);
   renderer.add_samples_full_frame(spp);

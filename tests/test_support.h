@@ -54,6 +54,10 @@ bool all_finite(const ImageRGB& image);
 // came out NaN or infinite and that the image is finite.
 ImageRGB render_finite(const Scene& scene, const RenderSettings& settings, uint32_t spp);
 
+// A full-frame render of `spp` samples per pixel as a display shows it (the same GPU division of
+// the same sums): what every schedule must end on, bit for bit.
+ImageRGB full_frame_display(const Scene& scene, const RenderSettings& settings, uint32_t spp);
+
 }  // namespace hipr::test
 
 namespace hipr::test {
