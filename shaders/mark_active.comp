@@ -5,7 +5,7 @@
 // the starting point of a drag).
 // Reads: both G-buffers, the changed-record flags, the surface each displayed pixel depicts.
 // Writes: kTileActive | kTileScored (and kTileFocus where the focus is, kTileLead there and where a
-// pixel leads) into the tile flags, each pixel's bit of the pixel-lead bits, and
+// pixel leads, kTileEditLead there too) into the tile flags, each pixel's bit of the pixel-lead bits, and
 // per tile a change score that orders the active tiles: 1 per pixel showing a changed element,
 // 2 where the pixel shows another surface than before or than the screen shows (an object moved
 // in or out: the largest changes on screen, while a moved object's own inside often looks much
@@ -91,7 +91,7 @@ void main() {
   const uint focus = focus_weight(pixel, now);
   if (!edited && focus == 0u) return;
   atomicOr(b_tile_flags[tile],
-           kTileActive | kTileScored | (focus != 0u ? kTileFocus | kTileLead : 0u) | (leads ? kTileLead : 0u));
+           kTileActive | kTileScored | (focus != 0u ? kTileFocus | kTileLead : 0u) | (leads ? kTileLead | kTileEditLead : 0u));
   if (edited) atomicAdd(b_tile_change[tile], now != before || wrongSurface ? 2u : 1u);
   if (focus != 0u) atomicAdd(b_tile_focus[tile], focus);
 }

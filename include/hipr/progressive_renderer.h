@@ -59,11 +59,12 @@ class HiprStageRunner {
   // Of the last stage 1's active tiles, how many have a change or focus score: they lead its
   // order, the rest of the active set (an edit that activates every tile) follows them.
   virtual uint32_t seeded_tiles() const = 0;
-  // Of them, how many (not the focus's) hold a pixel that leads after the edit (a moved object,
-  // a surface the pixel no longer sees: docs/method.md#the-edits-lead).
+  // Of them, how many hold a pixel that leads after the edit (a moved object, a surface the pixel
+  // no longer sees: docs/method.md#the-edits-lead).
   virtual uint32_t lead_tiles() const = 0;
-  // After the last build_schedule: how many tiles stage 2 discovered besides the active ones
-  // (they follow the active tiles in the schedule).
+  // After the last build_schedule: how many tiles stage 2 discovered strongly besides the active
+  // ones (weight at least a sixteenth of the strongest: they follow the active tiles in the
+  // schedule).
   virtual uint32_t discovered_tiles() const = 0;
 };
 

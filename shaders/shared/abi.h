@@ -33,6 +33,7 @@ HIPR_CONST uint kTileReshow = 64u;     // within a resolve: show_display.comp re
 HIPR_CONST uint kTileReprojected = 128u;  // stage 1 after a camera edit: the tile's pixels were reprojected
 HIPR_CONST uint kTileMoved = 256u;        // ... and one of them moved on screen by kStillMotion or more, or was rejected
 HIPR_CONST uint kTileLead = 512u;         // stage 1: the tile may run ahead of the round (the focus, or a pixel that leads after an edit)
+HIPR_CONST uint kTileEditLead = 1024u;    // stage 1: a pixel of the tile leads after the edit (docs/method.md#the-edits-lead)
 HIPR_CONST float kWeightScale = 16777216.0f;  // fixed-point scale of tile weights (2^24)
 // Stage 1's changed-record flags: bit 0 the record is in the changed set E, the bits above
 // its focus weight (kFocusWeightScale units; 0: not a focus).

@@ -83,7 +83,7 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
     if ((f & abi::kTileActive) == 0) continue;
     ++active;
     if (f & abi::kTileScored) ++m_seeded;
-    if ((f & abi::kTileLead) && (f & abi::kTileFocus) == 0) ++m_lead_tiles;
+    if (f & abi::kTileEditLead) ++m_lead_tiles;
   }
   return active;
 }

@@ -83,7 +83,7 @@ class HiprStages final : public HiprStageRunner {
   Focus m_focus;          // marked by every stage 1
   uint32_t m_seeded = 0;  // active tiles with a change or focus score at the last stage 1
   uint32_t m_lead_tiles = 0;  // of them, tiles with a pixel that leads after the edit
-  uint32_t m_discovered = 0;  // at the last build_schedule, discovered tiles that are not active
+  uint32_t m_discovered = 0;  // at the last build_schedule, strongly discovered tiles that are not active
   bool m_reprojection = true;
 };
 
