@@ -312,8 +312,8 @@ void main() {
   uint target = focusTile ? u_push.focusTarget : u_push.sampleTarget;
   // A pixel stage 1 saw change most (a moved object, a surface it no longer sees) runs ahead to
   // the edit's lead (docs/method.md#the-edits-lead).
-  const bool leads = (b_pixel_lead[pixelIndex / 32u] & (1u << (pixelIndex % 32u))) != 0u;
-  if (target != 0u && u_push.leadTarget != 0u && leads)
+  // (The bit is read only while a lead is on: most dispatches have none.)
+  if (target != 0u && u_push.leadTarget != 0u && (b_pixel_lead[pixelIndex / 32u] & (1u << (pixelIndex % 32u))) != 0u)
     target = max(target, u_push.leadTarget);
   const uint have = restart ? 0u : accum.count;
   const uint samples = target == 0u ? u_push.samplesPerPixel : (have >= target ? 0u : target - have);

@@ -105,20 +105,24 @@ void HiprStages::stage2_discover(uint32_t offset, uint32_t count, uint32_t sampl
 
 void HiprStages::build_schedule() {
   m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m_schedule.record(cmd); });
+}
+
+uint32_t HiprStages::discovered_tiles() const {
   // The discovered tiles that changed strongly: the edit's lead waits for their first visit
   // (Scheduler::begin_edit_lead). Weights fall off smoothly from the strongest (a moved object's
   // old shadow) to faint colour bleeding that reaches everywhere in a closed room; a sixteenth
-  // of the strongest is where they stop being worth more than the lead.
+  // of the strongest is where they stop being worth more than the lead. Read back only when
+  // asked (an edit with a lead), not at every sort.
   const std::vector<uint32_t> flags = m_parts.tiles.flags.download_all<uint32_t>();
   const std::vector<uint64_t> weights = m_tile_weights.download_all<uint64_t>();
+  const auto discovered = [&](size_t t) { return (flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive); };
   uint64_t strongest = 0;
   for (size_t t = 0; t < flags.size(); ++t)
-    if ((flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive))
-      strongest = std::max(strongest, weights[t]);
-  m_discovered = 0;
+    if (discovered(t)) strongest = std::max(strongest, weights[t]);
+  uint32_t strong = 0;
   for (size_t t = 0; t < flags.size(); ++t)
-    if ((flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive) && weights[t] * 16 >= strongest)
-      ++m_discovered;
+    if (discovered(t) && weights[t] * 16 >= strongest) ++strong;
+  return strong;
 }
 
 void HiprStages::record_warm_up(VkCommandBuffer cmd) {

@@ -50,7 +50,7 @@ class HiprStages final : public HiprStageRunner {
   uint32_t stage1_focus() override;
   uint32_t seeded_tiles() const override { return m_seeded; }
   uint32_t lead_tiles() const override { return m_lead_tiles; }
-  uint32_t discovered_tiles() const override { return m_discovered; }
+  uint32_t discovered_tiles() const override;
 
   // Recompiles stage 2's kernel with other kernel features.
   void set_kernel_features(uint32_t features) {
@@ -83,7 +83,6 @@ class HiprStages final : public HiprStageRunner {
   Focus m_focus;          // marked by every stage 1
   uint32_t m_seeded = 0;  // active tiles with a change or focus score at the last stage 1
   uint32_t m_lead_tiles = 0;  // of them, tiles with a pixel that leads after the edit
-  uint32_t m_discovered = 0;  // at the last build_schedule, strongly discovered tiles that are not active
   bool m_reprojection = true;
 };
 
