@@ -100,6 +100,25 @@ TEST(Renderer, OnlyListedTilesReceiveSamples) {
   EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
 }
 
+// The film's total of samples, summed on the GPU for the viewer's status line, is the sum of the
+// pixels' counts: over a pixel count that is no multiple of the workgroup (40 x 36), with tiles
+// at different counts, and not counting the owed bit an edit sets.
+TEST(Renderer, TotalSamplesIsTheSumOfThePixelsCounts) {
+  Renderer renderer(test::context(), cornell(), small_settings(8));
+  EXPECT_EQ(renderer.total_samples(), 0u);
+  renderer.add_samples_full_frame(2);
+  const uint32_t first = 0, last = renderer.tile_count() - 1;
+  renderer.add_samples(std::span(&first, 1), 3);
+  renderer.add_samples(std::span(&last, 1), 5);
+  const uint64_t expected = 40u * 36u * 2u + 64u * 3u + 32u * 5u;  // the last tile has 8 x 4 pixels in the image
+  EXPECT_EQ(renderer.total_samples(), expected);
+  renderer.mark_all_owed();
+  EXPECT_EQ(renderer.total_samples(), expected);
+  uint64_t sum = 0;
+  for (uint32_t count : renderer.sample_counts()) sum += count;
+  EXPECT_EQ(sum, expected);
+}
+
 // Golden image: tests/data/cornell_golden_64.exr was rendered by this renderer at 4096 spp
 // with the Sobol sampler (seed 1, max depth 32; `hipr render assets/scenes/cornell_box.gltf
 // -o ... --width 64 --height 64 --spp 4096 --seed 1`) and checked against Cycles

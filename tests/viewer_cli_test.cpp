@@ -1,7 +1,8 @@
 // `hipr view` as CI runs it: in a virtual X server (xvfb-run), scripted, ending in a
 // screenshot. Checks that an edit from a script is visible, that overlays render what they
 // stand for, that the panels draw, and that bad input is refused before any window opens.
-// The window tests skip when xvfb-run is missing.
+// The window tests skip when xvfb-run is missing; the headless viewer's (--headless) run
+// anywhere.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 
 #include "core/error.h"
 #include "hipr/edits.h"
@@ -461,7 +463,7 @@ TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {
         quoted(dir / "missing.gltf"), base + " --visit-spp 0", base + " --policy oracle",
         base + " --display fast", base + " --save " + quoted(dir / "scene.obj"),
         base + " --save " + quoted(dir / "no/such/folder/a.gltf"), base + " --select teapot",
-        base + " --frames-dir " + quoted(dir / "no/such/folder")}) {
+        base + " --frames-dir " + quoted(dir / "no/such/folder"), base + " --headless"}) {
     const test::CommandResult result = test::run_command(
         "env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " view " + arguments);
     EXPECT_EQ(result.exit_code, kExitBadInput) << arguments << "\n" << result.output;
@@ -470,6 +472,57 @@ TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {
     EXPECT_EQ(lines[0].rfind("hipr: error: ", 0), 0u) << lines[0];
   }
   EXPECT_FALSE(fs::exists(shot));
+}
+
+// Headless, the viewer draws the same frames off screen: its screenshot is the window's, pixel for
+// pixel (one step a frame fixes what each frame shows).
+TEST_F(ViewerWindow, HeadlessFramesAreTheWindowsPixels) {
+  const ImageRGB& window = screenshot(
+      "recolour", "--exit-after-frames 8 --script " + quoted(script("recolour.json", kRecolour)));
+  const fs::path png = s_dir / "headless_recolour.png";
+  const test::CommandResult result = test::run_command(
+      "env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " " +
+      view_arguments("--headless --exit-after-frames 8 --screenshot " + quoted(png) + " --script " +
+                     quoted(script("recolour.json", kRecolour))));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  const ImageRGB headless = read_image(png);
+  ASSERT_EQ(window.width, kSize);
+  EXPECT_EQ(headless.width, window.width);
+  EXPECT_EQ(headless.height, window.height);
+  EXPECT_EQ(headless.rgb, window.rgb);
+}
+
+// With no display at all: the panels draw, the script's edit reaches the screen, and the stats
+// say how the frames were shown.
+TEST(ViewerHeadless, RunsWithoutADisplay) {
+  const fs::path dir = test::temp_dir("viewer-headless");
+  const fs::path png = dir / "panels.png", stats = dir / "stats.json";
+  const test::CommandResult result = test::run_command(
+      "env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " " +
+      view_arguments("--headless --exit-after-frames 8 --screenshot " + quoted(png) + " --stats-json " +
+                         quoted(stats) + " --script " + quoted(write_script(dir, "recolour.json", kRecolour)),
+                     /*panels=*/true));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  std::ifstream in(stats);
+  const nlohmann::json json = nlohmann::json::parse(in);
+  EXPECT_EQ(json["presentation"], "off-screen (headless)");
+  EXPECT_EQ(json["frames"].get<int>(), 8);
+  EXPECT_GT(json["fps"].get<double>(), 0.0);
+  // One step a frame until 2 spp: frames 1-2 and, after the edit at frame 4, two more.
+  EXPECT_EQ(json["rendering"]["frames"].get<int>(), 4) << json.dump();
+  EXPECT_GT(json["rendering"]["fps"].get<double>(), 0.0);
+  EXPECT_LE(json["rendering"]["frame_ms_median"].get<double>(), json["rendering"]["frame_ms_max"].get<double>());
+  // The status line's mean samples per pixel is summed on the GPU: no image crosses with panels either.
+  EXPECT_LT(json["host_transfer_bytes_per_frame"].get<double>(), 2048.0) << json.dump();
+  ASSERT_EQ(json["edits"].size(), 1u);
+  EXPECT_GE(json["edits"][0]["latency_seconds"].get<double>(), 0.0) << "the recolour was shown";
+  // The side panel beside the render: wider than the render, and not one flat colour.
+  const ImageRGB shot = read_image(png);
+  ASSERT_GT(shot.width, kSize);
+  const size_t x = shot.width - 100, row = size_t(shot.width) * 3;
+  std::set<float> panel_values;
+  for (size_t y = 0; y < shot.height; ++y) panel_values.insert(shot.rgb[y * row + x * 3]);
+  EXPECT_GT(panel_values.size(), 3u) << "the panel's text and widgets";
 }
 
 // Valid input without a display: one line that says what to do, no crash.

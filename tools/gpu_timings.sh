@@ -2,7 +2,8 @@
 # Times hipr on whatever device it finds, at 1920x1080 by default: the setup (upload, BVH or
 # acceleration structures, kernels), a full-frame pass (hipr render, 16 spp), the edit until its
 # first step is on the display, and its parts: scene update, stage 1, a stage 2 step, stage 3's
-# sort and a scheduled step (hipr replay's "parts"),
+# sort and a scheduled step (hipr replay's "parts"), and the viewer (headless, with its panels):
+# its frame rate while re-rendering and each edit's latency to the first changed frame,
 # for the shipped and shared scenes with their bench edit scripts (BENCHMARKS.md, "On a GPU").
 # Also renders two small images twice, for the determinism contract on that device.
 #   bash tools/gpu_timings.sh [HIPR] [SCENES] [OUT] [WIDTHxHEIGHT]
@@ -37,6 +38,12 @@ for run in "${runs[@]}"; do
     # shellcheck disable=SC2086
     "$hipr" replay "$scene" "$edits" -o "$out/$name.replay" --width "$width" --height "$height" --spp 4 \
       --steps 17 -q $extra
+    # The viewer as a person uses it, without a display: an edit every 120 frames (the first once
+    # the start is over), the frame budget adapting to the device.
+    count=$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["edits"]))' "$edits")
+    # shellcheck disable=SC2086
+    "$hipr" view "$scene" --headless --size "$size" --script "$edits" --script-start 120 --script-every 120 \
+      --exit-after-frames $((120 * (count + 1))) --stats-json "$out/$name.view.json" -q $extra
   fi
 done
 
@@ -74,4 +81,16 @@ for stats in sorted(out.glob("*.render.json")):
     else:
         row += ["-"] * 6
     print("| " + " | ".join(row) + " |")
+
+print()
+print("| scene | device | presentation | size | viewer fps while re-rendering | frame ms (median / p95 / max) | host bytes per frame | edit to first changed frame (ms, each edit) |")
+print("|---|---|---|---|---:|---|---:|---|")
+for stats in sorted(out.glob("*.view.json")):
+    v = json.loads(stats.read_text())
+    r = v["rendering"]
+    frames = (f'{r["frame_ms_median"]:.1f} / {r["frame_ms_p95"]:.1f} / {r["frame_ms_max"]:.1f}'
+              if r["frames"] else "-")
+    latencies = ", ".join(f'{1000 * e["latency_seconds"]:.1f}' for e in v["edits"])
+    print(f'| {stats.name[: -len(".view.json")]} | {v["device"]} | {v["presentation"]} | {v["width"]}x{v["height"]} | '
+          f'{r.get("fps", 0):.0f} | {frames} | {v["host_transfer_bytes_per_frame"]:.0f} | {latencies} |')
 PY

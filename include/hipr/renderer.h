@@ -130,6 +130,7 @@ class Renderer final : public ProgressiveRenderer {
   std::pair<uint32_t, uint32_t> sample_count_range() const override;  // reads the accumulation back
   ImageRGB image() const;                       // per-pixel mean radiance
   std::vector<uint32_t> sample_counts() const;  // per pixel
+  uint64_t total_samples() const;               // their sum, added up on the GPU (8 bytes read back)
   RenderCounters counters() const;
   uint64_t samples_since_reset() const override { return counters().samples; }
   void reset_counters() override;  // on the GPU, no read-back

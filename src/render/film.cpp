@@ -21,12 +21,17 @@ Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t lig
       stats(storage(ctx, sizeof(abi::RenderStats))),
       group_sums(storage(ctx, std::max<size_t>(size_t(width) * height * light_groups, 1) * sizeof(glm::vec3))),
       difference(storage(ctx, (keep_difference ? size_t(width) * height : 1) * sizeof(abi::DifferenceRecord))),
+      m_ctx(ctx),
       m_width(width),
       m_height(height),
       m_light_groups(light_groups),
       m_difference(keep_difference),
       m_mark_owed(ctx, "mark_owed.comp", {},
-                  {{abi::kOwedAccumulation, &accumulation}, {abi::kOwedTileFlags, &tile_flags}}, 0, &scene) {
+                  {{abi::kOwedAccumulation, &accumulation}, {abi::kOwedTileFlags, &tile_flags}}, 0, &scene),
+      m_total(ctx, sizeof(uint64_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+              vk::MemoryUse::Readback),
+      m_sum_samples(ctx, "sum_samples.comp", {}, {{abi::kSumAccumulation, &accumulation}, {abi::kSumTotal, &m_total}},
+                    sizeof(uint32_t)) {
   clear();
 }
 
@@ -58,6 +63,18 @@ std::vector<uint32_t> Film::sample_counts() const {
   std::vector<uint32_t> counts(accum.size());
   for (size_t i = 0; i < accum.size(); ++i) counts[i] = accum[i].count & abi::kPixelCountMask;
   return counts;
+}
+
+uint64_t Film::total_samples() const {
+  const uint32_t pixels = m_width * m_height;
+  m_ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, m_total.handle(), 0, VK_WHOLE_SIZE, 0);
+    vk::transfer_to_compute_barrier(cmd);
+    m_sum_samples.dispatch(cmd, &pixels, groups_for(pixels));
+  });
+  uint64_t total = 0;
+  m_total.download(&total, sizeof total);
+  return total;
 }
 
 std::vector<bool> Film::owed_pixels() const {

@@ -30,6 +30,8 @@ class Film {
   // Light group `group`'s share of image() (black where the pixel has no sample).
   ImageRGB group_image(uint32_t group) const;
   std::vector<uint32_t> sample_counts() const;
+  // The sum of sample_counts(), added up on the GPU (8 bytes read back).
+  uint64_t total_samples() const;
   // Per pixel: whether it still holds samples from before the last edit.
   std::vector<bool> owed_pixels() const;
   RenderCounters counters() const;
@@ -41,9 +43,12 @@ class Film {
   vk::Buffer difference;  // abi::DifferenceRecord per pixel; one record without
 
  private:
+  const vk::Context& m_ctx;
   uint32_t m_width, m_height, m_light_groups;
   bool m_difference;
   vk::ComputePipeline m_mark_owed;
+  vk::Buffer m_total;  // sum_samples.comp's output
+  vk::ComputePipeline m_sum_samples;
 };
 
 // Workgroups of abi::kWorkgroupSize invocations covering `items`.

@@ -36,23 +36,13 @@ VkPresentModeKHR choose_present_mode(VkPhysicalDevice physical, VkSurfaceKHR sur
 
 }  // namespace
 
-Swapchain::Swapchain(const Context& ctx, VkExtent2D extent) : m_ctx(ctx) {
+Swapchain::Swapchain(const Context& ctx, VkExtent2D extent) : m_ctx(ctx), m_commands(ctx) {
   if (!ctx.surface()) throw InternalError("a swapchain needs a context made with a window surface");
   try {
-    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pool.queueFamilyIndex = ctx.queue_family();
-    VK_CHECK(vkCreateCommandPool(ctx.device(), &pool, nullptr, &m_pool));
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = m_pool;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    VK_CHECK(vkAllocateCommandBuffers(ctx.device(), &alloc, &m_cmd));
     create(extent);
   } catch (...) {
     destroy_sync();
     destroy_swapchain();
-    if (m_pool) vkDestroyCommandPool(ctx.device(), m_pool, nullptr);
     throw;
   }
 }
@@ -61,7 +51,14 @@ Swapchain::~Swapchain() {
   vkDeviceWaitIdle(m_ctx.device());
   destroy_sync();
   destroy_swapchain();
-  if (m_pool) vkDestroyCommandPool(m_ctx.device(), m_pool, nullptr);
+}
+
+std::string Swapchain::description() const {
+  switch (m_present_mode) {
+    case VK_PRESENT_MODE_MAILBOX_KHR: return "window, mailbox presentation";
+    case VK_PRESENT_MODE_IMMEDIATE_KHR: return "window, immediate presentation";
+    default: return "window, FIFO presentation (vsync)";
+  }
 }
 
 void Swapchain::create(VkExtent2D extent) {
@@ -114,9 +111,6 @@ void Swapchain::create_sync() {
   m_ready_to_present.assign(m_images.size(), VK_NULL_HANDLE);
   for (VkSemaphore& s : m_ready_to_present)
     VK_CHECK(vkCreateSemaphore(m_ctx.device(), &semaphore, nullptr, &s));
-  VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // the first begin_frame has nothing to wait for
-  VK_CHECK(vkCreateFence(m_ctx.device(), &fence, nullptr, &m_frame_done));
 }
 
 void Swapchain::destroy_sync() {
@@ -125,9 +119,7 @@ void Swapchain::destroy_sync() {
     if (s) vkDestroySemaphore(device, s, nullptr);
   m_ready_to_present.clear();
   if (m_acquired) vkDestroySemaphore(device, m_acquired, nullptr);
-  if (m_frame_done) vkDestroyFence(device, m_frame_done, nullptr);
   m_acquired = VK_NULL_HANDLE;
-  m_frame_done = VK_NULL_HANDLE;
 }
 
 void Swapchain::destroy_swapchain() {
@@ -144,7 +136,7 @@ void Swapchain::recreate(VkExtent2D extent) {
   create(extent);
 }
 
-std::optional<Swapchain::Frame> Swapchain::begin_frame() {
+std::optional<PresentFrame> Swapchain::begin_frame() {
   wait_idle();
   uint32_t index = 0;
   const VkResult result = vkAcquireNextImageKHR(m_ctx.device(), m_swapchain, UINT64_MAX, m_acquired,
@@ -152,14 +144,10 @@ std::optional<Swapchain::Frame> Swapchain::begin_frame() {
   // SUBOPTIMAL still acquired an image (and signals the semaphore): present it, then recreate.
   if (result == VK_ERROR_OUT_OF_DATE_KHR) return std::nullopt;
   if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);
-  VK_CHECK(vkResetCommandBuffer(m_cmd, 0));
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(vkBeginCommandBuffer(m_cmd, &begin));
-  return Frame{m_cmd, index};
+  return PresentFrame{m_commands.begin(), index};
 }
 
-void Swapchain::blit_to_swapchain(const Frame& frame, const Image& source) const {
+void Swapchain::blit_to_swapchain(const PresentFrame& frame, const Image& source) const {
   const VkImage target = m_images[frame.image_index];
   VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
@@ -189,20 +177,17 @@ void Swapchain::blit_to_swapchain(const Frame& frame, const Image& source) const
                        &barrier);
 }
 
-bool Swapchain::end_frame(const Frame& frame) {
-  VK_CHECK(vkEndCommandBuffer(frame.cmd));
+bool Swapchain::present(const PresentFrame& frame, const Image& image) {
+  blit_to_swapchain(frame, image);
   const VkPipelineStageFlags wait_stage =
       VK_PIPELINE_STAGE_TRANSFER_BIT;  // the blit writes the image
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = 1;
   submit.pWaitSemaphores = &m_acquired;
   submit.pWaitDstStageMask = &wait_stage;
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &frame.cmd;
   submit.signalSemaphoreCount = 1;
   submit.pSignalSemaphores = &m_ready_to_present[frame.image_index];
-  VK_CHECK(vkResetFences(m_ctx.device(), 1, &m_frame_done));
-  VK_CHECK(vkQueueSubmit(m_ctx.queue(), 1, &submit, m_frame_done));
+  m_commands.submit(submit);
 
   VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
   present.waitSemaphoreCount = 1;
@@ -214,10 +199,6 @@ bool Swapchain::end_frame(const Frame& frame) {
   if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
   VK_CHECK(result);
   return true;
-}
-
-void Swapchain::wait_idle() const {
-  VK_CHECK(vkWaitForFences(m_ctx.device(), 1, &m_frame_done, VK_TRUE, UINT64_MAX));
 }
 
 }  // namespace hipr::vk

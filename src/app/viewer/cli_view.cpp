@@ -50,6 +50,8 @@ int run_view(ViewCommandOptions& o) {
     throw InputError("--first-visit-spp must be between --visit-spp and --spp");
   v.show_ui = !o.no_ui;
   if (v.script_every < 1) throw InputError("--script-every must be at least 1");
+  if (v.headless && v.exit_after_frames == 0)
+    throw InputError("--headless needs --exit-after-frames (there is no window to close)");
   if (v.visit_spp < 1 || v.visit_spp > v.common.spp)
     throw InputError("--visit-spp must be between 1 and --spp");
   if (!(v.frame_budget_ms >= 0.0) || v.frame_budget_ms > 10000.0)
@@ -135,6 +137,9 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--exposure", v.exposure_ev, "Display exposure in stops")->capture_default_str();
   cmd->add_flag("--no-ui", options->no_ui,
                 "No panels or status line: the window shows the render alone");
+  cmd->add_flag("--headless", v.headless,
+                "No window: frames are drawn off screen as fast as the device allows (GPU servers, CI); "
+                "needs --exit-after-frames");
   cmd->add_option("--stats-json", v.stats_json,
                   "At exit, write fps and per-edit feedback latency (JSON)");
   cmd->add_option("--frames-dir", v.frames_dir,

@@ -6,6 +6,8 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "vk/check.h"
 
@@ -20,14 +22,14 @@ void check_vk_result(VkResult result) {
 }  // namespace
 
 UiLayer::UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass& pass,
-                 const vk::Swapchain& swapchain)
+                 const vk::Presenter& presenter)
     : m_window(window) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the viewer writes nothing the user did not ask for
   ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
+  if (!window.headless()) ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
 
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = ctx.instance();
@@ -36,12 +38,12 @@ UiLayer::UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass&
   info.QueueFamily = ctx.queue_family();
   info.Queue = ctx.queue();
   info.DescriptorPool = pass.descriptor_pool();
-  info.MinImageCount = std::max(2u, swapchain.min_image_count());
-  info.ImageCount = std::max(info.MinImageCount, swapchain.image_count());
+  info.MinImageCount = std::max(2u, presenter.min_image_count());
+  info.ImageCount = std::max(info.MinImageCount, presenter.image_count());
   info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
   info.CheckVkResultFn = check_vk_result;
   if (!ImGui_ImplVulkan_Init(&info, pass.render_pass())) {
-    ImGui_ImplGlfw_Shutdown();
+    if (!window.headless()) ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
     throw InternalError("cannot initialise the UI's Vulkan backend");
   }
@@ -51,14 +53,22 @@ UiLayer::UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass&
 
 UiLayer::~UiLayer() {
   ImGui_ImplVulkan_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
+  if (!m_window.headless()) ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
 }
 
 void UiLayer::new_frame(const std::vector<KeyPress>& presses) {
   ImGui_ImplVulkan_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
   ImGuiIO& io = ImGui::GetIO();
+  if (m_window.headless()) {
+    const VkExtent2D size = m_window.framebuffer_size();
+    io.DisplaySize = ImVec2(float(size.width), float(size.height));
+    io.DeltaTime = std::max(float(m_frame_timer.seconds()), 1e-6f);  // ImGui asserts it is > 0
+    m_frame_timer = Timer();
+    ImGui::NewFrame();
+    return;
+  }
+  ImGui_ImplGlfw_NewFrame();
   for (int key : m_forced) io.KeysDown[key] = glfwGetKey(m_window.handle(), key) == GLFW_PRESS;
   m_forced.clear();
   // Modifiers are not forced: a person holds Ctrl across frames, and a forced Ctrl would also

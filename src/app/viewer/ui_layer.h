@@ -1,14 +1,17 @@
 #pragma once
 // Dear ImGui on the viewer's window and Vulkan device: the GLFW platform backend (which also
 // feeds mouse and keyboard into ImGui's IO, where the viewport reads them) and the Vulkan
-// renderer backend drawing into the UI pass.
+// renderer backend drawing into the UI pass. Headless there is no platform backend: the UI
+// gets the frame's size and time and no input, and draws as in a window.
 #include <vulkan/vulkan.h>
 
 #include <vector>
 
+#include "core/timer.h"
+
 #include "app/viewer/window.h"
 #include "vk/context.h"
-#include "vk/swapchain.h"
+#include "vk/presenter.h"
 #include "vk/ui_pass.h"
 
 namespace hipr::viewer {
@@ -16,7 +19,7 @@ namespace hipr::viewer {
 class UiLayer {
  public:
   UiLayer(const Window& window, const vk::Context& ctx, const vk::UiPass& pass,
-          const vk::Swapchain& swapchain);
+          const vk::Presenter& presenter);
   ~UiLayer();
   UiLayer(const UiLayer&) = delete;
   UiLayer& operator=(const UiLayer&) = delete;
@@ -32,6 +35,7 @@ class UiLayer {
 
  private:
   const Window& m_window;
+  Timer m_frame_timer;        // headless: the UI's frame time
   std::vector<int> m_forced;  // keys held down artificially during the last frame
 };
 

@@ -27,6 +27,7 @@
 #include "render/display_pass.h"
 #include "vk/buffer.h"
 #include "vk/image.h"
+#include "vk/offscreen_presenter.h"
 #include "vk/swapchain.h"
 #include "vk/ui_pass.h"
 
@@ -50,11 +51,22 @@ std::string default_save_path(const fs::path& source) {
 vk::ContextOptions presenting_context_options(const app::CommonOptions& common,
                                               const Window& window) {
   vk::ContextOptions options = app::context_options(common);
+  if (window.headless()) return options;
   options.instance_extensions = window.required_instance_extensions();
   options.create_surface = [&window](VkInstance instance) {
     return window.create_surface(instance);
   };
   return options;
+}
+
+std::unique_ptr<vk::Presenter> make_presenter(const vk::Context& ctx, const Window& window) {
+  if (window.headless()) return std::make_unique<vk::OffscreenPresenter>(ctx, window.framebuffer_size());
+  return std::make_unique<vk::Swapchain>(ctx, window.framebuffer_size());
+}
+
+Window make_window(const ViewerOptions& options, const std::string& title, uint32_t width, uint32_t height) {
+  if (options.headless) return Window(Window::Headless{}, width, height);
+  return Window(title, width, height);
 }
 
 class Viewer {
@@ -65,13 +77,13 @@ class Viewer {
   Viewer(const ViewerOptions& options, Scene scene)
       : m_started(),
         m_options(options),
-        m_window("hipr view - " + scene.source.filename().string(), window_width(options),
-                 window_height(options)),
+        m_window(make_window(options, "hipr view - " + scene.source.filename().string(), window_width(options),
+                             window_height(options))),
         m_ctx(presenting_context_options(options.common, m_window)),
-        m_swapchain(m_ctx, m_window.framebuffer_size()),
+        m_presenter(make_presenter(m_ctx, m_window)),
         m_ui_pass(m_ctx, kFrameFormat),
-        m_frame(m_ctx, m_swapchain.extent(), kFrameFormat, kFrameUsage),
-        m_ui(m_window, m_ctx, m_ui_pass, m_swapchain),
+        m_frame(m_ctx, m_presenter->extent(), kFrameFormat, kFrameUsage),
+        m_ui(m_window, m_ctx, m_ui_pass, *m_presenter),
         m_display(m_ctx, options.common.render.width, options.common.render.height),
         m_requested_size(m_window.framebuffer_size()) {
     m_ui_pass.set_target(m_frame);
@@ -106,8 +118,8 @@ class Viewer {
                  ":\ncompiling the path tracer (the first start with a scene can take a minute or "
                  "two on a CPU)");
     m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
-    log::info("viewer on " + m_ctx.device_name() + " (" + m_ctx.traversal_name() + " traversal), present mode " +
-              std::to_string(int(m_swapchain.present_mode())));
+    log::info("viewer on " + m_ctx.device_name() + " (" + m_ctx.traversal_name() + " traversal), " +
+              m_presenter->description());
   }
 
   int run();
@@ -132,9 +144,10 @@ class Viewer {
   void render_steps();
   void update_overlay();
   bool present(const ViewLayout& layout);
-  bool draw_and_present(const vk::Swapchain::Frame& frame, const DisplayView& view);
+  bool draw_and_present(const vk::PresentFrame& frame, const DisplayView& view);
   ViewLayout layout() const;
   void write_stats(double seconds) const;
+  nlohmann::json rendering_stats() const;
   void dump_frame(uint32_t frame_index, double frame_seconds);
   void write_frame_log() const;
   void open_scene();
@@ -146,7 +159,7 @@ class Viewer {
   const ViewerOptions& m_options;
   Window m_window;
   vk::Context m_ctx;
-  vk::Swapchain m_swapchain;
+  std::unique_ptr<vk::Presenter> m_presenter;  // the window's swapchain, or off screen
   vk::UiPass m_ui_pass;
   vk::Image m_frame;
   UiLayer m_ui;
@@ -163,8 +176,9 @@ class Viewer {
   uint64_t m_shown_renderer = 0;  // Session::renderer_id()
   double m_render_ms = 0.0;          // the last frame's scheduling steps
   double m_frame_overhead_ms = 0.0;  // a frame's other work, smoothed (the adaptive budget)
-  // Frames that ran steps, and the bytes copied between host and device during them.
-  uint64_t m_rendering_frames = 0;
+  // Frames that ran steps: their times (the frame rate while re-rendering) and the bytes copied
+  // between host and device during them.
+  std::vector<double> m_rendering_frame_ms;
   uint64_t m_rendering_transfer_bytes = 0;
   // What the current overlay was made from, to rebuild it only when that changes.
   struct OverlayKey {
@@ -177,7 +191,8 @@ class Viewer {
   bool m_overlay_on = false;
   bool m_swapchain_stale = false;  // the last present found the swapchain out of date
   VkExtent2D m_requested_size{};   // the window size the swapchain was last made for
-  Timer m_spp_timer;
+  Timer m_spp_timer;                // the status line's mean spp: when it was read
+  bool m_mean_spp_converged = false;  // and whether the image had converged then
 };
 
 ViewLayout Viewer::layout() const {
@@ -193,9 +208,9 @@ void Viewer::resize(VkExtent2D extent) {
   if (extent.width == 0 || extent.height == 0) return;
   m_requested_size = extent;
   m_swapchain_stale = false;
-  m_swapchain.recreate(extent);
-  m_ui.set_min_image_count(m_swapchain.min_image_count());
-  m_frame = vk::Image(m_ctx, m_swapchain.extent(), kFrameFormat, kFrameUsage);
+  m_presenter->recreate(extent);
+  m_ui.set_min_image_count(m_presenter->min_image_count());
+  m_frame = vk::Image(m_ctx, m_presenter->extent(), kFrameFormat, kFrameUsage);
   m_ui_pass.set_target(m_frame);
 }
 
@@ -215,7 +230,7 @@ void Viewer::show_message_frame(const std::string& text) {
                    ImGuiWindowFlags_NoInputs);
   ImGui::TextUnformatted(text.c_str());
   ImGui::End();
-  const auto frame = m_swapchain.begin_frame();
+  const auto frame = m_presenter->begin_frame();
   if (!frame) {
     ImGui::EndFrame();
     return;
@@ -227,16 +242,15 @@ void Viewer::show_message_frame(const std::string& text) {
   draw_and_present(*frame, view);  // an out-of-date swapchain is rebuilt by the next present()
 }
 
-// Records the display pass, the UI on top and the copy into the swapchain image, then presents.
-// False when the swapchain turned out of date.
-bool Viewer::draw_and_present(const vk::Swapchain::Frame& frame, const DisplayView& view) {
+// Records the display pass and the UI on top into the frame image, then presents it. False when
+// the swapchain turned out of date.
+bool Viewer::draw_and_present(const vk::PresentFrame& frame, const DisplayView& view) {
   m_display.record(frame.cmd, view);
   vk::record_buffer_to_image(frame.cmd, m_display.output(), m_frame);
   m_ui_pass.begin(frame.cmd);
   m_ui.render(frame.cmd);
   m_ui_pass.end(frame.cmd);
-  m_swapchain.blit_to_swapchain(frame, m_frame);
-  return m_swapchain.end_frame(frame);
+  return m_presenter->present(frame, m_frame);
 }
 
 void Viewer::run_script(uint32_t frame) {
@@ -304,7 +318,7 @@ void Viewer::save_scene_file() {
 
 void Viewer::take_screenshot(const fs::path& path) {
   try {
-    m_swapchain.wait_idle();
+    m_presenter->wait_idle();
     save_screenshot(path, m_ctx, m_frame, m_session->displayed());
     m_state.info("screenshot " + path.string());
   } catch (const InputError& e) {
@@ -378,7 +392,7 @@ void Viewer::update_overlay() {
 }
 
 bool Viewer::present(const ViewLayout& layout) {
-  const auto frame = m_swapchain.begin_frame();
+  const auto frame = m_presenter->begin_frame();
   if (!frame) {
     ImGui::EndFrame();
     resize(m_window.framebuffer_size());
@@ -417,7 +431,23 @@ void Viewer::write_frame_log() const {
   write_text_atomically(m_options.frames_dir / "frames.json", m_frame_log.dump(1) + "\n");
 }
 
+// The frames that ran scheduling steps: how many, their rate and the spread of their times (ms).
+nlohmann::json Viewer::rendering_stats() const {
+  std::vector<double> ms = m_rendering_frame_ms;
+  if (ms.empty()) return {{"frames", 0}};
+  std::sort(ms.begin(), ms.end());
+  double total = 0.0;
+  for (double m : ms) total += m;
+  const auto at = [&ms](double q) { return ms[std::min(ms.size() - 1, size_t(q * double(ms.size())))]; };
+  return {{"frames", ms.size()},
+          {"fps", total > 0.0 ? 1e3 * double(ms.size()) / total : 0.0},
+          {"frame_ms_median", at(0.5)},
+          {"frame_ms_p95", at(0.95)},
+          {"frame_ms_max", ms.back()}};
+}
+
 void Viewer::write_stats(double seconds) const {
+  const size_t rendering = m_rendering_frame_ms.size();
   nlohmann::json edits = nlohmann::json::array();
   for (const EditRecord& r : m_session->edit_records())
     edits.push_back({{"edit", r.what},
@@ -426,6 +456,7 @@ void Viewer::write_stats(double seconds) const {
   const RenderSettings& s = m_options.common.render;
   const nlohmann::json stats = {{"device", m_ctx.device_name()},
                                 {"traversal", m_ctx.traversal_name()},
+                                {"presentation", m_presenter->description()},
                                 {"width", s.width},
                                 {"height", s.height},
                                 {"policy", policy_name(m_session->settings().policy)},
@@ -434,8 +465,9 @@ void Viewer::write_stats(double seconds) const {
                                 {"seconds", seconds},
                                 {"fps", seconds > 0.0 ? double(m_frames) / seconds : 0.0},
                                 {"steps", m_steps},
+                                {"rendering", rendering_stats()},
                                 {"host_transfer_bytes_per_frame",
-                                 m_rendering_frames ? double(m_rendering_transfer_bytes) / m_rendering_frames : 0.0},
+                                 rendering ? double(m_rendering_transfer_bytes) / double(rendering) : 0.0},
                                 {"edits", edits}};
   write_text_atomically(m_options.stats_json, stats.dump(2) + "\n");
 }
@@ -473,13 +505,15 @@ int Viewer::run() {
     follow_environment(m_session->scene(), m_state);
     render_steps();
     m_steps += m_state.steps_last_frame;
-    if (m_state.show_ui && m_state.show_status && m_spp_timer.seconds() > 1.0) {
-      // The mean over pixels of the samples they hold, once a second and only while the status
-      // line shows it: a read-back of every pixel's accumulation, the one image-sized copy left.
-      const std::vector<uint32_t> counts = m_session->renderer().sample_counts();
-      double sum = 0.0;
-      for (uint32_t c : counts) sum += c;
-      m_state.mean_spp = counts.empty() ? 0.0 : sum / double(counts.size());
+    // The mean over pixels of the samples they hold, only while the status line shows it: once a
+    // second, and once more when the image has converged (so that it says the final count).
+    // Summed on the GPU, 8 bytes read back.
+    const bool converged = m_session->converged();
+    if (m_state.show_ui && m_state.show_status &&
+        (m_spp_timer.seconds() > 1.0 || (converged && !m_mean_spp_converged))) {
+      const RenderSettings& render = m_session->settings().render;
+      m_state.mean_spp = double(m_session->renderer().total_samples()) / (double(render.width) * render.height);
+      m_mean_spp_converged = converged;
       m_spp_timer = Timer();
     }
     if (!present(view)) continue;
@@ -492,8 +526,8 @@ int Viewer::run() {
     // budget leaves room for.
     const double overhead_ms = std::max(frame_seconds * 1e3 - m_render_ms, 0.0);
     m_frame_overhead_ms = m_frame_overhead_ms > 0.0 ? 0.8 * m_frame_overhead_ms + 0.2 * overhead_ms : overhead_ms;
-    if (m_state.steps_last_frame > 0) {  // re-rendering: what crossed between host and device
-      m_rendering_frames += 1;
+    if (m_state.steps_last_frame > 0) {  // re-rendering: its frame time, what crossed between host and device
+      m_rendering_frame_ms.push_back(frame_seconds * 1e3);
       m_rendering_transfer_bytes += vk::host_transfer_bytes() - transferred_at_frame_start;
     }
     m_state.fps = m_state.fps > 0.0 ? 0.9 * m_state.fps + 0.1 / frame_seconds : 1.0 / frame_seconds;
@@ -508,7 +542,7 @@ int Viewer::run() {
     if (m_options.exit_after_frames > 0 && frame_index >= m_options.exit_after_frames) break;
   }
   const double seconds = run_timer.seconds();
-  m_swapchain.wait_idle();
+  m_presenter->wait_idle();
   // The scene first, and every output tried: a failed screenshot must not cost the edits.
   std::string failures;
   const auto attempt = [&failures](const std::function<void()>& write) {

@@ -33,6 +33,9 @@ struct ViewerOptions {
   double frame_budget_ms = 0.0;  // 0: adapt (ViewerState::frame_budget_ms)
   float exposure_ev = 0.0f;
   bool show_ui = true;
+  // No window (machines without a display): frames are drawn off screen, as fast as the device
+  // renders them, until exit_after_frames (which headless runs need).
+  bool headless = false;
   std::filesystem::path stats_json;  // fps and per-edit latency, written at exit
   // Every presented frame's displayed image (linear EXR) and, at exit, frames.json (per frame:
   // how many script edits it shows, and its time without the read-back), for measuring what the

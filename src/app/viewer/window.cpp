@@ -25,7 +25,7 @@ Window::Window(const std::string& title, uint32_t width, uint32_t height) {
   glfwSetErrorCallback(on_glfw_error);
   if (!glfwInit())
     throw InternalError("cannot open a window (" + g_last_error +
-                        "); without a display, run under xvfb-run");
+                        "); without a display, run under xvfb-run or use --headless");
   if (!glfwVulkanSupported()) {
     glfwTerminate();
     throw InternalError("the window system offers no Vulkan presentation (GLFW: no Vulkan loader)");
@@ -40,6 +40,8 @@ Window::Window(const std::string& title, uint32_t width, uint32_t height) {
   glfwSetKeyCallback(m_window, on_key);  // installed first: the UI library chains to it
 }
 
+Window::Window(Headless, uint32_t width, uint32_t height) : m_headless_size{width, height} {}
+
 void Window::on_key(GLFWwindow* window, int key, int, int action, int mods) {
   auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
   if (!self || (action != GLFW_PRESS && action != GLFW_REPEAT)) return;
@@ -50,11 +52,13 @@ void Window::on_key(GLFWwindow* window, int key, int, int action, int mods) {
 std::vector<KeyPress> Window::take_key_presses() { return std::exchange(m_keys, {}); }
 
 Window::~Window() {
-  if (m_window) glfwDestroyWindow(m_window);
+  if (headless()) return;
+  glfwDestroyWindow(m_window);
   glfwTerminate();
 }
 
 std::vector<std::string> Window::required_instance_extensions() const {
+  if (headless()) return {};
   uint32_t count = 0;
   const char** names = glfwGetRequiredInstanceExtensions(&count);
   if (!names)
@@ -64,29 +68,38 @@ std::vector<std::string> Window::required_instance_extensions() const {
 }
 
 VkSurfaceKHR Window::create_surface(VkInstance instance) const {
+  if (headless()) throw InternalError("a headless viewer has no window surface");
   VkSurfaceKHR surface = VK_NULL_HANDLE;
   VK_CHECK(glfwCreateWindowSurface(instance, m_window, nullptr, &surface));
   return surface;
 }
 
 VkExtent2D Window::framebuffer_size() const {
+  if (headless()) return m_headless_size;
   int w = 0, h = 0;
   glfwGetFramebufferSize(m_window, &w, &h);
   return {uint32_t(std::max(w, 0)), uint32_t(std::max(h, 0))};
 }
 
 float Window::pixel_ratio() const {
+  if (headless()) return 1.0f;
   int w = 0, h = 0, fw = 0, fh = 0;
   glfwGetWindowSize(m_window, &w, &h);
   glfwGetFramebufferSize(m_window, &fw, &fh);
   return w > 0 ? float(fw) / float(w) : 1.0f;
 }
 
-bool Window::should_close() const { return glfwWindowShouldClose(m_window); }
-void Window::poll_events() const { glfwPollEvents(); }
-void Window::wait_events(double seconds) const { glfwWaitEventsTimeout(seconds); }
+// Headless, nothing closes the viewer but --exit-after-frames, and no event is awaited: the
+// frames run back to back.
+bool Window::should_close() const { return !headless() && glfwWindowShouldClose(m_window); }
+void Window::poll_events() const {
+  if (!headless()) glfwPollEvents();
+}
+void Window::wait_events(double seconds) const {
+  if (!headless()) glfwWaitEventsTimeout(seconds);
+}
 void Window::set_title(const std::string& title) const {
-  glfwSetWindowTitle(m_window, title.c_str());
+  if (!headless()) glfwSetWindowTitle(m_window, title.c_str());
 }
 
 }  // namespace hipr::viewer

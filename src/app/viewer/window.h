@@ -1,6 +1,8 @@
 #pragma once
 // The viewer's GLFW window: creation (no OpenGL context; Vulkan draws), what Vulkan needs to
-// present into it (instance extensions, a surface), its size and its event loop. Mouse input is
+// present into it (instance extensions, a surface), its size and its event loop. Headless
+// (`hipr view --headless`), a stand-in of a fixed size with no events that never closes: the
+// viewer's loop runs unchanged and the frames go off screen (vk/offscreen_presenter.h). Mouse input is
 // read through the UI library's state (ui_layer hooks the window's callbacks after ours); key
 // presses are also queued here, because the UI library of Debian 12 (1.86) only samples key
 // state once per frame, and a quick tap between two slow frames (lavapipe) would be lost.
@@ -25,11 +27,15 @@ class Window {
  public:
   // Throws InternalError when no window can be opened (no display: run under xvfb-run).
   Window(const std::string& title, uint32_t width, uint32_t height);
+  struct Headless {};
+  // No window: nothing on the display, no GLFW.
+  Window(Headless, uint32_t width, uint32_t height);
   ~Window();
   Window(const Window&) = delete;
   Window& operator=(const Window&) = delete;
 
-  GLFWwindow* handle() const { return m_window; }
+  GLFWwindow* handle() const { return m_window; }  // null when headless
+  bool headless() const { return m_window == nullptr; }
   std::vector<std::string> required_instance_extensions() const;
   VkSurfaceKHR create_surface(VkInstance instance) const;
   // Drawable size in pixels (0 x 0 while minimized).
@@ -49,6 +55,7 @@ class Window {
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
 
   GLFWwindow* m_window = nullptr;
+  VkExtent2D m_headless_size{0, 0};
   std::vector<KeyPress> m_keys;
 };
 
