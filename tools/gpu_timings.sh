@@ -59,8 +59,8 @@ done
 python3 - "$out" <<'PY'
 import json, pathlib, statistics, sys
 out = pathlib.Path(sys.argv[1])
-print("| scene | device | traversal | size | triangles | setup (s) | full-frame pass (ms) | edit to first step shown (ms, median / max) | scene update (ms) | stage 1 (ms) | stage 2 step (ms) | stage 3 sort (ms) | scheduled step (ms) |")
-print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+print("| scene | device | traversal | size | triangles | setup (s) | full-frame pass (ms) | edit to first step shown (ms, median / max) | scene update (ms) | scene update allocations / submissions (most) | stage 1 (ms) | stage 2 step (ms) | stage 3 sort (ms) | scheduled step (ms) |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for stats in sorted(out.glob("*.render.json")):
     name = stats.name[: -len(".render.json")]
     r = json.loads(stats.read_text())
@@ -78,8 +78,11 @@ for stats in sorted(out.glob("*.render.json")):
                            ("mean_step_seconds", "steps")):
             values = [1000 * e["parts"][key] for e in edits if count is None or e["parts"][count] > 0]
             row.append(f"{statistics.median(values):.2f}" if values else "-")  # "-": no such step ran
+            if key == "scene_update_seconds":
+                row.append(f'{max(e["parts"]["scene_update_allocations"] for e in edits)} / '
+                           f'{max(e["parts"]["scene_update_submissions"] for e in edits)}')
     else:
-        row += ["-"] * 6
+        row += ["-"] * 7
     print("| " + " | ".join(row) + " |")
 
 print()

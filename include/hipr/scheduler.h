@@ -93,6 +93,8 @@ class Scheduler {
   struct EditTimes {
     double capture_seconds = 0.0;  // the stale display captured (and relit) at the edit
     double scene_seconds = 0.0;    // the scene's device copy updated (materials, transforms, BVH)
+    uint32_t scene_allocations = 0;  // device memory allocations the scene update made
+    uint32_t scene_submissions = 0;  // and the queue submissions it waited for
     double plan_seconds = 0.0;     // the policy's plan: HiPR's stage 1 (G-buffer, marking, reach, reprojection)
     double sort_seconds = 0.0;     // after the leading steps: HiPR's stage 3 (keys, radix sort)
     double focus_seconds = 0.0;    // re-planning for a new focus (set_focus)

@@ -33,6 +33,8 @@ double mean_step_seconds(const Scheduler::EditTimes& t) {
 nlohmann::json edit_times_json(const Scheduler::EditTimes& t) {
   return {{"capture_seconds", t.capture_seconds},
           {"scene_update_seconds", t.scene_seconds},
+          {"scene_update_allocations", t.scene_allocations},
+          {"scene_update_submissions", t.scene_submissions},
           {"plan_seconds", t.plan_seconds},
           {"sort_seconds", t.sort_seconds},
           {"leading_steps", t.leading_steps},

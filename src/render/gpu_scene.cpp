@@ -21,7 +21,7 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
   build_blases(scene);
   upload_environment(scene);
   bsdf_tables = vk::make_storage_buffer(ctx, bsdf_table_data());
-  frame_buffer = vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1));
+  frame_buffer = vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1), 0, vk::MemoryUse::Upload);
   std::vector<vk::BindingSlot> slots;
   if (!ctx.software_traversal()) slots.push_back({abi::kSceneTlas, vk::BindingKind::AccelerationStructure});
   for (uint32_t b = abi::kScenePositions; b <= abi::kSceneFrame; ++b) slots.push_back({b});
@@ -36,12 +36,7 @@ void GpuScene::upload_material_groups(const Scene& scene) {
   // no bytes cannot be bound.
   std::vector<uint32_t> table(std::max<size_t>(scene.materials.size(), 1), kNoLightGroup);
   for (size_t m = 0; m < std::min(table.size(), m_groups.material.size()); ++m) table[m] = m_groups.material[m];
-  if (material_groups && material_groups.size() >= table.size() * sizeof(uint32_t)) {
-    material_groups.upload(table.data(), table.size() * sizeof(uint32_t));
-  } else {
-    material_groups = vk::make_storage_buffer(m_ctx, table);
-    ++m_layout_generation;
-  }
+  if (vk::write_storage_buffer(m_ctx, material_groups, table)) ++m_layout_generation;
 }
 
 void GpuScene::update_geometry(const Scene& scene) {
@@ -117,7 +112,8 @@ void GpuScene::assign_records(const Scene& scene, const std::vector<Instance>& i
   }
   if (!geometries || m_records.size() != capacity) {
     // Never empty: a buffer of no bytes cannot be bound.
-    geometries = vk::make_storage_buffer(m_ctx, m_records.empty() ? std::vector<abi::GeometryRecord>(1) : m_records);
+    geometries = vk::make_storage_buffer(m_ctx, m_records.empty() ? std::vector<abi::GeometryRecord>(1) : m_records, 0,
+                                         vk::MemoryUse::Upload);
     ++m_layout_generation;
   }
 }
@@ -135,7 +131,7 @@ void GpuScene::bind_set() {
     m_set->bind_buffer(abi::kSceneTlasNodes, m_software.tlas_nodes);
     m_set->bind_buffer(abi::kSceneTlasInstances, m_software.tlas_instances);
   } else {
-    m_set->bind_acceleration_structure(abi::kSceneTlas, m_tlas.handle());
+    m_set->bind_acceleration_structure(abi::kSceneTlas, m_tlas.structure.handle());
   }
   const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
       {abi::kScenePositions, &positions},   {abi::kSceneNormals, &normals},       {abi::kSceneTangents, &tangents},
@@ -276,10 +272,7 @@ void GpuScene::upload_materials(const Scene& scene) {
     blocks.push_back(pack_material(m.params));
     m_material_view_dependent.push_back(material_is_view_dependent(m.params) ? 1 : 0);
   }
-  if (materials && materials.size() == blocks.size() * sizeof(abi::MaterialBlock))
-    materials.upload(blocks.data(), materials.size());
-  else
-    materials = vk::make_storage_buffer(m_ctx, blocks);
+  vk::write_storage_buffer(m_ctx, materials, blocks);  // update_materials binds the set again
 }
 
 void GpuScene::update_instances(const Scene& scene) {
@@ -310,11 +303,12 @@ void GpuScene::update_instances(const Scene& scene) {
   if (m_ctx.software_traversal())
     m_software.upload_instances(m_ctx, placements);
   else
-    m_tlas = vk::build_tlas(m_ctx, tlas_instances);
+    vk::build_tlas(m_ctx, tlas_instances, m_tlas);
   update_lights(scene);
 }
 
 void GpuScene::upload_environment(const Scene& scene) {
+  m_environment_mean = scene.environment ? environment_mean_luminance(*scene.environment) : 0.0f;
   environment = vk::make_storage_buffer(m_ctx, scene.environment ? build_environment_buffer(*scene.environment)
                                                                  : std::vector<float>{});
 }
@@ -326,12 +320,12 @@ void GpuScene::update_environment(const Scene& scene) {
 
 void GpuScene::update_lights(const Scene& scene) {
   m_lights = build_light_tables(scene, scene.instances(), m_record_base, uint32_t(m_records.size()),
-                                m_info.scene_radius, m_groups);
+                                m_info.scene_radius, m_environment_mean, m_groups);
   for (size_t r = 0; r < m_records.size(); ++r) m_records[r].lightOffset = m_lights.record_light_offset[r];
   geometries.upload(m_records.data(), m_records.size() * sizeof(abi::GeometryRecord));
   m_info.light_count = m_lights.lights.size();
-  lights = vk::make_storage_buffer(m_ctx, m_lights.lights);
-  light_cdf = vk::make_storage_buffer(m_ctx, m_lights.cdf);
+  vk::write_storage_buffer(m_ctx, lights, m_lights.lights);
+  vk::write_storage_buffer(m_ctx, light_cdf, m_lights.cdf);
   bind_set();
 }
 

@@ -119,6 +119,7 @@ class GpuScene {
   SceneStats m_info;
   LightTables m_lights;
   LightGroups m_groups;
+  float m_environment_mean = 0.0f;  // environment_mean_luminance of the map uploaded last (light power)
   std::vector<std::vector<PrimitiveRange>> m_ranges;  // per mesh, per primitive
   std::vector<vk::AccelerationStructure> m_blas;      // one per mesh (empty meshes: none)
   std::vector<bool> m_has_blas;
@@ -134,7 +135,7 @@ class GpuScene {
   std::vector<uint32_t> m_record_instance;  // per record
   std::vector<uint32_t> m_record_node;      // per record
   std::vector<uint8_t> m_material_view_dependent;  // per material
-  vk::AccelerationStructure m_tlas;
+  vk::Tlas m_tlas;
   SoftwareBvh m_software;  // instead of m_blas and m_tlas on a device without ray queries
   abi::FrameParams m_frame_params{};
   std::unique_ptr<vk::DescriptorSet> m_set;

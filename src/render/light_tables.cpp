@@ -54,7 +54,7 @@ abi::Light punctual_light(const PunctualLight& src, const glm::mat4& world) {
 
 LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& instances,
                                const std::vector<uint32_t>& record_base, uint32_t record_count,
-                               float scene_radius, const LightGroups& groups) {
+                               float scene_radius, float environment_mean, const LightGroups& groups) {
   LightTables t;
   t.record_light_offset.assign(record_count, abi::kInvalidIndex);
   std::vector<double> power;
@@ -112,7 +112,7 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
     light.group = groups.environment;
     t.environment_index = uint32_t(t.lights.size());
     t.lights.push_back(light);
-    const double mean = environment_mean_luminance(*scene.environment) * scene.environment->intensity;
+    const double mean = double(environment_mean) * scene.environment->intensity;
     power.push_back(4.0 * kPi * kPi * scene_radius * scene_radius * mean);
   }
 

@@ -18,10 +18,12 @@ struct LightTables {
 
 // `record_base[i]` is the first GeometryRecord of instances[i]; records follow the mesh's
 // primitive order. `scene_radius` sizes the power estimate of lights at infinity. Each light
-// carries its group (`groups`; none where pooled or without groups).
+// carries its group (`groups`; none where pooled or without groups). `environment_mean` is
+// environment_mean_luminance of the scene's map, which callers keep while the map stays: it reads
+// every texel, and the tables are built again at every edit that moves or changes a light.
 LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& instances,
                                const std::vector<uint32_t>& record_base, uint32_t record_count,
-                               float scene_radius, const LightGroups& groups = {});
+                               float scene_radius, float environment_mean, const LightGroups& groups = {});
 
 // A punctual light as the kernels see it, placed by its node's world transform (no group).
 abi::Light punctual_light(const PunctualLight& light, const glm::mat4& world);

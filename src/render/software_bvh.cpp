@@ -98,8 +98,9 @@ void SoftwareBvh::upload_instances(const vk::Context& ctx, const std::vector<Pla
   ordered.reserve(instances.size());
   for (uint32_t item : bvh.order) ordered.push_back(instances[item]);
   if (ordered.empty()) ordered.push_back({});
-  tlas_nodes = vk::make_storage_buffer(ctx, bvh.nodes);
-  tlas_instances = vk::make_storage_buffer(ctx, ordered);
+  // Rebuilt at every edit that moves an instance: written in place where it fits.
+  vk::write_storage_buffer(ctx, tlas_nodes, bvh.nodes);
+  vk::write_storage_buffer(ctx, tlas_instances, ordered);
 }
 
 }  // namespace hipr

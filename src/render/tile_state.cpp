@@ -7,8 +7,8 @@
 namespace hipr {
 namespace {
 
-vk::Buffer tile_buffer(const vk::Context& ctx, uint32_t tiles) {
-  return vk::Buffer(ctx, size_t(tiles) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+vk::Buffer tile_buffer(const vk::Context& ctx, uint32_t tiles, vk::MemoryUse use = vk::MemoryUse::Device) {
+  return vk::Buffer(ctx, size_t(tiles) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, use);
 }
 
 }  // namespace
@@ -17,9 +17,9 @@ TileState::TileState(const vk::Context& ctx, const RenderSettings& s)
     : m_tile_size(s.tile_size),
       m_tiles_x((s.width + s.tile_size - 1) / s.tile_size),
       m_tiles_y((s.height + s.tile_size - 1) / s.tile_size) {
-  schedule = tile_buffer(ctx, count());
+  schedule = tile_buffer(ctx, count(), vk::MemoryUse::Upload);  // written at every step
   flags = tile_buffer(ctx, count());
-  background = tile_buffer(ctx, count());
+  background = tile_buffer(ctx, count(), vk::MemoryUse::Upload);  // written at edits that move things
   pixel_lead =
       vk::Buffer(ctx, (size_t(s.width) * s.height + 31) / 32 * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   flags.clear();

@@ -19,6 +19,7 @@ AccelerationStructure& AccelerationStructure::operator=(AccelerationStructure&& 
     release();
     m_ctx = other.m_ctx;
     m_storage = std::move(other.m_storage);
+    m_size = std::exchange(other.m_size, 0);
     m_handle = std::exchange(other.m_handle, VK_NULL_HANDLE);
     m_address = std::exchange(other.m_address, 0);
   }
@@ -30,10 +31,12 @@ void AccelerationStructure::release() {
   m_handle = VK_NULL_HANDLE;
 }
 
-AccelerationStructure build_acceleration_structure(
-    const Context& ctx, VkAccelerationStructureTypeKHR type,
-    const std::vector<VkAccelerationStructureGeometryKHR>& geometries,
-    const std::vector<uint32_t>& primitive_counts) {
+// Builds into `target`, whose storage and handle are kept when they hold the new structure, with
+// `scratch`, made anew only when short.
+void build_acceleration_structure(const Context& ctx, VkAccelerationStructureTypeKHR type,
+                                  const std::vector<VkAccelerationStructureGeometryKHR>& geometries,
+                                  const std::vector<uint32_t>& primitive_counts, AccelerationStructure& target,
+                                  Buffer& scratch) {
   // `geometries` stays alive until the build has executed: lavapipe reads it at record time.
   VkAccelerationStructureBuildGeometryInfoKHR build{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
@@ -47,19 +50,26 @@ AccelerationStructure build_acceleration_structure(
   ctx.fn().getAccelerationStructureBuildSizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                               &build, primitive_counts.data(), &sizes);
 
-  AccelerationStructure result;
-  result.m_ctx = &ctx;
-  result.m_storage = Buffer(ctx, sizes.accelerationStructureSize,
-                            VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR);
-  VkAccelerationStructureCreateInfoKHR create{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
-  create.buffer = result.m_storage.handle();
-  create.size = sizes.accelerationStructureSize;
-  create.type = type;
-  VK_CHECK(ctx.fn().createAccelerationStructure(ctx.device(), &create, nullptr, &result.m_handle));
+  if (!target.m_handle || target.m_size < sizes.accelerationStructureSize) {
+    target.release();
+    target.m_ctx = &ctx;
+    target.m_storage = Buffer(ctx, sizes.accelerationStructureSize, VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR);
+    target.m_size = sizes.accelerationStructureSize;
+    VkAccelerationStructureCreateInfoKHR create{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+    create.buffer = target.m_storage.handle();
+    create.size = sizes.accelerationStructureSize;
+    create.type = type;
+    VK_CHECK(ctx.fn().createAccelerationStructure(ctx.device(), &create, nullptr, &target.m_handle));
+    VkAccelerationStructureDeviceAddressInfoKHR address{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
+    address.accelerationStructure = target.m_handle;
+    target.m_address = ctx.fn().getAccelerationStructureDeviceAddress(ctx.device(), &address);
+  }
 
   const VkDeviceSize alignment = ctx.min_scratch_alignment();
-  Buffer scratch(ctx, sizes.buildScratchSize + alignment, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  build.dstAccelerationStructure = result.m_handle;
+  if (!scratch || scratch.size() < sizes.buildScratchSize + alignment)
+    scratch = Buffer(ctx, sizes.buildScratchSize + alignment, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  build.dstAccelerationStructure = target.m_handle;
   build.scratchData.deviceAddress = (scratch.address() + alignment - 1) / alignment * alignment;
 
   std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges(primitive_counts.size());
@@ -68,12 +78,6 @@ AccelerationStructure build_acceleration_structure(
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     ctx.fn().cmdBuildAccelerationStructures(cmd, 1, &build, &range_pointer);
   });
-
-  VkAccelerationStructureDeviceAddressInfoKHR address{
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
-  address.accelerationStructure = result.m_handle;
-  result.m_address = ctx.fn().getAccelerationStructureDeviceAddress(ctx.device(), &address);
-  return result;
 }
 
 AccelerationStructure build_blas(const Context& ctx, const std::vector<TriangleGeometry>& geometries) {
@@ -96,11 +100,14 @@ AccelerationStructure build_blas(const Context& ctx, const std::vector<TriangleG
     vk_geometries.push_back(geometry);
     counts.push_back(g.triangle_count);
   }
-  return build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
-                                      vk_geometries, counts);
+  AccelerationStructure blas;
+  Buffer scratch;
+  build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, vk_geometries, counts, blas,
+                               scratch);
+  return blas;
 }
 
-AccelerationStructure build_tlas(const Context& ctx, const std::vector<TlasInstance>& instances) {
+void build_tlas(const Context& ctx, const std::vector<TlasInstance>& instances, Tlas& tlas) {
   std::vector<VkAccelerationStructureInstanceKHR> records(instances.size());
   for (size_t i = 0; i < instances.size(); ++i) {
     const TlasInstance& in = instances[i];
@@ -114,18 +121,20 @@ AccelerationStructure build_tlas(const Context& ctx, const std::vector<TlasInsta
     out.flags = in.front_face_ccw ? VK_GEOMETRY_INSTANCE_TRIANGLE_FRONT_COUNTERCLOCKWISE_BIT_KHR : 0;
     out.accelerationStructureReference = in.blas;
   }
-  Buffer instance_buffer(ctx, records.size() * sizeof(VkAccelerationStructureInstanceKHR),
-                         VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR);
-  instance_buffer.upload(records.data(), records.size() * sizeof(VkAccelerationStructureInstanceKHR));
+  const VkDeviceSize bytes = records.size() * sizeof(VkAccelerationStructureInstanceKHR);
+  if (!tlas.instances || tlas.instances.size() < bytes)
+    tlas.instances = Buffer(ctx, bytes + bytes / 2, VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR,
+                            MemoryUse::Upload);
+  tlas.instances.upload(records.data(), bytes);
 
   std::vector<VkAccelerationStructureGeometryKHR> geometry(1);
   geometry[0] = {VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
   geometry[0].geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
   geometry[0].geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
   geometry[0].geometry.instances.arrayOfPointers = VK_FALSE;
-  geometry[0].geometry.instances.data.deviceAddress = instance_buffer.address();
-  return build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, geometry,
-                                      {uint32_t(instances.size())});
+  geometry[0].geometry.instances.data.deviceAddress = tlas.instances.address();
+  build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, geometry,
+                               {uint32_t(instances.size())}, tlas.structure, tlas.scratch);
 }
 
 }  // namespace hipr::vk

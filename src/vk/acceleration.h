@@ -23,13 +23,14 @@ class AccelerationStructure {
   VkDeviceAddress address() const { return m_address; }
 
  private:
-  friend AccelerationStructure build_acceleration_structure(
-      const Context&, VkAccelerationStructureTypeKHR,
-      const std::vector<VkAccelerationStructureGeometryKHR>&, const std::vector<uint32_t>&);
+  friend void build_acceleration_structure(const Context&, VkAccelerationStructureTypeKHR,
+                                           const std::vector<VkAccelerationStructureGeometryKHR>&,
+                                           const std::vector<uint32_t>&, AccelerationStructure&, Buffer&);
   void release();
 
   const Context* m_ctx = nullptr;
   Buffer m_storage;
+  VkDeviceSize m_size = 0;  // what the structure was created for: a build that needs no more reuses it
   VkAccelerationStructureKHR m_handle = VK_NULL_HANDLE;
   VkDeviceAddress m_address = 0;
 };
@@ -55,6 +56,14 @@ struct TlasInstance {
   bool visible = true;  // hidden instances stay in the TLAS with mask 0: no ray ever hits them
 };
 
-AccelerationStructure build_tlas(const Context& ctx, const std::vector<TlasInstance>& instances);
+// The scene's top-level structure and what its builds need, kept between builds: an edit that moves
+// an instance rebuilds it in place (instance records written into mapped memory, the storage and
+// scratch reused where large enough), one submission and no allocation.
+struct Tlas {
+  AccelerationStructure structure;
+  Buffer instances, scratch;
+};
+
+void build_tlas(const Context& ctx, const std::vector<TlasInstance>& instances, Tlas& tlas);
 
 }  // namespace hipr::vk

@@ -12,6 +12,7 @@ namespace {
 
 std::atomic<uint64_t> g_transferred{0};  // host_transfer_bytes()
 std::atomic<uint64_t> g_device_bytes{0};  // device_bytes_in_use()
+std::atomic<uint64_t> g_allocations{0};   // buffer_allocations()
 
 uint32_t find_memory_type(const Context& ctx, uint32_t allowed, VkMemoryPropertyFlags wanted,
                           VkMemoryPropertyFlags fallback) {
@@ -49,10 +50,13 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
   vkGetBufferMemoryRequirements(ctx.device(), m_buffer, &req);
   const VkMemoryPropertyFlags host =
       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  const uint32_t type =
-      use == MemoryUse::Readback
-          ? find_memory_type(ctx, req.memoryTypeBits, host | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, host)
-          : find_memory_type(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+  const uint32_t device_type = find_memory_type(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+  uint32_t type = device_type;
+  if (use == MemoryUse::Readback)
+    type = find_memory_type(ctx, req.memoryTypeBits, host | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, host);
+  else if (use == MemoryUse::Upload)
+    type = find_memory_type(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | host,
+                            VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 
   VkMemoryAllocateFlagsInfo flags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
   flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
@@ -60,11 +64,21 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
   alloc.allocationSize = req.size;
   alloc.memoryTypeIndex = type;
   try {
-    VK_CHECK(vkAllocateMemory(ctx.device(), &alloc, nullptr, &m_memory));
+    VkResult result = vkAllocateMemory(ctx.device(), &alloc, nullptr, &m_memory);
+    // The mappable device memory of a discrete GPU is a small heap (256 MB without resizable
+    // BAR): when it is full, an upload buffer lives in device memory like the others.
+    if (result != VK_SUCCESS && use == MemoryUse::Upload && type != device_type) {
+      type = alloc.memoryTypeIndex = device_type;
+      result = vkAllocateMemory(ctx.device(), &alloc, nullptr, &m_memory);
+    }
+    VK_CHECK(result);
     m_allocated = req.size;
     g_device_bytes += m_allocated;
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
     VK_CHECK(vkBindBufferMemory(ctx.device(), m_buffer, m_memory, 0));
-    if (is_host_visible(ctx, type)) VK_CHECK(vkMapMemory(ctx.device(), m_memory, 0, VK_WHOLE_SIZE, 0, &m_mapped));
+    // Staged device memory: device buffers are reached through copies, as on a discrete GPU.
+    const bool map = is_host_visible(ctx, type) && !(use == MemoryUse::Device && ctx.staged_device_memory());
+    if (map) VK_CHECK(vkMapMemory(ctx.device(), m_memory, 0, VK_WHOLE_SIZE, 0, &m_mapped));
   } catch (...) {
     release();
     throw;
@@ -142,5 +156,6 @@ void Buffer::clear() {
 
 uint64_t host_transfer_bytes() { return g_transferred.load(std::memory_order_relaxed); }
 uint64_t device_bytes_in_use() { return g_device_bytes.load(std::memory_order_relaxed); }
+uint64_t buffer_allocations() { return g_allocations.load(std::memory_order_relaxed); }
 
 }  // namespace hipr::vk

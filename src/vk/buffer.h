@@ -14,6 +14,10 @@ namespace hipr::vk {
 enum class MemoryUse {
   Device,    // GPU reads/writes; host access through upload()/download()
   Readback,  // GPU writes, host reads often (mapped)
+  // Host writes (at edits, at steps), GPU reads: device memory the host can map where the
+  // device has it (discrete GPUs' BAR window, integrated GPUs, lavapipe), so upload() is a copy
+  // into mapped memory with no staging buffer and no submission; else as Device.
+  Upload,
 };
 
 class Buffer {
@@ -69,15 +73,39 @@ uint64_t host_transfer_bytes();
 // what shows whether repeated edits leak.
 uint64_t device_bytes_in_use();
 
+// Device memory allocations made for Buffers since the process started (staging buffers
+// included): each costs a driver call that takes far longer on a discrete GPU than on lavapipe,
+// so what an edit's scene update allocates is counted, not timed.
+uint64_t buffer_allocations();
+
 // Creates a storage buffer holding `values` (at least one element's worth of bytes).
 template <typename T>
 Buffer make_storage_buffer(const Context& ctx, const std::vector<T>& values,
-                           VkBufferUsageFlags extra_usage = 0) {
+                           VkBufferUsageFlags extra_usage = 0, MemoryUse use = MemoryUse::Device) {
   Buffer buffer(ctx, values.size() * sizeof(T),
                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT | extra_usage);
+                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT | extra_usage, use);
   if (!values.empty()) buffer.upload(values.data(), values.size() * sizeof(T));
   return buffer;
+}
+
+// Writes `values` at the start of `buffer` where they fit (kernels take counts from elsewhere,
+// never from a buffer's size), else makes it anew, half again as big as needed so that a table
+// that grows edit by edit is not reallocated at each. True when the buffer was replaced (its
+// descriptors must be rewritten).
+template <typename T>
+bool write_storage_buffer(const Context& ctx, Buffer& buffer, const std::vector<T>& values,
+                          MemoryUse use = MemoryUse::Upload) {
+  const VkDeviceSize bytes = values.size() * sizeof(T);
+  if (buffer && buffer.size() >= bytes) {
+    if (bytes) buffer.upload(values.data(), bytes);
+    return false;
+  }
+  buffer = Buffer(ctx, bytes + bytes / 2,
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                  use);
+  if (bytes) buffer.upload(values.data(), bytes);
+  return true;
 }
 
 }  // namespace hipr::vk

@@ -1,5 +1,6 @@
 #include "vk/context.h"
 
+#include <atomic>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +13,8 @@
 
 namespace hipr::vk {
 namespace {
+
+std::atomic<uint64_t> g_submissions{0};  // queue_submissions()
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
@@ -30,6 +33,15 @@ Traversal requested_traversal(Traversal option) {
   if (value == "ray-query") return Traversal::RayQuery;
   if (value == "software") return Traversal::Software;
   throw InputError("HIPR_TRAVERSAL must be ray-query or software");
+}
+
+bool requested_staged_memory(bool option) {
+  const char* env = std::getenv("HIPR_DEVICE_MEMORY");
+  if (option || !env || !*env) return option;
+  const std::string value = env;
+  if (value == "staged") return true;
+  if (value == "auto") return false;
+  throw InputError("HIPR_DEVICE_MEMORY must be staged or auto");
 }
 
 bool has_extension(const std::vector<VkExtensionProperties>& list, const char* name) {
@@ -100,6 +112,7 @@ int device_rank(const VkPhysicalDeviceProperties& props) {
 
 Context::Context(const ContextOptions& options) {
   try {
+    m_staged_device_memory = requested_staged_memory(options.staged_device_memory);
     create_instance(options);
     if (options.create_surface) {
       m_surface = options.create_surface(m_instance);
@@ -354,7 +367,10 @@ void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record
   submit.pCommandBuffers = &cmd;
   VK_CHECK(vkResetFences(m_device, 1, &m_fence));
   VK_CHECK(vkQueueSubmit(m_queue, 1, &submit, m_fence));
+  g_submissions.fetch_add(1, std::memory_order_relaxed);
   VK_CHECK(vkWaitForFences(m_device, 1, &m_fence, VK_TRUE, UINT64_MAX));
 }
+
+uint64_t queue_submissions() { return g_submissions.load(std::memory_order_relaxed); }
 
 }  // namespace hipr::vk

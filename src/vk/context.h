@@ -30,6 +30,11 @@ struct ContextOptions {
   // Tests: fold 1-D dispatches wider than this many workgroups into rows (see
   // max_dispatch_width) as if the device allowed no more; 0 = the device's own limit.
   uint32_t dispatch_width_limit = 0;
+  // Device buffers (MemoryUse::Device) are never mapped, even where their memory is host-visible
+  // (lavapipe, integrated GPUs): their uploads and read-backs go through staging copies, as on a
+  // discrete GPU. The environment variable HIPR_DEVICE_MEMORY=staged sets it, so that tests and
+  // measurements on lavapipe take a discrete GPU's path.
+  bool staged_device_memory = false;
 };
 
 struct DeviceFunctions {
@@ -59,6 +64,7 @@ class Context {
   // The kernels trace hipr's BVH instead of ray queries (HIPR_SOFTWARE_TRAVERSAL=1 in every
   // kernel; GpuScene builds the BVH instead of acceleration structures).
   bool software_traversal() const { return m_software_traversal; }
+  bool staged_device_memory() const { return m_staged_device_memory; }
   // Whether the device could trace with ray queries (whichever traversal was chosen).
   bool has_ray_queries() const { return m_has_ray_queries; }
   const char* traversal_name() const { return m_software_traversal ? "software" : "ray-query"; }
@@ -68,7 +74,8 @@ class Context {
   uint32_t max_dispatch_width() const { return m_max_dispatch[0]; }
   uint32_t max_dispatch_height() const { return m_max_dispatch[1]; }
 
-  // Records commands into a one-time command buffer, submits it and waits for completion.
+  // Records commands into a one-time command buffer, submits it and waits for completion
+  // (counted by queue_submissions()).
   void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
 
   // Messages of severity ERROR reported by the validation layer since start.
@@ -98,11 +105,17 @@ class Context {
   std::string m_device_name;
   bool m_is_cpu = false;
   bool m_software_traversal = false;
+  bool m_staged_device_memory = false;
   bool m_has_ray_queries = false;
   uint32_t m_min_storage_alignment = 16;
   uint32_t m_max_dispatch[2] = {65535, 65535};  // the minimum every device supports
   uint32_t m_min_scratch_alignment = 128;
   std::atomic<uint32_t> m_validation_errors{0};
 };
+
+// Submissions waited for by submit_and_wait since the process started: on a GPU each costs a
+// round trip through the driver and an idle queue, so an edit's scene update is judged by how
+// many it makes.
+uint64_t queue_submissions();
 
 }  // namespace hipr::vk
