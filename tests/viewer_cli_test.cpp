@@ -525,6 +525,28 @@ TEST(ViewerHeadless, RunsWithoutADisplay) {
   EXPECT_GT(panel_values.size(), 3u) << "the panel's text and widgets";
 }
 
+// On a discrete GPU's path (HIPR_DEVICE_MEMORY=staged: device memory reached through copies), a
+// frame that re-renders allocates no device memory and waits for one submission per step (the
+// step's trace and resolve), the edit's own stages aside: the counters each step reads are
+// mapped, staged copies reuse one staging buffer.
+TEST(ViewerHeadless, ReRenderingAllocatesNothingOnADiscreteGpusPath) {
+  const fs::path dir = test::temp_dir("viewer-headless-staged");
+  const fs::path stats = dir / "stats.json";
+  const test::CommandResult result = test::run_command(
+      "env -u DISPLAY -u WAYLAND_DISPLAY HIPR_DEVICE_MEMORY=staged " + quoted(test::hipr_binary()) + " view " +
+      quoted(test::asset("cornell_box.gltf")) +
+      " --size 128x128 --tile 16 --spp 8 --max-depth 4 --tiles-per-step 16 --steps-per-frame 1 --script-every 20"
+      " --headless --exit-after-frames 40 -q --stats-json " + quoted(stats) + " --script " +
+      quoted(write_script(dir, "recolour.json", kRecolour)));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  std::ifstream in(stats);
+  const nlohmann::json json = nlohmann::json::parse(in);
+  const nlohmann::json& rendering = json["rendering"];
+  ASSERT_EQ(rendering["frames"].get<int>(), 40) << json.dump();
+  EXPECT_EQ(rendering["allocations_per_frame"].get<double>(), 0.0) << json.dump();
+  EXPECT_LT(rendering["submissions_per_frame"].get<double>(), 1.5) << json.dump();
+}
+
 // Valid input without a display: one line that says what to do, no crash.
 TEST(ViewerCli, WithoutADisplayTheViewerSaysSo) {
   const test::CommandResult result =

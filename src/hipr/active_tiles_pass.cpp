@@ -12,12 +12,12 @@ ActiveTilesPass::ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, 
                                  const GBufferPass& gbuffers, const vk::Buffer& display,
                                  const vk::Buffer& tile_weights, uint32_t pixels)
     : changed_records(ctx, std::max<size_t>(scene.record_count(), 1) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                      vk::MemoryUse::Upload),
+                      vk::MemoryUse::Shared),
       tile_change(ctx, size_t(tiles.count()) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       tile_focus(ctx, size_t(tiles.count()) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_ctx(ctx),
       m_focus_discs(ctx, sizeof(abi::FocusDisc) * abi::kMaxFocusDiscs, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                    vk::MemoryUse::Upload),
+                    vk::MemoryUse::Shared),
       m_pixels(pixels),
       m_tiles(tiles.count()),
       m_carry(ctx, "carry_tiles.comp", {},
@@ -88,7 +88,7 @@ bool ActiveTilesPass::set_changed(const GpuScene& scene, const ChangeSet& change
   bool replaced = false;
   if (changed_records.size() < records.size() * 4) {
     // Records only grow (GpuScene reuses free ones): twice as many leaves room for the next.
-    changed_records = vk::Buffer(m_ctx, records.size() * 2 * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload);
+    changed_records = vk::Buffer(m_ctx, records.size() * 2 * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Shared);
     m_mark_active.bind_buffer(abi::kMarkActiveChangedRecords, changed_records);
     replaced = true;
   }

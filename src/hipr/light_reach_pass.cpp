@@ -20,7 +20,7 @@ LightReachPass::LightReachPass(const vk::Context& ctx, const GpuScene& scene, co
       m_display(display),
       m_tile_change(tile_change),
       m_lights(ctx, sizeof(abi::Light) * 2 * abi::kMaxReachLights, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-               vk::MemoryUse::Upload),
+               vk::MemoryUse::Shared),
       m_pixels(pixels),
       m_features(kernel_features) {}
 

@@ -18,7 +18,8 @@ uint32_t groups_for(uint32_t items) { return (items + abi::kWorkgroupSize - 1) /
 Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups, bool keep_difference,
            const vk::DescriptorSet& scene, const vk::Buffer& tile_flags)
     : accumulation(storage(ctx, size_t(width) * height * sizeof(abi::PixelAccum))),
-      stats(storage(ctx, sizeof(abi::RenderStats))),
+      // Read after every step (the scheduler's work, convergence): mapped where the device allows.
+      stats(ctx, sizeof(abi::RenderStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Shared),
       group_sums(storage(ctx, std::max<size_t>(size_t(width) * height * light_groups, 1) * sizeof(glm::vec3))),
       difference(storage(ctx, (keep_difference ? size_t(width) * height : 1) * sizeof(abi::DifferenceRecord))),
       m_ctx(ctx),

@@ -21,7 +21,7 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
   build_blases(scene);
   upload_environment(scene);
   bsdf_tables = vk::make_storage_buffer(ctx, bsdf_table_data());
-  frame_buffer = vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1), 0, vk::MemoryUse::Upload);
+  frame_buffer = vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1), 0, vk::MemoryUse::Shared);
   std::vector<vk::BindingSlot> slots;
   if (!ctx.software_traversal()) slots.push_back({abi::kSceneTlas, vk::BindingKind::AccelerationStructure});
   for (uint32_t b = abi::kScenePositions; b <= abi::kSceneFrame; ++b) slots.push_back({b});
@@ -113,7 +113,7 @@ void GpuScene::assign_records(const Scene& scene, const std::vector<Instance>& i
   if (!geometries || m_records.size() != capacity) {
     // Never empty: a buffer of no bytes cannot be bound.
     geometries = vk::make_storage_buffer(m_ctx, m_records.empty() ? std::vector<abi::GeometryRecord>(1) : m_records, 0,
-                                         vk::MemoryUse::Upload);
+                                         vk::MemoryUse::Shared);
     ++m_layout_generation;
   }
 }

@@ -17,9 +17,9 @@ TileState::TileState(const vk::Context& ctx, const RenderSettings& s)
     : m_tile_size(s.tile_size),
       m_tiles_x((s.width + s.tile_size - 1) / s.tile_size),
       m_tiles_y((s.height + s.tile_size - 1) / s.tile_size) {
-  schedule = tile_buffer(ctx, count(), vk::MemoryUse::Upload);  // written at every step
+  schedule = tile_buffer(ctx, count(), vk::MemoryUse::Shared);  // written at every step
   flags = tile_buffer(ctx, count());
-  background = tile_buffer(ctx, count(), vk::MemoryUse::Upload);  // written at edits that move things
+  background = tile_buffer(ctx, count(), vk::MemoryUse::Shared);  // written at edits that move things
   pixel_lead =
       vk::Buffer(ctx, (size_t(s.width) * s.height + 31) / 32 * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   flags.clear();

@@ -124,7 +124,7 @@ void build_tlas(const Context& ctx, const std::vector<TlasInstance>& instances, 
   const VkDeviceSize bytes = records.size() * sizeof(VkAccelerationStructureInstanceKHR);
   if (!tlas.instances || tlas.instances.size() < bytes)
     tlas.instances = Buffer(ctx, bytes + bytes / 2, VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR,
-                            MemoryUse::Upload);
+                            MemoryUse::Shared);
   tlas.instances.upload(records.data(), bytes);
 
   std::vector<VkAccelerationStructureGeometryKHR> geometry(1);

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "vk/check.h"
+#include "vk/staging.h"
 
 namespace hipr::vk {
 namespace {
@@ -54,7 +55,7 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
   uint32_t type = device_type;
   if (use == MemoryUse::Readback)
     type = find_memory_type(ctx, req.memoryTypeBits, host | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, host);
-  else if (use == MemoryUse::Upload)
+  else if (use == MemoryUse::Shared)
     type = find_memory_type(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | host,
                             VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 
@@ -67,7 +68,7 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
     VkResult result = vkAllocateMemory(ctx.device(), &alloc, nullptr, &m_memory);
     // The mappable device memory of a discrete GPU is a small heap (256 MB without resizable
     // BAR): when it is full, an upload buffer lives in device memory like the others.
-    if (result != VK_SUCCESS && use == MemoryUse::Upload && type != device_type) {
+    if (result != VK_SUCCESS && use == MemoryUse::Shared && type != device_type) {
       type = alloc.memoryTypeIndex = device_type;
       result = vkAllocateMemory(ctx.device(), &alloc, nullptr, &m_memory);
     }
@@ -125,7 +126,8 @@ void Buffer::upload(const void* data, VkDeviceSize size, VkDeviceSize offset) {
     std::memcpy(static_cast<char*>(m_mapped) + offset, data, size);
     return;
   }
-  Buffer staging(*m_ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Readback);
+  Buffer temporary;
+  Buffer& staging = m_ctx->staging().for_copy(*m_ctx, size, temporary);
   staging.upload(data, size);
   m_ctx->submit_and_wait([&](VkCommandBuffer cmd) {
     const VkBufferCopy region{0, offset, size};
@@ -141,7 +143,8 @@ void Buffer::download(void* data, VkDeviceSize size, VkDeviceSize offset) const 
     std::memcpy(data, static_cast<const char*>(m_mapped) + offset, size);
     return;
   }
-  Buffer staging(*m_ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+  Buffer temporary;
+  Buffer& staging = m_ctx->staging().for_copy(*m_ctx, size, temporary);
   m_ctx->submit_and_wait([&](VkCommandBuffer cmd) {
     const VkBufferCopy region{offset, 0, size};
     vkCmdCopyBuffer(cmd, m_buffer, staging.handle(), 1, &region);

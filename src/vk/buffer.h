@@ -14,10 +14,11 @@ namespace hipr::vk {
 enum class MemoryUse {
   Device,    // GPU reads/writes; host access through upload()/download()
   Readback,  // GPU writes, host reads often (mapped)
-  // Host writes (at edits, at steps), GPU reads: device memory the host can map where the
-  // device has it (discrete GPUs' BAR window, integrated GPUs, lavapipe), so upload() is a copy
-  // into mapped memory with no staging buffer and no submission; else as Device.
-  Upload,
+  // Small buffers the host touches often, writing them at edits and steps or reading them after
+  // steps (counters): device memory the host can map where the device has it (a discrete GPU's
+  // BAR window, integrated GPUs, lavapipe), so upload() and download() are copies to and from
+  // mapped memory with no staging buffer and no submission; else as Device.
+  Shared,
 };
 
 class Buffer {
@@ -95,7 +96,7 @@ Buffer make_storage_buffer(const Context& ctx, const std::vector<T>& values,
 // descriptors must be rewritten).
 template <typename T>
 bool write_storage_buffer(const Context& ctx, Buffer& buffer, const std::vector<T>& values,
-                          MemoryUse use = MemoryUse::Upload) {
+                          MemoryUse use = MemoryUse::Shared) {
   const VkDeviceSize bytes = values.size() * sizeof(T);
   if (buffer && buffer.size() >= bytes) {
     if (bytes) buffer.upload(values.data(), bytes);

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "vk/check.h"
+#include "vk/staging.h"
 
 namespace hipr::vk {
 namespace {
@@ -128,9 +129,15 @@ Context::Context(const ContextOptions& options) {
 
 Context::~Context() { release(); }
 
+StagingBuffers& Context::staging() const {
+  if (!m_staging) m_staging = std::make_unique<StagingBuffers>();
+  return *m_staging;
+}
+
 void Context::release() {
   if (m_device) {
     vkDeviceWaitIdle(m_device);
+    m_staging.reset();  // its buffers before the device
     if (m_fence) vkDestroyFence(m_device, m_fence, nullptr);
     if (m_command_pool) vkDestroyCommandPool(m_device, m_command_pool, nullptr);
     vkDestroyDevice(m_device, nullptr);
@@ -360,6 +367,13 @@ void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
   record(cmd);
+  // What the commands wrote becomes visible to host reads of mapped memory (counters, read-backs)
+  // once the fence is waited for.
+  VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  to_host.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr,
+                       0, nullptr);
   VK_CHECK(vkEndCommandBuffer(cmd));
 
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};

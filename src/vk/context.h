@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,8 @@ struct DeviceFunctions {
   PFN_vkGetAccelerationStructureDeviceAddressKHR getAccelerationStructureDeviceAddress = nullptr;
 };
 
+class StagingBuffers;  // vk/staging.h
+
 class Context {
  public:
   explicit Context(const ContextOptions& options = {});
@@ -77,6 +80,8 @@ class Context {
   // Records commands into a one-time command buffer, submits it and waits for completion
   // (counted by queue_submissions()).
   void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
+  // The staging buffer of copies to and from unmapped device memory (Buffer::upload/download).
+  StagingBuffers& staging() const;
 
   // Messages of severity ERROR reported by the validation layer since start.
   uint32_t validation_errors() const { return m_validation_errors.load(); }
@@ -101,6 +106,7 @@ class Context {
   uint32_t m_queue_family = 0;
   VkCommandPool m_command_pool = VK_NULL_HANDLE;
   VkFence m_fence = VK_NULL_HANDLE;
+  mutable std::unique_ptr<StagingBuffers> m_staging;  // made at the first staged copy
   DeviceFunctions m_fn;
   std::string m_device_name;
   bool m_is_cpu = false;
