@@ -547,6 +547,32 @@ TEST(ViewerHeadless, ReRenderingAllocatesNothingOnADiscreteGpusPath) {
   EXPECT_LT(rendering["submissions_per_frame"].get<double>(), 1.5) << json.dump();
 }
 
+// A light edit is relit at once (docs/method.md#relighting): the frame after it shows the change
+// before any step renders, so its latency is the edit's own work; a recolour shows after a step.
+TEST(ViewerHeadless, ARelitEditIsPresentedBeforeAnyStep) {
+  const fs::path dir = test::temp_dir("viewer-headless-relit");
+  const fs::path stats = dir / "stats.json";
+  const fs::path script = write_script(
+      dir, "edits.json",
+      R"({"edits": [{"op": "emission", "material": "light", "set": {"emission_luminance": 2.0}},
+                    {"op": "material", "material": "red", "set": {"base_color": [0.05, 0.1, 0.65]}}]})");
+  const test::CommandResult result = test::run_command(
+      "env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " view " +
+      quoted(test::asset("cornell_box.gltf")) + " --size 64x64 --tile 16 --spp 4 --max-depth 4 --script-start 20"
+      " --script-every 40 --headless --exit-after-frames 100 -q --stats-json " + quoted(stats) + " --script " +
+      quoted(script));
+  ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  std::ifstream in(stats);
+  const nlohmann::json json = nlohmann::json::parse(in);
+  ASSERT_EQ(json["edits"].size(), 2u) << json.dump();
+  const nlohmann::json& relit = json["edits"][0];
+  const nlohmann::json& recolour = json["edits"][1];
+  EXPECT_GE(relit["latency_seconds"].get<double>(), 0.0) << json.dump();
+  EXPECT_EQ(relit["work_at_first_change"].get<double>(), 0.0) << "shown before any step: " << json.dump();
+  EXPECT_GE(recolour["latency_seconds"].get<double>(), 0.0) << json.dump();
+  EXPECT_GT(recolour["work_at_first_change"].get<double>(), 0.0) << "shown after a step: " << json.dump();
+}
+
 // Valid input without a display: one line that says what to do, no crash.
 TEST(ViewerCli, WithoutADisplayTheViewerSaysSo) {
   const test::CommandResult result =

@@ -91,8 +91,12 @@ class Session {
   const ImageRGB& displayed();
   // Increments whenever the display may have changed (steps, edits, a new renderer).
   uint64_t display_version() const { return m_display_version; }
+  // The last edit is on the display already and no frame has shown it yet: a light edit relit
+  // the converged image at once (docs/method.md#relighting). The viewer presents that frame
+  // before rendering steps, which would only delay it.
+  bool edit_shown_unpresented() const;
   // Call after a frame was presented: completes the latency of the last change when this frame
-  // is the first to show it (the first after a step since the edit).
+  // is the first to show it (the first after a step since the edit, or after a relit edit).
   void on_presented();
   const std::vector<EditRecord>& edit_records() const { return m_records; }
 

@@ -360,7 +360,11 @@ void Viewer::take_setting_request(std::optional<T>& request, const char* what, A
 
 void Viewer::render_steps() {
   const Timer timer;
-  if (m_state.steps_per_frame > 0) {
+  if (m_session->edit_shown_unpresented() && m_state.steps_per_frame == 0) {
+    // A relit edit is on the display already: present it now, render from the next frame.
+    // (--steps-per-frame keeps its exact count: scripted runs stay frame for frame reproducible.)
+    m_state.steps_last_frame = 0;
+  } else if (m_state.steps_per_frame > 0) {
     m_state.steps_last_frame = m_session->render(1e30, m_state.steps_per_frame);
   } else if (m_state.frame_budget_ms > 0.0) {
     m_state.steps_last_frame = m_session->render(m_state.frame_budget_ms * 1e-3);
