@@ -67,11 +67,13 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
   try {
     VkResult result = vkAllocateMemory(ctx.device(), &alloc, nullptr, &m_memory);
     // The mappable device memory of a discrete GPU is a small heap (256 MB without resizable
-    // BAR): when it is full, an upload buffer lives in device memory like the others.
+    // BAR): when it is full, a shared buffer lives in device memory like the others.
     if (result != VK_SUCCESS && use == MemoryUse::Shared && type != device_type) {
       type = alloc.memoryTypeIndex = device_type;
+      m_memory = VK_NULL_HANDLE;
       result = vkAllocateMemory(ctx.device(), &alloc, nullptr, &m_memory);
     }
+    if (result != VK_SUCCESS) m_memory = VK_NULL_HANDLE;  // nothing for release() to free
     VK_CHECK(result);
     m_allocated = req.size;
     g_device_bytes += m_allocated;

@@ -1,7 +1,7 @@
 #include "vk/context.h"
 
-#include <atomic>
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
