@@ -9,7 +9,6 @@
 #include "hipr/scene_loader.h"
 #include "render/kernel_features.h"
 #include "vk/buffer.h"
-#include "vk/context.h"
 #include "test_support.h"
 #include "shaders/shared/abi.h"
 
@@ -76,12 +75,12 @@ TEST(IncrementalUpdate, EditsAllocateNothingAndSubmitAtMostTheTlasBuild) {
     for (const Edit& edit : edits) {
       const Edit undo = inverse_edit(scene, edit);  // puts back the scene as it is now
       for (const Edit& e : {edit, undo}) {
-        const uint64_t allocations = vk::buffer_allocations(), submissions = vk::queue_submissions();
+        const vk::DeviceCounts before = vk::DeviceCounts::now();
         apply(e);
-        EXPECT_EQ(vk::buffer_allocations() - allocations, 0u) << describe(e);
+        const vk::DeviceCounts update = vk::DeviceCounts::now() - before;
+        EXPECT_EQ(update.allocations, 0u) << describe(e);
         const bool moves = std::holds_alternative<TransformEdit>(e);
-        EXPECT_LE(vk::queue_submissions() - submissions, moves && !test::context().software_traversal() ? 1u : 0u)
-            << describe(e);
+        EXPECT_LE(update.submissions, moves && !test::context().software_traversal() ? 1u : 0u) << describe(e);
       }
     }
   renderer.reset();

@@ -4,7 +4,6 @@
 
 #include "core/timer.h"
 #include "vk/buffer.h"
-#include "vk/context.h"
 
 namespace hipr {
 
@@ -44,11 +43,12 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   m_relit = m_relight && m_policy->relights() && m_renderer.relight(changes.emitter_scales);
   m_times.capture_seconds = timer.seconds();
   const Timer scene_timer;
-  const uint64_t allocations = vk::buffer_allocations(), submissions = vk::queue_submissions();
+  const vk::DeviceCounts before_update = vk::DeviceCounts::now();
   m_renderer.update_scene(scene, changes);
   m_times.scene_seconds = scene_timer.seconds();
-  m_times.scene_allocations = uint32_t(vk::buffer_allocations() - allocations);
-  m_times.scene_submissions = uint32_t(vk::queue_submissions() - submissions);
+  const vk::DeviceCounts update = vk::DeviceCounts::now() - before_update;
+  m_times.scene_allocations = uint32_t(update.allocations);
+  m_times.scene_submissions = uint32_t(update.submissions);
   const Timer schedule_timer;
   m_edited = true;
   m_cursor = 0;

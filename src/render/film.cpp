@@ -29,8 +29,9 @@ Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t lig
       m_difference(keep_difference),
       m_mark_owed(ctx, "mark_owed.comp", {},
                   {{abi::kOwedAccumulation, &accumulation}, {abi::kOwedTileFlags, &tile_flags}}, 0, &scene),
-      m_total(ctx, sizeof(uint64_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-              vk::MemoryUse::Readback),
+      // The kernel's 64-bit atomics land in device memory (mapped where the device allows), not
+      // in host memory across the bus.
+      m_total(ctx, sizeof(uint64_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Shared),
       m_sum_samples(ctx, "sum_samples.comp", {}, {{abi::kSumAccumulation, &accumulation}, {abi::kSumTotal, &m_total}},
                     sizeof(uint32_t)) {
   clear();

@@ -121,11 +121,7 @@ void build_tlas(const Context& ctx, const std::vector<TlasInstance>& instances, 
     out.flags = in.front_face_ccw ? VK_GEOMETRY_INSTANCE_TRIANGLE_FRONT_COUNTERCLOCKWISE_BIT_KHR : 0;
     out.accelerationStructureReference = in.blas;
   }
-  const VkDeviceSize bytes = records.size() * sizeof(VkAccelerationStructureInstanceKHR);
-  if (!tlas.instances || tlas.instances.size() < bytes)
-    tlas.instances = Buffer(ctx, bytes + bytes / 2, VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR,
-                            MemoryUse::Shared);
-  tlas.instances.upload(records.data(), bytes);
+  write_storage_buffer(ctx, tlas.instances, records, VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR);
 
   std::vector<VkAccelerationStructureGeometryKHR> geometry(1);
   geometry[0] = {VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};

@@ -79,6 +79,20 @@ uint64_t device_bytes_in_use();
 // so what an edit's scene update allocates is counted, not timed.
 uint64_t buffer_allocations();
 
+// Those tallies and queue_submissions() at one moment: what a piece of work cost is the
+// difference of two.
+struct DeviceCounts {
+  uint64_t transfer_bytes = 0, allocations = 0, submissions = 0;
+  static DeviceCounts now() { return {host_transfer_bytes(), buffer_allocations(), queue_submissions()}; }
+  DeviceCounts operator-(const DeviceCounts& o) const {
+    return {transfer_bytes - o.transfer_bytes, allocations - o.allocations, submissions - o.submissions};
+  }
+  DeviceCounts& operator+=(const DeviceCounts& o) {
+    transfer_bytes += o.transfer_bytes, allocations += o.allocations, submissions += o.submissions;
+    return *this;
+  }
+};
+
 // Creates a storage buffer holding `values` (at least one element's worth of bytes).
 template <typename T>
 Buffer make_storage_buffer(const Context& ctx, const std::vector<T>& values,
@@ -96,17 +110,12 @@ Buffer make_storage_buffer(const Context& ctx, const std::vector<T>& values,
 // descriptors must be rewritten).
 template <typename T>
 bool write_storage_buffer(const Context& ctx, Buffer& buffer, const std::vector<T>& values,
-                          MemoryUse use = MemoryUse::Shared) {
+                          VkBufferUsageFlags extra_usage = 0, MemoryUse use = MemoryUse::Shared) {
   const VkDeviceSize bytes = values.size() * sizeof(T);
-  if (buffer && buffer.size() >= bytes) {
-    if (bytes) buffer.upload(values.data(), bytes);
-    return false;
-  }
-  buffer = Buffer(ctx, bytes + bytes / 2,
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                  use);
+  const bool replaced = !buffer || buffer.size() < bytes;
+  if (replaced) buffer = Buffer(ctx, bytes + bytes / 2, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extra_usage, use);
   if (bytes) buffer.upload(values.data(), bytes);
-  return true;
+  return replaced;
 }
 
 }  // namespace hipr::vk

@@ -1,5 +1,7 @@
 #include "vk/staging.h"
 
+#include <algorithm>
+
 namespace hipr::vk {
 
 Buffer& StagingBuffers::for_copy(const Context& ctx, VkDeviceSize size, Buffer& temporary) {

@@ -179,9 +179,7 @@ class Viewer {
   // Frames that ran steps: their times (the frame rate while re-rendering) and the bytes copied
   // between host and device during them.
   std::vector<double> m_rendering_frame_ms;
-  uint64_t m_rendering_transfer_bytes = 0;
-  uint64_t m_rendering_allocations = 0;  // device memory allocations (vk::buffer_allocations)
-  uint64_t m_rendering_submissions = 0;  // submissions waited for (vk::queue_submissions), the frame's own not counted
+  vk::DeviceCounts m_rendering_counts;  // submissions waited for: the frame's own not counted
   // What the current overlay was made from, to rebuild it only when that changes.
   struct OverlayKey {
     Overlay overlay = Overlay::None;
@@ -450,8 +448,8 @@ nlohmann::json Viewer::rendering_stats() const {
           {"frame_ms_median", at(0.5)},
           {"frame_ms_p95", at(0.95)},
           {"frame_ms_max", ms.back()},
-          {"allocations_per_frame", double(m_rendering_allocations) / double(ms.size())},
-          {"submissions_per_frame", double(m_rendering_submissions) / double(ms.size())}};
+          {"allocations_per_frame", double(m_rendering_counts.allocations) / double(ms.size())},
+          {"submissions_per_frame", double(m_rendering_counts.submissions) / double(ms.size())}};
 }
 
 void Viewer::write_stats(double seconds) const {
@@ -475,7 +473,7 @@ void Viewer::write_stats(double seconds) const {
                                 {"steps", m_steps},
                                 {"rendering", rendering_stats()},
                                 {"host_transfer_bytes_per_frame",
-                                 rendering ? double(m_rendering_transfer_bytes) / double(rendering) : 0.0},
+                                 rendering ? double(m_rendering_counts.transfer_bytes) / double(rendering) : 0.0},
                                 {"edits", edits}};
   write_text_atomically(m_options.stats_json, stats.dump(2) + "\n");
 }
@@ -485,9 +483,7 @@ int Viewer::run() {
   Timer frame_timer;
   uint32_t frame_index = 0;
   while (!m_window.should_close()) {
-    const uint64_t transferred_at_frame_start = vk::host_transfer_bytes();
-    const uint64_t allocations_at_frame_start = vk::buffer_allocations();
-    const uint64_t submissions_at_frame_start = vk::queue_submissions();
+    const vk::DeviceCounts at_frame_start = vk::DeviceCounts::now();
     const bool scripted =
         m_options.exit_after_frames > 0 || m_script_next < m_options.script.size();
     // Nothing to render and nobody in a hurry: sleep until an event instead of spinning.
@@ -538,9 +534,7 @@ int Viewer::run() {
     m_frame_overhead_ms = m_frame_overhead_ms > 0.0 ? 0.8 * m_frame_overhead_ms + 0.2 * overhead_ms : overhead_ms;
     if (m_state.steps_last_frame > 0) {  // re-rendering: its frame time, what crossed between host and device
       m_rendering_frame_ms.push_back(frame_seconds * 1e3);
-      m_rendering_transfer_bytes += vk::host_transfer_bytes() - transferred_at_frame_start;
-      m_rendering_allocations += vk::buffer_allocations() - allocations_at_frame_start;
-      m_rendering_submissions += vk::queue_submissions() - submissions_at_frame_start;
+      m_rendering_counts += vk::DeviceCounts::now() - at_frame_start;
     }
     m_state.fps = m_state.fps > 0.0 ? 0.9 * m_state.fps + 0.1 / frame_seconds : 1.0 / frame_seconds;
     if (!m_options.frames_dir.empty()) {
