@@ -548,7 +548,8 @@ TEST(ViewerHeadless, ReRenderingAllocatesNothingOnADiscreteGpusPath) {
 }
 
 // A light edit is relit at once (docs/method.md#relighting): the frame after it shows the change
-// before any step renders, so its latency is the edit's own work; a recolour shows after a step.
+// before any step renders, so its latency is the edit's own work; a recolour shows after a step,
+// presented at once rather than after a frame's budget of further steps.
 TEST(ViewerHeadless, ARelitEditIsPresentedBeforeAnyStep) {
   const fs::path dir = test::temp_dir("viewer-headless-relit");
   const fs::path stats = dir / "stats.json";
@@ -571,6 +572,8 @@ TEST(ViewerHeadless, ARelitEditIsPresentedBeforeAnyStep) {
   EXPECT_EQ(relit["work_at_first_change"].get<double>(), 0.0) << "shown before any step: " << json.dump();
   EXPECT_GE(recolour["latency_seconds"].get<double>(), 0.0) << json.dump();
   EXPECT_GT(recolour["work_at_first_change"].get<double>(), 0.0) << "shown after a step: " << json.dump();
+  EXPECT_EQ(relit["steps_at_first_change"].get<int>(), 0) << json.dump();
+  EXPECT_EQ(recolour["steps_at_first_change"].get<int>(), 1) << "presented with its first step: " << json.dump();
 }
 
 // Valid input without a display: one line that says what to do, no crash.

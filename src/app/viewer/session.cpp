@@ -123,11 +123,15 @@ uint32_t Session::render(double budget_seconds, uint32_t max_steps) {
   const Timer timer;
   uint32_t steps = 0;
   while (steps < max_steps && !converged()) {
+    const double started = timer.seconds();
     m_scheduler->step();
     ++steps;
     ++m_steps_since_edit;
     display_changed();
-    if (timer.seconds() >= budget_seconds) break;
+    // Stop before a step that would overrun the budget, not after: on a GPU a step takes a few
+    // milliseconds, and overrunning a 60 fps frame by one drops the frame rate below 60.
+    const double elapsed = timer.seconds();
+    if (elapsed + (elapsed - started) > budget_seconds) break;
   }
   return steps;
 }
@@ -158,6 +162,7 @@ void Session::on_presented() {
   if (!m_awaiting_change || m_records.empty() || (m_steps_since_edit == 0 && !m_scheduler->relit())) return;
   m_records.back().latency_seconds = m_since_edit.seconds();
   m_records.back().work_at_first_change = m_scheduler->work_since_edit();
+  m_records.back().steps_at_first_change = m_steps_since_edit;
   m_awaiting_change = false;
 }
 

@@ -38,6 +38,7 @@ struct EditRecord {
   std::string what;
   double latency_seconds = -1.0;      // edit -> first frame presented after a step; -1: none yet
   double work_at_first_change = 0.0;  // in full-frame 1-spp passes
+  uint32_t steps_at_first_change = 0;  // scheduling steps rendered before that frame
 };
 
 class Session {
@@ -76,8 +77,9 @@ class Session {
   bool redo();
   void mark_saved() { m_history.mark_saved(); }
 
-  // Runs scheduling steps until `budget_seconds` is spent (at least one step) or the image
-  // has `spp` samples per pixel again; returns how many ran.
+  // Runs scheduling steps while another one still fits in `budget_seconds` (judged by the last
+  // step's time; at least one step runs) or until the image has `spp` samples per pixel again;
+  // returns how many ran.
   uint32_t render(double budget_seconds, uint32_t max_steps = UINT32_MAX);
   bool converged() const;
   double work_since_edit() const { return m_scheduler->work_since_edit(); }
@@ -95,6 +97,9 @@ class Session {
   // the converged image at once (docs/method.md#relighting). The viewer presents that frame
   // before rendering steps, which would only delay it.
   bool edit_shown_unpresented() const;
+  // The last edit awaits the step that shows it: the frame that renders that step should be
+  // presented at once, not filled with more steps that only delay the change on screen.
+  bool edit_awaits_first_step() const { return m_awaiting_change && m_steps_since_edit == 0; }
   // Call after a frame was presented: completes the latency of the last change when this frame
   // is the first to show it (the first after a step since the edit, or after a relit edit).
   void on_presented();

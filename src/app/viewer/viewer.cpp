@@ -364,6 +364,10 @@ void Viewer::render_steps() {
     m_state.steps_last_frame = 0;
   } else if (m_state.steps_per_frame > 0) {
     m_state.steps_last_frame = m_session->render(1e30, m_state.steps_per_frame);
+  } else if (m_session->edit_awaits_first_step()) {
+    // The first step after an edit shows it (HiPR: the most changed tiles): present it at once.
+    // Filling the frame's budget first would add a whole frame's work to the edit's latency.
+    m_state.steps_last_frame = m_session->render(1e30, 1);
   } else if (m_state.frame_budget_ms > 0.0) {
     m_state.steps_last_frame = m_session->render(m_state.frame_budget_ms * 1e-3);
   } else {
@@ -458,7 +462,8 @@ void Viewer::write_stats(double seconds) const {
   for (const EditRecord& r : m_session->edit_records())
     edits.push_back({{"edit", r.what},
                      {"latency_seconds", r.latency_seconds},
-                     {"work_at_first_change", r.work_at_first_change}});
+                     {"work_at_first_change", r.work_at_first_change},
+                     {"steps_at_first_change", r.steps_at_first_change}});
   const RenderSettings& s = m_options.common.render;
   const nlohmann::json stats = {{"device", m_ctx.device_name()},
                                 {"traversal", m_ctx.traversal_name()},
