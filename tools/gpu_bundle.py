@@ -45,14 +45,14 @@ STAND_INS = {
 }
 
 
-def run(*command: str) -> str:
-    return subprocess.run(command, check=True, capture_output=True, text=True).stdout
+def run(*command: str, env: dict[str, str] | None = None) -> str:
+    return subprocess.run(command, check=True, capture_output=True, text=True, env=env).stdout
 
 
-def resolved_paths(binary: Path) -> dict[str, str]:
-    """soname -> path, as the loader on this machine finds them."""
+def resolved_paths(binary: Path, env: dict[str, str] | None = None) -> dict[str, str]:
+    """soname -> path, as the loader on this machine finds them (in that environment)."""
     paths = {}
-    for line in run("ldd", str(binary)).splitlines():
+    for line in run("ldd", str(binary), env=env).splitlines():
         parts = line.split()
         if len(parts) >= 3 and parts[1] == "=>" and parts[2].startswith("/"):
             paths[parts[0]] = parts[2]

@@ -151,15 +151,13 @@ const ImageRGB& Session::displayed() {
   return m_displayed;
 }
 
-bool Session::edit_shown_unpresented() const {
-  return m_awaiting_change && m_steps_since_edit == 0 && m_scheduler->relit();
-}
+bool Session::edit_shown_unpresented() const { return edit_awaits_first_step() && m_scheduler->relit(); }
 
 void Session::on_presented() {
   // The first step after an edit resolves the tiles it rendered to the display (HiPR: the most
   // changed ones): the frame presented after it is the first to show the change; a relit edit
   // shows at once. Judged without reading the image back, so presenting costs no host transfer.
-  if (!m_awaiting_change || m_records.empty() || (m_steps_since_edit == 0 && !m_scheduler->relit())) return;
+  if (!m_awaiting_change || m_records.empty() || (edit_awaits_first_step() && !m_scheduler->relit())) return;
   m_records.back().latency_seconds = m_since_edit.seconds();
   m_records.back().work_at_first_change = m_scheduler->work_since_edit();
   m_records.back().steps_at_first_change = m_steps_since_edit;
