@@ -1,5 +1,7 @@
 #include "fuzz_inputs.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -12,6 +14,10 @@
 #include "hipr/scene_loader.h"
 #include "image/builtin_environments.h"
 #include "image/environment_loader.h"
+#include "render/bvh_builder.h"
+#include "render/light_groups.h"
+#include "render/light_tables.h"
+#include "scene/default_camera.h"
 
 namespace hipr::fuzz {
 namespace {
@@ -29,6 +35,72 @@ bool starts_with(const uint8_t* data, size_t size, const char* magic, size_t len
   return size >= length && std::memcmp(data, magic, length) == 0;
 }
 
+// A broken invariant is a finding: the fuzzer (and the regression test) stop at it.
+void require(bool condition) {
+  if (!condition) __builtin_trap();
+}
+
+void require_tree(const Bvh& bvh, size_t items) {
+  std::vector<bool> seen(items, false);
+  for (const uint32_t item : bvh.order) {
+    require(item < items && !seen[item]);
+    seen[item] = true;
+  }
+  require(bvh.order.size() == items && !bvh.nodes.empty());
+}
+
+// What GpuScene derives from a scene on the host (src/render/gpu_scene.cpp, software_bvh.cpp),
+// at no device: a BVH per mesh over its triangles and one over the instances' world boxes (the
+// software traversal's), the light tables with their CDF, the camera. Each kernel indexes by
+// what these hold, so each must be whole and finite.
+void derive_gpu_scene(const Scene& scene) {
+  std::vector<Box> mesh_boxes;
+  for (const Mesh& mesh : scene.meshes) {
+    std::vector<Box> triangles;
+    Box whole;
+    for (const MeshPrimitive& primitive : mesh.primitives)
+      for (size_t i = 0; i + 2 < primitive.indices.size(); i += 3) {
+        Box triangle;
+        for (size_t k = 0; k < 3; ++k) {
+          require(primitive.indices[i + k] < primitive.positions.size());
+          triangle.grow(primitive.positions[primitive.indices[i + k]]);
+        }
+        triangles.push_back(triangle);
+        whole.grow(triangle);
+      }
+    require_tree(build_bvh(triangles), triangles.size());
+    mesh_boxes.push_back(whole);
+  }
+  const std::vector<Instance> instances = scene.instances();
+  std::vector<uint32_t> record_base;
+  uint32_t records = 0;
+  std::vector<Box> instance_boxes;
+  for (const Instance& instance : instances) {
+    record_base.push_back(records);
+    records += uint32_t(scene.meshes[instance.mesh].primitives.size());
+    if (!instance.visible) continue;
+    const Box& local = mesh_boxes[instance.mesh];
+    Box world;
+    for (int corner = 0; corner < 8; ++corner)
+      world.grow(glm::vec3(instance.world * glm::vec4((corner & 1) ? local.hi.x : local.lo.x,
+                                                      (corner & 2) ? local.hi.y : local.lo.y,
+                                                      (corner & 4) ? local.hi.z : local.lo.z, 1.0f)));
+    instance_boxes.push_back(world);
+  }
+  require_tree(build_bvh(instance_boxes), instance_boxes.size());
+  const auto [lo, hi] = scene.bounds();
+  const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+  require(std::isfinite(radius));
+  const float environment_mean = scene.environment ? environment_mean_luminance(*scene.environment) : 0.0f;
+  const LightTables tables = build_light_tables(scene, instances, record_base, records, radius, environment_mean,
+                                                assign_light_groups(scene, 8));
+  require(tables.cdf.size() == tables.lights.size() + 1);
+  for (size_t i = 1; i < tables.cdf.size(); ++i) require(std::isfinite(tables.cdf[i]) && tables.cdf[i] >= tables.cdf[i - 1]);
+  const Camera camera = resolve_camera(scene);
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) require(std::isfinite(camera.camera_to_world[c][r]));
+}
+
 void apply_all(Scene scene, const std::vector<Edit>& edits) {
   for (const Edit& edit : edits) {
     if (const auto* e = std::get_if<EnvironmentEdit>(&edit))
@@ -41,6 +113,7 @@ void apply_all(Scene scene, const std::vector<Edit>& edits) {
       apply_edit(scene, inverse);
       (void)diff_scenes(before, scene);
       apply_edit(scene, edit);  // the next edit starts from this one
+      derive_gpu_scene(scene);
     } catch (const InputError&) {
     }
   }
@@ -53,8 +126,7 @@ void load_gltf_bytes(const uint8_t* data, size_t size, const std::filesystem::pa
   const std::filesystem::path path = write_alone(data, size, folder, glb ? "scene.glb" : "scene.gltf");
   try {
     const Scene scene = load_scene(path, {.environment = kNoEnvironment});
-    (void)scene.instances();
-    (void)scene.bounds();
+    derive_gpu_scene(scene);
   } catch (const InputError&) {
   }
 }

@@ -10,11 +10,14 @@
 namespace hipr::fuzz {
 
 // The bytes as a glTF scene: .glb when they start with its magic, else .gltf JSON, in a folder
-// of their own (`folder`, emptied first) so that references to other files find nothing.
+// of their own (`folder`, emptied first) so that references to other files find nothing. A scene
+// that loads is then derived as the GPU scene's build derives it on the host (the software
+// traversal's BVHs, the light tables, the camera), its invariants checked.
 void load_gltf_bytes(const uint8_t* data, size_t size, const std::filesystem::path& folder);
 
 // The bytes as an edit script, each edit applied (with its inverse, as undo does) to the
-// shipped Cornell box and to a furnace scene with an environment. Environment files named by
+// shipped Cornell box and to a furnace scene with an environment, each edited scene derived as
+// above. Environment files named by
 // the script are not read (the fuzzer cannot make files; reading /dev paths could hang).
 void apply_edit_script_bytes(const uint8_t* data, size_t size, const std::filesystem::path& assets);
 

@@ -213,8 +213,8 @@ void main() {
       const DifferenceRecord record = b_difference[index];
       differenced += 1u;
       if (record_judges(record)) {
-        cross += record_sums(record, kDifferenceCrossHalf);
-        spread += record_sums(record, kDifferenceOldHalf);
+        cross += record_sums(record, kDifferenceCross);
+        spread += record_sums(record, kDifferenceOld);
       }
       continue;
     }

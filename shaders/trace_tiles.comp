@@ -82,15 +82,15 @@ layout(scalar, binding = kTraceDisplay) readonly buffer Display { DisplayTexel b
 // Sample `index` of the scene as it is now has `value`: compared with the old scene's sample
 // `index` where the record holds it (the same random numbers drew both), then kept in its place.
 void note_sample(inout DifferenceRecord record, uint index, vec3 value, uint valid, vec3 stale) {
-  const vec3 fresh = half_rounded(value);
+  const vec3 fresh = half_precision(value);
   if (index < valid) {
     const vec3 old = record_vec3(record, 3u * index);
     const vec3 d = fresh - old;
-    const vec3 w = relmse_weight(stale) * kDifferenceSumScale;
-    set_record_vec3(record, kDifferenceSumHalf, record_vec3(record, kDifferenceSumHalf) + d);
-    set_record_vec3(record, kDifferenceCrossHalf, record_vec3(record, kDifferenceCrossHalf) + w * d * (old - stale));
-    set_record_vec3(record, kDifferenceOldHalf, record_vec3(record, kDifferenceOldHalf) + w * (old - stale) * (old - stale));
-    set_record_half(record, kDifferenceSquaresHalf, record_half(record, kDifferenceSquaresHalf) + dot(w, d * d));
+    const vec3 w = relmse_weight(stale);
+    set_record_vec3(record, kDifferenceSum, record_vec3(record, kDifferenceSum) + d);
+    set_record_vec3(record, kDifferenceCross, record_vec3(record, kDifferenceCross) + w * d * (old - stale));
+    set_record_vec3(record, kDifferenceOld, record_vec3(record, kDifferenceOld) + w * (old - stale) * (old - stale));
+    set_record_value(record, kDifferenceSquares, record_value(record, kDifferenceSquares) + dot(w, d * d));
   }
   set_record_vec3(record, 3u * index, fresh);
 }

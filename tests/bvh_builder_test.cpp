@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
 
 #include "render/bvh_builder.h"
@@ -111,6 +112,28 @@ TEST(BvhBuilder, PathologicalSpreadEndsInLeavesAtTheDepthLimit) {
   const std::vector<int> seen = check_tree(bvh, boxes, depth, leaf);
   for (int s : seen) ASSERT_EQ(s, 1);
   EXPECT_LE(depth, abi::kBvhMaxDepth);
+}
+
+// Boxes near or beyond float's range (scenes refuse them, scene/scene_limits.h, but the builder
+// must not trust that): centres that overflow, infinite and NaN corners. Every item is still in
+// one leaf; nothing indexes out of the bins (ASan/UBSan builds run this).
+TEST(BvhBuilder, BoxesBeyondFloatsRangeStillBuildATree) {
+  std::vector<Box> boxes = random_boxes(200, 3, 0.5f);
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  for (const auto& [lo, hi] : {std::pair{glm::vec3(3e38f), glm::vec3(3.4e38f)}, std::pair{glm::vec3(-3.4e38f), glm::vec3(3.4e38f)},
+                               std::pair{glm::vec3(-inf), glm::vec3(inf)}, std::pair{glm::vec3(nan), glm::vec3(nan)},
+                               std::pair{glm::vec3(0.0f), glm::vec3(inf, 1.0f, nan)}})
+    for (int copy = 0; copy < 20; ++copy) boxes.push_back(Box{lo, hi});
+  const Bvh bvh = build_bvh(boxes);
+  std::vector<int> seen(boxes.size(), 0);
+  for (const abi::BvhNode& node : bvh.nodes)
+    if (node.count != 0)
+      for (uint32_t i = node.first; i < node.first + (node.count & ~abi::kBvhLeaf); ++i) {
+        ASSERT_LT(i, bvh.order.size());
+        ASSERT_LT(bvh.order[i], boxes.size());
+        seen[bvh.order[i]] += 1;
+      }
+  for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << "item " << i;
 }
 
 TEST(BvhBuilder, NoItemsGiveOneEmptyLeaf) {

@@ -452,6 +452,86 @@ TEST(Replay, GeometryEditsSaveAndRenderAsTheEditedScene) {
   EXPECT_FALSE(fs::exists(dir / "esc"));
 }
 
+// Edits in a scene without a camera (most real assets) keep the view decided at load: a move
+// that grows the scene's bounds (the tall block in front of the box) shows the block moved, and
+// the image is what a script that first pinned the view as a camera node (a camera edit of
+// nothing) ends on, and what the file --save wrote renders, bit for bit.
+TEST(Replay, EditsInASceneWithoutACameraKeepTheView) {
+  const fs::path dir = test::temp_dir("replay_camera_less");
+  const fs::path scene = test::camera_less_cornell_box(dir);
+  const char* move = R"({"op": "transform", "node": "tall_block", "translate": [0, 0, 0.6]})";
+  std::ofstream(dir / "move.json") << "{\"edits\": [" << move << "]}";
+  std::ofstream(dir / "pinned.json") << R"({"edits": [{"op": "camera", "translate": [0, 0, 0]}, )" << move << "]}";
+  const std::string size = " --width 32 --height 32 --spp 2 --tile 8 --max-depth 3 --env studio -q";
+  for (const char* script : {"move", "pinned"})
+    ASSERT_EQ(test::run_hipr("replay " + quoted(scene) + " " + quoted(dir / (std::string(script) + ".json")) +
+                             " -o " + quoted(dir / script) + " --save " + quoted(dir / script / "saved.gltf") + size)
+                  .exit_code,
+              kExitOk);
+  ASSERT_EQ(test::run_hipr("render " + quoted(scene) + " -o " + quoted(dir / "unmoved.exr") + size).exit_code, kExitOk);
+  ASSERT_EQ(test::run_hipr("render " + quoted(dir / "move" / "saved.gltf") + " -o " + quoted(dir / "saved.exr") + size)
+                .exit_code,
+            kExitOk);
+  const ImageRGB moved = read_image(dir / "move" / "final.exr");
+  EXPECT_NE(moved.rgb, read_image(dir / "unmoved.exr").rgb) << "the block moved on screen";
+  EXPECT_EQ(moved.rgb, read_image(dir / "pinned" / "final.exr").rgb) << "the view did not move";
+  EXPECT_EQ(moved.rgb, read_image(dir / "saved.exr").rgb) << "the saved file renders as the edit was seen";
+
+  // hipr bench: the edit's reference (the edited scene, converged) is the same image both ways.
+  const std::string bench = " --width 24 --height 24 --tile 8 --spp 2 --ref-spp 4 --max-depth 3 --env studio "
+                            "--policies hipr,full --no-ref-cache -q -o ";
+  for (const char* script : {"move", "pinned"})
+    ASSERT_EQ(test::run_hipr("bench " + quoted(scene) + " " + quoted(dir / (std::string(script) + ".json")) + bench +
+                             quoted(dir / (std::string("bench_") + script)))
+                  .exit_code,
+              kExitOk);
+  EXPECT_EQ(read_image(dir / "bench_move" / "edit1_reference.exr").rgb,
+            read_image(dir / "bench_pinned" / "edit2_reference.exr").rgb);
+}
+
+// Hostile inputs, made by hand once and crashes or memory kills then: each is one line and exit
+// 2 under both traversals, and writes nothing. A node whose transform reaches 3e38 (finite, but
+// its bounds overflow: the software BVH binned NaN), moves that add up to it, an accessor of two
+// billion elements with no data behind it, and an edit script reading a file outside its folder.
+TEST(Cli, HostileInputsAreOneLineErrors) {
+  const fs::path dir = test::temp_dir("hostile");
+  nlohmann::json box;
+  std::ifstream(test::asset("cornell_box.gltf")) >> box;
+  fs::copy_file(test::asset("cornell_box.bin"), dir / "cornell_box.bin");
+  nlohmann::json huge = box;
+  for (auto& node : huge["nodes"])
+    if (node["name"] == "tall_block") {
+      node.erase("translation"), node.erase("rotation"), node.erase("scale");
+      node["matrix"] = {3e38, 0, 0, 0, 0, 3e38, 0, 0, 0, 0, 3e38, 0, 3e38, 0, 0, 1};
+    }
+  std::ofstream(dir / "huge_transform.gltf") << huge.dump();
+  nlohmann::json empty_accessor = box;
+  empty_accessor["accessors"].push_back({{"componentType", 5126}, {"type", "VEC3"}, {"count", 2000000000}});
+  std::ofstream(dir / "empty_accessor.gltf") << empty_accessor.dump();
+  std::ofstream(dir / "moves.json") << R"({"edits": [
+      {"op": "transform", "node": "tall_block", "translate": [3e38, 0, 0]},
+      {"op": "transform", "node": "tall_block", "translate": [3e38, 0, 0]}]})";
+  std::ofstream(dir / "environment.json") << R"({"edits": [{"op": "environment", "source": "/etc/hostname"}]})";
+  const std::string cornell = quoted(test::asset("cornell_box.gltf"));
+  const std::string size = " --width 16 --height 16 --spp 1 --tile 8 -q --traversal ";
+  for (const char* traversal : {"ray-query", "software"}) {
+    const fs::path out = dir / traversal;
+    fs::create_directories(out);
+    const std::pair<std::string, const char*> commands[] = {
+        {"render " + quoted(dir / "huge_transform.gltf") + " -o " + quoted(out / "a.exr"), "out of range"},
+        {"render " + quoted(dir / "empty_accessor.gltf") + " -o " + quoted(out / "b.exr"), "no bufferView"},
+        {"replay " + cornell + " " + quoted(dir / "moves.json") + " -o " + quoted(out / "c"), "out of range"},
+        {"replay " + cornell + " " + quoted(dir / "environment.json") + " -o " + quoted(out / "d"), "script's folder"}};
+    for (const auto& [command, why] : commands) {
+      SCOPED_TRACE(command);
+      const test::CommandResult result = test::run_hipr(command + size + traversal);
+      expect_one_error_line(result);
+      EXPECT_NE(result.output.find(why), std::string::npos) << result.output;
+    }
+    EXPECT_TRUE(files_in(out).empty()) << "nothing written";
+  }
+}
+
 TEST(Replay, BadPolicyOrUnknownNameWritesNothing) {
   const fs::path dir = test::temp_dir("replay-bad");
   const fs::path script = dir / "edits.json";
@@ -672,6 +752,31 @@ TEST(Compare, SaysWhereImagesDiffer) {
   EXPECT_GT(f.at("value").get<double>(), 0.01);
   const auto fbox = f.at("box");
   EXPECT_TRUE(fbox[0] <= 4 && fbox[1] <= 2 && fbox[2] >= 7 && fbox[3] >= 5) << fbox;
+}
+
+// A few wrong pixels: their mean passes a golden threshold, their 99.9th percentile does not.
+TEST(Compare, APercentileCatchesTheWorstPixels) {
+  const fs::path dir = test::temp_dir("compare_percentile");
+  ImageRGB a{64, 64, std::vector<float>(64 * 64 * 3, 0.25f)};
+  const ImageRGB b = a;
+  for (const size_t pixel : {100u, 1000u, 2000u, 3000u, 4000u})
+    for (size_t c = 0; c < 3; ++c) a.rgb[pixel * 3 + c] = 0.9f;
+  write_image(dir / "a.exr", a);
+  write_image(dir / "b.exr", b);
+  auto result = compare_in(dir, "--metric max --threshold 0.1");
+  EXPECT_EQ(result.exit_code, kExitDifferent) << result.output;
+  result = compare_in(dir, "--metric relmse --threshold 0.01");
+  EXPECT_EQ(result.exit_code, kExitOk) << "the mean lets 5 pixels in 4096 pass: " << result.output;
+  result = compare_in(dir, "--metric relmse --percentile 99.9 --threshold 0.01");
+  EXPECT_EQ(result.exit_code, kExitDifferent) << result.output;
+  EXPECT_NEAR(read_json(dir / "r.json").at("value").get<double>(), 0.65 * 0.65 / (0.0625 + 0.01) / 2, 1e-5);
+  result = compare_in(dir, "--metric relmse --percentile 99");
+  EXPECT_EQ(result.exit_code, kExitOk) << "99% of the pixels are equal: " << result.output;
+  EXPECT_EQ(read_json(dir / "r.json").at("percentile").get<double>(), 99.0);
+  for (const char* bad : {"0", "101", "-5"}) {
+    result = compare_in(dir, std::string("--percentile ") + bad);
+    EXPECT_EQ(result.exit_code, kExitBadInput) << bad << ": " << result.output;
+  }
 }
 
 // A NaN is a difference whatever the threshold: a broken render never passes.

@@ -74,6 +74,28 @@ TEST(DifferenceEstimate, IsAnUnbiasedEstimateOfTheEditedScene) {
   }
 }
 
+// Samples beyond a half's range (65504; the sky's sun is 1e9 nits) keep their values: an emitter
+// the camera sees, made 3x brighter, is estimated 3x brighter. (Clamped alike before and after,
+// as the records once were, its differences were zero: "unchanged", shown at the old value.)
+TEST(DifferenceEstimate, SamplesBeyondAHalfsRangeKeepTheirValue) {
+  Scene scene = box();
+  apply_edit(scene, MaterialEdit{"light", {{"emission_luminance", {2e5f}}}});
+  const auto renderer = converged_then_edited(scene, MaterialEdit{"light", {{"emission_luminance", {6e5f}}}}, 1);
+  const DifferenceEstimates d = renderer->difference_estimates();
+  const ImageRGB fresh = renderer->image();  // the edited scene's first two samples
+  const ImageRGB stale = renderer->displayed_image();
+  size_t bright = 0;
+  for (size_t p = 0; p < d.changed.size(); ++p) {
+    // A fresh sample saw the lamp: its old sample, drawn alike, saw it at a third of that, so
+    // C = s + mean d gains at least 2e5 / 2 over s <= 2e5 (3x on the lamp, more at its edge).
+    if (fresh.rgb[p * 3] < 4.0f * 65504.0f) continue;
+    ++bright;
+    EXPECT_EQ(d.changed[p], 1u) << "pixel " << p;
+    EXPECT_GT(d.image.rgb[p * 3], 1.4f * stale.rgb[p * 3]) << "pixel " << p;
+  }
+  EXPECT_GT(bright, 0u) << "the lamp is on screen";
+}
+
 // With direct light only, recolouring a wall changes exactly the paths whose camera ray sees it:
 // every other pixel's samples repeat the old ones bit for bit, its differences are all zero and
 // it shows its stale value exactly; the wall's pixels are changed and show the change.

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -572,30 +571,6 @@ TEST(Flip, RejectsBadInput) {
   EXPECT_TRUE(flip_error_map(empty, empty).empty());
   // Images narrower than the filters are fine: coordinates clamp.
   EXPECT_NEAR(flip_mean(uniform(1, 1, {0, 1, 0}), uniform(1, 1, {0, 0, 1})), 1.0, 1e-4);
-}
-
-// Prints the run time for `hipr bench`'s budget; asserts only that the results are sane.
-TEST(Flip, RunTime) {
-  for (uint32_t size : {128u, 512u}) {
-    const ImageRGB reference = make_image(size, size, [&](uint32_t x, uint32_t y) {
-      return Rgb{float(x) / float(size), float(y) / float(size), 0.5f};
-    });
-    ImageRGB test = reference;
-    std::mt19937 rng(size);
-    std::normal_distribution<float> noise(0.0f, 0.1f);
-    for (float& v : test.rgb) v = std::max(0.0f, v + noise(rng));
-    const int repeats = size == 128 ? 5 : 1;
-    double mean = 0.0;
-    const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < repeats; ++i) mean = flip_mean(test, reference);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count() /
-        repeats;
-    std::printf("flip_mean %ux%u: %.2f ms (mean error %.4f)\n", size, size, ms, mean);
-    EXPECT_GT(mean, 0.0);
-    EXPECT_LT(mean, 1.0);
-  }
 }
 
 }  // namespace

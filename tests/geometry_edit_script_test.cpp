@@ -283,5 +283,26 @@ TEST(GeometryEdits, ScriptsParseTheFourOps) {
   refused(R"({"op": "import", "file": "escape/hosts"})");
 }
 
+// An environment file an edit script names is confined as an import is: absolute paths, ".."
+// and links out of the folder are refused before anything is opened; built-in names are no paths.
+TEST(EditScript, EnvironmentFilesStayInTheScriptsFolder) {
+  const std::filesystem::path dir = test::temp_dir("environment_script");
+  const auto parse = [&](const std::string& source) {
+    return parse_edit_script(R"({"edits": [{"op": "environment", "source": ")" + source + R"("}]})", "s.json", dir);
+  };
+  for (const char* source : {"/etc/hostname", "../outside.hdr", "maps/../../outside.exr", "escape/hostname"}) {
+    if (std::string(source) == "escape/hostname") std::filesystem::create_symlink("/etc", dir / "escape");
+    try {
+      parse(source);
+      ADD_FAILURE() << "accepted " << source;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("script's folder"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(std::get<EnvironmentEdit>(parse("maps/room.hdr").front()).source, dir / "maps/room.hdr");
+  for (const char* name : {"studio", "sky", "none"})
+    EXPECT_EQ(std::get<EnvironmentEdit>(parse(name).front()).source, std::filesystem::path(name));
+}
+
 }  // namespace
 }  // namespace hipr

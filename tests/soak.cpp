@@ -4,6 +4,7 @@
 // On lavapipe device memory is host memory, so the resident set size counts both.
 // usage: hipr_soak [EDITS] [SEED]   (prints one JSON object; exit 1 when the image differs)
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
+#include "core/error.h"
 #include "core/log.h"
 #include "core/memory_usage.h"
 #include "vk/context.h"
@@ -22,9 +24,31 @@ namespace {
 
 using namespace hipr;
 
+// A hostile edit: huge, tiny and degenerate transforms, a lamp or emitter squashed to no area,
+// values beyond the scene limits, NaN. Those beyond the limits must be refused (the scene as it
+// was); the others are scenes the renderer must draw without a NaN.
+Edit hostile_edit(std::mt19937& rng) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const auto scaled = [](glm::vec3 s) { return glm::scale(glm::mat4(1.0f), s); };
+  switch (rng() % 10) {
+    case 0: return TransformEdit{"sphere", std::nullopt, scaled(glm::vec3(3e38f))};
+    case 1: return TransformEdit{"tall_block", std::nullopt, scaled(glm::vec3(1e-30f))};
+    case 2: return TransformEdit{"tall_block", std::nullopt, scaled(glm::vec3(1.0f, 0.0f, 1.0f))};
+    case 3: return TransformEdit{"sphere", glm::vec3(3e38f, 0.0f, 0.0f), std::nullopt};
+    case 4: return TransformEdit{"lamp", glm::vec3(0.0f, nan, 0.0f), std::nullopt};
+    case 5: return DeformEdit{"light", scaled(glm::vec3(0.0f, 1.0f, 1.0f)), nullptr};
+    case 6: return LightEdit{"lamp", 1e30f, std::nullopt, std::nullopt};
+    case 7: return MaterialEdit{"light", {{"emission_luminance", {3e38f}}}};
+    case 8: return MaterialEdit{"white", {{"base_color", {nan, 0.5f, 0.5f}}}};
+    default: return CameraEdit{std::nullopt, glm::mat4(0.0f)};
+  }
+}
+
 // One edit of a random op with random values in range (names of the shipped cornell_sphere;
-// the geometry ops duplicate a node as "copy" or delete the copy, and deform the sphere).
+// the geometry ops duplicate a node as "copy" or delete the copy, and deform the sphere), or
+// one time in twenty a hostile one.
 Edit random_edit(std::mt19937& rng, const Scene& scene) {
+  if (rng() % 20 == 0) return hostile_edit(rng);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   const auto pick = [&](std::initializer_list<const char*> names) {
     return std::string(names.begin()[rng() % names.size()]);
@@ -76,8 +100,13 @@ int main(int argc, char** argv) {
   std::mt19937 rng(seed);
   std::string samples;  // resident KiB every tenth of the run
   long first = 0, last = 0;
+  int refused = 0;
   for (int e = 1; e <= edits; ++e) {
-    pipeline.apply(random_edit(rng, scene));
+    try {
+      pipeline.apply(random_edit(rng, scene));
+    } catch (const InputError&) {
+      ++refused;  // a hostile value: the scene stays as it was
+    }
     scheduler.step();
     if (e % std::max(edits / 10, 1) == 0) {
       last = long(resident_bytes() / 1024);
@@ -89,8 +118,10 @@ int main(int argc, char** argv) {
   Renderer fresh(ctx, scene, settings);
   fresh.add_samples_full_frame(spp);
   const bool same = scheduler.displayed_image().rgb == fresh.image().rgb;
-  std::printf("{\"edits\": %d, \"seed\": %u, \"bit_identical\": %s, \"resident_kib\": [%s], "
-              "\"growth_kib_after_first_tenth\": %ld}\n",
-              edits, seed, same ? "true" : "false", samples.c_str(), last - first);
-  return same ? 0 : 1;
+  const bool finite = renderer.counters().non_finite_samples == 0;
+  std::printf("{\"edits\": %d, \"seed\": %u, \"traversal\": \"%s\", \"refused\": %d, \"bit_identical\": %s, "
+              "\"nonfinite_samples\": %llu, \"resident_kib\": [%s], \"growth_kib_after_first_tenth\": %ld}\n",
+              edits, seed, ctx.traversal_name(), refused, same ? "true" : "false",
+              (unsigned long long)renderer.counters().non_finite_samples, samples.c_str(), last - first);
+  return same && finite ? 0 : 1;
 }

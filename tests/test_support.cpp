@@ -1,8 +1,12 @@
 #include "test_support.h"
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <sstream>
 
@@ -33,6 +37,22 @@ fs::path temp_dir(const std::string& name) {
   fs::create_directories(dir);
   created_temp_dirs().push_back(dir);
   return dir;
+}
+
+bool gltf_validator_required() {
+  const char* required = std::getenv("HIPR_REQUIRE_GLTF_VALIDATOR");
+  return required && std::string(required) == "1";
+}
+
+fs::path camera_less_cornell_box(const fs::path& dir) {
+  nlohmann::json gltf;
+  std::ifstream(asset("cornell_box.gltf")) >> gltf;
+  gltf.erase("cameras");
+  for (auto& node : gltf["nodes"]) node.erase("camera");
+  fs::copy_file(asset("cornell_box.bin"), dir / "cornell_box.bin", fs::copy_options::overwrite_existing);
+  const fs::path path = dir / "cornell_no_camera.gltf";
+  std::ofstream(path) << gltf.dump(2);
+  return path;
 }
 
 namespace {

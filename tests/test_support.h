@@ -18,7 +18,13 @@ namespace hipr::test {
 std::filesystem::path asset(const std::string& name);         // assets/scenes/NAME
 std::filesystem::path shared_scene(const std::string& name);  // ../shared/scenes/NAME
 bool shared_scenes_available();
+// Whether the glTF validator must be there: tools/test.sh, whose set-up installs it, says so
+// (HIPR_REQUIRE_GLTF_VALIDATOR=1); a validator test then fails without it instead of skipping.
+bool gltf_validator_required();
 std::filesystem::path temp_dir(const std::string& name);      // fresh, empty
+// The shipped Cornell box without its camera, written into `dir` (as most real assets come: the
+// view is the default camera that frames the scene as loaded).
+std::filesystem::path camera_less_cornell_box(const std::filesystem::path& dir);
 
 // One Vulkan context per test binary, with validation layers on. A test environment fails
 // the run at exit if the layer reported any error.

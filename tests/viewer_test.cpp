@@ -544,6 +544,22 @@ TEST(Session, FollowsTheSelectionAsItsFocus) {
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
 }
 
+// An edit beyond the scene's limits (a move to 3e38 m) is refused with one line, which the viewer
+// shows: the scene, the picture and the undo history stay as they were, and undo still undoes
+// the edit before it.
+TEST(Session, AnEditBeyondTheLimitsLeavesTheSceneAndTheHistory) {
+  Session session(test::context(), cornell(), small_settings());
+  const Scene loaded = session.scene();
+  session.edit(TransformEdit{"short_block", glm::vec3(0.04f, 0.0f, 0.0f), std::nullopt});
+  const Scene moved = session.scene();
+  const std::string label = session.history().undo_label();
+  EXPECT_THROW(session.edit(TransformEdit{"short_block", glm::vec3(3e38f, 0.0f, 0.0f), std::nullopt}), InputError);
+  EXPECT_TRUE(diff_scenes(moved, session.scene()).empty());
+  EXPECT_EQ(session.history().undo_label(), label);
+  ASSERT_TRUE(session.undo());
+  EXPECT_TRUE(diff_scenes(loaded, session.scene()).empty());
+}
+
 // A scene without a camera gets one, so moving an object does not move the framing camera.
 TEST(Session, ASceneWithoutACameraGetsItsDefaultCamera) {
   Session session(test::context(), test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f),

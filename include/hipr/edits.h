@@ -88,8 +88,8 @@ struct FocusEdit {
 // Geometry edits (docs/method.md#geometry-edits). Nodes keep their indices through all of them:
 // copies and imports are appended, a delete detaches the node from its parent (and drops it
 // from the end of the list when an edit appended it there), and the inverses put back exactly
-// the hierarchy before. A scene without a camera first gets its default one as a node, so that
-// the view does not follow the bounds the edit changes.
+// the hierarchy before. A scene without a camera keeps its view through them
+// (Scene::default_camera), whatever they do to its bounds.
 
 // A copy of the node and its subtree beside it (the same parent), moved by `translate` in the
 // parent's frame. Copies share the meshes; a copied light is a light of its own. The copy is

@@ -55,7 +55,7 @@ struct RenderSettings {
   // edit of an emitter's intensity or colour relights the converged image at once (HiPR policy).
   // Costs 24 bytes per pixel and group; radiance is the same bit for bit with or without.
   uint32_t light_groups = 8;
-  // Keep each pixel's first samples (32 bytes per pixel), so that after an edit the display can
+  // Keep each pixel's first samples (64 bytes per pixel), so that after an edit the display can
   // show the converged image plus the change, estimated with the same random numbers
   // (DisplayRule::Difference). Radiance is the same bit for bit with or without.
   bool difference_estimate = true;

@@ -158,6 +158,11 @@ struct Scene {
   std::vector<Image> images;
   std::vector<PunctualLight> lights;
   std::vector<Camera> cameras;  // camera nodes reference these
+  // The view of a scene without a camera node: framed around the scene as loaded (or as it was
+  // before its first edit) and kept as it is through every edit, so that moving or hiding an
+  // object moves the object, not the view. A camera edit turns it into a camera node; saving
+  // writes it as one (src/scene/default_camera.h).
+  std::optional<Camera> default_camera;
   std::optional<Environment> environment;
   std::vector<std::string> extensions_used;
 
@@ -165,7 +170,7 @@ struct Scene {
   // depth-first order.
   std::vector<Instance> instances() const;
   glm::mat4 world_transform(uint32_t node) const;
-  // Camera node to render from: the first node with a camera, or -1.
+  // Camera node to render from: the first node with a camera, or -1 (default_camera then).
   int camera_node() const;
   // World-space bounds of all instances (min, max); a unit box when empty.
   std::pair<glm::vec3, glm::vec3> bounds() const;

@@ -49,7 +49,7 @@ uint differenced_samples(DisplayTexel texel, uint n) {
 
 // The difference estimate C of a pixel with c differenced samples.
 vec3 difference_estimate(DifferenceRecord record, vec3 stale, uint c) {
-  return stale + record_vec3(record, kDifferenceSumHalf) / float(c);
+  return stale + record_vec3(record, kDifferenceSum) / float(c);
 }
 
 // C' = C + a (f - C) of a changed pixel with c differenced samples (all of its samples), a the
@@ -99,8 +99,8 @@ vec2 blend_terms(PixelAccum accum, uint n, DisplayTexel texel) {
 // record's sums and C' - s = sum_i r_i / c (c >= 2; with one difference the square of r, which
 // bounds it from above).
 float corrected_noise(DifferenceRecord record, vec3 shift, vec3 stale, uint c, vec3 a) {
-  const float squares = record_squares(record) + 2.0 * dot(a, record_sums(record, kDifferenceCrossHalf)) +
-                        dot(a * a, record_sums(record, kDifferenceOldHalf));
+  const float squares = record_squares(record) + 2.0 * dot(a, record_sums(record, kDifferenceCross)) +
+                        dot(a * a, record_sums(record, kDifferenceOld));
   if (c < 2u) return max(squares, 0.0);
   return max(squares - float(c) * dot(relmse_weight(stale), shift * shift), 0.0) / float((c - 1u) * c);
 }

@@ -254,31 +254,30 @@ struct DisplayTexel {
 // The difference estimate (docs/method.md#the-difference-estimate): per pixel, the values of the
 // first kDifferenceSamples samples of the last scene state that reached them, so that after an
 // edit sample i of the new state, drawn with the same random numbers, is compared with sample i of
-// the old one. Values are kept as halves (packHalf2x16): a value the edit did not change rounds
-// the same on both sides, so its difference is exactly zero.
+// the old one. Values are kept as floats rounded to a half's precision (11 significant bits, no
+// clamp to its range): a value the edit did not change rounds the same on both sides, so its
+// difference is exactly zero, and the sun's nits are kept as they are.
 HIPR_CONST uint kDifferenceSamples = 2u;
-// DifferenceRecord::halves, three per colour: the kept samples (slot j at 3j), then since the
+// DifferenceRecord::values, three per colour: the kept samples (slot j at 3j), then since the
 // last edit, for the differenced samples i (d_i = new_i - old_i; w = 1 / (stale^2 + 0.01), the
 // weights relMSE gives errors): the sum of d_i, the sums of w d_i (old_i - stale) and of
 // w (old_i - stale)^2 (per channel: their ratio over a tile estimates how much of the old samples'
-// noise the new ones replaced) and, last, one half: the sum over channels of w d_i^2.
-HIPR_CONST uint kDifferenceSumHalf = 6u;
-HIPR_CONST uint kDifferenceCrossHalf = 9u;
-HIPR_CONST uint kDifferenceOldHalf = 12u;
-HIPR_CONST uint kDifferenceSquaresHalf = 15u;
-HIPR_CONST uint kDifferenceHalves = 16u;
-// The weighted sums (cross, old, squares) are kept times this scale, so a weight of up to 100
-// times a bright sample's square stays in half's range; a sum that reaches half's largest value
-// marks a sample too bright to judge (resolve_display.comp keeps the pixel's stale value).
-HIPR_CONST float kDifferenceSumScale = 1.0f / 256.0f;
+// noise the new ones replaced) and, last, one value: the sum over channels of w d_i^2. A sum that
+// overflows (beyond any radiance a scene may hold, scene/scene_limits.h) marks a sample too bright
+// to judge (resolve_display.comp keeps the pixel's stale value).
+HIPR_CONST uint kDifferenceSum = 6u;
+HIPR_CONST uint kDifferenceCross = 9u;
+HIPR_CONST uint kDifferenceOld = 12u;
+HIPR_CONST uint kDifferenceSquares = 15u;
+HIPR_CONST uint kDifferenceValues = 16u;
 // DisplayTexel::flags bits 4-5: how many kept samples are of the scene state the stale estimate
 // is of (0: no difference estimate). Set by the capture, cleared by a relight.
 HIPR_CONST uint kDifferenceValidShift = 4u;
 HIPR_CONST uint kDifferenceValidMask = 3u;
 
-// 32 bytes per pixel (resolve_display.comp reads it; trace_tiles.comp writes it).
+// 64 bytes per pixel (resolve_display.comp reads it; trace_tiles.comp writes it).
 struct DifferenceRecord {
-  uint halves[kDifferenceHalves / 2u];
+  float values[kDifferenceValues];
 };
 
 // What resolve_display.comp judged of a tile at its last resolve since the last edit (the

@@ -1,4 +1,4 @@
-// `hipr compare A B [--metric flip|relmse|rmse|max] [--threshold T] [--heatmap FILE.png]
+// `hipr compare A B [--metric flip|relmse|rmse|max] [--threshold T] [--percentile P] [--heatmap FILE.png]
 // [--json FILE]`: for screenshot-regression suites. Exit 0 when the images agree within the
 // threshold, 1 when they differ (or either holds a NaN or infinity), 2 on bad input. PNG/JPEG
 // values are sRGB-encoded: they are decoded to linear first, so every format compares as
@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "app/commands.h"
 #include "core/error.h"
@@ -23,6 +24,7 @@ struct CompareOptions {
   fs::path a, b;
   std::string metric = "flip";
   double threshold = 0.0;
+  std::optional<double> percentile;
   fs::path heatmap;
   fs::path json;
   bool quiet = false;
@@ -42,12 +44,21 @@ ImageRGB read_linear(const fs::path& path) {
   return image;
 }
 
+std::string format_percentile(double p) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", p);
+  return text;
+}
+
 int run_compare(const CompareOptions& o) {
   const CompareMetric metric = parse_compare_metric(o.metric);
   if (!std::isfinite(o.threshold) || o.threshold < 0.0) throw InputError("--threshold must be a finite number >= 0");
+  if (o.percentile && !(*o.percentile > 0.0 && *o.percentile <= 100.0))
+    throw InputError("--percentile must be in (0, 100]");
   if (!o.heatmap.empty() && o.heatmap.extension() != ".png") throw InputError("--heatmap writes a .png");
   const ImageRGB a = read_linear(o.a), b = read_linear(o.b);
-  const ImageComparison c = compare_images(a, b, metric, o.threshold);
+  const ImageComparison c = compare_images(a, b, metric, o.threshold, o.percentile);
+  const std::string measure = o.percentile ? o.metric + " p" + format_percentile(*o.percentile) : o.metric;
   const bool same = c.within(o.threshold);
   const double share = a.width && a.height ? double(c.pixels_over) / (double(a.width) * a.height) : 0.0;
 
@@ -63,6 +74,7 @@ int run_compare(const CompareOptions& o) {
     const nlohmann::json report = {{"a", o.a.string()},
                                    {"b", o.b.string()},
                                    {"metric", o.metric},
+                                   {"percentile", o.percentile ? nlohmann::json(*o.percentile) : nlohmann::json(nullptr)},
                                    {"value", std::isfinite(c.value) ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
                                    {"threshold", o.threshold},
                                    {"same", same},
@@ -76,7 +88,7 @@ int run_compare(const CompareOptions& o) {
   }
   if (!o.quiet) {
     std::printf("%s %s %s %.6g (threshold %g): %s", o.a.filename().string().c_str(), o.b.filename().string().c_str(),
-                o.metric.c_str(), c.value, o.threshold, same ? "same" : "different");
+                measure.c_str(), c.value, o.threshold, same ? "same" : "different");
     if (c.box)
       std::printf(", %llu pixels over (%.3g %%) in x %u..%u, y %u..%u", (unsigned long long)c.pixels_over, 100.0 * share,
                   c.box->x0, c.box->x1, c.box->y0, c.box->y1);
@@ -97,6 +109,9 @@ Command add_compare_command(CLI::App& app) {
   cmd->add_option("--metric", options->metric, "flip, relmse, rmse or max")->capture_default_str();
   cmd->add_option("--threshold", options->threshold, "Largest value that still counts as the same (also the "
                   "per-pixel error above which a pixel counts as different)")->capture_default_str();
+  cmd->add_option("--percentile", options->percentile,
+                  "Judge the P-th percentile of the per-pixel errors (e.g. 99.9: the worst pixels) instead of the "
+                  "metric over the image");
   cmd->add_option("--heatmap", options->heatmap, "Write the per-pixel error as a heat map (.png)");
   cmd->add_option("--json", options->json, "Write the comparison as JSON");
   cmd->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");

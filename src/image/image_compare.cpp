@@ -41,7 +41,16 @@ std::string compare_metric_name(CompareMetric metric) {
   return "?";
 }
 
-ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric, double threshold) {
+double nearest_rank_percentile(std::vector<float> values, double percentile) {
+  if (values.empty()) return 0.0;
+  const double rank = std::ceil(percentile / 100.0 * double(values.size()));
+  const size_t k = size_t(std::clamp(rank, 1.0, double(values.size()))) - 1;
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
+  return values[k];
+}
+
+ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric, double threshold,
+                               std::optional<double> percentile) {
   if (a.width != b.width || a.height != b.height)
     throw InputError("the images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                      " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
@@ -84,6 +93,7 @@ ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetr
     result.box->x1 = std::max(result.box->x1, x);
     result.box->y1 = std::max(result.box->y1, y);
   }
+  if (percentile) result.value = nearest_rank_percentile(result.pixel_error, *percentile);
   if (result.nonfinite_pixels) result.value = std::numeric_limits<double>::infinity();
   return result;
 }

@@ -34,7 +34,13 @@ struct ImageComparison {
   bool within(double threshold) const { return nonfinite_pixels == 0 && value <= threshold; }
 };
 
-// Throws InputError when the sizes differ.
-ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric, double threshold);
+// Throws InputError when the sizes differ. With `percentile` (in (0, 100]) the value is that
+// percentile of the per-pixel errors (nearest rank) instead of the metric over the whole image:
+// a mean lets a handful of wrong pixels pass, the 99.9th percentile does not.
+ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric, double threshold,
+                               std::optional<double> percentile = std::nullopt);
+
+// The nearest-rank `percentile` (in (0, 100]) of `values`; 0 for none.
+double nearest_rank_percentile(std::vector<float> values, double percentile);
 
 }  // namespace hipr

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace hipr {
 namespace {
@@ -38,9 +39,12 @@ struct Builder {
       // Binned SAH along the widest axis of the centres.
       std::array<Box, kBins> bin_box;
       std::array<uint32_t, kBins> bin_count{};
-      const float scale = float(kBins) / extent[axis];
+      // In double, and NaN to bin 0: boxes too large for float arithmetic (scenes refuse them, see
+      // scene/scene_limits.h) must still never index out of the bins.
+      const double lo = centre_bounds.lo[axis], width = double(centre_bounds.hi[axis]) - lo;
       const auto bin_of = [&](uint32_t item) {
-        return std::min(kBins - 1, int((centres[item][axis] - centre_bounds.lo[axis]) * scale));
+        const double t = (double(centres[item][axis]) - lo) / width * double(kBins);
+        return t >= 0.0 ? int(std::min(t, double(kBins - 1))) : 0;
       };
       for (uint32_t i = begin; i < end; ++i) {
         const int b = bin_of(bvh.order[i]);
@@ -108,7 +112,14 @@ float Box::half_area() const {
 Bvh build_bvh(const std::vector<Box>& boxes) {
   Builder builder{boxes, {}, {}};
   builder.centres.reserve(boxes.size());
-  for (const Box& b : boxes) builder.centres.push_back(0.5f * (b.lo + b.hi));
+  for (const Box& b : boxes) {
+    // Halves first: lo + hi overflows for boxes near the float range; NaN centres would break
+    // the ordering the median split relies on.
+    glm::vec3 centre = 0.5f * b.lo + 0.5f * b.hi;
+    for (int axis = 0; axis < 3; ++axis)
+      if (std::isnan(centre[axis])) centre[axis] = 0.0f;
+    builder.centres.push_back(centre);
+  }
   builder.bvh.order.resize(boxes.size());
   for (uint32_t i = 0; i < boxes.size(); ++i) builder.bvh.order[i] = i;
   builder.bvh.nodes.reserve(boxes.empty() ? 1 : 2 * boxes.size());

@@ -4,15 +4,8 @@
 
 #include <glm/glm.hpp>
 
-#include <glm/gtc/packing.hpp>
-
 namespace hipr {
 namespace {
-
-float half_at(const abi::DifferenceRecord& record, uint32_t h) {
-  const glm::vec2 pair = glm::unpackHalf2x16(record.halves[h >> 1]);
-  return (h & 1) == 0 ? pair.x : pair.y;
-}
 
 struct DecodedDifference {
   glm::vec3 sum{0.0f};  // sum of d_i over the differenced samples
@@ -22,9 +15,9 @@ struct DecodedDifference {
 
 DecodedDifference decode_difference(const abi::DifferenceRecord& record, const abi::DisplayTexel& texel) {
   DecodedDifference d;
-  for (uint32_t k = 0; k < 3; ++k) d.sum[int(k)] = half_at(record, abi::kDifferenceSumHalf + k);
+  for (uint32_t k = 0; k < 3; ++k) d.sum[int(k)] = record.values[abi::kDifferenceSum + k];
   d.valid = (texel.flags >> abi::kDifferenceValidShift) & abi::kDifferenceValidMask;
-  d.changed = half_at(record, abi::kDifferenceSquaresHalf) > 0.0f || d.sum != glm::vec3(0.0f);
+  d.changed = record.values[abi::kDifferenceSquares] > 0.0f || d.sum != glm::vec3(0.0f);
   return d;
 }
 

@@ -5,22 +5,25 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace hipr {
+namespace {
 
-Camera resolve_camera(const Scene& scene) {
-  if (const int node = scene.camera_node(); node >= 0) {
-    Camera camera = scene.cameras[size_t(scene.nodes[size_t(node)].camera)];
-    // Scale in the node chain would skew the camera frame: keep rotation + translation only.
-    const glm::mat4 world = scene.world_transform(uint32_t(node));
-    glm::mat4 frame(1.0f);
-    for (int axis = 0; axis < 3; ++axis) {
-      const glm::vec3 v(world[axis]);
-      const float len = glm::length(v);
-      frame[axis] = glm::vec4(len > 0.0f ? v / len : glm::vec3(0.0f), 0.0f);
-    }
-    frame[3] = world[3];
-    camera.camera_to_world = frame;
-    return camera;
+// Scale in a node chain would skew the camera frame: keep rotation + translation only. Both the
+// camera node's and the stored default camera's matrices go through it, so a default camera
+// saved as a node and loaded again renders bit for bit the same view.
+glm::mat4 rigid_frame(const glm::mat4& world) {
+  glm::mat4 frame(1.0f);
+  for (int axis = 0; axis < 3; ++axis) {
+    const glm::vec3 v(world[axis]);
+    const float len = glm::length(v);
+    frame[axis] = glm::vec4(len > 0.0f ? v / len : glm::vec3(0.0f), 0.0f);
   }
+  frame[3] = world[3];
+  return frame;
+}
+
+}  // namespace
+
+Camera framing_camera(const Scene& scene) {
   const auto [lo, hi] = scene.bounds();
   const glm::vec3 center = 0.5f * (lo + hi);
   const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
@@ -31,6 +34,26 @@ Camera resolve_camera(const Scene& scene) {
   const glm::vec3 eye = center + glm::vec3(0.0f, 0.0f, distance);
   camera.camera_to_world = glm::inverse(glm::lookAt(eye, center, glm::vec3(0.0f, 1.0f, 0.0f)));
   camera.znear = distance * 1e-3f;
+  return camera;
+}
+
+Camera default_view(const Scene& scene) { return scene.default_camera.value_or(framing_camera(scene)); }
+
+void fix_default_camera(Scene& scene) {
+  if (!scene.default_camera && scene.camera_node() < 0) scene.default_camera = framing_camera(scene);
+}
+
+Camera resolve_camera(const Scene& scene) {
+  Camera camera;
+  glm::mat4 world;
+  if (const int node = scene.camera_node(); node >= 0) {
+    camera = scene.cameras[size_t(scene.nodes[size_t(node)].camera)];
+    world = scene.world_transform(uint32_t(node));
+  } else {
+    camera = default_view(scene);
+    world = camera.camera_to_world;
+  }
+  camera.camera_to_world = rigid_frame(world);
   return camera;
 }
 

@@ -145,11 +145,12 @@ std::filesystem::path script_file(const EditReader& r, const std::filesystem::pa
   const fs::path normal = relative.lexically_normal();
   if (!normal.empty() && *normal.begin() == "..") r.fail("\"" + name + "\" leaves the script's folder");
   const fs::path path = base / relative;
-  std::error_code ec;
-  const fs::path folder = fs::weakly_canonical(base.empty() ? fs::path(".") : base, ec);
-  const fs::path target = fs::weakly_canonical(path, ec);
+  std::error_code folder_error, target_error;
+  const fs::path folder = fs::weakly_canonical(base.empty() ? fs::path(".") : base, folder_error);
+  const fs::path target = fs::weakly_canonical(path, target_error);
   const fs::path inside = target.lexically_relative(folder);
-  if (ec || inside.empty() || *inside.begin() == "..") r.fail("\"" + name + "\" leaves the script's folder");
+  if (folder_error || target_error || inside.empty() || *inside.begin() == "..")
+    r.fail("\"" + name + "\" leaves the script's folder");
   return path;
 }
 
@@ -197,7 +198,8 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
     if (r.edit().contains("source")) {
       const std::string source = r.string("source");
       if (source.empty()) r.fail("\"source\" is empty (studio, sky, none or a file)");
-      e.source = is_environment_name(source) ? std::filesystem::path(source) : base / std::filesystem::path(source);
+      // A file, like an import, stays inside the script's folder: a script cannot read the machine.
+      e.source = is_environment_name(source) ? std::filesystem::path(source) : script_file(r, base, source);
     } else if (!r.edit().contains("set")) {
       r.fail("needs \"source\" or \"set\"");
     }

@@ -11,6 +11,7 @@
 #include "scene/default_camera.h"
 #include "scene/geometry_edits.h"
 #include "scene/material_parameters.h"
+#include "scene/scene_limits.h"
 
 namespace hipr {
 namespace {
@@ -165,7 +166,7 @@ struct Inverter {
     // matrix renders the same view.
     const int node = scene.camera_node();
     return CameraEdit{std::nullopt, node >= 0 ? scene.nodes[size_t(node)].local
-                                              : resolve_camera(scene).camera_to_world};
+                                              : default_view(scene).camera_to_world};
   }
 
   Edit operator()(const EnvironmentEdit& e) const {
@@ -218,7 +219,26 @@ Edit inverse_edit(const Scene& scene, const Edit& edit) {
   return std::visit(Inverter{scene}, edit);
 }
 
-void apply_edit(Scene& scene, const Edit& edit) { std::visit(Applier{scene}, edit); }
+void apply_edit(Scene& scene, const Edit& edit) {
+  // A scene built in code has no default camera until its first edit: the view from before it.
+  fix_default_camera(scene);
+  check_edit_values(edit, describe(edit));
+  const bool geometry = edit_moves_geometry(edit) && !std::holds_alternative<StructureEdit>(edit);
+  if (!geometry && !std::holds_alternative<CameraEdit>(edit)) {
+    std::visit(Applier{scene}, edit);
+    return;
+  }
+  // Applied, then checked (scene/scene_limits.h): a move or camera that leaves the range the
+  // renderer computes in is refused, and the scene is put back exactly as it was.
+  const Edit revert = std::holds_alternative<DeformEdit>(edit) ? inverse_edit(scene, edit) : Edit(structure_undo(scene));
+  std::visit(Applier{scene}, edit);
+  try {
+    check_scene_limits(scene, "edit " + describe(edit), geometry);
+  } catch (const InputError&) {
+    std::visit(Applier{scene}, revert);
+    throw;
+  }
+}
 
 std::string describe(const Edit& edit) {
   struct Describer {

@@ -178,7 +178,7 @@ size_t mesh_of(const Scene& scene, const std::string& node_name) {
 
 size_t pin_default_camera(Scene& scene) {
   if (const int node = scene.camera_node(); node >= 0) return size_t(node);
-  const Camera camera = resolve_camera(scene);
+  const Camera camera = default_view(scene);  // as stored: the pinned node renders the same bits
   scene.cameras.push_back(camera);
   Node camera_node;
   camera_node.name = "camera";
@@ -198,14 +198,12 @@ void check_duplicate(const Scene& scene, const DuplicateEdit& edit) {
 void apply_duplicate(Scene& scene, const DuplicateEdit& edit) {
   const size_t source = find_node(scene, edit.node);
   const std::string name = new_node_name(scene, edit.as, scene.nodes[source].name);
-  pin_default_camera(scene);
   const uint32_t copy = copy_subtree(scene, uint32_t(source), scene.nodes[source].parent, name);
   scene.nodes[copy].local[3] += glm::vec4(edit.translate, 0.0f);
 }
 
 void apply_delete(Scene& scene, const DeleteEdit& edit) {
   const size_t node = find_node(scene, edit.node);
-  pin_default_camera(scene);
   detach(scene, uint32_t(node));
   drop_detached_tail(scene);
 }
@@ -213,7 +211,6 @@ void apply_delete(Scene& scene, const DeleteEdit& edit) {
 void apply_import(Scene& scene, const ImportEdit& edit) {
   Scene other = load_scene(edit.file);  // first: a bad file changes nothing
   const std::string name = new_node_name(scene, edit.as, edit.file.stem().string());
-  pin_default_camera(scene);
   // The scene's fingerprint (what cached references are keyed by) covers the imported bytes.
   scene.content_hash = Hasher().add(scene.content_hash).add(other.content_hash).hex();
   append_scene(scene, std::move(other), name, edit.translate);
@@ -226,14 +223,13 @@ void check_deform(const Scene& scene, const DeformEdit& edit) {
 
 void apply_deform(Scene& scene, const DeformEdit& edit) {
   const size_t mesh = mesh_of(scene, edit.node);
-  if (edit.restore) {  // an undo: the pinned view stays as it is
+  if (edit.restore) {  // an undo
     if (edit.restore->primitives.size() != scene.meshes[mesh].primitives.size())
       throw InternalError("a deform's undo for another mesh");
     scene.meshes[mesh] = *edit.restore;  // its revision with it: the vertices are those again
     return;
   }
   check_affine(edit.matrix);
-  pin_default_camera(scene);
   deform_mesh(scene.meshes[mesh], edit.matrix);
   scene.meshes[mesh].revision = mesh_revision(scene.meshes[mesh]);
 }

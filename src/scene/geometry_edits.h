@@ -19,9 +19,9 @@ void check_deform(const Scene& scene, const DeformEdit& edit);
 // The undo of a duplicate, delete or import: the structure as it is now.
 StructureEdit structure_undo(const Scene& scene);
 
-// Without a camera node the view frames the scene's bounds; edits that would move the view
-// (moving the camera, changing what the bounds hold) first make that view a camera node.
-// Returns the camera node.
+// A camera edit in a scene without a camera node first makes its default view
+// (Scene::default_camera) a camera node, so that the edit has something to move. Returns the
+// camera node.
 size_t pin_default_camera(Scene& scene);
 
 }  // namespace hipr

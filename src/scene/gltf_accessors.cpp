@@ -1,6 +1,8 @@
 #include "scene/gltf_accessors.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 #include "core/error.h"
@@ -61,8 +63,20 @@ ElementLayout layout_of(const tinygltf::Model& model, int index, const std::stri
   const tinygltf::Accessor& accessor = model.accessors[size_t(index)];
   if (accessor.sparse.isSparse) {
     if (!allow_sparse) fail("sparse accessor " + std::to_string(index) + " is not supported");
-    check_buffer_view(model, accessor.sparse.indices.bufferView, what + " sparse indices");
-    check_buffer_view(model, accessor.sparse.values.bufferView, what + " sparse values");
+    const auto& sparse = accessor.sparse;
+    check_buffer_view(model, sparse.indices.bufferView, what + " sparse indices");
+    check_buffer_view(model, sparse.values.bufferView, what + " sparse values");
+    if (sparse.count < 0 || size_t(sparse.count) > accessor.count)
+      fail("sparse accessor " + std::to_string(index) + " replaces more elements than it has");
+    // Each array within its bufferView, checked without a product that could wrap.
+    const auto fits = [&](int view_index, size_t offset, size_t element_bytes) {
+      const size_t length = model.bufferViews[size_t(view_index)].byteLength;
+      return element_bytes > 0 && offset <= length && size_t(sparse.count) <= (length - offset) / element_bytes;
+    };
+    const size_t value_bytes = size_t(component_size(accessor.componentType)) * size_t(component_count(accessor.type));
+    if (!fits(sparse.indices.bufferView, sparse.indices.byteOffset, size_t(component_size(sparse.indices.componentType))) ||
+        !fits(sparse.values.bufferView, sparse.values.byteOffset, value_bytes))
+      fail("sparse accessor " + std::to_string(index) + " runs past the end of its bufferViews");
   }
   ElementLayout layout;
   layout.count = accessor.count;
@@ -72,7 +86,12 @@ ElementLayout layout_of(const tinygltf::Model& model, int index, const std::stri
   const int size = component_size(accessor.componentType);
   if (!layout.components || !size) fail("accessor " + std::to_string(index) + " has an invalid type");
   const size_t element_size = size_t(size) * size_t(layout.components);
-  if (accessor.bufferView < 0) return layout;  // all zeros, per the glTF spec
+  if (accessor.bufferView < 0) {  // all zeros, per the glTF spec: bounded apart (no bytes back it)
+    if (layout.count > kMaxZeroFilledElements)
+      fail("accessor " + std::to_string(index) + " has no bufferView and " + std::to_string(layout.count) +
+           " elements (at most " + std::to_string(kMaxZeroFilledElements) + " without data)");
+    return layout;
+  }
 
   check_buffer_view(model, accessor.bufferView, what + ": accessor " + std::to_string(index));
   const tinygltf::BufferView& view = model.bufferViews[size_t(accessor.bufferView)];
@@ -106,6 +125,38 @@ float read_component(const unsigned char* p, int type, bool normalized) {
 }
 
 }  // namespace
+
+namespace {
+
+size_t primitive_elements(const tinygltf::Model& model, const tinygltf::Primitive& primitive) {
+  const auto count = [&](int index) -> size_t {
+    return index >= 0 && size_t(index) < model.accessors.size() ? model.accessors[size_t(index)].count : 0;
+  };
+  const auto position = primitive.attributes.find("POSITION");
+  const size_t vertices = position == primitive.attributes.end() ? 0 : count(position->second);
+  const size_t indices = primitive.indices >= 0 ? count(primitive.indices) : vertices;
+  // Strips and fans: up to three list indices per index (points and lines make none).
+  const size_t factor = primitive.mode == TINYGLTF_MODE_TRIANGLES || primitive.mode < 0 ? 1 : 3;
+  if (indices > SIZE_MAX / 8 || vertices > SIZE_MAX / 8) return SIZE_MAX;
+  return vertices + indices * factor;
+}
+
+}  // namespace
+
+void check_scene_elements(const tinygltf::Model& model, const std::string& name) {
+  size_t total = 0;
+  for (const tinygltf::Mesh& mesh : model.meshes)
+    for (const tinygltf::Primitive& primitive : mesh.primitives) {
+      const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+      if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+        continue;  // skipped by the loader
+      // Clamped so that the sum cannot wrap: it stops as soon as it passes the limit.
+      total += std::min(primitive_elements(model, primitive), kMaxSceneElements + 1);
+      if (total > kMaxSceneElements)
+        throw InputError(name + ": more than " + std::to_string(kMaxSceneElements) +
+                         " vertices and indices in all (hipr's limit for one scene)");
+    }
+}
 
 void validate_all_accessors(const tinygltf::Model& model, const std::string& name) {
   for (size_t i = 0; i < model.bufferViews.size(); ++i) check_buffer_view(model, int(i), name);

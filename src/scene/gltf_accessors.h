@@ -9,6 +9,22 @@
 
 namespace hipr::gltf {
 
+// Limits on what a file's counts may make the loader allocate, checked before it allocates
+// (README, "Limits"). An accessor without a bufferView is all zeros: its count costs memory
+// without costing file bytes, so it is bounded on its own.
+inline constexpr size_t kMaxZeroFilledElements = size_t(1) << 22;
+// Vertices plus indices (after strips and fans become triangles) over all the file's primitives:
+// about 40 million triangles. Primitives may share an accessor, so counts add up beyond the file.
+inline constexpr size_t kMaxSceneElements = size_t(1) << 27;
+// Decoded images: a side, one image's pixels, and all images' pixels (RGBA8: 1 GiB).
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr size_t kMaxImagePixels = size_t(1) << 26;
+inline constexpr size_t kMaxScenePixels = size_t(1) << 28;
+
+// Throws InputError when the file's triangle primitives add up to more than kMaxSceneElements
+// vertices and indices, counted from their accessors before any is read.
+void check_scene_elements(const tinygltf::Model& model, const std::string& name);
+
 // Reads a float vector accessor (VEC2/VEC3/VEC4 or SCALAR), converting normalized integers.
 // `components` is what the caller wants; the accessor must have exactly that many.
 std::vector<float> read_floats(const tinygltf::Model& model, int accessor, int components,

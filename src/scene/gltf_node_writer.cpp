@@ -4,6 +4,7 @@
 #include <glm/gtx/matrix_decompose.hpp>
 
 #include "core/error.h"
+#include "scene/default_camera.h"
 #include "scene/gltf_node_transform.h"
 
 namespace hipr::gltf {
@@ -107,6 +108,14 @@ void write_camera(Json& json, const Camera& camera) {
   });
 }
 
+// The loader's default scene: "scene", else the first; none without scenes (every parentless
+// node is a root then). A pointer into `doc`: adding a key to `doc` moves it.
+Json* default_scene(Json& doc) {
+  if (!doc.contains("scenes") || !doc["scenes"].is_array() || doc["scenes"].empty()) return nullptr;
+  const size_t index = doc.contains("scene") && doc["scene"].is_number_integer() ? doc["scene"].get<size_t>() : 0;
+  return index < doc["scenes"].size() ? &doc["scenes"][index] : nullptr;
+}
+
 Json new_node(const Node& node) {
   Json out = Json::object();
   out["name"] = node.name;
@@ -129,13 +138,7 @@ void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
   for (size_t i = 0; i < camera_count; ++i) write_camera(doc["cameras"][i], scene.cameras[i]);
   for (size_t i = camera_count; i < scene.cameras.size(); ++i) doc["cameras"].push_back(new_camera(scene.cameras[i]));
 
-  // The loader's default scene: "scene", else the first; none without scenes (every
-  // parentless node is a root then).
-  Json* roots = nullptr;
-  if (doc.contains("scenes") && doc["scenes"].is_array() && !doc["scenes"].empty()) {
-    const size_t index = doc.contains("scene") && doc["scene"].is_number_integer() ? doc["scene"].get<size_t>() : 0;
-    if (index < doc["scenes"].size()) roots = &doc["scenes"][index];
-  }
+  Json* roots = default_scene(doc);
   const auto unlist = [](Json& owner, const char* key, size_t node) {
     if (!owner.contains(key) || !owner[key].is_array()) return;
     Json& list = owner[key];
@@ -168,6 +171,21 @@ void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
     const int parent = scene.nodes[i].parent;
     if (parent >= 0) doc["nodes"][written[size_t(parent)]]["children"].push_back(written[i]);
     else if (roots) (*roots)["nodes"].push_back(written[i]);
+  }
+  // No camera node: the view the scene was seen from becomes one, so the file reopens as it was
+  // seen (framed around the edited objects, it would not). Where the edits left the framing as
+  // it was, the file stays without one (an unedited save is the source's document).
+  if (scene.camera_node() >= 0) return;
+  const Camera camera = default_view(scene);
+  const Camera framed = framing_camera(scene);
+  if (camera.camera_to_world != framed.camera_to_world || camera.yfov != framed.yfov || camera.znear != framed.znear) {
+    Node node;
+    node.name = "default_camera";
+    node.local = camera.camera_to_world;
+    node.camera = int(array_length(doc, "cameras"));
+    doc["cameras"].push_back(new_camera(camera));
+    doc["nodes"].push_back(new_node(node));
+    if (Json* scene_roots = default_scene(doc)) (*scene_roots)["nodes"].push_back(doc["nodes"].size() - 1);
   }
 }
 

@@ -197,12 +197,14 @@ Scene diff_snapshot(const Scene& scene) {
   s.materials = scene.materials;
   s.lights = scene.lights;
   s.cameras = scene.cameras;
+  s.default_camera = scene.default_camera;
   s.root_nodes = scene.root_nodes;
   s.children = scene.children;
   s.loaded_node_count = scene.loaded_node_count;
   s.loaded_light_count = scene.loaded_light_count;
-  // Without a camera node the default camera frames the scene's bounds: keep positions then.
-  const bool need_positions = scene.camera_node() < 0;
+  // Without a camera node or a stored default camera the view frames the scene's bounds: keep
+  // positions then.
+  const bool need_positions = scene.camera_node() < 0 && !scene.default_camera;
   s.meshes.reserve(scene.meshes.size());
   for (const Mesh& mesh : scene.meshes) {
     Mesh copy;

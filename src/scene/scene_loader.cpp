@@ -2,6 +2,7 @@
 // tinygltf parses with sandboxed file access, then every index and accessor is validated as it
 // is converted. Anything wrong with the input is an InputError naming the object at fault.
 #include <nlohmann/json.hpp>
+#include <stb_image.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include "scene/gltf_node_transform.h"
 #include "scene/gltf_sandbox.h"
 #include "scene/mesh_processing.h"
+#include "scene/scene_limits.h"
 
 namespace hipr {
 namespace fs = std::filesystem;
@@ -100,15 +102,32 @@ void precheck_json(const std::string& text, const std::string& name) {
 }
 
 // Decodes images with stb, but a broken image becomes a warning and a fallback texture, not a
-// failed load.
+// failed load. So does one whose size (read from its header first) is beyond the limits, or
+// would take the scene's images beyond theirs (`user`: the pixels decoded so far).
 bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
                           int width, int height, const unsigned char* bytes, int size, void* user) {
-  std::string local_err;
-  if (tinygltf::LoadImageData(image, index, &local_err, warn, width, height, bytes, size, user)) return true;
-  if (warn) *warn += "image " + std::to_string(index) + " could not be decoded: " + local_err;
-  image->image.clear();
   (void)err;
-  return true;
+  const auto refuse = [&](const std::string& why) {
+    if (warn) *warn += "image " + std::to_string(index) + " " + why + "\n";
+    image->image.clear();
+    return true;
+  };
+  size_t& decoded = *static_cast<size_t*>(user);
+  int w = 0, h = 0, channels = 0;
+  if (stbi_info_from_memory(bytes, size, &w, &h, &channels)) {
+    if (w > gltf::kMaxImageSide || h > gltf::kMaxImageSide || size_t(w) * size_t(h) > gltf::kMaxImagePixels)
+      return refuse("is " + std::to_string(w) + "x" + std::to_string(h) + ", beyond hipr's limit (" +
+                    std::to_string(gltf::kMaxImageSide) + " a side, " + std::to_string(gltf::kMaxImagePixels) +
+                    " pixels): not decoded");
+    if (decoded + size_t(w) * size_t(h) > gltf::kMaxScenePixels)
+      return refuse("would take the scene's images beyond " + std::to_string(gltf::kMaxScenePixels) +
+                    " pixels: not decoded");
+    decoded += size_t(w) * size_t(h);
+  }
+  std::string local_err;
+  // (tinygltf reads its own options from the last argument: none.)
+  if (tinygltf::LoadImageData(image, index, &local_err, warn, width, height, bytes, size, nullptr)) return true;
+  return refuse("could not be decoded: " + local_err);
 }
 
 glm::mat4 node_transform(const tinygltf::Node& node, const std::string& what) {
@@ -359,7 +378,8 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
 
   tinygltf::TinyGLTF parser;
   parser.SetFsCallbacks(callbacks);
-  parser.SetImageLoader(&lenient_image_loader, nullptr);
+  size_t decoded_pixels = 0;
+  parser.SetImageLoader(&lenient_image_loader, &decoded_pixels);
   tinygltf::Model model;
   std::string err, warn;
   const std::string base = folder.string();
@@ -381,12 +401,14 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   }
 
   gltf::validate_all_accessors(model, name);
+  gltf::check_scene_elements(model, name);
   Scene scene;
   scene.source = path;
   Converter(model, scene, name).run();
   scene.loaded_node_count = scene.nodes.size();
   scene.loaded_light_count = scene.lights.size();
   for (const Mesh& mesh : scene.meshes) scene.loaded_mesh_revisions.push_back(mesh.revision);
+  fix_default_camera(scene);  // the view as loaded: edits move objects, not it
   const std::string choice = options.environment.string();
   const SceneLighting lighting = scene_lighting(scene);
   if (choice == kStudioEnvironmentName || (choice == kAutoEnvironment && !lighting.lights_itself())) {
@@ -407,6 +429,7 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
     log::warn(name + ": nothing in the scene emits light and there is no environment: the image will be black "
               "(--env studio lights it)");
   }
+  check_scene_limits(scene, name);  // before anything derives boxes, powers or a view from it
   scene.content_hash = sandbox.hasher().hex();
   return scene;
 }

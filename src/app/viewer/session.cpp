@@ -17,7 +17,7 @@ uint32_t default_first_visit_spp(const SessionSettings& s) {
 Session::Session(const vk::Context& ctx, Scene scene, const SessionSettings& settings)
     : m_ctx(ctx), m_settings(settings), m_scene(std::move(scene)) {
   if (m_scene.camera_node() < 0)
-    apply_edit(m_scene, CameraEdit{std::nullopt, resolve_camera(m_scene).camera_to_world});
+    apply_edit(m_scene, CameraEdit{std::nullopt, default_view(m_scene).camera_to_world});
   rebuild();
 }
 
