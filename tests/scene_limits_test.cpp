@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cstring>
+#include <limits>
 
 #include "core/error.h"
 #include "gltf_document.h"
@@ -75,6 +76,13 @@ TEST(SceneLimits, AnEditBeyondTheRangeLeavesTheSceneAsItWas) {
   expect_edit_refused(scene, CameraEdit{glm::vec3(0.0f, 0.0f, 3e38f), std::nullopt});
   expect_edit_refused(scene, CameraEdit{std::nullopt, glm::mat4(0.0f)});  // no frame at all
   expect_edit_refused(scene, MaterialEdit{"light", {{"emission_luminance", {1e13f}}}});
+  // Out of a parameter's range or NaN (the viewer's edits are made in code, not parsed): refused
+  // before any value is written.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const MaterialParameters white = scene.materials[0].params;
+  expect_edit_refused(scene, MaterialEdit{"white", {{"specular_roughness", {0.5f}}, {"base_color", {nan, 0.5f, 0.5f}}}});
+  expect_edit_refused(scene, MaterialEdit{"white", {{"base_color", {2.0f, 0.5f, 0.5f}}}});
+  EXPECT_EQ(scene.materials[0].params.specular_roughness, white.specular_roughness);
 
   // Without a camera a camera edit first pins the default view as a node: a refused one does not.
   const fs::path dir = test::temp_dir("scene_limits_camera");
@@ -86,6 +94,8 @@ TEST(SceneLimits, AnEditBeyondTheRangeLeavesTheSceneAsItWas) {
   ASSERT_FALSE(lamp.light_nodes().empty());
   const std::string light = lamp.nodes[lamp.light_nodes().front()].name;
   expect_edit_refused(lamp, LightEdit{light, 1e13f, std::nullopt, std::nullopt});
+  expect_edit_refused(lamp, LightEdit{light, std::nullopt, glm::vec3(nan, 1.0f, 1.0f), std::nullopt});
+  expect_edit_refused(lamp, LightEdit{light, std::nullopt, std::nullopt, -1.0f});
   expect_edit_refused(lamp, TransformEdit{light, glm::vec3(0.0f, -2e9f, 0.0f), std::nullopt});
 }
 

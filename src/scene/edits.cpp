@@ -71,10 +71,20 @@ struct Applier {
 
   void operator()(const MaterialEdit& e) const {
     MaterialParameters& block = scene.materials[find_material(scene, e.material)].params;
+    // Every value checked before any is written: a refused edit changes nothing. (Scripts check
+    // ranges as they parse; edits made in code, the viewer's, meet the same ranges here. NaN
+    // fails them.)
     for (const ParameterValue& p : e.set) {
       const MaterialParameter* parameter = find_material_parameter(p.key);
       if (!parameter || int(p.values.size()) != parameter->components)
         throw InputError("invalid material parameter '" + p.key + "'");
+      for (const float v : p.values)
+        if (!(v >= parameter->min && v <= parameter->max))
+          throw InputError("material parameter '" + p.key + "' = " + std::to_string(v) + " is outside [" +
+                           std::to_string(parameter->min) + ", " + std::to_string(parameter->max) + "]");
+    }
+    for (const ParameterValue& p : e.set) {
+      const MaterialParameter* parameter = find_material_parameter(p.key);
       std::memcpy(reinterpret_cast<char*>(&block) + parameter->offset, p.values.data(), p.values.size() * sizeof(float));
     }
   }

@@ -1,5 +1,6 @@
 #include "scene/scene_limits.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -105,7 +106,14 @@ void check_edit_values(const Edit& edit, const std::string& what) {
     if (value && !radiance_ok(*value))
       throw InputError(what + ": " + name + " " + std::to_string(*value) + " is out of range (0 to 1e12)");
   };
-  if (const auto* light = std::get_if<LightEdit>(&edit)) check(light->intensity, "intensity");
+  if (const auto* light = std::get_if<LightEdit>(&edit)) {
+    check(light->intensity, "intensity");
+    if (light->color) check(std::max({light->color->r, light->color->g, light->color->b}), "colour");
+    if (light->color && !(std::min({light->color->r, light->color->g, light->color->b}) >= 0.0f))
+      throw InputError(what + ": a colour must be finite and >= 0");
+    if (light->range && !(*light->range >= 0.0f && std::isfinite(*light->range)))
+      throw InputError(what + ": range must be finite and >= 0");
+  }
   if (const auto* environment = std::get_if<EnvironmentEdit>(&edit)) check(environment->intensity, "intensity");
   if (const auto* material = std::get_if<MaterialEdit>(&edit))
     for (const ParameterValue& value : material->set)
