@@ -232,7 +232,7 @@ Edit inverse_edit(const Scene& scene, const Edit& edit) {
 void apply_edit(Scene& scene, const Edit& edit) {
   // A scene built in code has no default camera until its first edit: the view from before it.
   fix_default_camera(scene);
-  check_edit_values(edit, describe(edit));
+  check_edit_values(edit);
   const bool geometry = edit_moves_geometry(edit) && !std::holds_alternative<StructureEdit>(edit);
   if (!geometry && !std::holds_alternative<CameraEdit>(edit)) {
     std::visit(Applier{scene}, edit);

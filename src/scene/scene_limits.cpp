@@ -101,18 +101,19 @@ void check_scene_limits(const Scene& scene, const std::string& what, bool geomet
   check_lights_and_camera(scene, what);
 }
 
-void check_edit_values(const Edit& edit, const std::string& what) {
+void check_edit_values(const Edit& edit) {
+  const auto refuse = [&](const std::string& why) { throw InputError(describe(edit) + ": " + why); };
   const auto check = [&](const std::optional<float>& value, const char* name) {
     if (value && !radiance_ok(*value))
-      throw InputError(what + ": " + name + " " + std::to_string(*value) + " is out of range (0 to 1e12)");
+      refuse(std::string(name) + " " + std::to_string(*value) + " is out of range (0 to 1e12)");
   };
   if (const auto* light = std::get_if<LightEdit>(&edit)) {
     check(light->intensity, "intensity");
     if (light->color) check(std::max({light->color->r, light->color->g, light->color->b}), "colour");
     if (light->color && !(std::min({light->color->r, light->color->g, light->color->b}) >= 0.0f))
-      throw InputError(what + ": a colour must be finite and >= 0");
+      refuse("a colour must be finite and >= 0");
     if (light->range && !(*light->range >= 0.0f && std::isfinite(*light->range)))
-      throw InputError(what + ": range must be finite and >= 0");
+      refuse("range must be finite and >= 0");
   }
   if (const auto* environment = std::get_if<EnvironmentEdit>(&edit)) check(environment->intensity, "intensity");
   if (const auto* material = std::get_if<MaterialEdit>(&edit))

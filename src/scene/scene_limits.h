@@ -25,7 +25,8 @@ void check_scene_limits(const Scene& scene, const std::string& what, bool geomet
 
 // Throws InputError when an edit sets a light, emission or environment intensity beyond
 // kMaxRadiance (checked before it is applied).
-void check_edit_values(const Edit& edit, const std::string& what);
+// The message names the edit (describe), made only when it is refused.
+void check_edit_values(const Edit& edit);
 
 // Whether an edit can move or reshape geometry (and so needs check_scene_limits' geometry part).
 bool edit_moves_geometry(const Edit& edit);
