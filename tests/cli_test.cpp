@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "hipr/edits.h"
 #include "hipr/scene_loader.h"
+#include "hipr/schedule_settings.h"
 #include "image/tonemap.h"
 #include "image/image_io.h"
 #include "test_support.h"
@@ -49,6 +50,29 @@ TEST(Cli, RenderHelpListsTheContractFlags) {
   EXPECT_EQ(result.exit_code, kExitOk) << result.output;
   for (const char* flag : {"--width", "--height", "--spp", "--seed", "--max-depth", "--tile", "--env", "--stats-json"})
     EXPECT_NE(result.output.find(flag), std::string::npos) << flag;
+}
+
+// The scheduling settings are declared once (hipr/schedule_settings.h): every command that
+// schedules takes every one of them as a flag (bench lists its policies as --policies), and a
+// value a setting cannot take is a one-line parse error.
+TEST(Cli, EveryCommandThatSchedulesTakesEverySchedulingFlag) {
+  for (const std::string command : {"replay", "bench", "view"}) {
+    const test::CommandResult result = test::run_hipr(command + " --help");
+    EXPECT_EQ(result.exit_code, kExitOk) << result.output;
+    ScheduleSettings settings;
+    for_each_schedule_setting(settings, [&](const ScheduleSettingInfo& info, auto&) {
+      if (command == "bench" && std::string(info.flag) == "--policy") return;
+      EXPECT_NE(result.output.find(std::string(info.flag) + " "), std::string::npos) << command << " " << info.flag;
+    });
+  }
+  const std::string common = quoted(test::asset("cornell_box.gltf")) + " " + quoted(test::asset("cornell_box.edits.json"));
+  const fs::path dir = test::temp_dir("schedule_flags");
+  for (const std::string flags : {"--display sometimes", "--policy best"}) {
+    const test::CommandResult result = test::run_hipr("replay " + common + " -o " + quoted(dir / "r") + " " + flags);
+    EXPECT_EQ(result.exit_code, kExitBadInput) << flags;
+    EXPECT_NE(result.output.find(flags.substr(0, flags.find(' '))), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(dir / "r")) << flags;
+  }
 }
 
 // A command line that must be refused before anything is written. "@" stands for the test's

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "card_scene.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
@@ -113,7 +114,7 @@ TEST(Cutout, ShadowRaysHonourTheCutout) {
 TEST(Cutout, StageOneSeesThroughCutouts) {
   for (const float cutoff : {0.5f, 0.3f}) {
     Renderer renderer(test::context(), card_before_sky(cutout(0.4f, cutoff)), card_settings());
-    renderer.hipr_stages()->stage1_visibility(ChangeSet{});
+    hipr_stages(renderer).stage1_visibility(ChangeSet{});
     const uint32_t expected = cutoff > 0.4f ? UINT32_MAX : 0u;  // the sky, or instance 0 (the card)
     for (uint32_t id : renderer.gbuffer_instances()) ASSERT_EQ(id, expected) << "cutoff " << cutoff;
   }

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "hipr/edits.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "test_support.h"
@@ -119,10 +120,10 @@ Discovery discover(float scale, const RenderSettings& s = settings()) {
   apply_edit(after, TransformEdit{"block", kMove * scale, std::nullopt});
   Renderer renderer(test::context(), before, s);
   renderer.add_samples_full_frame(1);
-  renderer.hipr_stages()->stage1_visibility({});
+  hipr_stages(renderer).stage1_visibility({});
   renderer.update_scene(after, diff_scenes(before, after));
   renderer.mark_all_owed();
-  renderer.hipr_stages()->stage1_visibility(diff_scenes(before, after));
+  hipr_stages(renderer).stage1_visibility(diff_scenes(before, after));
   test::discover_all(renderer, 4);
   EXPECT_EQ(renderer.counters().non_finite_samples, 0u) << "scale " << scale;
   return {renderer.tile_flags(), renderer.tile_weights(), renderer.gbuffer_instances()};

@@ -11,6 +11,7 @@
 #include "bench/oracle_policy.h"
 #include "hipr/edit_pipeline.h"
 #include "hipr/edits.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
@@ -99,14 +100,14 @@ TEST(GeometryUpdate, DuplicateDeleteCyclesKeepRecordsAndDeviceMemoryFlat) {
   GpuScene gpu(test::context(), scene);
   const uint32_t records = gpu.record_count();
   Renderer renderer(test::context(), scene, settings());
-  renderer.hipr_stages();  // its buffers too
+  hipr_stages(renderer);  // its buffers too
   uint32_t after_first = 0;
   uint64_t device_after_first = 0;
   const auto update = [&](const Edit& edit) {
     const ChangeSet changes = test::edit_scene(scene, edit);
     gpu.update_instances(scene);
     renderer.update_scene(scene, changes);
-    renderer.hipr_stages()->stage1_visibility(changes);
+    hipr_stages(renderer).stage1_visibility(changes);
   };
   for (int i = 0; i < 200; ++i) {
     update(DuplicateEdit{i % 3 ? "short_block" : "tall_block", "copy", glm::vec3(0.01f * float(i % 5))});
@@ -144,7 +145,7 @@ TEST(GeometryUpdate, StageOneMarksWhereTheNodeWasAndWhereTheCopyIs) {
   // made active, of how many.
   const auto stage1_marks = [&](const ChangeSet& changes, const std::function<std::vector<bool>()>& showing) {
     renderer.update_scene(scene, changes);
-    renderer.hipr_stages()->stage1_visibility(changes);
+    hipr_stages(renderer).stage1_visibility(changes);
     const std::vector<uint32_t> flags = renderer.tile_flags();
     const std::vector<bool> tiles = showing();
     size_t marked = 0, expected = 0, active = 0;

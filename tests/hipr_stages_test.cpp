@@ -9,6 +9,7 @@
 
 #include "hipr/edit_pipeline.h"
 #include "hipr/edits.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
@@ -85,12 +86,12 @@ Scene mirror_cornell() {
 std::unique_ptr<Renderer> run_stages(const Edited& e) {
   auto renderer = std::make_unique<Renderer>(test::context(), e.before, settings());
   renderer->add_samples_full_frame(2);
-  renderer->hipr_stages()->stage1_visibility({});  // G-buffer of the scene as it was
+  hipr_stages(*renderer).stage1_visibility({});  // G-buffer of the scene as it was
   renderer->update_scene(e.after, e.changes);
   renderer->mark_all_owed();
-  renderer->hipr_stages()->stage1_visibility(e.changes);
+  hipr_stages(*renderer).stage1_visibility(e.changes);
   test::discover_all(*renderer, 1);
-  renderer->hipr_stages()->build_schedule();
+  hipr_stages(*renderer).build_schedule();
   return renderer;
 }
 
@@ -105,12 +106,12 @@ TEST(HiprStages, ScheduledRerenderConvergesToTheFullFrameImage) {
     s.tile_size = tile;
     Renderer renderer(test::context(), e.before, s);
     renderer.add_samples_full_frame(3);
-    renderer.hipr_stages()->stage1_visibility({});
+    hipr_stages(renderer).stage1_visibility({});
     renderer.update_scene(e.after, e.changes);
     renderer.mark_all_owed();
-    renderer.hipr_stages()->stage1_visibility(e.changes);
+    hipr_stages(renderer).stage1_visibility(e.changes);
     test::discover_all(renderer, 1);
-    renderer.hipr_stages()->build_schedule();
+    hipr_stages(renderer).build_schedule();
     // Stage 3 in steps of 5 tiles, then ordinary passes: every pixel ends with 3 samples.
     for (uint32_t offset = 0; offset < renderer.tile_count(); offset += 5) renderer.render_schedule(offset, 5, 1, true);
     renderer.render_schedule(0, renderer.tile_count(), 2, false);
@@ -241,9 +242,9 @@ TEST(HiprStages, StagesRunOnAFreshRenderer) {
   ChangeSet changes;
   changes.instances = {0};
   renderer.mark_all_owed();
-  renderer.hipr_stages()->stage1_visibility(changes);
+  hipr_stages(renderer).stage1_visibility(changes);
   test::discover_all(renderer, 1);
-  renderer.hipr_stages()->build_schedule();
+  hipr_stages(renderer).build_schedule();
   EXPECT_GT(count_flag(renderer.tile_flags(), 1), 0u);
   EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "hipr/edits.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
@@ -204,12 +205,12 @@ TEST(IncrementalUpdate, EnvironmentEditMakesEveryTileActive) {
   Scene scene = test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f);
   scene.environment = banded_environment();
   Renderer renderer(test::context(), scene, settings());
-  renderer.hipr_stages()->stage1_visibility({});
+  hipr_stages(renderer).stage1_visibility({});
   const Scene before = scene;
   apply_edit(scene, EnvironmentEdit{.intensity = 0.5f});
   const ChangeSet changes = diff_scenes(before, scene);
   renderer.update_scene(scene, changes);
-  renderer.hipr_stages()->stage1_visibility(changes);
+  hipr_stages(renderer).stage1_visibility(changes);
   for (uint32_t flags : renderer.tile_flags()) EXPECT_TRUE(flags & abi::kTileActive);
 }
 

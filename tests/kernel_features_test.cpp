@@ -10,6 +10,7 @@
 
 #include "card_scene.h"
 #include "hipr/edits.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
@@ -330,13 +331,13 @@ TEST(BackgroundTiles, HiprStagesAreTheSameWithTheShortcut) {
     s.skip_background_tiles = skip;
     Renderer renderer(test::context(), before, s);
     renderer.add_samples_full_frame(1);
-    renderer.hipr_stages()->stage1_visibility({});
+    hipr_stages(renderer).stage1_visibility({});
     renderer.update_scene(after, changes);
     renderer.mark_all_owed();
     renderer.reset_counters();
-    renderer.hipr_stages()->stage1_visibility(changes);
+    hipr_stages(renderer).stage1_visibility(changes);
     test::discover_all(renderer, 2);
-    renderer.hipr_stages()->build_schedule();
+    hipr_stages(renderer).build_schedule();
     renderer.render_schedule(0, renderer.tile_count(), 2, true);
     return Result{renderer.tile_flags(), renderer.schedule(), renderer.tile_weights(), renderer.image(),
                   renderer.counters().rays};

@@ -11,6 +11,7 @@
 
 #include "card_scene.h"
 #include "hipr/edits.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "shaders/shared/abi.h"
@@ -83,11 +84,11 @@ Staged stage_one(const Scene& before, const Scene& after, uint32_t spp = 2) {
   s.renderer = std::make_unique<Renderer>(test::context(), before, settings());
   s.renderer->add_samples_full_frame(spp);
   s.renderer->resolve_display_all(DisplayRule::Immediate);
-  s.renderer->hipr_stages()->stage1_visibility({});  // the G-buffer of the scene as it was
+  hipr_stages(*s.renderer).stage1_visibility({});  // the G-buffer of the scene as it was
   const ChangeSet changes = diff_scenes(before, after);
   s.renderer->update_scene(after, changes);
   s.renderer->mark_all_owed();
-  s.active = s.renderer->hipr_stages()->stage1_visibility(changes);
+  s.active = hipr_stages(*s.renderer).stage1_visibility(changes);
   s.flags = s.renderer->tile_flags();
   return s;
 }
@@ -163,7 +164,7 @@ TEST(LightReach, TilesWhereTheShadowMovedComeFirst) {
   Staged s = stage_one(before, after);
   for (uint32_t t = 0; t < s.flags.size(); ++t) EXPECT_EQ(active(s.flags, t), t % kTilesX < kTilesX / 2) << t;
   test::discover_all(*s.renderer, 1);
-  s.renderer->hipr_stages()->build_schedule();
+  hipr_stages(*s.renderer).build_schedule();
   const std::vector<uint32_t> order = s.renderer->schedule();
   // The 8 tiles of column 3 are wholly in the moved shadow's strip: they lead.
   for (uint32_t i = 0; i < kTilesX; ++i) EXPECT_EQ(order[i] % kTilesX, 3u) << i;
@@ -176,7 +177,7 @@ TEST(LightReach, MovedLightScheduleEndsOnTheFullFrameImage) {
   Staged s = stage_one(before, after, 3);
   Renderer& renderer = *s.renderer;
   test::discover_all(renderer, 1);
-  renderer.hipr_stages()->build_schedule();
+  hipr_stages(renderer).build_schedule();
   for (uint32_t offset = 0; offset < renderer.tile_count(); offset += 7) renderer.render_schedule(offset, 7, 1, true);
   renderer.render_schedule(0, renderer.tile_count(), 2, false);
   Renderer full(test::context(), after, settings());

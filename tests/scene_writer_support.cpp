@@ -106,7 +106,9 @@ void expect_same_scene(const Scene& want, const Scene& got, bool same_extensions
     EXPECT_EQ(want.cameras[i].yfov, got.cameras[i].yfov);
     EXPECT_EQ(want.cameras[i].znear, got.cameras[i].znear);
   }
-  if (!saved_view) EXPECT_EQ(want.camera_node(), got.camera_node());
+  if (!saved_view) {
+    EXPECT_EQ(want.camera_node(), got.camera_node());
+  }
   if (same_extensions) {
     EXPECT_EQ(want.extensions_used, got.extensions_used);
   }

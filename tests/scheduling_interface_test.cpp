@@ -15,7 +15,8 @@
 namespace hipr {
 namespace {
 
-// HiPR's stages as calls: stage 1 reports `active` tiles (stage1_focus `focus_active`).
+// HiPR's stages as calls, driven by the HiPR policy (make_hipr_policy): stage 1 reports `active`
+// tiles (stage1_focus `focus_active`).
 struct FakeStages final : HiprStageRunner {
   uint32_t active = 3, focus_active = 2, seeded = 3, leading = 0, discovered = 0;
   uint32_t stage1_calls = 0, focus_calls = 0, schedule_builds = 0;
@@ -102,7 +103,6 @@ struct FakeRenderer final : ProgressiveRenderer {
   void refresh_gbuffer() override {}
   uint64_t samples_since_reset() const override { return samples; }
   void reset_counters() override { samples = 0; }
-  HiprStageRunner* hipr_stages() override { return stages ? &*stages : nullptr; }
 };
 
 TEST(SchedulingInterface, BucketOrderRendersItsOrderInStepsAndShowsEachStep) {
@@ -140,7 +140,7 @@ TEST(SchedulingInterface, FullShowsWholePassesOnly) {
 TEST(SchedulingInterface, HiprRendersItsActiveTilesAsLeadingStepsThenTheSortedRest) {
   FakeRenderer renderer;
   renderer.stages.emplace();
-  Scheduler scheduler(renderer, Policy::Hipr, 2);
+  Scheduler scheduler(renderer, make_hipr_policy(*renderer.stages), 2);
   EXPECT_EQ(renderer.stages->stage1_calls, 1u);  // the G-buffer before any edit
   std::vector<uint32_t> sorted(12);
   std::iota(sorted.rbegin(), sorted.rend(), 0u);
@@ -166,7 +166,7 @@ TEST(SchedulingInterface, AFocusReplansWithoutRestartingAndEndsTheRoundEven) {
   renderer.stages.emplace();
   std::vector<uint32_t> sorted(12);
   std::iota(sorted.begin(), sorted.end(), 0u);
-  Scheduler scheduler(renderer, Policy::Hipr, 5);
+  Scheduler scheduler(renderer, make_hipr_policy(*renderer.stages), 5);
   renderer.set_schedule(sorted);
   scheduler.step();  // 5 tiles of a pass before any focus: no round target yet, 1 sample each
   EXPECT_EQ(renderer.target, 0u);
@@ -201,7 +201,7 @@ TEST(SchedulingInterface, TheFocusTakesItsLeadAfterItsFirstVisit) {
   FakeRenderer renderer;
   renderer.stages.emplace();
   renderer.stages->focus_active = 3;
-  Scheduler scheduler(renderer, Policy::Hipr, 2);
+  Scheduler scheduler(renderer, make_hipr_policy(*renderer.stages), 2);
   scheduler.set_converged_spp(4);
   scheduler.set_focus_lead(5);
   scheduler.set_focus({{FocusSeed{.pixel = glm::vec2(3.0f, 4.0f), .radius = 2.0f}}});
@@ -230,7 +230,7 @@ TEST(SchedulingInterface, TheFocusTakesItsLeadAfterItsFirstVisit) {
 TEST(SchedulingInterface, AfterACameraEditTheLeadComesOnceTheFocusIsVisited) {
   FakeRenderer renderer;
   renderer.stages.emplace();
-  Scheduler scheduler(renderer, Policy::Hipr, 2);
+  Scheduler scheduler(renderer, make_hipr_policy(*renderer.stages), 2);
   scheduler.set_converged_spp(8);
   scheduler.set_focus({{FocusSeed{.pixel = glm::vec2(3.0f, 4.0f), .radius = 2.0f}}});
   renderer.stages->active = 12;  // every tile
@@ -258,7 +258,7 @@ TEST(SchedulingInterface, TheEditsLeadComesAfterTheStronglyDiscoveredTiles) {
   renderer.stages.emplace();
   renderer.stages->leading = 2;     // tiles with pixels that lead
   renderer.stages->discovered = 4;  // strongly discovered tiles after the 3 active ones
-  Scheduler scheduler(renderer, Policy::Hipr, 2);
+  Scheduler scheduler(renderer, make_hipr_policy(*renderer.stages), 2);
   scheduler.set_first_visit_spp(2);
   scheduler.set_converged_spp(16);
   scheduler.set_edit_lead(3);

@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "card_scene.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
@@ -47,7 +48,7 @@ double relative_difference(const ImageRGB& a, const ImageRGB& b) {
 
 std::vector<uint32_t> camera_hits(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
   Renderer renderer(ctx, scene, settings);
-  renderer.hipr_stages()->stage1_visibility(ChangeSet{});
+  hipr_stages(renderer).stage1_visibility(ChangeSet{});
   return renderer.gbuffer_instances();
 }
 

@@ -15,6 +15,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "hipr/hipr_stages.h"
+
 namespace hipr::test {
 namespace fs = std::filesystem;
 
@@ -124,7 +126,7 @@ void expect_update_matches_fresh(Renderer& renderer, Scene& scene, const Edit& e
 }
 
 void discover_all(Renderer& renderer, uint32_t samples_per_pixel) {
-  HiprStageRunner& stages = *renderer.hipr_stages();
+  HiprStageRunner& stages = hipr_stages(renderer);
   stages.build_schedule();
   stages.stage2_discover(0, renderer.tile_count(), samples_per_pixel);
 }

@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "hipr/edits.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/scene_diff.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
@@ -108,7 +109,7 @@ std::vector<uint32_t> instance_ids(const Scene& scene) {
   s.width = s.height = kSize;
   s.tile_size = 16;
   Renderer renderer(test::context(), scene, s);
-  renderer.hipr_stages()->stage1_visibility({});
+  hipr_stages(renderer).stage1_visibility({});
   return renderer.gbuffer_instances();
 }
 
@@ -439,10 +440,10 @@ TEST_F(ViewerWindow, AMovedLampRerendersWhereItReachesFirst) {
   Renderer renderer(test::context(), before, s);
   renderer.add_samples_full_frame(1);
   renderer.resolve_display_all(DisplayRule::Immediate);
-  renderer.hipr_stages()->stage1_visibility({});
+  hipr_stages(renderer).stage1_visibility({});
   const ChangeSet changes = diff_scenes(before, after);
   renderer.update_scene(after, changes);
-  const uint32_t reached = renderer.hipr_stages()->stage1_visibility(changes);
+  const uint32_t reached = hipr_stages(renderer).stage1_visibility(changes);
   const std::vector<uint32_t> flags = renderer.tile_flags();
   EXPECT_GT(reached, 4u);
   EXPECT_LT(reached, 32u) << "a lamp of 0.2 m range lights a part of the box";

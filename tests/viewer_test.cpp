@@ -15,6 +15,7 @@
 #include "app/viewer/view_layout.h"
 #include "app/viewer/viewer_state.h"
 #include "core/error.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
 #include "image/debug_images.h"
@@ -304,14 +305,22 @@ TEST(FollowEnvironment, ExposureFollowsASwitchOfMap) {
 
 // ---- Session (headless GPU)
 
+// The session's scheduling settings with one change (Session::set_schedule takes them whole).
+template <typename Change>
+void change_schedule(Session& session, Change change) {
+  ScheduleSettings schedule = session.settings().schedule;
+  change(schedule);
+  session.set_schedule(schedule);
+}
+
 SessionSettings small_settings(Policy policy = Policy::Hipr) {
   SessionSettings s;
   s.render.width = 32;
   s.render.height = 32;
   s.render.tile_size = 8;
   s.render.max_depth = 4;
-  s.policy = policy;
-  s.tiles_per_step = 4;
+  s.schedule.policy = policy;
+  s.schedule.tiles_per_step = 4;
   s.spp = 2;
   return s;
 }
@@ -443,7 +452,7 @@ TEST(Session, ARefusedEditKeepsTheSceneAndItsRender) {
 // estimate may wait until it is worth showing: the scheduler's choice, not the viewer's.)
 TEST(Session, TheFirstStepShowsTheEditAndRecordsItsLatency) {
   SessionSettings settings = small_settings();
-  settings.display = DisplayRule::Immediate;
+  settings.schedule.display = DisplayRule::Immediate;
   Session session(test::context(), cornell(), settings);
   converge(session);
   const ImageRGB before = session.displayed();
@@ -487,15 +496,21 @@ TEST(Session, ViewerSettingsKeepTheScene) {
   EXPECT_TRUE(session.history().can_undo());
   EXPECT_THROW(session.set_tile_size(0), InputError);
   EXPECT_EQ(session.settings().render.tile_size, 4u);
-  session.set_policy(Policy::Full);
+  change_schedule(session, [](ScheduleSettings& s) { s.policy = Policy::Full; });
   EXPECT_EQ(session.scheduler().policy(), Policy::Full);
-  EXPECT_THROW(session.set_policy(Policy::Oracle), InputError)
+  EXPECT_THROW(change_schedule(session, [](ScheduleSettings& s) { s.policy = Policy::Oracle; }), InputError)
       << "the oracle needs a reference render";
   EXPECT_EQ(session.scheduler().policy(), Policy::Full);
-  session.set_display_rule(DisplayRule::Switch);
+  EXPECT_EQ(session.settings().schedule.policy, Policy::Full) << "a refused policy leaves the settings alone";
+  change_schedule(session, [](ScheduleSettings& s) { s.display = DisplayRule::Switch; });
   EXPECT_EQ(session.scheduler().display_rule(), DisplayRule::Switch);
-  session.set_display_rule(std::nullopt);
+  change_schedule(session, [](ScheduleSettings& s) { s.display.reset(); });
   EXPECT_EQ(session.scheduler().display_rule(), default_display_rule(Policy::Full));
+  change_schedule(session, [](ScheduleSettings& s) { s.edit_lead = 2; });
+  EXPECT_EQ(session.scheduler().edit_lead(), 2u);
+  change_schedule(session, [](ScheduleSettings& s) { s.visit_spp = 2; });  // a new scheduler
+  EXPECT_EQ(session.scheduler().edit_lead(), 2u) << "a new scheduler takes every setting";
+  change_schedule(session, [](ScheduleSettings& s) { s.visit_spp = 1; });
   HiprParameters h;
   h.depth_epsilon = 0.05f;
   session.set_hipr_parameters(h);
@@ -534,9 +549,9 @@ TEST(Session, FollowsTheSelectionAsItsFocus) {
   converge(session);
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
   // A new policy keeps the focus and its lead; an edit re-renders with them and still ends exactly.
-  session.set_focus_lead(5);
-  session.set_policy(Policy::Full);
-  session.set_policy(Policy::Hipr);
+  change_schedule(session, [](ScheduleSettings& s) { s.focus_lead = 5; });
+  change_schedule(session, [](ScheduleSettings& s) { s.policy = Policy::Full; });
+  change_schedule(session, [](ScheduleSettings& s) { s.policy = Policy::Hipr; });
   EXPECT_EQ(session.focus().seeds.size(), 3u);
   EXPECT_EQ(session.scheduler().focus_lead(), 5u);
   session.edit(TransformEdit{"short_block", glm::vec3(0.04f, 0.0f, 0.0f), std::nullopt});
@@ -582,7 +597,7 @@ TEST(RendererForViewer, EarlyCompilationRendersNothing) {
   Renderer renderer(test::context(), scene, early);
   renderer.set_schedule(tile_order(Policy::Random, renderer.tiles_x(), renderer.tiles_y(), 7));
   const std::vector<uint32_t> schedule = renderer.schedule();
-  renderer.hipr_stages();  // makes (and so compiles) stage 2's and stage 3's kernels
+  hipr_stages(renderer);  // makes (and so compiles) stage 2's and stage 3's kernels
   EXPECT_EQ(renderer.counters().samples, 0u);
   EXPECT_EQ(renderer.counters().rays, 0u);
   for (float v : renderer.image().rgb) ASSERT_EQ(v, 0.0f);
@@ -613,7 +628,7 @@ TEST(RendererForViewer, OwedTilesCountPixelsStillOwingARestart) {
 TEST(RendererForViewer, GBufferHitsAgreeWithTheInstanceImage) {
   Scene scene = cornell();
   Renderer renderer(test::context(), scene, tiny());
-  renderer.hipr_stages()->stage1_visibility({});
+  hipr_stages(renderer).stage1_visibility({});
   const std::vector<uint32_t> ids = renderer.gbuffer_instances();
   for (uint32_t y = 0; y < 32; y += 5)
     for (uint32_t x = 0; x < 32; x += 3) {
@@ -638,14 +653,14 @@ TEST(RendererForViewer, HiprParametersSteerTheNextStage2) {
   const auto weights_after_move = [](const HiprParameters& h) {
     Scene scene = cornell();
     Renderer renderer(test::context(), scene, tiny());
-    renderer.hipr_stages()->stage1_visibility({});
+    hipr_stages(renderer).stage1_visibility({});
     renderer.set_hipr_parameters(h);
     const Scene before = scene;
     apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt});
     const ChangeSet changes = diff_scenes(before, scene);
     renderer.update_scene(scene, changes);
     renderer.mark_all_owed();
-    renderer.hipr_stages()->stage1_visibility(changes);
+    hipr_stages(renderer).stage1_visibility(changes);
     test::discover_all(renderer, 1);
     EXPECT_EQ(renderer.settings().hipr.depth_epsilon, h.depth_epsilon);
     return renderer.tile_weights();

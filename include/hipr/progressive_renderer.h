@@ -1,7 +1,8 @@
 #pragma once
 // What the scheduler needs of a progressive renderer: a tile grid, a schedule to render from,
-// a display to resolve, and (for the HiPR policy) the method's three stages. hipr's Renderer is
-// one; another progressive renderer drives the same policies by implementing this.
+// a display to resolve. hipr's Renderer is one; another progressive renderer drives the same
+// policies by implementing this (the HiPR policy then needs HiPR's stages given to it:
+// make_hipr_policy, hipr/hipr_stage_runner.h).
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -9,12 +10,13 @@
 #include <vector>
 
 #include "hipr/display_rule.h"
-#include "hipr/focus.h"
 #include "hipr/image.h"
 #include "hipr/scene.h"
 #include "hipr/scene_diff.h"
 
 namespace hipr {
+
+class RenderState;  // the engine's device state: only the library's own methods use it
 
 // Image and tile geometry.
 struct TileGrid {
@@ -25,47 +27,6 @@ struct TileGrid {
   uint32_t tiles_y = 0;
   uint32_t seed = 0;  // of the render's random numbers (the random order uses it too)
   uint32_t tile_count() const { return tiles_x * tiles_y; }
-};
-
-// HiPR's stages (docs/method.md, "The method"). Each records GPU work and waits.
-class HiprStageRunner {
- public:
-  virtual ~HiprStageRunner() = default;
-  // Stage 1: the G-buffer of the scene as it is now (the previous one is kept) and the active
-  // tiles, where an element of `changes` is visible now or was before, each with a change
-  // score. A changed punctual light activates the tiles it reaches; a camera or environment
-  // change makes every tile active (no G-buffer shows their reach), and a camera change alone
-  // reprojects the display before it (set_reprojection). Returns |A| (stage 2 is split into
-  // steps over it).
-  virtual uint32_t stage1_visibility(const ChangeSet& changes) = 0;
-  // Whether stage 1 reprojects the display at an edit that changes nothing but the camera (on
-  // by default; off, such an edit restarts what the screen shows, for comparison).
-  virtual void set_reprojection(bool reproject) = 0;
-  // Stage 2: path-traces the active tiles among schedule entries [offset, offset + count)
-  // (restarting them) with discovery on; `then_resolve` resolves their display in the same
-  // submission.
-  virtual void stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
-                               std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
-  // Stage 3: the schedule, sorted on the GPU: active tiles by change score (those of the focus
-  // after the edit's, by focus score), then discovered tiles by weight, then the rest by
-  // distance to the seeds.
-  virtual void build_schedule() = 0;
-  // The focus every later stage 1 marks besides the edit's changes (docs/method.md#focus).
-  virtual void set_focus(const Focus& focus) = 0;
-  // Stage 1 without an edit (the focus changed): the same tile state as stage1_visibility
-  // (tiles an edit left unrendered keep their rank, the focus's tiles are active), from the
-  // G-buffer as it is; nothing is rendered. Returns |A|.
-  virtual uint32_t stage1_focus() = 0;
-  // Of the last stage 1's active tiles, how many have a change or focus score: they lead its
-  // order, the rest of the active set (an edit that activates every tile) follows them.
-  virtual uint32_t seeded_tiles() const = 0;
-  // Of them, how many hold a pixel that leads after the edit (a moved object, a surface the pixel
-  // no longer sees: docs/method.md#the-edits-lead).
-  virtual uint32_t lead_tiles() const = 0;
-  // After the last build_schedule: how many tiles stage 2 discovered strongly besides the active
-  // ones (weight at least a sixteenth of the strongest: they follow the active tiles in the
-  // schedule).
-  virtual uint32_t discovered_tiles() const = 0;
 };
 
 class ProgressiveRenderer {
@@ -116,8 +77,9 @@ class ProgressiveRenderer {
   virtual uint64_t samples_since_reset() const = 0;
   virtual void reset_counters() = 0;
 
-  // HiPR's stages, or nullptr for a renderer without them (the HiPR policy then refuses it).
-  virtual HiprStageRunner* hipr_stages() { return nullptr; }
+  // hipr's Renderer: its device state (src/render/render_state.h), to which HiPR attaches its
+  // stage passes; nullptr for other renderers.
+  virtual RenderState* render_state() { return nullptr; }
 };
 
 }  // namespace hipr

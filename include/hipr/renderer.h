@@ -148,8 +148,8 @@ class Renderer final : public ProgressiveRenderer {
   RenderSnapshot snapshot() const;
   void restore(const RenderSnapshot& snapshot);
 
-  // ---- HiPR
-  HiprStageRunner* hipr_stages() override;  // never null
+  // ---- The device state (methods attach their passes to it: HiPR's stages)
+  RenderState* render_state() override;  // never null
   void refresh_gbuffer() override;
   // New discovery weights and depth tolerance; they take effect from the next stage 2 on.
   void set_hipr_parameters(const HiprParameters& parameters);

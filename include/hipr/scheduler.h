@@ -11,15 +11,10 @@
 #include "hipr/image.h"
 #include "hipr/progressive_renderer.h"
 #include "hipr/scene_diff.h"
+#include "hipr/schedule_settings.h"
 #include "hipr/scheduling_policy.h"
 
 namespace hipr {
-
-// Visits the focus's tiles run ahead of the round unless set (Scheduler::set_focus_lead).
-inline constexpr uint32_t kDefaultFocusLead = 3;
-// Visits the pixels that lead after an edit get before the rest of the round unless set
-// (Scheduler::set_edit_lead).
-inline constexpr uint32_t kDefaultEditLead = 6;
 
 class Scheduler {
  public:
@@ -30,6 +25,10 @@ class Scheduler {
   Scheduler(ProgressiveRenderer& renderer, Policy policy, uint32_t tiles_per_step, uint32_t visit_spp = 1)
       : Scheduler(renderer, make_policy(policy), tiles_per_step, visit_spp) {}
 
+  // Every setting but the policy, the step budget and the visit's samples (the constructor's)
+  // at once; `converged_spp` as set_converged_spp. What every command, the viewer and the bench
+  // call, so none of them leaves a setting out.
+  void configure(const ScheduleSettings& settings, uint32_t converged_spp);
   void set_display_rule(DisplayRule rule) { m_display = rule; }
   // Samples a tile gets on its first visit after an edit (HiPR's stage 2 included); later visits
   // get `visit_spp`. More samples up front make a re-rendered tile worth showing sooner (its

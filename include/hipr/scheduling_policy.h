@@ -10,6 +10,7 @@
 
 #include "hipr/display_rule.h"
 #include "hipr/focus.h"
+#include "hipr/hipr_stage_runner.h"
 #include "hipr/progressive_renderer.h"
 #include "hipr/scene_diff.h"
 
@@ -47,6 +48,9 @@ class SchedulingPolicy {
   // (ProgressiveRenderer::relight) before fresh samples come.
   virtual bool relights() const { return false; }
 
+  // Whether a camera edit alone reprojects the display (HiPR's stage 1,
+  // docs/method.md#camera-moves; on by default); off, it restarts what the screen shows.
+  virtual void set_reprojection(bool reproject) { (void)reproject; }
   // Before any edit, on the scene as loaded (HiPR: the first G-buffer).
   virtual void start(ProgressiveRenderer& renderer) { (void)renderer; }
   // After an edit (the renderer already holds the edited scene; pixels not re-rendered since
@@ -89,7 +93,9 @@ class SchedulingPolicy {
 };
 
 // hipr, full, scanline, spiral or random; the oracle needs a reference image and throws
-// InputError here (hipr bench makes it).
+// InputError here (hipr bench makes it). hipr's stages run on hipr's renderer.
 std::unique_ptr<SchedulingPolicy> make_policy(Policy policy);
+// HiPR driving `stages` (another progressive renderer's, or a test's), which outlive it.
+std::unique_ptr<SchedulingPolicy> make_hipr_policy(HiprStageRunner& stages);
 
 }  // namespace hipr

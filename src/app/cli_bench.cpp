@@ -17,6 +17,7 @@
 #include "app/bench_report.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/schedule_flags.h"
 #include "bench/policy_run.h"
 #include "bench/reference_cache.h"
 #include "core/error.h"
@@ -45,19 +46,14 @@ struct BenchOptions {
   std::vector<std::string> policies = {"hipr", "full", "scanline", "spiral", "random", "oracle"};
   uint32_t ref_spp = 1024;
   uint32_t steps = 0;           // per edit and policy; 0 = until converged
-  uint32_t tiles_per_step = 0;  // 0 = a sixteenth of the frame
-  uint32_t visit_spp = 1;
-  uint32_t first_visit_spp =
-      0;                // 0 = 2 (measured best with blend on the Cornell edits), at most --spp
-  std::string display;  // hipr and oracle: difference (default), blend, switch or immediate
+  // Its policy is --policies'; tiles_per_step 0: a sixteenth of the frame; first_visit_spp 0: 2
+  // (measured best with blend on the Cornell edits), at most --spp; display: hipr's and the
+  // oracle's (difference by default), the others show tiles at once.
+  ScheduleSettings schedule;
   fs::path ref_cache;
   bool no_ref_cache = false;
   double drag = 0.0;  // > 0: the edits are one drag, this much work apart (full-frame passes)
-  bool no_relight = false;
-  bool no_reproject = false;
   bool cold_start = false;  // measure the render of the scene as loaded, from nothing, first
-  uint32_t focus_lead = kDefaultFocusLead;
-  uint32_t edit_lead = kDefaultEditLead;
 };
 
 // The edits' own JSON text, one per edit: with the scene's hash it names a scene state.
@@ -118,7 +114,7 @@ void run_cold_start_bench(const BenchOptions& o, const vk::Context& ctx, Rendere
   BenchEdit& edit_report = report.add_edit("cold start", reference.image, 0, renderer.tile_count());
   for (const PlannedRun& planned : planned_runs(policies, focus)) {
     if (planned.policy == Policy::Oracle) continue;  // its order needs an edit to rank
-    run_options.policy = planned.policy;
+    run_options.schedule.policy = planned.policy;
     run_options.focus = planned.focus;
     const bench::PolicyRun run = bench::run_cold_start(renderer, reference.image, run_options);
     log_run(planned.name, run);
@@ -174,8 +170,8 @@ void run_drag_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& ren
                                            references.back(), 0, renderer.tile_count());
   for (Policy policy : policies) {
     renderer.update_scene(states.front(), undo);
-    run_options.policy = policy;
-    run_options.display = display_of(policy);
+    run_options.schedule.policy = policy;
+    run_options.schedule.display = display_of(policy);
     const bench::PolicyRun run = bench::run_drag(renderer, states, changes, start, references, o.drag, run_options);
     edit_report.add_run(policy_name(policy), run);
     log::info("  " + policy_name(policy) + ": relMSE during the drag " +
@@ -198,16 +194,16 @@ int run_bench(BenchOptions& o) {
   if (policies.empty()) throw InputError("--policies names no policy");
   if (o.ref_spp < 1 || o.ref_spp > (1u << 20))
     throw InputError("--ref-spp must be between 1 and 1048576");
-  if (o.visit_spp < 1 || o.visit_spp > o.common.spp)
+  ScheduleSettings& schedule = o.schedule;
+  if (schedule.visit_spp < 1 || schedule.visit_spp > o.common.spp)
     throw InputError("--visit-spp must be between 1 and --spp");
-  if (o.first_visit_spp > o.common.spp)
+  if (schedule.first_visit_spp > o.common.spp)
     throw InputError("--first-visit-spp must be between 1 and --spp");
-  if (o.first_visit_spp == 0) o.first_visit_spp = std::min(2u, o.common.spp);
+  if (schedule.first_visit_spp == 0) schedule.first_visit_spp = std::min(2u, o.common.spp);
   if (!std::isfinite(o.drag) || o.drag < 0.0 || o.drag > 1024.0)
     throw InputError("--drag must be a work between edits from 0 to 1024 full-frame passes");
   // hipr and the oracle share a display rule: the comparison is of orders, not of displays.
-  const DisplayRule ordered_display =
-      o.display.empty() ? default_display_rule(Policy::Hipr) : parse_display_rule(o.display);
+  const DisplayRule ordered_display = schedule.display.value_or(default_display_rule(Policy::Hipr));
 
   Scene scene = load_scene(o.common.scene, o.common.load);
   const std::vector<Edit> edits = load_edit_script(o.edits);
@@ -241,33 +237,27 @@ int run_bench(BenchOptions& o) {
   early.compile_kernels_early = true;
   Renderer renderer(ctx, scene, early);
   bench::PolicyRunOptions run_options;
-  run_options.tiles_per_step =
-      o.tiles_per_step ? o.tiles_per_step : default_tiles_per_step(renderer.tile_count());
-  run_options.visit_spp = o.visit_spp;
-  run_options.first_visit_spp = o.first_visit_spp;
-  run_options.relight = !o.no_relight;
-  run_options.reproject = !o.no_reproject;
+  run_options.schedule = schedule;
+  if (schedule.tiles_per_step == 0) run_options.schedule.tiles_per_step = default_tiles_per_step(renderer.tile_count());
   run_options.target_spp = o.common.spp;
   run_options.max_steps = o.steps;
-  run_options.focus_lead = o.focus_lead;
-  run_options.edit_lead = o.edit_lead;
 
   const nlohmann::json recorded = {{"width", settings.width},
                                    {"height", settings.height},
                                    {"tile", settings.tile_size},
                                    {"spp", o.common.spp},
                                    {"ref_spp", o.ref_spp},
-                                   {"tiles_per_step", run_options.tiles_per_step},
-                                   {"visit_spp", run_options.visit_spp},
-                                   {"first_visit_spp", run_options.first_visit_spp},
+                                   {"tiles_per_step", run_options.schedule.tiles_per_step},
+                                   {"visit_spp", schedule.visit_spp},
+                                   {"first_visit_spp", schedule.first_visit_spp},
                                    {"display_hipr_oracle", display_rule_name(ordered_display)},
-                                   {"relight", run_options.relight},
-                                   {"reproject", run_options.reproject},
+                                   {"relight", schedule.relight},
+                                   {"reproject", schedule.reproject},
                                    {"light_groups", settings.light_groups},
                                    {"steps", o.steps},
                                    {"drag_work_per_edit", o.drag},
-                                   {"focus_lead", o.focus_lead},
-                                   {"edit_lead", o.edit_lead},
+                                   {"focus_lead", schedule.focus_lead},
+                                   {"edit_lead", schedule.edit_lead},
                                    {"max_depth", settings.max_depth},
                                    {"seed", settings.seed},
                                    {"sampler", sampler_name(settings.sampler)},
@@ -343,8 +333,8 @@ int run_bench(BenchOptions& o) {
     previous_reference = reference.image;
     for (const PlannedRun& planned : planned_runs(policies, focus)) {
       renderer.update_scene(before, undo);
-      run_options.policy = planned.policy;
-      run_options.display = display_of(planned.policy);
+      run_options.schedule.policy = planned.policy;
+      run_options.schedule.display = display_of(planned.policy);
       run_options.focus = planned.focus;
       const bench::PolicyRun run =
           bench::run_policy(renderer, scene, changes, start, reference.image, changed, run_options);
@@ -375,16 +365,7 @@ Command add_bench_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--steps", options->steps,
                   "Scheduling steps per edit and policy (default: until converged)");
-  cmd->add_option("--tiles-per-step", options->tiles_per_step,
-                  "Tiles rendered per step (default: 1/16 of the frame)");
-  cmd->add_option("--visit-spp", options->visit_spp, "Samples per pixel a tile gets per visit")
-      ->capture_default_str();
-  cmd->add_option(
-      "--first-visit-spp", options->first_visit_spp,
-      "Samples per pixel of a tile's first visit after an edit, all policies but full (default 2)");
-  cmd->add_option(
-      "--display", options->display,
-      "How hipr and oracle show re-rendered tiles: difference (default), blend, switch or immediate");
+  add_schedule_flags(*cmd, options->schedule, {"policy"});
   cmd->add_option("--ref-cache", options->ref_cache,
                   "Folder of cached references (default: beside the shader cache)");
   cmd->add_flag("--no-ref-cache", options->no_ref_cache,
@@ -392,16 +373,6 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--drag", options->drag,
                   "Apply the edits as one drag, this much work apart in full-frame passes (as a viewer applies "
                   "one per frame), measuring against the scene as it is at each step");
-  cmd->add_flag("--no-relight", options->no_relight,
-                "hipr: re-render light edits without relighting the converged image (for comparison)");
-  cmd->add_flag("--no-reproject", options->no_reproject,
-                "hipr: restart camera edits without reprojecting the image before them (for comparison)");
-  cmd->add_option("--focus-lead", options->focus_lead,
-                  "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
-      ->capture_default_str();
-  cmd->add_option("--edit-lead", options->edit_lead,
-                  "Visits the pixels that show what an edit moved (or a surface they no longer see) get ahead of the rest (0: none)")
-      ->capture_default_str();
   cmd->add_flag("--cold-start", options->cold_start,
                 "First measure the scene as loaded rendered from nothing (with the focus of the script's first "
                 "focus ops, if any)");

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "app/cli_common.h"
+#include "app/schedule_flags.h"
 #include "app/commands.h"
 #include "core/error.h"
 #include "core/file_util.h"
@@ -50,17 +51,9 @@ struct ReplayOptions {
   CommonOptions common;
   fs::path edits;
   fs::path output;
-  std::string policy = "hipr";
   std::vector<uint32_t> dump_steps;
   uint32_t steps = 0;  // per edit; 0 = until every pixel has --spp samples again
-  uint32_t tiles_per_step = 0;  // 0 = default_tiles_per_step
-  uint32_t visit_spp = 1;
-  uint32_t first_visit_spp = 0;  // 0 = visit_spp
-  bool no_relight = false;
-  bool no_reproject = false;
-  std::string display;           // empty = the policy's own rule
-  uint32_t focus_lead = kDefaultFocusLead;
-  uint32_t edit_lead = kDefaultEditLead;
+  ScheduleSettings schedule;  // tiles_per_step 0: default_tiles_per_step
   fs::path save;  // empty: the edited scene is not saved
 };
 
@@ -86,11 +79,12 @@ void write_debug_images(const fs::path& dir, size_t edit, const Renderer& render
 int run_replay(ReplayOptions& o) {
   validate_common_options(o.common);
   log::set_quiet(o.common.quiet);
-  const Policy policy = parse_policy(o.policy);
+  const ScheduleSettings& schedule = o.schedule;
+  const Policy policy = schedule.policy;
   if (policy == Policy::Oracle) throw InputError("the oracle policy needs a reference image: use hipr bench");
-  if (o.visit_spp < 1 || o.visit_spp > o.common.spp) throw InputError("--visit-spp must be between 1 and --spp");
-  if (o.first_visit_spp > o.common.spp) throw InputError("--first-visit-spp must be between 1 and --spp");
-  const DisplayRule display = o.display.empty() ? default_display_rule(policy) : parse_display_rule(o.display);
+  if (schedule.visit_spp < 1 || schedule.visit_spp > o.common.spp)
+    throw InputError("--visit-spp must be between 1 and --spp");
+  if (schedule.first_visit_spp > o.common.spp) throw InputError("--first-visit-spp must be between 1 and --spp");
   Scene scene = load_scene(o.common.scene, o.common.load);
   const std::vector<Edit> edits = load_edit_script(o.edits);
   // Check every name before rendering or writing anything: a typo in edit 5 must not cost
@@ -117,15 +111,9 @@ int run_replay(ReplayOptions& o) {
   const vk::Context ctx(context_options(o.common));
   Renderer renderer(ctx, scene, o.common.render);
   const uint32_t tiles = renderer.tile_count();
-  const uint32_t per_step = o.tiles_per_step ? o.tiles_per_step : default_tiles_per_step(tiles);
-  Scheduler scheduler(renderer, policy, per_step, o.visit_spp);
-  scheduler.set_display_rule(display);
-  if (o.first_visit_spp) scheduler.set_first_visit_spp(o.first_visit_spp);
-  scheduler.set_relight(!o.no_relight);
-  scheduler.set_reproject(!o.no_reproject);
-  scheduler.set_converged_spp(o.common.spp);
-  scheduler.set_focus_lead(o.focus_lead);
-  scheduler.set_edit_lead(o.edit_lead);
+  const uint32_t per_step = schedule.tiles_per_step ? schedule.tiles_per_step : default_tiles_per_step(tiles);
+  Scheduler scheduler(renderer, policy, per_step, schedule.visit_spp);
+  scheduler.configure(schedule, o.common.spp);
   // Converge the scene as loaded; the last 1-spp pass is timed: the unit of the overhead share.
   for (uint32_t done = 0; done + 1 < o.common.spp; done += 16) renderer.add_samples_full_frame(std::min(16u, o.common.spp - 1 - done));
   const Timer pass_timer;
@@ -134,12 +122,12 @@ int run_replay(ReplayOptions& o) {
 
   // Without --steps: until every pixel has --spp samples again (work counts samples since the
   // edit). The bound only guards against a schedule that would never get there.
-  const uint32_t rounds = (o.common.spp + o.visit_spp - 1) / o.visit_spp;
+  const uint32_t rounds = (o.common.spp + schedule.visit_spp - 1) / schedule.visit_spp;
   const uint32_t max_steps = o.steps ? o.steps : 2 * (rounds + 1) * ((tiles + per_step - 1) / per_step) + 2;
   const std::set<uint32_t> dumps(o.dump_steps.begin(), o.dump_steps.end());
   nlohmann::json summary = {{"scene", o.common.scene.string()},
-                            {"policy", o.policy},
-                            {"display", display_rule_name(display)},
+                            {"policy", policy_name(policy)},
+                            {"display", display_rule_name(scheduler.display_rule())},
                             {"full_frame_pass_seconds", pass_seconds},
                             {"edits", nlohmann::json::array()}};
   uint64_t non_finite = 0;  // the counters restart at every edit
@@ -207,26 +195,9 @@ Command add_replay_command(CLI::App& app) {
   cmd->add_option("scene", options->common.scene, "Scene file (.gltf or .glb)")->required();
   cmd->add_option("edits", options->edits, "Edit script (.json)")->required();
   cmd->add_option("-o,--output", options->output, "Output folder")->required();
-  cmd->add_option("--policy", options->policy, "hipr, full, scanline, spiral or random")->capture_default_str();
   cmd->add_option("--dump-steps", options->dump_steps, "Steps after which to write the displayed image")->delimiter(',');
   cmd->add_option("--steps", options->steps, "Scheduling steps per edit (default: until converged)");
-  cmd->add_option("--tiles-per-step", options->tiles_per_step, "Tiles rendered per step (default: 1/16 of the frame)");
-  cmd->add_option("--visit-spp", options->visit_spp, "Samples per pixel a tile gets per visit")->capture_default_str();
-  cmd->add_option("--first-visit-spp", options->first_visit_spp,
-                  "Samples per pixel of a tile's first visit after an edit (default: --visit-spp)");
-  cmd->add_option("--display", options->display,
-                  "How re-rendered tiles are shown: immediate, switch, blend or difference (default: difference for "
-                  "hipr, immediate for the others)");
-  cmd->add_flag("--no-relight", options->no_relight,
-                "hipr: re-render light edits without relighting the converged image first");
-  cmd->add_flag("--no-reproject", options->no_reproject,
-                "hipr: restart camera edits without reprojecting the image before them");
-  cmd->add_option("--focus-lead", options->focus_lead,
-                  "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
-      ->capture_default_str();
-  cmd->add_option("--edit-lead", options->edit_lead,
-                  "Visits the pixels that show what an edit moved (or a surface they no longer see) get ahead of the rest (0: none)")
-      ->capture_default_str();
+  add_schedule_flags(*cmd, options->schedule);
   cmd->add_option("--save", options->save,
                   "Also write the edited scene (after every edit) as glTF (.gltf or .glb); written before rendering");
   add_common_options(*cmd, options->common);

@@ -59,6 +59,16 @@ bool evaluated_at(uint32_t step, double work, bool last, const PolicyRunOptions&
   return work <= options.dense_until || last || step % std::max(options.sparse_every, 1u) == 0;
 }
 
+// A scheduler with every setting of the run (the oracle ranks against `reference`, which it
+// reads at every plan: a drag updates it in place).
+Scheduler make_scheduler(Renderer& renderer, const ImageRGB& reference, const PolicyRunOptions& options) {
+  const ScheduleSettings& s = options.schedule;
+  Scheduler scheduler(renderer, make_bench_policy(s.policy, reference), std::max(s.tiles_per_step, 1u),
+                      std::max(s.visit_spp, 1u));
+  scheduler.configure(s, options.target_spp);
+  return scheduler;
+}
+
 // The run's totals and the image it ends on; captures not reached take that image.
 void finish(PolicyRun& run, const Scheduler& scheduler, double overhead_seconds, double wall_seconds,
             uint32_t non_finite_samples, const PolicyRunOptions& options) {
@@ -76,14 +86,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
                      const RenderSnapshot& start, const ImageRGB& reference,
                      const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options) {
   renderer.restore(start);
-  Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step, options.visit_spp);
-  if (options.display) scheduler.set_display_rule(*options.display);
-  scheduler.set_first_visit_spp(options.first_visit_spp);
-  scheduler.set_relight(options.relight);
-  scheduler.set_reproject(options.reproject);
-  scheduler.set_converged_spp(options.target_spp);
-  scheduler.set_focus_lead(options.focus_lead);
-  scheduler.set_edit_lead(options.edit_lead);
+  Scheduler scheduler = make_scheduler(renderer, reference, options);
   if (!options.focus.empty()) scheduler.set_focus(options.focus);  // what the user looked at before the edit
 
   PolicyRun run;
@@ -130,11 +133,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
 PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const PolicyRunOptions& options) {
   renderer.reset();
   renderer.reset_counters();
-  Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step,
-                      options.visit_spp);
-  scheduler.set_converged_spp(options.target_spp);
-  scheduler.set_focus_lead(options.focus_lead);
-  scheduler.set_edit_lead(options.edit_lead);
+  Scheduler scheduler = make_scheduler(renderer, reference, options);
   PolicyRun run;
   double wall = 0.0;
   const auto evaluate = [&](uint32_t step) {
@@ -163,12 +162,9 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
     throw InternalError("a drag needs a scene state and a reference after every edit");
   renderer.restore(start);
   ImageRGB reference = references.front();  // the oracle reads the current one at each edit
-  Scheduler scheduler(renderer, make_bench_policy(options.policy, reference), options.tiles_per_step,
-                      options.visit_spp);
-  if (options.display) scheduler.set_display_rule(*options.display);
-  scheduler.set_first_visit_spp(options.first_visit_spp);
-  scheduler.set_relight(options.relight);
-  scheduler.set_reproject(options.reproject);
+  // Every setting, the converged count included: the edit's and the focus's leads run in drags
+  // as after single edits.
+  Scheduler scheduler = make_scheduler(renderer, reference, options);
 
   PolicyRun run;
   double wall = 0.0, overhead = 0.0, work_before = 0.0;  // work_before: of the edits before the current one

@@ -7,19 +7,15 @@
 
 #include "bench/error_curve.h"
 #include "hipr/renderer.h"
+#include "hipr/schedule_settings.h"
 #include "hipr/scheduler.h"
 #include "image/error_metrics.h"
 
 namespace hipr::bench {
 
 struct PolicyRunOptions {
-  Policy policy = Policy::Hipr;
-  std::optional<DisplayRule> display;  // unset: the policy's default (default_display_rule)
-  uint32_t tiles_per_step = 1;
-  uint32_t visit_spp = 1;
-  uint32_t first_visit_spp = 1;  // samples of a tile's first visit after the edit (not for `full`)
-  bool relight = true;           // relighting by linearity (policies that relight; Scheduler::set_relight)
-  bool reproject = true;         // reprojection at camera edits (hipr; Scheduler::set_reproject)
+  // The scheduler's settings (a tiles_per_step of 0 counts as 1; first_visit_spp 0: visit_spp).
+  ScheduleSettings schedule = {.tiles_per_step = 1, .first_visit_spp = 1};
   uint32_t target_spp = 1;       // converged: every pixel has this many samples since the edit
   uint32_t max_steps = 0;        // 0: until converged
   double dense_until = 16.0;     // evaluate after every step until this much work, then sparser
@@ -28,8 +24,6 @@ struct PolicyRunOptions {
   // Keep the displayed image at these amounts of work (0: what the edit itself shows).
   std::vector<double> capture_work = {0.0, 0.25, 1.0};
   Focus focus;  // handed to the scheduler before the edit (docs/method.md#focus); empty: none
-  uint32_t focus_lead = kDefaultFocusLead;  // visits the focus's tiles run ahead (Scheduler::set_focus_lead)
-  uint32_t edit_lead = kDefaultEditLead;    // visits the pixels an edit moved get ahead (Scheduler::set_edit_lead)
   // One entry per pixel, non-zero in the region whose error is also measured (focus_relmse);
   // empty: none.
   std::vector<uint8_t> focus_region;

@@ -2,33 +2,50 @@
 
 #include <algorithm>
 
+#include "core/error.h"
 #include "shaders/shared/bindings/trace.h"
 #include "shaders/shared/bindings/visibility.h"
 
 namespace hipr {
 
-abi::TracePush no_tile_push(const TracePass& pass, uint32_t tile_count) {
-  abi::TracePush push = pass.push(0, tile_count, 1);
-  push.requireFlags = 1u << 31;
-  return push;
+HiprStages::HiprStages(RenderState& state)
+    : m_state(state),
+      m_active(state.ctx, state.gpu, state.tiles, state.film, state.gbuffers, state.resolve.display, state.tiles.weights,
+               state.settings.width * state.settings.height),
+      m_reach(state.ctx, state.gpu, state.tiles, state.gbuffers, state.resolve.display, m_active.tile_change,
+              state.settings.width * state.settings.height, state.features),
+      m_reproject(state.ctx, state.gpu, state.gbuffers, state.resolve.display, state.settings.width,
+                  state.settings.height),
+      m_discovery(state.ctx, state.gpu, state.tiles, state.film, state.resolve.display, state.settings, state.features,
+                  {{abi::kTraceGBuffer, &state.gbuffers.current},
+                   {abi::kTraceChangedRecords, &m_active.changed_records},
+                   {abi::kTraceTileWeights, &state.tiles.weights}}),
+      m_schedule(state.ctx, state.gpu, state.tiles, state.tiles.weights, m_active.tile_change, m_active.tile_focus) {
+  state.tiles.weights.clear();
+  state.gbuffers.render();
 }
 
-HiprStages::HiprStages(const RenderParts& parts, uint32_t kernel_features)
-    : m_parts(parts),
-      m_tile_weights(parts.ctx, size_t(parts.tiles.count()) * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      m_active(parts.ctx, parts.scene, parts.tiles, parts.film, parts.gbuffers, parts.resolve.display, m_tile_weights,
-               parts.settings.width * parts.settings.height),
-      m_reach(parts.ctx, parts.scene, parts.tiles, parts.gbuffers, parts.resolve.display, m_active.tile_change,
-              parts.settings.width * parts.settings.height, kernel_features),
-      m_reproject(parts.ctx, parts.scene, parts.gbuffers, parts.resolve.display, parts.settings.width,
-                  parts.settings.height),
-      m_discovery(parts.ctx, parts.scene, parts.tiles, parts.film, parts.resolve.display, parts.settings, kernel_features,
-                  {{abi::kTraceGBuffer, &parts.gbuffers.current},
-                   {abi::kTraceChangedRecords, &m_active.changed_records},
-                   {abi::kTraceTileWeights, &m_tile_weights}}),
-      m_schedule(parts.ctx, parts.scene, parts.tiles, m_tile_weights, m_active.tile_change, m_active.tile_focus) {
-  m_tile_weights.clear();
-  parts.gbuffers.render();
+HiprStages& hipr_stages(RenderState& state) {
+  if (!state.extension) {
+    auto stages = std::make_unique<HiprStages>(state);
+    stages->warm_up();
+    state.extension = std::move(stages);
+  }
+  auto* stages = dynamic_cast<HiprStages*>(state.extension.get());
+  if (!stages) throw InternalError("the render holds another method's passes");
+  return *stages;
+}
+
+HiprStages& hipr_stages(ProgressiveRenderer& renderer) {
+  RenderState* state = renderer.render_state();
+  if (!state) throw InputError("the hipr policy needs HiPR's stages: hipr's renderer, or make_hipr_policy");
+  return hipr_stages(*state);
+}
+
+void HiprStages::kernel_features_changed(uint32_t features) {
+  m_discovery.set_features(features);
+  m_reach.set_kernel_features(features);
+  warm_up();
 }
 
 uint32_t HiprStages::stage1_visibility(const ChangeSet& changes) {
@@ -45,7 +62,7 @@ uint32_t HiprStages::stage1_visibility(const ChangeSet& changes) {
 
 uint32_t HiprStages::stage1_focus() {
   // The G-buffer shows the scene as it is unless a policy without stage 1 left it behind.
-  if (!m_parts.gbuffers.is_current()) m_parts.gbuffers.render();
+  if (!m_state.gbuffers.is_current()) m_state.gbuffers.render();
   m_reach.set_changed({});
   return mark_tiles({}, abi::kCarryRefocus, false);
 }
@@ -54,14 +71,14 @@ void HiprStages::set_focus(const Focus& focus) { m_focus = focus; }
 
 uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer,
                                const Camera* reproject_from, bool moved) {
-  if (m_active.set_changed(m_parts.scene, changes, m_focus)) m_discovery.rebind();
-  m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+  if (m_active.set_changed(m_state.gpu, changes, m_focus)) m_discovery.rebind();
+  m_state.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     if (render_gbuffer) {
-      m_parts.gbuffers.record_keep_previous(cmd);
+      m_state.gbuffers.record_keep_previous(cmd);
       vk::transfer_to_compute_barrier(cmd);
     }
     m_active.record_carry(cmd, carry_mode);
-    if (render_gbuffer) m_parts.gbuffers.record(cmd);
+    if (render_gbuffer) m_state.gbuffers.record(cmd);
     vk::compute_to_compute_barrier(cmd);
     if (reproject_from) {
       m_reproject.record(cmd, *reproject_from);
@@ -75,7 +92,7 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
   });
   // What the CPU needs: stage 2 is split into steps of equal work over |A| tiles, and the
   // focus's lead comes after the scored ones among them.
-  const std::vector<uint32_t> flags = m_parts.tiles.flags.download_all<uint32_t>();
+  const std::vector<uint32_t> flags = m_state.tiles.flags.download_all<uint32_t>();
   uint32_t active = 0;
   m_seeded = 0;
   m_lead_tiles = 0;
@@ -90,21 +107,11 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
 
 void HiprStages::stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
                                  std::optional<DisplayRule> then_resolve) {
-  const uint32_t tiles = m_parts.tiles.count();
-  if (offset >= tiles || count == 0) return;
-  abi::TracePush push = m_discovery.push(offset, std::min(count, tiles - offset), samples_per_pixel);
-  push.requireFlags = abi::kTileActive;
-  push.sampleTarget = m_parts.sample_target.round;
-  push.focusTarget = m_parts.sample_target.focus;
-  push.leadTarget = m_parts.sample_target.lead;
-  m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    m_discovery.record(cmd, push);
-    if (then_resolve) m_parts.resolve.record(cmd, {push.listOffset, push.tileCount, push.requireFlags, 0}, *then_resolve);
-  });
+  m_state.trace_entries(m_discovery, offset, count, samples_per_pixel, abi::kTileActive, 0u, then_resolve);
 }
 
 void HiprStages::build_schedule() {
-  m_parts.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m_schedule.record(cmd); });
+  m_state.ctx.submit_and_wait([&](VkCommandBuffer cmd) { m_schedule.record(cmd); });
 }
 
 uint32_t HiprStages::discovered_tiles() const {
@@ -113,8 +120,8 @@ uint32_t HiprStages::discovered_tiles() const {
   // old shadow) to faint colour bleeding that reaches everywhere in a closed room; a sixteenth
   // of the strongest is where they stop being worth more than the lead. Read back only when
   // asked (an edit with a lead), not at every sort.
-  const std::vector<uint32_t> flags = m_parts.tiles.flags.download_all<uint32_t>();
-  const std::vector<uint64_t> weights = m_tile_weights.download_all<uint64_t>();
+  const std::vector<uint32_t> flags = m_state.tiles.flags.download_all<uint32_t>();
+  const std::vector<uint64_t> weights = m_state.tiles.weights.download_all<uint64_t>();
   const auto discovered = [&](size_t t) { return (flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive); };
   uint64_t strongest = 0;
   for (size_t t = 0; t < flags.size(); ++t)
@@ -125,18 +132,14 @@ uint32_t HiprStages::discovered_tiles() const {
   return strong;
 }
 
-void HiprStages::record_warm_up(VkCommandBuffer cmd) {
-  m_discovery.record(cmd, no_tile_push(m_discovery, m_parts.tiles.count()));
-  m_schedule.record_warm_up(cmd);
-  m_reach.record_warm_up(cmd);
-  m_reproject.prepare();
-}
-
-std::vector<double> HiprStages::tile_weights() const {
-  const auto fixed = m_tile_weights.download_all<uint64_t>();
-  std::vector<double> out(fixed.size());
-  for (size_t i = 0; i < fixed.size(); ++i) out[i] = double(fixed[i]) / abi::kWeightScale;
-  return out;
+void HiprStages::warm_up() {
+  if (!m_state.settings.compile_kernels_early) return;
+  m_state.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m_discovery.record(cmd, no_tile_push(m_discovery, m_state.tiles.count()));
+    m_schedule.record_warm_up(cmd);
+    m_reach.record_warm_up(cmd);
+    m_reproject.prepare();
+  });
 }
 
 }  // namespace hipr

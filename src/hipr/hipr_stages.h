@@ -1,45 +1,29 @@
 #pragma once
-// HiPR's three stages on the GPU, wired to the renderer's shared state: stage 1
-// (GBufferPass + ActiveTilesPass, LightReachPass for light edits, ReprojectPass for camera edits), stage 2 (DiscoveryPass: the trace kernel with discovery on)
-// and stage 3 (SchedulePass). Made on first use: plain renders never pay for them.
+// HiPR's three stages on the GPU, attached to one render's device state (RenderState): stage 1
+// (the G-buffer + ActiveTilesPass, LightReachPass for light edits, ReprojectPass for camera
+// edits), stage 2 (the trace kernel with discovery on) and stage 3 (SchedulePass). Made on
+// first use (hipr_stages): plain renders never pay for them; kept with the render, so every
+// scheduler of it reuses their kernels.
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "hipr/active_tiles_pass.h"
+#include "hipr/hipr_stage_runner.h"
 #include "hipr/light_reach_pass.h"
-#include "hipr/reproject_pass.h"
 #include "hipr/progressive_renderer.h"
-#include "hipr/resolve_pass.h"
+#include "hipr/reproject_pass.h"
 #include "hipr/schedule_pass.h"
+#include "render/render_state.h"
 #include "render/trace_pass.h"
 #include "shaders/shared/abi.h"
 
 namespace hipr {
 
-// The scheduler's round targets (ProgressiveRenderer::set_sample_target): 0 for none.
-struct SampleTarget {
-  uint32_t round = 0;
-  uint32_t focus = 0;
-  uint32_t lead = 0;
-};
-
-// What the stages share with the rest of the renderer.
-struct RenderParts {
-  const vk::Context& ctx;
-  const RenderSettings& settings;
-  const GpuScene& scene;
-  TileState& tiles;
-  Film& film;
-  GBufferPass& gbuffers;
-  const ResolvePass& resolve;
-  const SampleTarget& sample_target;
-};
-
-class HiprStages final : public HiprStageRunner {
+class HiprStages final : public HiprStageRunner, public RenderExtension {
  public:
   // Renders the G-buffer of the scene as it is now, so the first edit has a "before".
-  HiprStages(const RenderParts& parts, uint32_t kernel_features);
+  explicit HiprStages(RenderState& state);
 
   uint32_t stage1_visibility(const ChangeSet& changes) override;
   void set_reprojection(bool reproject) override { m_reprojection = reproject; }
@@ -52,19 +36,14 @@ class HiprStages final : public HiprStageRunner {
   uint32_t lead_tiles() const override { return m_lead_tiles; }
   uint32_t discovered_tiles() const override;
 
-  // Recompiles stage 2's kernel with other kernel features.
-  void set_kernel_features(uint32_t features) {
-    m_discovery.set_features(features);
-    m_reach.set_kernel_features(features);
-  }
+  // Stage 2's kernel and the light reach's follow the trace kernels' features.
+  void kernel_features_changed(uint32_t features) override;
   // Binds the scene's buffers that an edit replaced (GpuScene::layout_generation) again.
-  void rebind_scene_buffers() { m_discovery.rebind(); }
+  void scene_buffers_replaced() override { m_discovery.rebind(); }
   // Dispatches stage 2's and stage 3's kernels over no tile and the light reach over no light
-  // (they compile, nothing changes); makes the reprojection's kernel and copy.
-  void record_warm_up(VkCommandBuffer cmd);
-  // Per tile: the discovery weight W(T).
-  std::vector<double> tile_weights() const;
-  const vk::Buffer& tile_weights_buffer() const { return m_tile_weights; }  // uint64 per tile
+  // (they compile, nothing changes); makes the reprojection's kernel and copy. Only where
+  // kernels are compiled early (RenderSettings::compile_kernels_early).
+  void warm_up();
 
  private:
   // Records stage 1's carry (kCarry* mode) and marking, then counts the active tiles. With
@@ -73,8 +52,7 @@ class HiprStages final : public HiprStageRunner {
   uint32_t mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer,
                       const Camera* reproject_from = nullptr, bool moved = false);
 
-  RenderParts m_parts;
-  vk::Buffer m_tile_weights;  // uint64 per tile: W(T) x abi::kWeightScale
+  RenderState& m_state;
   ActiveTilesPass m_active;
   LightReachPass m_reach;
   ReprojectPass m_reproject;
@@ -86,8 +64,10 @@ class HiprStages final : public HiprStageRunner {
   bool m_reprojection = true;
 };
 
-// A trace push that lets every workgroup leave at once (bit 31 is no kTile* flag): a dispatch
-// that compiles the kernel and renders nothing.
-abi::TracePush no_tile_push(const TracePass& pass, uint32_t tile_count);
+// The HiPR stages of a render's device state, made (and attached to it) on first use.
+HiprStages& hipr_stages(RenderState& state);
+// Those of hipr's renderer; throws InputError for a renderer without a device state (another
+// progressive renderer gives the HiPR policy its own stages: make_hipr_policy).
+HiprStages& hipr_stages(ProgressiveRenderer& renderer);
 
 }  // namespace hipr

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/error.h"
+#include "hipr/hipr_stages.h"
 #include "hipr/scheduling_policy.h"
 
 namespace hipr {
@@ -58,18 +59,15 @@ std::vector<uint32_t> tile_order(Policy policy, uint32_t tiles_x, uint32_t tiles
 
 namespace {
 
-HiprStageRunner& stages_of(ProgressiveRenderer& renderer) {
-  HiprStageRunner* stages = renderer.hipr_stages();
-  if (!stages) throw InputError("the hipr policy needs a renderer with HiPR's stages");
-  return *stages;
-}
-
 // The paper: stage 1 marks the active tiles and orders them by change score; stage 2 renders
 // them (the leading steps) and discovers where their light goes; stage 3 sorts the rest.
 class HiprPolicy final : public SchedulingPolicy {
  public:
+  // `given`: stages of another progressive renderer; none: hipr's, on the renderer's device state.
+  explicit HiprPolicy(HiprStageRunner* given = nullptr) : m_given(given) {}
   Policy id() const override { return Policy::Hipr; }
   bool relights() const override { return true; }
+  void set_reprojection(bool reproject) override { m_reprojection = reproject; }
   void start(ProgressiveRenderer& renderer) override {
     HiprStageRunner& stages = stages_of(renderer);
     stages.set_focus({});  // the stages outlive schedulers: no focus of an earlier one stays
@@ -77,6 +75,7 @@ class HiprPolicy final : public SchedulingPolicy {
   }
   uint32_t plan(ProgressiveRenderer& renderer, const ChangeSet& changes) override {
     HiprStageRunner& stages = stages_of(renderer);
+    stages.set_reprojection(m_reprojection);
     const uint32_t active = stages.stage1_visibility(changes);
     stages.build_schedule();  // active tiles first, by change score: the order of stage 2
     return active;
@@ -98,6 +97,14 @@ class HiprPolicy final : public SchedulingPolicy {
     stages.build_schedule();
     return active;
   }
+
+ private:
+  HiprStageRunner& stages_of(ProgressiveRenderer& renderer) {
+    return m_given ? *m_given : static_cast<HiprStageRunner&>(hipr_stages(renderer));
+  }
+
+  HiprStageRunner* m_given;
+  bool m_reprojection = true;
 };
 
 // Full-frame restart, as full-frame progressive viewers do.
@@ -128,6 +135,10 @@ class BucketOrderPolicy final : public SchedulingPolicy {
 };
 
 }  // namespace
+
+std::unique_ptr<SchedulingPolicy> make_hipr_policy(HiprStageRunner& stages) {
+  return std::make_unique<HiprPolicy>(&stages);
+}
 
 std::unique_ptr<SchedulingPolicy> make_policy(Policy policy) {
   switch (policy) {

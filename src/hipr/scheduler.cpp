@@ -26,6 +26,16 @@ Scheduler::Scheduler(ProgressiveRenderer& renderer, std::unique_ptr<SchedulingPo
   m_policy->start(renderer);
 }
 
+void Scheduler::configure(const ScheduleSettings& settings, uint32_t converged_spp) {
+  set_display_rule(settings.display.value_or(default_display_rule(policy())));
+  set_first_visit_spp(settings.first_visit_spp ? settings.first_visit_spp : m_visit_spp);
+  set_relight(settings.relight);
+  set_reproject(settings.reproject);
+  set_converged_spp(converged_spp);
+  set_focus_lead(settings.focus_lead);
+  set_edit_lead(settings.edit_lead);
+}
+
 void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   // Restarting the counters (a GPU fill) instead of reading them keeps read-backs off the
   // edit path: work is only read when someone asks for it.
@@ -57,7 +67,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   // Planned while the pixels' owed bits still say which tiles earlier edits left unrendered
   // (HiPR keeps those ranked), then every pixel owes a restart. With no leading step (HiPR when
   // nothing visible changed) the schedule starts at once.
-  if (HiprStageRunner* stages = m_renderer.hipr_stages()) stages->set_reprojection(m_reproject);
+  m_policy->set_reprojection(m_reproject);
   m_leading = std::min(m_policy->plan(m_renderer, changes), m_tile_count);
   m_leading_cursor = 0;
   m_edit_plan = true;

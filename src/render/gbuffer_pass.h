@@ -27,6 +27,8 @@ class GBufferPass {
   // Whether `current` shows the scene as it is now (no scene change since it was rendered).
   bool is_current() const { return m_current; }
   void set_stale() { m_current = false; }
+  // Whether `current` was ever rendered (what it holds before that is undefined).
+  bool ever_rendered() const { return m_visibility != nullptr; }
 
   struct Hit {
     uint32_t record = UINT32_MAX;  // GeometryRecord, UINT32_MAX for background

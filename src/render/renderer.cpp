@@ -6,19 +6,12 @@
 #include <cstring>
 
 #include "core/error.h"
-#include "hipr/hipr_stages.h"
-#include "hipr/relight_pass.h"
-#include "hipr/resolve_pass.h"
 #include "render/background_tiles.h"
 #include "render/difference_records.h"
-#include "render/film.h"
 #include "render/frame_params.h"
-#include "render/gbuffer_pass.h"
-#include "render/gpu_scene.h"
 #include "render/kernel_features.h"
 #include "render/overlay_pass.h"
-#include "render/tile_state.h"
-#include "render/trace_pass.h"
+#include "render/render_state.h"
 
 namespace hipr {
 
@@ -41,40 +34,13 @@ std::vector<uint8_t> bytes_of(const vk::Buffer& buffer) {
 
 }  // namespace
 
-struct Renderer::Impl {
-  Impl(const vk::Context& c, const Scene& scene, const RenderSettings& s)
-      : ctx(c),
-        settings(s),
-        gpu(c, scene, s.light_groups),
-        tiles(c, s),
-        features(s.specialize_kernel ? hipr::kernel_features(scene) : all_kernel_features()),
-        film(c, s.width, s.height, gpu.light_groups().count, s.difference_estimate, gpu.descriptor_set(), tiles.flags),
-        // The display pass reads the G-buffer from the start (which surface a pixel shows), so
-        // the G-buffers exist even in renders that never run HiPR's stages.
-        gbuffers(c, gpu, s.width, s.height),
-        resolve(c, gpu, tiles, film, gbuffers, s.width, s.height),
-        relight(c, film, resolve, gpu.light_groups().count, s.width, s.height),
-        trace(c, gpu, tiles, film, resolve.display, s, features),
-        background(scene) {
+struct Renderer::Impl : RenderState {
+  Impl(const vk::Context& c, const Scene& scene, const RenderSettings& s) : RenderState(c, scene, s), background(scene) {
     layout_seen = gpu.layout_generation();
     records_seen = gpu.records_generation();
     update_background(scene);
     gpu.set_frame(make_frame_params(scene, gpu, settings));
     warm_up_trace();
-  }
-
-  HiprStages& stages() {
-    if (!hipr) {
-      const RenderParts parts{ctx, settings, gpu, tiles, film, gbuffers, resolve, sample_target};
-      hipr = std::make_unique<HiprStages>(parts, features);
-      if (settings.compile_kernels_early) ctx.submit_and_wait([&](VkCommandBuffer cmd) { hipr->record_warm_up(cmd); });
-    }
-    return *hipr;
-  }
-
-  void warm_up_trace() {
-    if (!settings.compile_kernels_early) return;
-    ctx.submit_and_wait([&](VkCommandBuffer cmd) { trace.record(cmd, no_tile_push(trace, tiles.count())); });
   }
 
   // An edit that brings in a feature the kernels lack (a material that becomes emissive,
@@ -88,10 +54,7 @@ struct Renderer::Impl {
     features |= needed;
     trace.set_features(features);
     warm_up_trace();
-    if (hipr) {
-      hipr->set_kernel_features(features);
-      if (settings.compile_kernels_early) ctx.submit_and_wait([&](VkCommandBuffer cmd) { hipr->record_warm_up(cmd); });
-    }
+    if (extension) extension->kernel_features_changed(features);
   }
 
   // An edit that replaced buffers the passes bind beside the scene's set (GpuScene::
@@ -103,7 +66,7 @@ struct Renderer::Impl {
     if (gpu.layout_generation() == layout_seen) return;
     layout_seen = gpu.layout_generation();
     trace.rebind();
-    if (hipr) hipr->rebind_scene_buffers();
+    if (extension) extension->scene_buffers_replaced();
   }
 
   // Which tiles' camera rays cannot hit anything, for the scene's camera and instances.
@@ -113,47 +76,10 @@ struct Renderer::Impl {
                              : std::vector<uint32_t>(tiles.count(), 0u));
   }
 
-  // Traces schedule entries [offset, offset + count) of the tiles whose flags pass
-  // require/skip, toward the scheduler's round targets, and resolves them when asked.
-  void trace_entries(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, uint32_t require, uint32_t skip,
-                     std::optional<DisplayRule> then_resolve) {
-    if (offset >= tiles.count() || count == 0) return;
-    count = std::min(count, tiles.count() - offset);
-    abi::TracePush push = trace.push(offset, count, samples_per_pixel);
-    push.requireFlags = require;
-    push.skipFlags = skip;
-    push.sampleTarget = sample_target.round;
-    push.focusTarget = sample_target.focus;
-    push.leadTarget = sample_target.lead;
-    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-      trace.record(cmd, push);
-      if (then_resolve) resolve.record(cmd, {offset, count, require, skip}, *then_resolve);
-    });
-  }
-
-  // The G-buffer exists from the start but is rendered on first need: a render that never asks
-  // which surface a pixel shows never compiles the visibility kernel.
-  const GBufferPass& rendered_gbuffers() {
-    stages();
-    return gbuffers;
-  }
-
-  const vk::Context& ctx;
-  RenderSettings settings;
-  GpuScene gpu;
-  TileState tiles;
-  uint32_t features;  // kernel features the trace kernels are compiled with
-  Film film;
-  GBufferPass gbuffers;
-  ResolvePass resolve;
-  RelightPass relight;
-  TracePass trace;
   BackgroundTiles background;
-  std::unique_ptr<HiprStages> hipr;  // made on first use
   std::unique_ptr<OverlayPass> overlays;  // the viewer's, made on first use
-  SampleTarget sample_target;        // the scheduler's round targets (set_sample_target)
-  uint64_t layout_seen = 0;          // GpuScene::layout_generation the passes are bound to
-  uint64_t records_seen = 0;         // GpuScene::records_generation the overlay shows
+  uint64_t layout_seen = 0;               // GpuScene::layout_generation the passes are bound to
+  uint64_t records_seen = 0;              // GpuScene::records_generation the overlay shows
 };
 
 Renderer::Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
@@ -209,12 +135,12 @@ void Renderer::set_schedule(std::span<const uint32_t> order) { m->tiles.set_sche
 
 void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
                                std::optional<DisplayRule> then_resolve) {
-  m->trace_entries(offset, count, samples_per_pixel, 0u, skip_active ? abi::kTileActive : 0u, then_resolve);
+  m->trace_entries(m->trace, offset, count, samples_per_pixel, 0u, skip_active ? abi::kTileActive : 0u, then_resolve);
 }
 
 void Renderer::render_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve) {
   if (m->sample_target.focus == 0 && m->sample_target.lead == 0) return;
-  m->trace_entries(offset, count, 1, abi::kTileLead, 0u, then_resolve);
+  m->trace_entries(m->trace, offset, count, 1, abi::kTileLead, 0u, then_resolve);
 }
 
 void Renderer::set_sample_target(uint32_t target, uint32_t focus_target, uint32_t lead_target) {
@@ -291,12 +217,9 @@ void Renderer::restore(const RenderSnapshot& snapshot) {
   m->resolve.judgements.upload(snapshot.judgements.data(), snapshot.judgements.size());
 }
 
-HiprStageRunner* Renderer::hipr_stages() { return &m->stages(); }
+RenderState* Renderer::render_state() { return m.get(); }
 
-void Renderer::refresh_gbuffer() {
-  m->stages();
-  m->gbuffers.render();
-}
+void Renderer::refresh_gbuffer() { m->gbuffers.render(); }
 
 void Renderer::set_hipr_parameters(const HiprParameters& parameters) {
   m->settings.hipr = parameters;
@@ -321,7 +244,7 @@ Renderer::PixelHit Renderer::gbuffer_at(uint32_t x, uint32_t y) const {
 
 void Renderer::render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output) {
   if (!m->overlays) {
-    const OverlaySources sources{m->gbuffers.current, m->stages().tile_weights_buffer(), m->tiles.flags,
+    const OverlaySources sources{m->gbuffers.current, m->tiles.weights, m->tiles.flags,
                                  m->film.accumulation};
     m->overlays = std::make_unique<OverlayPass>(m->ctx, m->gpu, sources, m->settings.width, m->settings.height,
                                                 m->settings.tile_size, tiles_x(), tile_count());
@@ -331,12 +254,14 @@ void Renderer::render_overlay(DebugOverlay overlay, uint32_t selected_node, cons
                       output);
 }
 
-std::vector<uint32_t> Renderer::tile_flags() const {
-  m->stages();
-  return m->tiles.flags.download_all<uint32_t>();
-}
+std::vector<uint32_t> Renderer::tile_flags() const { return m->tiles.flags.download_all<uint32_t>(); }
 
-std::vector<double> Renderer::tile_weights() const { return m->stages().tile_weights(); }
+std::vector<double> Renderer::tile_weights() const {
+  const auto fixed = m->tiles.weights.download_all<uint64_t>();
+  std::vector<double> out(fixed.size());
+  for (size_t i = 0; i < fixed.size(); ++i) out[i] = double(fixed[i]) / abi::kWeightScale;
+  return out;
+}
 
 std::vector<uint32_t> Renderer::schedule() const { return m->tiles.schedule.download_all<uint32_t>(); }
 

@@ -22,8 +22,10 @@ TileState::TileState(const vk::Context& ctx, const RenderSettings& s)
   background = tile_buffer(ctx, count(), vk::MemoryUse::Shared);  // written at edits that move things
   pixel_lead =
       vk::Buffer(ctx, (size_t(s.width) * s.height + 31) / 32 * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  weights = vk::Buffer(ctx, size_t(count()) * sizeof(uint64_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   flags.clear();
   pixel_lead.clear();
+  weights.clear();
   m_all.resize(count());
   std::iota(m_all.begin(), m_all.end(), 0u);
 }

@@ -34,6 +34,9 @@ class TileState {
   // One bit per pixel (row-major, 32 per uint): the pixel leads after the edit (HiPR's stage 1
   // sets it; the trace kernel brings such pixels to the edit's lead target).
   vk::Buffer pixel_lead;
+  // Per tile: how strongly a method's discovery found it changed (HiPR's stage 2 writes W(T) x
+  // abi::kWeightScale as uint64, stage 3 sorts by it, the viewer's overlay shows it).
+  vk::Buffer weights;
 
  private:
   uint32_t m_tile_size, m_tiles_x, m_tiles_y;

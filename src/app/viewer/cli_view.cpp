@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "app/commands.h"
+#include "app/schedule_flags.h"
 #include "app/viewer/screenshot.h"
 #include "app/viewer/viewer.h"
 #include "core/error.h"
@@ -19,8 +20,6 @@ struct ViewCommandOptions {
   std::string size;
   fs::path script;
   std::string overlay = "none";
-  std::string policy = "hipr";
-  std::string display;
   std::string select;
   bool no_ui = false;
 };
@@ -42,17 +41,17 @@ int run_view(ViewCommandOptions& o) {
   validate_common_options(v.common);
   log::set_quiet(v.common.quiet);
   v.overlay = viewer::parse_overlay(o.overlay);
-  v.policy = parse_policy(o.policy);
-  if (v.policy == Policy::Oracle)
+  const ScheduleSettings& schedule = v.schedule;
+  if (schedule.policy == Policy::Oracle)
     throw InputError("the oracle policy needs a reference image: use hipr bench");
-  if (!o.display.empty()) v.display_rule = parse_display_rule(o.display);
-  if (v.first_visit_spp != 0 && (v.first_visit_spp < v.visit_spp || v.first_visit_spp > v.common.spp))
+  if (schedule.first_visit_spp != 0 &&
+      (schedule.first_visit_spp < schedule.visit_spp || schedule.first_visit_spp > v.common.spp))
     throw InputError("--first-visit-spp must be between --visit-spp and --spp");
   v.show_ui = !o.no_ui;
   if (v.script_every < 1) throw InputError("--script-every must be at least 1");
   if (v.headless && v.exit_after_frames == 0)
     throw InputError("--headless needs --exit-after-frames (there is no window to close)");
-  if (v.visit_spp < 1 || v.visit_spp > v.common.spp)
+  if (schedule.visit_spp < 1 || schedule.visit_spp > v.common.spp)
     throw InputError("--visit-spp must be between 1 and --spp");
   if (!(v.frame_budget_ms >= 0.0) || v.frame_budget_ms > 10000.0)
     throw InputError("--frame-budget-ms must be between 0 (adapt) and 10000");
@@ -112,22 +111,7 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--size", options->size, "Rendered image size WxH (overrides --width/--height)");
   cmd->add_option("--overlay", options->overlay, "Initial overlay: none, ids, weights, owed")
       ->capture_default_str();
-  cmd->add_option("--policy", options->policy, "hipr, full, scanline, spiral or random")
-      ->capture_default_str();
-  cmd->add_option("--tiles-per-step", v.tiles_per_step,
-                  "Tiles per scheduling step (default: 1/64 of the frame)");
-  cmd->add_option("--visit-spp", v.visit_spp, "Samples per pixel a tile gets per visit")
-      ->capture_default_str();
-  cmd->add_flag_function("--no-relight", [&v](int64_t) { v.relight = false; },
-                "hipr: re-render light edits without relighting the converged image first");
-  cmd->add_flag_function("--no-reproject", [&v](int64_t) { v.reproject = false; },
-                         "hipr: restart camera moves without reprojecting the image before them");
-  cmd->add_option("--first-visit-spp", v.first_visit_spp,
-                  "Samples per pixel of a tile's first visit after an edit (default: 2, within "
-                  "[--visit-spp, --spp])");
-  cmd->add_option("--display", options->display,
-                  "How re-rendered tiles are shown: immediate, switch, blend or difference (default: "
-                  "difference for hipr, immediate for the others)");
+  add_schedule_flags(*cmd, v.schedule);
   cmd->add_option("--frame-budget-ms", v.frame_budget_ms,
                   "Time spent on scheduling steps per frame; 0 adapts it to the device, aiming at 60 fps "
                   "(at least one step a frame)")
@@ -147,12 +131,6 @@ Command add_view_command(CLI::App& app) {
                   "the script edits each shows and its time without the read-back)");
   cmd->add_option("--save", v.save, "At exit, save the edited scene as glTF (.gltf or .glb)");
   cmd->add_option("--select", options->select, "Node selected at start (glTF name or #index)");
-  cmd->add_option("--focus-lead", v.focus_lead,
-                  "Visits the focus's tiles run ahead of the rest (0: the focus only orders)")
-      ->capture_default_str();
-  cmd->add_option("--edit-lead", v.edit_lead,
-                  "Visits the pixels that show what an edit moved (or a surface they no longer see) get ahead of the rest (0: none)")
-      ->capture_default_str();
   cmd->add_flag_function("--no-focus", [&v](int64_t) { v.focus_selection = false; },
                          "hipr does not start from the selected object (the HiPR panel's \"focus: selection\")");
   add_common_options(*cmd, v.common);

@@ -19,6 +19,44 @@ namespace {
 const Policy kPolicies[] = {Policy::Hipr, Policy::Full, Policy::Scanline, Policy::Spiral,
                             Policy::Random};
 
+// The HiPR panel's widgets for the scheduling settings, drawn from their declaration
+// (for_each_schedule_setting); start-up-only settings are left to the flags.
+struct ScheduleWidgets {
+  Policy policy;  // the one in use (the display rule's default is its own)
+  static void tooltip(const ScheduleSettingInfo& info) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", info.help);
+  }
+  void operator()(const ScheduleSettingInfo& info, Policy& chosen) const {
+    if (ImGui::BeginCombo(info.name, policy_name(chosen).c_str())) {
+      for (Policy p : kPolicies)
+        if (ImGui::Selectable(policy_name(p).c_str(), p == chosen)) chosen = p;
+      ImGui::EndCombo();
+    }
+    tooltip(info);
+  }
+  void operator()(const ScheduleSettingInfo& info, std::optional<DisplayRule>& rule) const {
+    const std::string label =
+        rule ? display_rule_name(*rule) : "default (" + display_rule_name(default_display_rule(policy)) + ")";
+    if (ImGui::BeginCombo(info.name, label.c_str())) {
+      if (ImGui::Selectable("default", !rule)) rule.reset();
+      for (DisplayRule r : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend, DisplayRule::Difference})
+        if (ImGui::Selectable(display_rule_name(r).c_str(), rule == r)) rule = r;
+      ImGui::EndCombo();
+    }
+    tooltip(info);
+  }
+  void operator()(const ScheduleSettingInfo& info, bool& on) const {
+    ImGui::Checkbox(info.name, &on);
+    tooltip(info);
+  }
+  void operator()(const ScheduleSettingInfo& info, uint32_t& value) const {
+    if (!info.live) return;
+    int v = int(value);
+    if (ImGui::SliderInt(info.name, &v, int(info.min), int(info.max))) value = uint32_t(std::max(v, int(info.min)));
+    tooltip(info);
+  }
+};
+
 // Weights as the renderer takes them: each group scaled to sum 1 (left alone when all zero).
 HiprParameters normalised(HiprParameters h) {
   const auto normalise = [](float* w, int n) {
@@ -97,45 +135,15 @@ void history_section(Session& session, ViewerState& state) {
 void hipr_section(Session& session, ViewerState& state) {
   if (!ImGui::CollapsingHeader("HiPR")) return;
   const SessionSettings& settings = session.settings();
-  const std::string current = policy_name(settings.policy);
-  if (ImGui::BeginCombo("policy", current.c_str())) {
-    for (Policy p : kPolicies)
-      if (ImGui::Selectable(policy_name(p).c_str(), p == settings.policy)) state.request_policy = p;
-    ImGui::EndCombo();
-  }
-  const std::optional<DisplayRule> rule = settings.display;
-  const std::string rule_label =
-      rule ? display_rule_name(*rule)
-           : "default (" + display_rule_name(default_display_rule(settings.policy)) + ")";
-  if (ImGui::BeginCombo("display rule", rule_label.c_str())) {
-    if (ImGui::Selectable("default", !rule))
-      state.request_display_rule = std::optional<DisplayRule>();
-    for (DisplayRule r : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend, DisplayRule::Difference})
-      if (ImGui::Selectable(display_rule_name(r).c_str(), rule == r))
-        state.request_display_rule = std::optional<DisplayRule>(r);
-    ImGui::EndCombo();
-  }
-  bool relight = settings.relight;
-  if (ImGui::Checkbox("relight light edits", &relight)) session.set_relight(relight);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("hipr: an edit of a light's intensity or colour shows the converged image relit at once");
-  bool reproject = settings.reproject;
-  if (ImGui::Checkbox("reproject camera moves", &reproject)) session.set_reproject(reproject);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("hipr: after a camera move the image before it stays where the same surface is seen");
+  ScheduleSettings edited = settings.schedule;
+  for_each_schedule_setting(edited, ScheduleWidgets{settings.schedule.policy});
+  if (edited != settings.schedule) state.request_schedule = edited;
   ImGui::Checkbox("focus: selection", &state.focus_selection);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("hipr renders where the selected object is seen first, then where its light goes");
   ImGui::SameLine();
   ImGui::Checkbox("cursor", &state.focus_cursor);
   if (state.focus_cursor) ImGui::SliderFloat("focus radius (px)", &state.focus_radius, 4.0f, 256.0f, "%.0f");
-  int lead = int(settings.focus_lead);
-  if (ImGui::SliderInt("focus lead", &lead, 0, 16)) session.set_focus_lead(uint32_t(std::max(lead, 0)));
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("visits the focus runs ahead of the rest (0: it only orders)");
-  int edit_lead = int(settings.edit_lead);
-  if (ImGui::SliderInt("edit lead", &edit_lead, 0, 16)) session.set_edit_lead(uint32_t(std::max(edit_lead, 0)));
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("after an edit, visits the pixels of a moved object (or a surface they no longer see) get ahead");
   ImGui::InputInt("n (tile px)", &state.tile_size_input);
   state.tile_size_input = std::clamp(state.tile_size_input, 1, 256);
   ImGui::SameLine();
@@ -171,10 +179,10 @@ void hipr_section(Session& session, ViewerState& state) {
   ImGui::TextWrapped(
       "%u tiles of %u px, %u per step; %u spp per visit (first visit %u), target %u spp",
       session.renderer().tile_count(), settings.render.tile_size,
-      settings.tiles_per_step ? settings.tiles_per_step
-                              : viewer_tiles_per_step(session.renderer().tile_count()),
-      settings.visit_spp,
-      settings.first_visit_spp ? settings.first_visit_spp : default_first_visit_spp(settings),
+      settings.schedule.tiles_per_step ? settings.schedule.tiles_per_step
+                                       : viewer_tiles_per_step(session.renderer().tile_count()),
+      settings.schedule.visit_spp,
+      settings.schedule.first_visit_spp ? settings.schedule.first_visit_spp : default_first_visit_spp(settings),
       settings.spp);
 }
 
@@ -240,7 +248,7 @@ void draw_status_line(const Session& session, const ViewerState& state, float x,
     std::snprintf(buffer, sizeof buffer, format, values...);
     items.emplace_back(buffer);
   };
-  add("%s", policy_name(session.settings().policy).c_str());
+  add("%s", policy_name(session.settings().schedule.policy).c_str());
   add("%.1f/%u spp", state.mean_spp, session.settings().spp);
   add("work %.2f", session.work_since_edit());
   add("%.1f s since edit", session.seconds_since_edit());
@@ -251,7 +259,7 @@ void draw_status_line(const Session& session, const ViewerState& state, float x,
   const auto& records = session.edit_records();
   if (!records.empty() && records.back().latency_seconds >= 0.0)
     add("latency %.0f ms", records.back().latency_seconds * 1e3);
-  if (!session.focus().empty() && session.settings().policy == Policy::Hipr)
+  if (!session.focus().empty() && session.settings().schedule.policy == Policy::Hipr)
     add("focus: %zu seed%s", session.focus().seeds.size(), session.focus().seeds.size() == 1 ? "" : "s");
   if (session.converged()) add("converged");
   // Items flow onto as many lines as the view's width needs (the view can be as narrow as

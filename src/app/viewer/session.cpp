@@ -11,7 +11,7 @@ namespace hipr::viewer {
 uint32_t viewer_tiles_per_step(uint32_t tile_count) { return std::max(1u, (tile_count + 63) / 64); }
 
 uint32_t default_first_visit_spp(const SessionSettings& s) {
-  return std::max(s.visit_spp, std::min(2u, s.spp));
+  return std::max(s.schedule.visit_spp, std::min(2u, s.spp));
 }
 
 Session::Session(const vk::Context& ctx, Scene scene, const SessionSettings& settings)
@@ -21,23 +21,21 @@ Session::Session(const vk::Context& ctx, Scene scene, const SessionSettings& set
   rebuild();
 }
 
-std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer, Policy policy) const {
+ScheduleSettings Session::resolved_schedule() const {
+  ScheduleSettings schedule = m_settings.schedule;
+  if (schedule.first_visit_spp == 0) schedule.first_visit_spp = default_first_visit_spp(m_settings);
+  return schedule;
+}
+
+std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer) const {
+  const ScheduleSettings& s = m_settings.schedule;
   // The oracle ranks tiles against a converged render of each edited scene: a benchmark's
   // tool (hipr bench), not something a viewer can have before the user edits.
-  if (policy == Policy::Oracle)
+  if (s.policy == Policy::Oracle)
     throw InputError("the oracle policy needs a reference image: use hipr bench");
-  const uint32_t per_step = m_settings.tiles_per_step
-                                ? m_settings.tiles_per_step
-                                : viewer_tiles_per_step(renderer.tile_count());
-  auto scheduler = std::make_unique<Scheduler>(renderer, policy, per_step, m_settings.visit_spp);
-  scheduler->set_display_rule(m_settings.display.value_or(default_display_rule(policy)));
-  scheduler->set_first_visit_spp(m_settings.first_visit_spp ? m_settings.first_visit_spp
-                                                            : default_first_visit_spp(m_settings));
-  scheduler->set_relight(m_settings.relight);
-  scheduler->set_reproject(m_settings.reproject);
-  scheduler->set_converged_spp(m_settings.spp);  // rendering pauses there: the focus never passes it
-  scheduler->set_focus_lead(m_settings.focus_lead);
-  scheduler->set_edit_lead(m_settings.edit_lead);
+  const uint32_t per_step = s.tiles_per_step ? s.tiles_per_step : viewer_tiles_per_step(renderer.tile_count());
+  auto scheduler = std::make_unique<Scheduler>(renderer, s.policy, per_step, s.visit_spp);
+  scheduler->configure(resolved_schedule(), m_settings.spp);  // rendering pauses at spp: the focus never passes it
   return scheduler;
 }
 
@@ -47,7 +45,7 @@ void Session::rebuild() {
   RenderSettings render = m_settings.render;
   render.compile_kernels_early = true;
   auto renderer = std::make_unique<Renderer>(m_ctx, m_scene, render);
-  auto scheduler = make_scheduler(*renderer, m_settings.policy);
+  auto scheduler = make_scheduler(*renderer);
   // A frame in flight may still read the old renderer's display buffer (the viewer's display
   // pass shows it in place).
   if (m_renderer) vkDeviceWaitIdle(m_ctx.device());
@@ -79,7 +77,7 @@ void Session::changed(const std::function<void(Scene&)>& change, const std::stri
   m_ids_stale = true;
   // HiPR's on_edit runs stage 1, which renders the G-buffer of the edited scene; the other
   // policies leave it as it was (scheduler.h).
-  if (m_settings.policy != Policy::Hipr) m_gbuffer_stale = true;
+  if (m_settings.schedule.policy != Policy::Hipr) m_gbuffer_stale = true;
   m_records.push_back({what});
   m_bounds.reset();
 }
@@ -190,16 +188,6 @@ Renderer::PixelHit Session::pick(uint32_t x, uint32_t y) {
   return m_renderer->gbuffer_at(x, y);
 }
 
-void Session::set_edit_lead(uint32_t visits) {
-  m_settings.edit_lead = visits;
-  m_scheduler->set_edit_lead(visits);
-}
-
-void Session::set_focus_lead(uint32_t visits) {
-  m_settings.focus_lead = visits;
-  m_scheduler->set_focus_lead(visits);
-}
-
 void Session::set_view_focus(const Focus& focus) {
   m_view_focus = focus;
   update_focus();
@@ -213,30 +201,27 @@ void Session::update_focus() {
   display_changed();
 }
 
-void Session::set_policy(Policy policy) {
-  if (policy == m_settings.policy) return;
-  m_scheduler = make_scheduler(*m_renderer, policy);
-  m_settings.policy = policy;
+void Session::set_schedule(const ScheduleSettings& schedule) {
+  const ScheduleSettings& now = m_settings.schedule;
+  if (schedule.policy == now.policy && schedule.tiles_per_step == now.tiles_per_step &&
+      schedule.visit_spp == now.visit_spp) {
+    m_settings.schedule = schedule;
+    m_scheduler->configure(resolved_schedule(), m_settings.spp);
+    return;
+  }
+  const ScheduleSettings previous = now;
+  m_settings.schedule = schedule;
+  try {
+    m_scheduler = make_scheduler(*m_renderer);
+  } catch (...) {
+    m_settings.schedule = previous;
+    throw;
+  }
   update_focus();
   // A HiPR scheduler starts with stage 1 of the scene as it is now.
-  if (policy == Policy::Hipr) m_gbuffer_stale = false;
+  if (schedule.policy == Policy::Hipr) m_gbuffer_stale = false;
   m_ids_stale = true;
   display_changed();
-}
-
-void Session::set_display_rule(std::optional<DisplayRule> rule) {
-  m_settings.display = rule;
-  m_scheduler->set_display_rule(rule.value_or(default_display_rule(m_settings.policy)));
-}
-
-void Session::set_relight(bool relight) {
-  m_settings.relight = relight;
-  m_scheduler->set_relight(relight);
-}
-
-void Session::set_reproject(bool reproject) {
-  m_settings.reproject = reproject;
-  m_scheduler->set_reproject(reproject);
 }
 
 void Session::set_tile_size(uint32_t tile_size) {

@@ -13,6 +13,7 @@
 #include "core/timer.h"
 #include "hipr/focus.h"
 #include "hipr/renderer.h"
+#include "hipr/schedule_settings.h"
 #include "hipr/scheduler.h"
 #include "vk/context.h"
 
@@ -20,17 +21,10 @@ namespace hipr::viewer {
 
 struct SessionSettings {
   RenderSettings render;
-  Policy policy = Policy::Hipr;
-  uint32_t tiles_per_step = 0;  // 0: 1/64 of the frame, so a frame's time budget is spent finely
-  uint32_t visit_spp = 1;
-  uint32_t first_visit_spp = 0;  // a tile's first visit after an edit; 0: default_first_visit_spp
-  std::optional<DisplayRule>
-      display;        // how re-rendered tiles are shown; none: the policy's default
+  // tiles_per_step 0: 1/64 of the frame, so a frame's time budget is spent finely;
+  // first_visit_spp 0: default_first_visit_spp.
+  ScheduleSettings schedule;
   uint32_t spp = 64;  // samples per pixel to converge to; rendering pauses there
-  bool relight = true;  // relighting by linearity at light edits (Scheduler::set_relight)
-  bool reproject = true;  // reprojection at camera moves (Scheduler::set_reproject)
-  uint32_t focus_lead = kDefaultFocusLead;  // visits the focus's tiles run ahead (Scheduler::set_focus_lead)
-  uint32_t edit_lead = kDefaultEditLead;    // visits the pixels an edit moved get ahead (Scheduler::set_edit_lead)
 };
 
 // How one change reached the screen: the feedback latency of the measurements.
@@ -112,15 +106,13 @@ class Session {
   const std::vector<uint32_t>& instance_ids();
   Renderer::PixelHit pick(uint32_t x, uint32_t y);
 
-  // Viewer settings, not edits (no undo): a new policy takes over at once (its scheduler starts
-  // from the samples there are; the image is not restarted); a new tile size rebuilds the
-  // renderer (the image restarts); HiPR weights apply from the next stage 2.
-  void set_policy(Policy policy);  // throws InputError for the oracle (it needs a reference)
-  void set_display_rule(std::optional<DisplayRule> rule);
-  void set_relight(bool relight);  // from the next edit on
-  void set_reproject(bool reproject);  // from the next camera move on
-  void set_focus_lead(uint32_t visits);  // at once
-  void set_edit_lead(uint32_t visits);   // from the next edit
+  // Viewer settings, not edits (no undo). A new policy, step budget or visit count takes over at
+  // once with a new scheduler (it starts from the samples there are; the image is not
+  // restarted); the others apply to the scheduler there is (the focus lead at once, relight,
+  // reprojection and the edit lead from the next edit). Throws InputError for the oracle (it
+  // needs a reference). A new tile size rebuilds the renderer (the image restarts); HiPR
+  // weights apply from the next stage 2.
+  void set_schedule(const ScheduleSettings& schedule);
   void set_tile_size(uint32_t tile_size);
   void set_sampler(Sampler sampler);  // rebuilds the renderer: the image restarts
   void set_hipr_parameters(const HiprParameters& parameters);
@@ -131,7 +123,9 @@ class Session {
   void rebuild_with(const SessionSettings& settings);
   // The G-buffer of the scene as it is now (policies without stage 1 leave it behind edits).
   void ensure_gbuffer();
-  std::unique_ptr<Scheduler> make_scheduler(Renderer& renderer, Policy policy) const;
+  std::unique_ptr<Scheduler> make_scheduler(Renderer& renderer) const;
+  // The schedule settings with the viewer's defaults filled in (first_visit_spp).
+  ScheduleSettings resolved_schedule() const;
   // Changes the scene through the edit pipeline and records the change as `what`.
   void changed(const std::function<void(Scene&)>& change, const std::string& what);
   // Hands the scheduler the script's and the view's seeds when they differ from what it follows.

@@ -89,15 +89,7 @@ class Viewer {
     m_ui_pass.set_target(m_frame);
     SessionSettings settings;
     settings.render = options.common.render;
-    settings.policy = options.policy;
-    settings.tiles_per_step = options.tiles_per_step;
-    settings.visit_spp = options.visit_spp;
-    settings.first_visit_spp = options.first_visit_spp;
-    settings.relight = options.relight;
-    settings.reproject = options.reproject;
-    settings.focus_lead = options.focus_lead;
-    settings.edit_lead = options.edit_lead;
-    settings.display = options.display_rule;
+    settings.schedule = options.schedule;
     settings.spp = options.common.spp;
     m_state.open_path = scene.source.string();
     m_state.save_path = default_save_path(scene.source);
@@ -329,18 +321,8 @@ void Viewer::take_screenshot(const fs::path& path) {
 void Viewer::handle_requests() {
   if (m_state.request_open && m_state.open_confirmed) open_scene();
   if (m_state.request_save) save_scene_file();
-  if (m_state.request_policy) {
-    try {
-      m_session->set_policy(*m_state.request_policy);
-    } catch (const InputError& e) {
-      m_state.error(e.what());
-    }
-    m_state.request_policy.reset();
-  }
-  if (m_state.request_display_rule) {
-    m_session->set_display_rule(*m_state.request_display_rule);
-    m_state.request_display_rule.reset();
-  }
+  take_setting_request(m_state.request_schedule, "scheduling",
+                       [&](const ScheduleSettings& schedule) { m_session->set_schedule(schedule); });
   take_setting_request(m_state.request_tile_size, "tile size", [&](uint32_t n) { m_session->set_tile_size(n); });
   take_setting_request(m_state.request_sampler, "sampler", [&](Sampler s) { m_session->set_sampler(s); });
 }
@@ -470,7 +452,7 @@ void Viewer::write_stats(double seconds) const {
                                 {"presentation", m_presenter->description()},
                                 {"width", s.width},
                                 {"height", s.height},
-                                {"policy", policy_name(m_session->settings().policy)},
+                                {"policy", policy_name(m_session->settings().schedule.policy)},
                                 {"first_frame_seconds", m_first_frame_seconds},
                                 {"frames", m_frames},
                                 {"seconds", seconds},

@@ -10,7 +10,7 @@
 #include "app/cli_common.h"
 #include "app/viewer/overlays.h"
 #include "hipr/edits.h"
-#include "hipr/scheduler.h"
+#include "hipr/schedule_settings.h"
 
 namespace hipr::viewer {
 
@@ -22,13 +22,7 @@ struct ViewerOptions {
   std::filesystem::path screenshot;  // written at exit
   uint32_t exit_after_frames = 0;    // 0: run until the window closes
   Overlay overlay = Overlay::None;
-  Policy policy = Policy::Hipr;
-  uint32_t tiles_per_step = 0;  // 0: 1/64 of the frame
-  uint32_t visit_spp = 1;
-  uint32_t first_visit_spp = 0;             // 0: default_first_visit_spp
-  bool relight = true;
-  bool reproject = true;
-  std::optional<DisplayRule> display_rule;  // none: the policy's default
+  ScheduleSettings schedule;  // tiles_per_step 0: 1/64 of the frame; first_visit_spp 0: default_first_visit_spp
   uint32_t steps_per_frame = 0;  // > 0: exactly this many steps per frame (reproducible scripts)
   double frame_budget_ms = 0.0;  // 0: adapt (ViewerState::frame_budget_ms)
   float exposure_ev = 0.0f;
@@ -44,8 +38,6 @@ struct ViewerOptions {
   std::filesystem::path save;        // the edited scene, saved as glTF at exit
   int select = -1;                   // node selected at start (-1: none)
   bool focus_selection = true;       // hipr starts from the selected object (docs/method.md#focus)
-  uint32_t focus_lead = kDefaultFocusLead;  // visits the focus's tiles run ahead of the rest
-  uint32_t edit_lead = kDefaultEditLead;    // visits the pixels an edit moved get ahead of the rest
 };
 
 // Runs the viewer on a loaded scene until the window closes or the frame count is reached.

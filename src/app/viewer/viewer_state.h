@@ -11,6 +11,7 @@
 #include "app/viewer/overlays.h"
 #include "hipr/focus.h"
 #include "hipr/renderer.h"
+#include "hipr/schedule_settings.h"
 #include "hipr/scheduler.h"
 
 namespace hipr::viewer {
@@ -46,9 +47,7 @@ struct ViewerState {
   bool request_save = false;
   bool request_screenshot = false;
   bool open_confirmed = false;  // discard unsaved edits when opening
-  std::optional<Policy> request_policy;
-  std::optional<std::optional<DisplayRule>>
-      request_display_rule;  // inner none: the policy's default
+  std::optional<ScheduleSettings> request_schedule;  // the HiPR panel's scheduling settings
   std::optional<uint32_t> request_tile_size;
   std::optional<Sampler> request_sampler;
   int tile_size_input = 16;

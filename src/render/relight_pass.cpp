@@ -1,4 +1,4 @@
-#include "hipr/relight_pass.h"
+#include "render/relight_pass.h"
 
 #include <algorithm>
 

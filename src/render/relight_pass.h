@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "hipr/resolve_pass.h"
+#include "render/resolve_pass.h"
 #include "render/film.h"
 #include "vk/compute_pipeline.h"
 

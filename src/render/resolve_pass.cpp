@@ -1,4 +1,4 @@
-#include "hipr/resolve_pass.h"
+#include "render/resolve_pass.h"
 
 #include "shaders/shared/bindings/resolve.h"
 

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The engine (src/render) never includes the method (src/hipr): HiPR attaches its passes to the
+# engine's render state, not the other way round (docs/architecture.md). Both folders are
+# reached as "hipr/..." (include/hipr is the public API), so a header counts as the method's
+# when it exists under src/hipr and not under include/hipr. Exit 1 names each offending line.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+status=0
+while IFS=: read -r file line text; do
+  header="$(sed -E 's/.*#include "hipr\/([^"]+)".*/\1/' <<<"$text")"
+  if [[ -f "$root/src/hipr/$header" && ! -f "$root/include/hipr/$header" ]]; then
+    echo "${file#"$root/"}:$line: the engine includes the method's hipr/$header" >&2
+    status=1
+  fi
+done < <(grep -Hn '#include "hipr/' "$root"/src/render/*.h "$root"/src/render/*.cpp || true)
+exit "$status"
