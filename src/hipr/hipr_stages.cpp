@@ -22,7 +22,9 @@ HiprStages::HiprStages(RenderState& state)
                    {abi::kTraceTileWeights, &state.tiles.weights}}),
       m_schedule(state.ctx, state.gpu, state.tiles, state.tiles.weights, m_active.tile_change, m_active.tile_focus) {
   state.tiles.weights.clear();
-  state.gbuffers.render();
+  // The first edit's "before": the G-buffer the engine already rendered (its picking, a refresh),
+  // which shows the scene as it was then, or else the scene as it is now.
+  state.rendered_gbuffers();
 }
 
 HiprStages& hipr_stages(RenderState& state) {

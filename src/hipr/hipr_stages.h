@@ -22,7 +22,8 @@ namespace hipr {
 
 class HiprStages final : public HiprStageRunner, public RenderExtension {
  public:
-  // Renders the G-buffer of the scene as it is now, so the first edit has a "before".
+  // The first edit needs a "before": the G-buffer as the engine last rendered it, or (never
+  // rendered) of the scene as it is now.
   explicit HiprStages(RenderState& state);
 
   uint32_t stage1_visibility(const ChangeSet& changes) override;
