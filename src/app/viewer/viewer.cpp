@@ -1,4 +1,4 @@
-#include "app/viewer/viewer.h"
+#include "app/viewer/viewer_app.h"
 
 #include <imgui.h>
 
@@ -35,19 +35,6 @@ namespace hipr::viewer {
 namespace {
 namespace fs = std::filesystem;
 
-// With panels, the window is at least this tall so the side panel has room.
-constexpr uint32_t kMinUiHeight = 640;
-// The frame image: what the display pass writes, the UI draws on and screenshots read.
-constexpr VkFormat kFrameFormat = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkImageUsageFlags kFrameUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                          VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
-
-std::string default_save_path(const fs::path& source) {
-  const fs::path dir = source.has_parent_path() ? source.parent_path() : fs::path(".");
-  return (dir / (source.stem().string() + "_edited" + source.extension().string())).string();
-}
-
 vk::ContextOptions presenting_context_options(const app::CommonOptions& common,
                                               const Window& window) {
   vk::ContextOptions options = app::context_options(common);
@@ -69,123 +56,47 @@ Window make_window(const ViewerOptions& options, const std::string& title, uint3
   return Window(title, width, height);
 }
 
-class Viewer {
- public:
-  // The last frame may still be reading the buffers and images destroyed with the members
-  // (when an exception ends the loop early).
-  ~Viewer() { vkDeviceWaitIdle(m_ctx.device()); }
-  Viewer(const ViewerOptions& options, Scene scene)
-      : m_started(),
-        m_options(options),
-        m_window(make_window(options, "hipr view - " + scene.source.filename().string(), window_width(options),
-                             window_height(options))),
-        m_ctx(presenting_context_options(options.common, m_window)),
-        m_presenter(make_presenter(m_ctx, m_window)),
-        m_ui_pass(m_ctx, kFrameFormat),
-        m_frame(m_ctx, m_presenter->extent(), kFrameFormat, kFrameUsage),
-        m_ui(m_window, m_ctx, m_ui_pass, *m_presenter),
-        m_display(m_ctx, options.common.render.width, options.common.render.height),
-        m_requested_size(m_window.framebuffer_size()) {
-    m_ui_pass.set_target(m_frame);
-    SessionSettings settings;
-    settings.render = options.common.render;
-    settings.schedule = options.schedule;
-    settings.spp = options.common.spp;
-    m_state.open_path = scene.source.string();
-    m_state.save_path = default_save_path(scene.source);
-    m_state.screenshot_path =
-        options.screenshot.empty() ? "hipr_screenshot.png" : options.screenshot.string();
-    m_state.overlay = options.overlay;
-    m_state.exposure_ev = options.exposure_ev;
-    m_state.show_ui = options.show_ui;
-    m_state.frame_budget_ms = options.frame_budget_ms;
-    m_state.steps_per_frame = options.steps_per_frame;
-    m_state.hipr_sliders = options.common.render.hipr;
-    m_state.tile_size_input = int(options.common.render.tile_size);
-    m_state.preset = options.common.preset.empty() ? "default" : options.common.preset;
-    m_state.selected_node = options.select;
-    m_state.focus_selection = options.focus_selection;
-    // The session compiles the kernels (lavapipe: up to minutes on a first start): say so.
-    show_message("Preparing " + scene.source.filename().string() +
-                 ":\ncompiling the path tracer (the first start with a scene can take a minute or "
-                 "two on a CPU)");
-    m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
-    log::info("viewer on " + m_ctx.device_name() + " (" + m_ctx.traversal_name() + " traversal), " +
-              m_presenter->description());
-  }
+}  // namespace
 
-  int run();
-
- private:
-  static uint32_t window_width(const ViewerOptions& o) {
-    return o.common.render.width + (o.show_ui ? uint32_t(kPanelWidth) : 0u);
-  }
-  static uint32_t window_height(const ViewerOptions& o) {
-    return o.show_ui ? std::max(o.common.render.height, kMinUiHeight) : o.common.render.height;
-  }
-
-  void resize(VkExtent2D extent);
-  void show_message(const std::string& text);
-  void show_message_frame(const std::string& text);
-  void run_script(uint32_t frame);
-  void draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys);
-  void handle_requests();
-  // Applies a pending viewer setting once; a failure becomes a message, the session unchanged.
-  template <class T, class Apply>
-  void take_setting_request(std::optional<T>& request, const char* what, Apply apply);
-  void render_steps();
-  void update_overlay();
-  bool present(const ViewLayout& layout);
-  bool draw_and_present(const vk::PresentFrame& frame, const DisplayView& view);
-  ViewLayout layout() const;
-  void write_stats(double seconds) const;
-  nlohmann::json rendering_stats() const;
-  void dump_frame(uint32_t frame_index, double frame_seconds);
-  void write_frame_log() const;
-  void open_scene();
-  void save_scene_file();
-  void take_screenshot(const fs::path& path);
-
-  Timer m_started;  // first member: times the whole start (window, device, kernels)
-  double m_first_frame_seconds = -1.0;
-  const ViewerOptions& m_options;
-  Window m_window;
-  vk::Context m_ctx;
-  std::unique_ptr<vk::Presenter> m_presenter;  // the window's swapchain, or off screen
-  vk::UiPass m_ui_pass;
-  vk::Image m_frame;
-  UiLayer m_ui;
-  DisplayPass m_display;
-  std::unique_ptr<Session> m_session;
-  ViewerState m_state;
-  ViewportInput m_input;
-  size_t m_script_next = 0;
-  nlohmann::json m_frame_log = nlohmann::json::array();  // --frames-dir: what each dumped frame shows
-  uint64_t m_frames = 0;
-  uint64_t m_steps = 0;
-  // The renderer whose display buffer the display pass reads (a new session or settings that
-  // rebuild the renderer bring another).
-  uint64_t m_shown_renderer = 0;  // Session::renderer_id()
-  double m_render_ms = 0.0;          // the last frame's scheduling steps
-  double m_frame_overhead_ms = 0.0;  // a frame's other work, smoothed (the adaptive budget)
-  // Frames that ran steps: their times (the frame rate while re-rendering) and the bytes copied
-  // between host and device during them.
-  std::vector<double> m_rendering_frame_ms;
-  vk::DeviceCounts m_rendering_counts;  // submissions waited for: the frame's own not counted
-  // What the current overlay was made from, to rebuild it only when that changes.
-  struct OverlayKey {
-    Overlay overlay = Overlay::None;
-    int selected = -1;
-    uint64_t version = UINT64_MAX;
-    uint64_t renderer = 0;  // Session::renderer_id(): a new session or renderer starts over
-    bool operator==(const OverlayKey&) const = default;
-  } m_overlay_key;
-  bool m_overlay_on = false;
-  bool m_swapchain_stale = false;  // the last present found the swapchain out of date
-  VkExtent2D m_requested_size{};   // the window size the swapchain was last made for
-  Timer m_spp_timer;                // the status line's mean spp: when it was read
-  bool m_mean_spp_converged = false;  // and whether the image had converged then
-};
+Viewer::Viewer(const ViewerOptions& options, Scene scene)
+    : m_started(),
+      m_options(options),
+      m_window(make_window(options, "hipr view - " + scene.source.filename().string(), window_width(options),
+                           window_height(options))),
+      m_ctx(presenting_context_options(options.common, m_window)),
+      m_presenter(make_presenter(m_ctx, m_window)),
+      m_ui_pass(m_ctx, kFrameFormat),
+      m_frame(m_ctx, m_presenter->extent(), kFrameFormat, kFrameUsage),
+      m_ui(m_window, m_ctx, m_ui_pass, *m_presenter),
+      m_display(m_ctx, options.common.render.width, options.common.render.height),
+      m_requested_size(m_window.framebuffer_size()) {
+  m_ui_pass.set_target(m_frame);
+  SessionSettings settings;
+  settings.render = options.common.render;
+  settings.schedule = options.schedule;
+  settings.spp = options.common.spp;
+  m_state.open_path = scene.source.string();
+  m_state.save_path = default_save_path(scene.source);
+  m_state.screenshot_path =
+      options.screenshot.empty() ? "hipr_screenshot.png" : options.screenshot.string();
+  m_state.overlay = options.overlay;
+  m_state.exposure_ev = options.exposure_ev;
+  m_state.show_ui = options.show_ui;
+  m_state.frame_budget_ms = options.frame_budget_ms;
+  m_state.steps_per_frame = options.steps_per_frame;
+  m_state.hipr_sliders = options.common.render.hipr;
+  m_state.tile_size_input = int(options.common.render.tile_size);
+  m_state.preset = options.common.preset.empty() ? "default" : options.common.preset;
+  m_state.selected_node = options.select;
+  m_state.focus_selection = options.focus_selection;
+  // The session compiles the kernels (lavapipe: up to minutes on a first start): say so.
+  show_message("Preparing " + scene.source.filename().string() +
+               ":\ncompiling the path tracer (the first start with a scene can take a minute or "
+               "two on a CPU)");
+  m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
+  log::info("viewer on " + m_ctx.device_name() + " (" + m_ctx.traversal_name() + " traversal), " +
+            m_presenter->description());
+}
 
 ViewLayout Viewer::layout() const {
   const VkExtent2D extent = m_frame.extent();
@@ -268,54 +179,6 @@ void Viewer::draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys
       draw_status_line(*m_session, m_state, 0.0f, io.DisplaySize.y, std::max(panel_x, 0.0f));
   }
   end_ui_edit_group(*m_session, m_state);
-}
-
-void Viewer::open_scene() {
-  m_state.request_open = false;
-  const fs::path path = m_state.open_path;
-  // The current scene stays until the new one is loaded and on the GPU: a bad file loses nothing.
-  try {
-    Scene scene = load_scene(path, m_options.common.load);
-    SessionSettings settings = m_session->settings();
-    auto session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
-    vkDeviceWaitIdle(m_ctx.device());  // a frame in flight may read the old renderer's display
-    m_session = std::move(session);
-    m_state.selected_node = -1;
-    m_state.emitters.clear();
-    m_state.save_path = default_save_path(path);
-    m_window.set_title("hipr view - " + path.filename().string());
-    m_state.info("opened " + path.string());
-  } catch (const std::exception& e) {
-    m_state.error("cannot open " + path.string() + ": " + e.what());
-  }
-}
-
-void Viewer::save_scene_file() {
-  m_state.request_save = false;
-  const fs::path path = m_state.save_path;
-  // save_scene writes atomically (temp file + rename): a failure leaves any old file intact,
-  // and the scene and its edits stay in the session either way.
-  try {
-    save_scene(m_session->scene(), path);
-    m_session->mark_saved();
-    m_state.info("saved " + path.string());
-    // The environment comes from --env, not from glTF: say how to get it and its edits back.
-    if (m_session->scene().environment)
-      m_state.info("glTF has no environment: reopen with " +
-                   environment_flags(m_session->scene()));
-  } catch (const std::exception& e) {
-    m_state.error("cannot save " + path.string() + ": " + e.what());
-  }
-}
-
-void Viewer::take_screenshot(const fs::path& path) {
-  try {
-    m_presenter->wait_idle();
-    save_screenshot(path, m_ctx, m_frame, m_session->displayed());
-    m_state.info("screenshot " + path.string());
-  } catch (const InputError& e) {
-    m_state.error(e.what());
-  }
 }
 
 void Viewer::handle_requests() {
@@ -407,62 +270,6 @@ bool Viewer::present(const ViewLayout& layout) {
   if (!draw_and_present(*frame, view)) m_swapchain_stale = true;
   m_session->on_presented();
   return true;
-}
-
-void Viewer::dump_frame(uint32_t frame_index, double frame_seconds) {
-  char name[32];
-  std::snprintf(name, sizeof(name), "frame_%05u.exr", frame_index);
-  write_image(m_options.frames_dir / name, m_session->displayed());
-  m_frame_log.push_back(
-      {{"frame", frame_index}, {"file", name}, {"script_edits", m_script_next}, {"frame_ms", frame_seconds * 1e3}});
-}
-
-void Viewer::write_frame_log() const {
-  write_text_atomically(m_options.frames_dir / "frames.json", m_frame_log.dump(1) + "\n");
-}
-
-// The frames that ran scheduling steps: how many, their rate and the spread of their times (ms).
-nlohmann::json Viewer::rendering_stats() const {
-  std::vector<double> ms = m_rendering_frame_ms;
-  if (ms.empty()) return {{"frames", 0}};
-  std::sort(ms.begin(), ms.end());
-  double total = 0.0;
-  for (double m : ms) total += m;
-  const auto at = [&ms](double q) { return ms[std::min(ms.size() - 1, size_t(q * double(ms.size())))]; };
-  return {{"frames", ms.size()},
-          {"fps", total > 0.0 ? 1e3 * double(ms.size()) / total : 0.0},
-          {"frame_ms_median", at(0.5)},
-          {"frame_ms_p95", at(0.95)},
-          {"frame_ms_max", ms.back()},
-          {"allocations_per_frame", double(m_rendering_counts.allocations) / double(ms.size())},
-          {"submissions_per_frame", double(m_rendering_counts.submissions) / double(ms.size())}};
-}
-
-void Viewer::write_stats(double seconds) const {
-  const size_t rendering = m_rendering_frame_ms.size();
-  nlohmann::json edits = nlohmann::json::array();
-  for (const EditRecord& r : m_session->edit_records())
-    edits.push_back({{"edit", r.what},
-                     {"latency_seconds", r.latency_seconds},
-                     {"work_at_first_change", r.work_at_first_change},
-                     {"steps_at_first_change", r.steps_at_first_change}});
-  const RenderSettings& s = m_options.common.render;
-  const nlohmann::json stats = {{"device", m_ctx.device_name()},
-                                {"traversal", m_ctx.traversal_name()},
-                                {"presentation", m_presenter->description()},
-                                {"width", s.width},
-                                {"height", s.height},
-                                {"policy", policy_name(m_session->settings().schedule.policy)},
-                                {"first_frame_seconds", m_first_frame_seconds},
-                                {"frames", m_frames},
-                                {"seconds", seconds},
-                                {"fps", seconds > 0.0 ? double(m_frames) / seconds : 0.0},
-                                {"steps", m_steps},
-                                {"rendering", rendering_stats()},
-                                {"host_transfer_bytes_per_frame",
-                                 rendering ? double(m_rendering_counts.transfer_bytes) / double(rendering) : 0.0},
-                                {"edits", edits}};
-  write_text_atomically(m_options.stats_json, stats.dump(2) + "\n");
 }
 
 int Viewer::run() {
@@ -558,8 +365,6 @@ int Viewer::run() {
   if (!failures.empty()) throw InputError(failures);
   return kExitOk;
 }
-
-}  // namespace
 
 int run_viewer(const ViewerOptions& options, Scene scene) {
   Viewer viewer(options, std::move(scene));
