@@ -22,12 +22,13 @@
 namespace hipr::fuzz {
 namespace {
 
-std::filesystem::path write_alone(const uint8_t* data, size_t size, const std::filesystem::path& folder,
-                                  const std::string& name) {
+std::filesystem::path write_alone(const uint8_t* data, size_t size,
+                                  const std::filesystem::path& folder, const std::string& name) {
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   const std::filesystem::path path = folder / name;
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data), std::streamsize(size));
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(data), std::streamsize(size));
   return path;
 }
 
@@ -82,20 +83,23 @@ void derive_gpu_scene(const Scene& scene) {
     const Box& local = mesh_boxes[instance.mesh];
     Box world;
     for (int corner = 0; corner < 8; ++corner)
-      world.grow(glm::vec3(instance.world * glm::vec4((corner & 1) ? local.hi.x : local.lo.x,
-                                                      (corner & 2) ? local.hi.y : local.lo.y,
-                                                      (corner & 4) ? local.hi.z : local.lo.z, 1.0f)));
+      world.grow(
+          glm::vec3(instance.world * glm::vec4((corner & 1) ? local.hi.x : local.lo.x,
+                                               (corner & 2) ? local.hi.y : local.lo.y,
+                                               (corner & 4) ? local.hi.z : local.lo.z, 1.0f)));
     instance_boxes.push_back(world);
   }
   require_tree(build_bvh(instance_boxes), instance_boxes.size());
   const auto [lo, hi] = scene.bounds();
   const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
   require(std::isfinite(radius));
-  const float environment_mean = scene.environment ? environment_mean_luminance(*scene.environment) : 0.0f;
-  const LightTables tables = build_light_tables(scene, instances, record_base, records, radius, environment_mean,
-                                                assign_light_groups(scene, 8));
+  const float environment_mean =
+      scene.environment ? environment_mean_luminance(*scene.environment) : 0.0f;
+  const LightTables tables = build_light_tables(scene, instances, record_base, records, radius,
+                                                environment_mean, assign_light_groups(scene, 8));
   require(tables.cdf.size() == tables.lights.size() + 1);
-  for (size_t i = 1; i < tables.cdf.size(); ++i) require(std::isfinite(tables.cdf[i]) && tables.cdf[i] >= tables.cdf[i - 1]);
+  for (size_t i = 1; i < tables.cdf.size(); ++i)
+    require(std::isfinite(tables.cdf[i]) && tables.cdf[i] >= tables.cdf[i - 1]);
   const Camera camera = resolve_camera(scene);
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) require(std::isfinite(camera.camera_to_world[c][r]));
@@ -123,7 +127,8 @@ void apply_all(Scene scene, const std::vector<Edit>& edits) {
 
 void load_gltf_bytes(const uint8_t* data, size_t size, const std::filesystem::path& folder) {
   const bool glb = starts_with(data, size, "glTF", 4);
-  const std::filesystem::path path = write_alone(data, size, folder, glb ? "scene.glb" : "scene.gltf");
+  const std::filesystem::path path =
+      write_alone(data, size, folder, glb ? "scene.glb" : "scene.gltf");
   try {
     const Scene scene = load_scene(path, {.environment = kNoEnvironment});
     derive_gpu_scene(scene);
@@ -131,9 +136,12 @@ void load_gltf_bytes(const uint8_t* data, size_t size, const std::filesystem::pa
   }
 }
 
-void apply_edit_script_bytes(const uint8_t* data, size_t size, const std::filesystem::path& assets) {
-  static const Scene cornell = load_scene(assets / "cornell_box.gltf", {.environment = kNoEnvironment});
-  static const Scene furnace = load_scene(assets / "furnace_sphere.gltf", {.environment = "studio"});
+void apply_edit_script_bytes(const uint8_t* data, size_t size,
+                             const std::filesystem::path& assets) {
+  static const Scene cornell =
+      load_scene(assets / "cornell_box.gltf", {.environment = kNoEnvironment});
+  static const Scene furnace =
+      load_scene(assets / "furnace_sphere.gltf", {.environment = "studio"});
   std::vector<Edit> edits;
   try {
     edits = parse_edit_script(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");

@@ -1,8 +1,8 @@
 #pragma once
-// What the fuzz targets feed hipr, shared with the regression tests (tests/fuzz_regression_test.cpp)
-// so that every input the fuzzer ever found is replayed by the ordinary test suite. Each function
-// takes untrusted bytes and must return normally: an input hipr refuses is an InputError (caught
-// here); any other exception, a crash or a hang is a bug.
+// What the fuzz targets feed hipr, shared with the regression tests
+// (tests/fuzz_regression_test.cpp) so that every input the fuzzer ever found is replayed by the
+// ordinary test suite. Each function takes untrusted bytes and must return normally: an input hipr
+// refuses is an InputError (caught here); any other exception, a crash or a hang is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>

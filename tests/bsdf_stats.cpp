@@ -54,7 +54,8 @@ double gamma_q(double a, double x) {
   return x < a + 1.0 ? 1.0 - gamma_p_series(a, x) : gamma_q_fraction(a, x);
 }
 
-ChiSquareResult chi_square_sphere(const SampleFn& sample, const PdfFn& pdf, int samples, int z_bins, int phi_bins) {
+ChiSquareResult chi_square_sphere(const SampleFn& sample, const PdfFn& pdf, int samples, int z_bins,
+                                  int phi_bins) {
   const int bins = z_bins * phi_bins;
   std::vector<double> observed(size_t(bins), 0.0), expected(size_t(bins), 0.0);
   std::mt19937 rng(12345);
@@ -78,7 +79,8 @@ ChiSquareResult chi_square_sphere(const SampleFn& sample, const PdfFn& pdf, int 
           const double z = -1.0 + 2.0 * (zi + (a + 0.5) / kSub) / z_bins;
           const double phi = 2 * kPi * (pi + (b + 0.5) / kSub) / phi_bins;
           const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-          integral += pdf(glm::vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z))) * bin_area;
+          integral += pdf(glm::vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z))) *
+                      bin_area;
         }
       expected[size_t(zi * phi_bins + pi)] = integral * samples;
       result.pdf_integral += integral;
@@ -127,13 +129,16 @@ glm::dvec3 albedo(const SampleFn& sample, int samples) {
   glm::dvec3 sum(0.0);
   for (int i = 0; i < samples; ++i) {
     const unsigned k = unsigned(i) + 1u;
-    const glm::vec2 u(shifted(radical_inverse(k, 2), 0.1370), shifted(radical_inverse(k, 3), 0.5923));
-    if (const auto s = sample(u, shifted(radical_inverse(k, 5), 0.3311))) sum += glm::dvec3(s->weight);
+    const glm::vec2 u(shifted(radical_inverse(k, 2), 0.1370),
+                      shifted(radical_inverse(k, 3), 0.5923));
+    if (const auto s = sample(u, shifted(radical_inverse(k, 5), 0.3311)))
+      sum += glm::dvec3(s->weight);
   }
   return sum / double(samples);
 }
 
-double hemisphere_integral(const std::function<double(glm::vec3 direction)>& f, int z_steps, int phi_steps) {
+double hemisphere_integral(const std::function<double(glm::vec3 direction)>& f, int z_steps,
+                           int phi_steps) {
   double sum = 0.0;
   for (int i = 0; i < z_steps; ++i)
     for (int j = 0; j < phi_steps; ++j) {

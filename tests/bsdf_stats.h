@@ -27,15 +27,16 @@ struct ChiSquareResult {
 
 // Bins directions on an equal-area (cos theta, phi) grid; expected counts integrate pdf() per
 // bin; bins expecting fewer than 5 samples are pooled. Deterministic (fixed-seed RNG).
-ChiSquareResult chi_square_sphere(const SampleFn& sample, const PdfFn& pdf, int samples = 200000, int z_bins = 20,
-                                  int phi_bins = 40);
+ChiSquareResult chi_square_sphere(const SampleFn& sample, const PdfFn& pdf, int samples = 200000,
+                                  int z_bins = 20, int phi_bins = 40);
 
 // Mean of sample weights: the directional albedo. Failed samples count as zero.
 glm::dvec3 albedo(const SampleFn& sample, int samples = 200000);
 
 // Integral over the upper hemisphere (z > 0) with a midpoint rule uniform in (z, phi):
 // deterministic and accurate for smooth integrands, for checks tighter than sampling allows.
-double hemisphere_integral(const std::function<double(glm::vec3 direction)>& f, int z_steps = 256, int phi_steps = 256);
+double hemisphere_integral(const std::function<double(glm::vec3 direction)>& f, int z_steps = 256,
+                           int phi_steps = 256);
 
 // Upper regularized incomplete gamma Q(a, x): the chi-square p-value is Q(dof/2, stat/2).
 double gamma_q(double a, double x);

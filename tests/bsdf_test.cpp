@@ -22,7 +22,7 @@ test::SampleFn lambert_sampler() {
 
 TEST(StatisticsHelpers, GammaQMatchesKnownChiSquareValues) {
   // Chi-square survival function: P(X > x) for dof k is Q(k/2, x/2).
-  EXPECT_NEAR(test::gamma_q(0.5, 3.841459 / 2), 0.05, 1e-5);  // k = 1, 95th percentile
+  EXPECT_NEAR(test::gamma_q(0.5, 3.841459 / 2), 0.05, 1e-5);   // k = 1, 95th percentile
   EXPECT_NEAR(test::gamma_q(5.0, 18.307038 / 2), 0.05, 1e-5);  // k = 10
   EXPECT_NEAR(test::gamma_q(50.0, 124.342 / 2), 0.05, 1e-4);   // k = 100
 }
@@ -34,8 +34,10 @@ TEST(StatisticsHelpers, ChiSquareRejectsAWrongPdf) {
 }
 
 TEST(Lambert, SamplesFollowThePdf) {
-  const auto result = test::chi_square_sphere(lambert_sampler(), [](glm::vec3 d) { return shader::lambert_pdf(d.z); });
-  EXPECT_GT(result.p_value, 0.01) << "chi2 " << result.statistic << " dof " << result.degrees_of_freedom;
+  const auto result = test::chi_square_sphere(lambert_sampler(),
+                                              [](glm::vec3 d) { return shader::lambert_pdf(d.z); });
+  EXPECT_GT(result.p_value, 0.01) << "chi2 " << result.statistic << " dof "
+                                  << result.degrees_of_freedom;
   EXPECT_NEAR(result.pdf_integral, 1.0, 1e-3);
   EXPECT_EQ(result.sampled_fraction, 1.0);
 }
@@ -50,7 +52,8 @@ TEST(Lambert, NoNaNAtGrazingAndDegenerateInputs) {
     EXPECT_TRUE(std::isfinite(shader::lambert_eval_cos(c)));
     EXPECT_GE(shader::lambert_pdf(c), 0.0f);
   }
-  for (glm::vec2 u : {glm::vec2(0.0f), glm::vec2(1.0f), glm::vec2(0.5f), glm::vec2(0.0f, 1.0f), glm::vec2(0.99999994f)}) {
+  for (glm::vec2 u : {glm::vec2(0.0f), glm::vec2(1.0f), glm::vec2(0.5f), glm::vec2(0.0f, 1.0f),
+                      glm::vec2(0.99999994f)}) {
     const glm::vec3 d = shader::lambert_sample_local(u);
     EXPECT_TRUE(std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z));
     EXPECT_NEAR(glm::length(d), 1.0f, 1e-5f);

@@ -4,8 +4,8 @@
 
 #include <cmath>
 #include <filesystem>
-#include <utility>
 #include <glm/gtc/constants.hpp>
+#include <utility>
 
 #include "hipr/scene_loader.h"
 #include "image/builtin_environments.h"
@@ -28,7 +28,8 @@ glm::vec3 texel_direction(const Environment& env, uint32_t column, uint32_t row)
 double irradiance(const Environment& env, glm::vec3 n) {
   double sum = 0.0;
   for (uint32_t row = 0; row < env.height; ++row) {
-    const double solid_angle = (2.0 * kPi / env.width) * (kPi / env.height) * std::sin(kPi * (row + 0.5) / env.height);
+    const double solid_angle =
+        (2.0 * kPi / env.width) * (kPi / env.height) * std::sin(kPi * (row + 0.5) / env.height);
     for (uint32_t column = 0; column < env.width; ++column) {
       const double c = glm::dot(n, texel_direction(env, column, row));
       if (c > 0.0) sum += env.texels[size_t(row) * env.width + column].x * c * solid_angle;
@@ -62,8 +63,8 @@ TEST(StudioEnvironment, MapHoldsTheFunctionAtTexelCentres) {
   EXPECT_EQ(env.path, kStudioEnvironmentName);
   for (uint32_t row = 0; row < env.height; row += 3)
     for (uint32_t column = 0; column < env.width; column += 5)
-      EXPECT_NEAR(env.texels[size_t(row) * env.width + column].x, studio_radiance(texel_direction(env, column, row)).x,
-                  1e-5f);
+      EXPECT_NEAR(env.texels[size_t(row) * env.width + column].x,
+                  studio_radiance(texel_direction(env, column, row)).x, 1e-5f);
 }
 
 TEST(StudioEnvironment, AWhiteFloorReflectsAboutOneNit) {
@@ -101,10 +102,12 @@ TEST(SkyEnvironment, MatchesThePublishedModel) {
 std::pair<double, double> horizontal_illuminance(const Environment& env) {
   double all = 0.0, sky = 0.0;
   for (uint32_t row = 0; row < env.height / 2; ++row) {
-    const double solid_angle = (2.0 * kPi / env.width) * (kPi / env.height) * std::sin(kPi * (row + 0.5) / env.height);
+    const double solid_angle =
+        (2.0 * kPi / env.width) * (kPi / env.height) * std::sin(kPi * (row + 0.5) / env.height);
     for (uint32_t column = 0; column < env.width; ++column) {
       const glm::vec3 t = env.texels[size_t(row) * env.width + column];
-      const double e = (0.2126 * t.r + 0.7152 * t.g + 0.0722 * t.b) * texel_direction(env, column, row).y * solid_angle;
+      const double e = (0.2126 * t.r + 0.7152 * t.g + 0.0722 * t.b) *
+                       texel_direction(env, column, row).y * solid_angle;
       all += e;
       sky += t.g < 1e6f ? e : 0.0;
     }
@@ -138,7 +141,8 @@ TEST(SkyEnvironment, DaylightOnTheGroundIsPhysical) {
   for (const glm::vec3& t : evening.texels)
     if (t.g > brightest.g) brightest = t;
   EXPECT_GT(brightest.r, 1.3f * brightest.b);  // the sun's texel
-  for (const glm::vec3& t : evening.texels) ASSERT_TRUE(std::isfinite(t.r) && t.r >= 0.0f && t.b >= 0.0f);
+  for (const glm::vec3& t : evening.texels)
+    ASSERT_TRUE(std::isfinite(t.r) && t.r >= 0.0f && t.b >= 0.0f);
 }
 
 TEST(EnvironmentChoice, AutoLightsOnlyScenesWithoutLight) {
@@ -157,7 +161,8 @@ TEST(EnvironmentChoice, AutoLightsOnlyScenesWithoutLight) {
   options.environment = kStudioEnvironmentName;
   EXPECT_TRUE(load_scene(test::asset("cornell_box.gltf"), options).environment.has_value());
   options.environment = kSkyEnvironmentName;
-  EXPECT_EQ(environment_description(load_scene(test::asset("furnace_sphere.gltf"), options)), "sky (built in)");
+  EXPECT_EQ(environment_description(load_scene(test::asset("furnace_sphere.gltf"), options)),
+            "sky (built in)");
   options.environment = kNoEnvironment;
   EXPECT_FALSE(load_scene(test::asset("furnace_sphere.gltf"), options).environment.has_value());
   // Emission up to 1 nit is a glow, not a light: the studio lights the scene besides.
@@ -188,7 +193,8 @@ TEST(EnvironmentChoice, EverySharedSceneIsLitWithNoFlags) {
       const std::string extension = file.path().extension().string();
       if (extension != ".gltf" && extension != ".glb") continue;
       const Scene scene = load_scene(file.path(), options);
-      EXPECT_TRUE(scene.environment.has_value() || scene_lighting(scene).lights_itself()) << file.path();
+      EXPECT_TRUE(scene.environment.has_value() || scene_lighting(scene).lights_itself())
+          << file.path();
       ++scenes;
     }
   }
@@ -213,13 +219,16 @@ TEST(EnvironmentChoice, FlagsBringTheEnvironmentBack) {
   options.sky.sun_elevation_degrees = 25.0f;
   options.sky.turbidity = 4.5f;
   Scene scene = load_scene(test::asset("furnace_sphere.gltf"), options);
-  EXPECT_EQ(environment_flags(scene), "--env sky --sun-elevation 25 --sun-azimuth 30 --turbidity 4.5");
+  EXPECT_EQ(environment_flags(scene),
+            "--env sky --sun-elevation 25 --sun-azimuth 30 --turbidity 4.5");
   scene.environment->intensity = 2.0f;
   scene.environment->rotation = kPi / 2.0f;
   EXPECT_EQ(environment_flags(scene),
-            "--env sky --sun-elevation 25 --sun-azimuth 30 --turbidity 4.5 --env-intensity 2 --env-rotation 90");
+            "--env sky --sun-elevation 25 --sun-azimuth 30 --turbidity 4.5 --env-intensity 2 "
+            "--env-rotation 90");
   options.environment = kAutoEnvironment;
-  EXPECT_EQ(environment_flags(load_scene(test::asset("furnace_sphere.gltf"), options)), "--env studio");
+  EXPECT_EQ(environment_flags(load_scene(test::asset("furnace_sphere.gltf"), options)),
+            "--env studio");
   EXPECT_EQ(environment_flags(load_scene(test::asset("cornell_box.gltf"), options)), "--env none");
 }
 

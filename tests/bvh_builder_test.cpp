@@ -25,11 +25,13 @@ std::vector<Box> random_boxes(size_t count, uint32_t seed, float size) {
 }
 
 bool contains(const abi::BvhNode& outer, const Box& inner) {
-  return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) && glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
+  return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) &&
+         glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
 }
 
 // Walks the tree checking its invariants; returns how many times each item was reached.
-std::vector<int> check_tree(const Bvh& bvh, const std::vector<Box>& boxes, uint32_t& max_depth, uint32_t& max_leaf) {
+std::vector<int> check_tree(const Bvh& bvh, const std::vector<Box>& boxes, uint32_t& max_depth,
+                            uint32_t& max_leaf) {
   std::vector<int> seen(boxes.size(), 0);
   max_depth = 0;
   max_leaf = 0;
@@ -43,13 +45,15 @@ std::vector<int> check_tree(const Bvh& bvh, const std::vector<Box>& boxes, uint3
       for (uint32_t i = node.first; i < node.first + count; ++i) {
         ASSERT_LT(i, bvh.order.size());
         seen[bvh.order[i]] += 1;
-        EXPECT_TRUE(contains(node, boxes[bvh.order[i]])) << "leaf " << index << " item " << bvh.order[i];
+        EXPECT_TRUE(contains(node, boxes[bvh.order[i]]))
+            << "leaf " << index << " item " << bvh.order[i];
       }
       return;
     }
     for (uint32_t child = node.first; child < node.first + 2; ++child) {
       ASSERT_LT(child, bvh.nodes.size());
-      EXPECT_TRUE(contains(node, Box{bvh.nodes[child].lo, bvh.nodes[child].hi})) << "node " << index;
+      EXPECT_TRUE(contains(node, Box{bvh.nodes[child].lo, bvh.nodes[child].hi}))
+          << "node " << index;
       walk(child, depth + 1);
     }
   };
@@ -119,10 +123,13 @@ TEST(BvhBuilder, PathologicalSpreadEndsInLeavesAtTheDepthLimit) {
 // one leaf; nothing indexes out of the bins (ASan/UBSan builds run this).
 TEST(BvhBuilder, BoxesBeyondFloatsRangeStillBuildATree) {
   std::vector<Box> boxes = random_boxes(200, 3, 0.5f);
-  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
-  for (const auto& [lo, hi] : {std::pair{glm::vec3(3e38f), glm::vec3(3.4e38f)}, std::pair{glm::vec3(-3.4e38f), glm::vec3(3.4e38f)},
-                               std::pair{glm::vec3(-inf), glm::vec3(inf)}, std::pair{glm::vec3(nan), glm::vec3(nan)},
-                               std::pair{glm::vec3(0.0f), glm::vec3(inf, 1.0f, nan)}})
+  const float inf = std::numeric_limits<float>::infinity(),
+              nan = std::numeric_limits<float>::quiet_NaN();
+  for (const auto& [lo, hi] :
+       {std::pair{glm::vec3(3e38f), glm::vec3(3.4e38f)},
+        std::pair{glm::vec3(-3.4e38f), glm::vec3(3.4e38f)},
+        std::pair{glm::vec3(-inf), glm::vec3(inf)}, std::pair{glm::vec3(nan), glm::vec3(nan)},
+        std::pair{glm::vec3(0.0f), glm::vec3(inf, 1.0f, nan)}})
     for (int copy = 0; copy < 20; ++copy) boxes.push_back(Box{lo, hi});
   const Bvh bvh = build_bvh(boxes);
   std::vector<int> seen(boxes.size(), 0);

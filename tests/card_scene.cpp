@@ -17,13 +17,15 @@ Scene make_card_camera_scene(float env) {
   scene.children = {{}};
   scene.root_nodes = {0};
   Camera camera;
-  camera.yfov = 2.0f * std::atan(1.0f / 3.0f);  // half-height 1 at distance 3: the card fills the view
+  camera.yfov =
+      2.0f * std::atan(1.0f / 3.0f);  // half-height 1 at distance 3: the card fills the view
   scene.cameras.push_back(camera);
   if (env > 0.0f) scene.environment = uniform_environment(env);
   return scene;
 }
 
-uint32_t add_card(Scene& scene, const std::string& name, const glm::mat4& transform, const MaterialParameters& material) {
+uint32_t add_card(Scene& scene, const std::string& name, const glm::mat4& transform,
+                  const MaterialParameters& material) {
   MeshPrimitive card;
   card.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
   card.normals.assign(4, glm::vec3(0, 0, 1));

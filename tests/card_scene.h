@@ -11,7 +11,8 @@ Scene make_card_camera_scene(float env);
 // Adds a card [-1,1]^2 facing +Z, moved by `transform`, with its own material. UVs are
 // image-like: uv0 = ((x + 1) / 2, (1 - y) / 2), so pixel rows follow texture rows; uv1 mirrors
 // u (uv1 = (1 - u0, v0)). Returns the material's index.
-uint32_t add_card(Scene& scene, const std::string& name, const glm::mat4& transform, const MaterialParameters& material);
+uint32_t add_card(Scene& scene, const std::string& name, const glm::mat4& transform,
+                  const MaterialParameters& material);
 
 // A material that reflects nothing and emits nothing: a card of it is black where it is hit.
 MaterialParameters black_material();

@@ -1,5 +1,5 @@
-// The hipr binary as scripts use it (docs/method.md#command-line-and-edit-scripts): exit codes, one-line errors,
-// outputs that appear whole or not at all, image metadata and --stats-json.
+// The hipr binary as scripts use it (docs/method.md#command-line-and-edit-scripts): exit codes,
+// one-line errors, outputs that appear whole or not at all, image metadata and --stats-json.
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -12,8 +12,8 @@
 #include "hipr/edits.h"
 #include "hipr/scene_loader.h"
 #include "hipr/schedule_settings.h"
-#include "image/tonemap.h"
 #include "image/image_io.h"
+#include "image/tonemap.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 // The names in `dir`, sorted.
 std::vector<std::string> files_in(const fs::path& dir) {
   std::vector<std::string> files;
-  for (const auto& entry : fs::directory_iterator(dir)) files.push_back(entry.path().filename().string());
+  for (const auto& entry : fs::directory_iterator(dir))
+    files.push_back(entry.path().filename().string());
   std::sort(files.begin(), files.end());
   return files;
 }
@@ -48,7 +49,8 @@ TEST(Cli, HelpExitsZero) {
 TEST(Cli, RenderHelpListsTheContractFlags) {
   const test::CommandResult result = test::run_hipr("render --help");
   EXPECT_EQ(result.exit_code, kExitOk) << result.output;
-  for (const char* flag : {"--width", "--height", "--spp", "--seed", "--max-depth", "--tile", "--env", "--stats-json"})
+  for (const char* flag :
+       {"--width", "--height", "--spp", "--seed", "--max-depth", "--tile", "--env", "--stats-json"})
     EXPECT_NE(result.output.find(flag), std::string::npos) << flag;
 }
 
@@ -62,15 +64,19 @@ TEST(Cli, EveryCommandThatSchedulesTakesEverySchedulingFlag) {
     ScheduleSettings settings;
     for_each_schedule_setting(settings, [&](const ScheduleSettingInfo& info, auto&) {
       if (command == "bench" && std::string(info.flag) == "--policy") return;
-      EXPECT_NE(result.output.find(std::string(info.flag) + " "), std::string::npos) << command << " " << info.flag;
+      EXPECT_NE(result.output.find(std::string(info.flag) + " "), std::string::npos)
+          << command << " " << info.flag;
     });
   }
-  const std::string common = quoted(test::asset("cornell_box.gltf")) + " " + quoted(test::asset("cornell_box.edits.json"));
+  const std::string common =
+      quoted(test::asset("cornell_box.gltf")) + " " + quoted(test::asset("cornell_box.edits.json"));
   const fs::path dir = test::temp_dir("schedule_flags");
   for (const std::string flags : {"--display sometimes", "--policy best"}) {
-    const test::CommandResult result = test::run_hipr("replay " + common + " -o " + quoted(dir / "r") + " " + flags);
+    const test::CommandResult result =
+        test::run_hipr("replay " + common + " -o " + quoted(dir / "r") + " " + flags);
     EXPECT_EQ(result.exit_code, kExitBadInput) << flags;
-    EXPECT_NE(result.output.find(flags.substr(0, flags.find(' '))), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(flags.substr(0, flags.find(' '))), std::string::npos)
+        << result.output;
     EXPECT_FALSE(fs::exists(dir / "r")) << flags;
   }
 }
@@ -82,7 +88,9 @@ struct BadCommand {
   const char* arguments;
 };
 
-std::ostream& operator<<(std::ostream& out, const BadCommand& command) { return out << command.arguments; }
+std::ostream& operator<<(std::ostream& out, const BadCommand& command) {
+  return out << command.arguments;
+}
 
 std::string expand(std::string arguments, const fs::path& out_dir) {
   const std::pair<std::string, std::string> substitutions[] = {
@@ -90,7 +98,8 @@ std::string expand(std::string arguments, const fs::path& out_dir) {
       {"$cornell", quoted(test::asset("cornell_box.gltf"))},
       {"$edits", quoted(test::asset("cornell_box.edits.json"))}};
   for (const auto& [from, to] : substitutions)
-    for (size_t at; (at = arguments.find(from)) != std::string::npos;) arguments.replace(at, from.size(), to);
+    for (size_t at; (at = arguments.find(from)) != std::string::npos;)
+      arguments.replace(at, from.size(), to);
   return arguments;
 }
 
@@ -98,41 +107,47 @@ class BadCommandLine : public testing::TestWithParam<BadCommand> {};
 
 TEST_P(BadCommandLine, ExitsTwoWithOneLineAndWritesNothing) {
   const fs::path out_dir = test::temp_dir("cli-bad");
-  std::ofstream(out_dir / "invalid.gltf") << R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 3}]})";
+  std::ofstream(out_dir / "invalid.gltf")
+      << R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 3}]})";
   expect_one_error_line(test::run_hipr(expand(GetParam().arguments, out_dir)));
-  EXPECT_EQ(files_in(out_dir), std::vector<std::string>{"invalid.gltf"}) << "no output and no temporary file";
+  EXPECT_EQ(files_in(out_dir), std::vector<std::string>{"invalid.gltf"})
+      << "no output and no temporary file";
 }
 
-std::string bad_command_name(const testing::TestParamInfo<BadCommand>& param_info) { return param_info.param.name; }
+std::string bad_command_name(const testing::TestParamInfo<BadCommand>& param_info) {
+  return param_info.param.name;
+}
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, BadCommandLine,
-    testing::Values(BadCommand{"no_subcommand", ""},
-                    BadCommand{"unknown_subcommand", "paint $cornell"},
-                    BadCommand{"unknown_flag", "render $cornell -o @/out.exr --bogus"},
-                    BadCommand{"missing_output", "render $cornell"},
-                    BadCommand{"spp_zero", "render $cornell -o @/out.exr --spp 0"},
-                    BadCommand{"negative_width", "render $cornell -o @/out.exr --width -5"},
-                    BadCommand{"bmp_output", "render $cornell -o @/out.bmp --width 8 --height 8 --spp 1"},
-                    BadCommand{"one_bad_output_of_two", "render $cornell -o @/out.exr -o @/out.bmp --spp 1"},
-                    BadCommand{"missing_scene", "render @/missing.gltf -o @/out.exr --spp 1"},
-                    BadCommand{"scene_not_gltf", "render @/ -o @/out.exr --spp 1"},
-                    BadCommand{"invalid_scene", "render @/invalid.gltf -o @/out.png --width 8 --height 8 --spp 1"},
-                    BadCommand{"invalid_scene_info", "info @/invalid.gltf"},
-                    BadCommand{"bench_unknown_policy", "bench $cornell $edits -o @/b --policies hipr,zigzag"},
-                    BadCommand{"bench_no_policy", "bench $cornell $edits -o @/b --policies ,"},
-                    BadCommand{"bench_bad_display", "bench $cornell $edits -o @/b --display sometimes"},
-                    BadCommand{"bench_ref_spp_zero", "bench $cornell $edits -o @/b --ref-spp 0"},
-                    BadCommand{"bench_first_visit_over_spp", "bench $cornell $edits -o @/b --spp 2 --first-visit-spp 3"},
-                    BadCommand{"bench_edits_not_json", "bench $cornell $cornell -o @/b"},
-                    BadCommand{"bench_invalid_scene", "bench @/invalid.gltf $edits -o @/b"},
-                    BadCommand{"replay_oracle", "replay $cornell $edits -o @/b --policy oracle"}),
+    testing::Values(
+        BadCommand{"no_subcommand", ""}, BadCommand{"unknown_subcommand", "paint $cornell"},
+        BadCommand{"unknown_flag", "render $cornell -o @/out.exr --bogus"},
+        BadCommand{"missing_output", "render $cornell"},
+        BadCommand{"spp_zero", "render $cornell -o @/out.exr --spp 0"},
+        BadCommand{"negative_width", "render $cornell -o @/out.exr --width -5"},
+        BadCommand{"bmp_output", "render $cornell -o @/out.bmp --width 8 --height 8 --spp 1"},
+        BadCommand{"one_bad_output_of_two", "render $cornell -o @/out.exr -o @/out.bmp --spp 1"},
+        BadCommand{"missing_scene", "render @/missing.gltf -o @/out.exr --spp 1"},
+        BadCommand{"scene_not_gltf", "render @/ -o @/out.exr --spp 1"},
+        BadCommand{"invalid_scene",
+                   "render @/invalid.gltf -o @/out.png --width 8 --height 8 --spp 1"},
+        BadCommand{"invalid_scene_info", "info @/invalid.gltf"},
+        BadCommand{"bench_unknown_policy", "bench $cornell $edits -o @/b --policies hipr,zigzag"},
+        BadCommand{"bench_no_policy", "bench $cornell $edits -o @/b --policies ,"},
+        BadCommand{"bench_bad_display", "bench $cornell $edits -o @/b --display sometimes"},
+        BadCommand{"bench_ref_spp_zero", "bench $cornell $edits -o @/b --ref-spp 0"},
+        BadCommand{"bench_first_visit_over_spp",
+                   "bench $cornell $edits -o @/b --spp 2 --first-visit-spp 3"},
+        BadCommand{"bench_edits_not_json", "bench $cornell $cornell -o @/b"},
+        BadCommand{"bench_invalid_scene", "bench @/invalid.gltf $edits -o @/b"},
+        BadCommand{"replay_oracle", "replay $cornell $edits -o @/b --policy oracle"}),
     bad_command_name);
 
 TEST(Cli, MissingOutputFolderIsABadInput) {
   const fs::path out_dir = test::temp_dir("cli-no-folder");
-  expect_one_error_line(test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) + " -o " +
-                                       quoted(out_dir / "missing" / "out.exr") +
+  expect_one_error_line(test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) +
+                                       " -o " + quoted(out_dir / "missing" / "out.exr") +
                                        " --width 8 --height 8 --spp 1 --quiet"));
 }
 
@@ -140,10 +155,12 @@ TEST(Cli, BadStatsPathWritesNoImage) {
   // Every output is checked before rendering: an error exit never leaves some outputs behind.
   const fs::path out_dir = test::temp_dir("cli-bad-stats");
   const test::CommandResult result =
-      test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) + " -o " + quoted(out_dir / "out.exr") +
-                     " --stats-json " + quoted(out_dir / "missing" / "stats.json") + " --width 8 --height 8 --spp 1");
+      test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) + " -o " +
+                     quoted(out_dir / "out.exr") + " --stats-json " +
+                     quoted(out_dir / "missing" / "stats.json") + " --width 8 --height 8 --spp 1");
   EXPECT_EQ(result.exit_code, kExitBadInput) << result.output;
-  EXPECT_FALSE(fs::exists(out_dir / "out.exr")) << "an image was written although the command failed";
+  EXPECT_FALSE(fs::exists(out_dir / "out.exr"))
+      << "an image was written although the command failed";
 }
 
 TEST(Cli, RequiredUnsupportedExtensionIsABadInput) {
@@ -153,10 +170,13 @@ TEST(Cli, RequiredUnsupportedExtensionIsABadInput) {
   scene["extensionsRequired"] = {"EXT_hipr_made_up"};
   const fs::path dir = test::temp_dir("cli-required-extension");
   std::ofstream(dir / "scene.gltf") << scene.dump();
-  const test::CommandResult result = test::run_hipr("render " + quoted(dir / "scene.gltf") + " -o " + quoted(dir / "out.png") +
-                                                    " --width 8 --height 8 --spp 1");
+  const test::CommandResult result =
+      test::run_hipr("render " + quoted(dir / "scene.gltf") + " -o " + quoted(dir / "out.png") +
+                     " --width 8 --height 8 --spp 1");
   expect_one_error_line(result);
-  EXPECT_NE(result.output.find("requires unsupported glTF extension EXT_hipr_made_up"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("requires unsupported glTF extension EXT_hipr_made_up"),
+            std::string::npos)
+      << result.output;
   EXPECT_FALSE(fs::exists(dir / "out.png"));
 }
 
@@ -169,8 +189,9 @@ class CornellRender : public testing::Test {
 
   static void SetUpTestSuite() {
     s_dir = test::temp_dir("cli-render");
-    s_result = test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) + " -o " + quoted(exr()) + " -o " +
-                              quoted(png()) + " --width 32 --height 32 --spp 2 --seed 7 --stats-json " +
+    s_result = test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) + " -o " +
+                              quoted(exr()) + " -o " + quoted(png()) +
+                              " --width 32 --height 32 --spp 2 --seed 7 --stats-json " +
                               quoted(stats()) + " --validate");
   }
   void SetUp() override { ASSERT_EQ(s_result.exit_code, kExitOk) << s_result.output; }
@@ -218,8 +239,8 @@ TEST_F(CornellRender, StatsJsonHasTheContractKeys) {
   std::ifstream in(stats());
   ASSERT_TRUE(in) << "no " << stats();
   const nlohmann::json json = nlohmann::json::parse(in);
-  for (const char* key : {"render_seconds", "samples_per_second", "rays_per_second", "nonfinite_samples", "spp", "width",
-                          "height"})
+  for (const char* key : {"render_seconds", "samples_per_second", "rays_per_second",
+                          "nonfinite_samples", "spp", "width", "height"})
     ASSERT_TRUE(json.contains(key) && json[key].is_number()) << key << " in " << json.dump();
   EXPECT_EQ(json["spp"], kSpp);
   EXPECT_EQ(json["width"], kSize);
@@ -235,7 +256,8 @@ TEST_F(CornellRender, StatsJsonHasTheContractKeys) {
 }
 
 TEST_F(CornellRender, NothingElseIsLeftInTheOutputFolder) {
-  EXPECT_EQ(files_in(s_dir), (std::vector<std::string>{"cornell.exr", "cornell.png", "stats.json"}));
+  EXPECT_EQ(files_in(s_dir),
+            (std::vector<std::string>{"cornell.exr", "cornell.png", "stats.json"}));
 }
 
 // `hipr info` on every scene we ship prints its triangle count.
@@ -244,7 +266,8 @@ class InfoOnShippedScene : public testing::TestWithParam<std::string> {};
 size_t triangles_in_scene(const Scene& scene) {
   size_t triangles = 0;
   for (const Instance& instance : scene.instances())
-    for (const MeshPrimitive& p : scene.meshes[instance.mesh].primitives) triangles += p.indices.size() / 3;
+    for (const MeshPrimitive& p : scene.meshes[instance.mesh].primitives)
+      triangles += p.indices.size() / 3;
   return triangles;
 }
 
@@ -252,8 +275,10 @@ TEST_P(InfoOnShippedScene, PrintsTheTriangleCount) {
   const fs::path scene = test::asset(GetParam());
   const test::CommandResult result = test::run_hipr("info " + quoted(scene));
   EXPECT_EQ(result.exit_code, kExitOk) << result.output;
-  const std::string expected = "triangles  " + std::to_string(triangles_in_scene(load_scene(scene))) + " in the scene";
-  EXPECT_NE(result.output.find(expected), std::string::npos) << "no '" << expected << "' in\n" << result.output;
+  const std::string expected =
+      "triangles  " + std::to_string(triangles_in_scene(load_scene(scene))) + " in the scene";
+  EXPECT_NE(result.output.find(expected), std::string::npos) << "no '" << expected << "' in\n"
+                                                             << result.output;
 }
 
 // `hipr info` lists the kernel features the scene uses, every one it skips, and the rays left out.
@@ -267,20 +292,23 @@ TEST(Info, ListsKernelFeaturesSkippedFeaturesAndRays) {
   ASSERT_EQ(box.exit_code, kExitOk) << box.output;
   EXPECT_EQ(line(box.output, "bsdf"), "bsdf       diffuse");
   EXPECT_EQ(line(box.output, "kernel"), "kernel     emissive triangles");
-  for (const char* skipped : {"specular", "coat", "textures", "normal maps", "punctual lights", "environment",
-                              "opacity cutout", "volume absorption"})
-    EXPECT_NE(line(box.output, "skipped").find(skipped), std::string::npos) << skipped << "\n" << box.output;
+  for (const char* skipped : {"specular", "coat", "textures", "normal maps", "punctual lights",
+                              "environment", "opacity cutout", "volume absorption"})
+    EXPECT_NE(line(box.output, "skipped").find(skipped), std::string::npos) << skipped << "\n"
+                                                                            << box.output;
   EXPECT_EQ(line(box.output, "rays"), "rays       every ray is needed");
 
   // The unlit furnace sphere without the built-in studio: nothing to sample, nothing emits, and
   // the frame's corners are empty.
-  const test::CommandResult furnace = test::run_hipr("info " + quoted(test::asset("furnace_sphere.gltf")) +
-                                                     " --env none --width 128 --height 128 --tile 16");
+  const test::CommandResult furnace =
+      test::run_hipr("info " + quoted(test::asset("furnace_sphere.gltf")) +
+                     " --env none --width 128 --height 128 --tile 16");
   ASSERT_EQ(furnace.exit_code, kExitOk) << furnace.output;
   EXPECT_EQ(line(furnace.output, "kernel"), "kernel     no other feature");
   const std::string rays = line(furnace.output, "rays");
   EXPECT_NE(rays.find("all of them (nothing emits"), std::string::npos) << rays;
-  EXPECT_NE(rays.find(" of 64 tiles (background only at 128x128, tile 16)"), std::string::npos) << rays;
+  EXPECT_NE(rays.find(" of 64 tiles (background only at 128x128, tile 16)"), std::string::npos)
+      << rays;
   const std::string bad_tile = "info " + quoted(test::asset("furnace_sphere.gltf")) + " --tile 0";
   EXPECT_EQ(test::run_hipr(bad_tile).exit_code, kExitBadInput);
 }
@@ -292,13 +320,15 @@ TEST(EnvironmentChoice, UnlitSceneGetsTheStudioAndSaysSo) {
   const test::CommandResult info = test::run_hipr("info " + scene);
   ASSERT_EQ(info.exit_code, kExitOk) << info.output;
   EXPECT_NE(info.output.find("env        studio (built in)"), std::string::npos) << info.output;
-  EXPECT_NE(info.output.find("brings no light: lit by the built-in studio"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("brings no light: lit by the built-in studio"), std::string::npos)
+      << info.output;
   const test::CommandResult lit = test::run_hipr("info " + quoted(test::asset("cornell_box.gltf")));
   EXPECT_NE(lit.output.find("env        none"), std::string::npos) << lit.output;
 
   const auto dir = test::temp_dir("env_choice");
   const std::string size = " --width 16 --height 16 --spp 2 -q";
-  const test::CommandResult studio = test::run_hipr("render " + scene + " -o " + quoted(dir / "studio.exr") + size);
+  const test::CommandResult studio =
+      test::run_hipr("render " + scene + " -o " + quoted(dir / "studio.exr") + size);
   ASSERT_EQ(studio.exit_code, kExitOk) << studio.output;
   EXPECT_GT(test::mean(read_image(dir / "studio.exr")), 0.1);
 
@@ -310,13 +340,14 @@ TEST(EnvironmentChoice, UnlitSceneGetsTheStudioAndSaysSo) {
   ASSERT_EQ(lines.size(), 1u) << none.output;
   EXPECT_NE(lines[0].find("nothing in the scene emits light"), std::string::npos) << none.output;
 
-  const test::CommandResult sky = test::run_hipr("render " + scene + " -o " + quoted(dir / "sky.exr") + size +
-                                                 " --env sky --sun-elevation 20 --turbidity 4");
+  const test::CommandResult sky =
+      test::run_hipr("render " + scene + " -o " + quoted(dir / "sky.exr") + size +
+                     " --env sky --sun-elevation 20 --turbidity 4");
   ASSERT_EQ(sky.exit_code, kExitOk) << sky.output;
   EXPECT_GT(test::mean(read_image(dir / "sky.exr")), 1000.0);  // daylight, in nits
   for (const char* bad : {" --turbidity 20", " --sun-elevation -5", " --sun-azimuth nan"}) {
-    const test::CommandResult result = test::run_hipr("render " + scene + " -o " + quoted(dir / "bad.exr") + size +
-                                                      " --env sky" + bad);
+    const test::CommandResult result = test::run_hipr(
+        "render " + scene + " -o " + quoted(dir / "bad.exr") + size + " --env sky" + bad);
     EXPECT_EQ(result.exit_code, kExitBadInput) << bad;
     EXPECT_EQ(test::lines_of(result.output).size(), 1u) << result.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "bad.exr"));
@@ -331,24 +362,25 @@ std::string scene_test_name(const testing::TestParamInfo<std::string>& param_inf
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, InfoOnShippedScene,
-                         testing::Values("cornell_box.gltf", "cornell_box_moved.gltf", "cornell_sphere.glb",
-                                         "furnace_sphere.gltf"),
+                         testing::Values("cornell_box.gltf", "cornell_box_moved.gltf",
+                                         "cornell_sphere.glb", "furnace_sphere.gltf"),
                          scene_test_name);
-
 
 // `hipr replay`: every policy ends in the same final image (bit for bit: the schedule changes
 // only the order of samples, never their values), with the step and debug images asked for.
 TEST(Replay, PoliciesEndInTheSameFinalImage) {
   const fs::path dir = test::temp_dir("replay");
-  const std::string common = quoted(test::asset("cornell_box.gltf")) + " " + quoted(test::asset("cornell_box.edits.json")) +
+  const std::string common = quoted(test::asset("cornell_box.gltf")) + " " +
+                             quoted(test::asset("cornell_box.edits.json")) +
                              " --width 32 --height 32 --spp 2 --tile 8 --max-depth 4 --validate -q";
   std::vector<float> reference;
   for (const char* policy : {"hipr", "full", "spiral"}) {
     const fs::path out = dir / policy;
-    const test::CommandResult result =
-        test::run_hipr("replay " + common + " -o " + quoted(out) + " --policy " + policy + " --dump-steps 1,3");
+    const test::CommandResult result = test::run_hipr("replay " + common + " -o " + quoted(out) +
+                                                      " --policy " + policy + " --dump-steps 1,3");
     ASSERT_EQ(result.exit_code, kExitOk) << result.output;
-    for (const char* file : {"final.exr", "final.png", "edit1_step1.exr", "edit2_step3.png", "summary.json"})
+    for (const char* file :
+         {"final.exr", "final.png", "edit1_step1.exr", "edit2_step3.png", "summary.json"})
       EXPECT_TRUE(fs::exists(out / file)) << policy << ": " << file;
     const ImageRGB final_image = read_image(out / "final.exr");
     if (reference.empty()) reference = final_image.rgb;
@@ -367,16 +399,17 @@ TEST(Replay, EnvironmentSwitchEndsOnARenderOfTheNewLight) {
                                           "set": {"sun_elevation": 25, "intensity": 0.0005}}]})";
   const std::string size = " --width 32 --height 32 --spp 2 --tile 8 --max-depth 4 -q";
   const fs::path rendered = dir / "sky.exr";
-  ASSERT_EQ(test::run_hipr("render " + quoted(test::asset("furnace_sphere.gltf")) + " --env sky --sun-elevation 25" +
-                           " --env-intensity 0.0005 -o " + quoted(rendered) + size)
+  ASSERT_EQ(test::run_hipr("render " + quoted(test::asset("furnace_sphere.gltf")) +
+                           " --env sky --sun-elevation 25" + " --env-intensity 0.0005 -o " +
+                           quoted(rendered) + size)
                 .exit_code,
             kExitOk);
   const ImageRGB expected = read_image(rendered);
   for (const char* policy : {"hipr", "full"}) {
     const fs::path out = dir / policy;
-    const test::CommandResult result = test::run_hipr("replay " + quoted(test::asset("furnace_sphere.gltf")) + " " +
-                                                      quoted(script) + " --env studio -o " + quoted(out) +
-                                                      " --policy " + policy + size);
+    const test::CommandResult result = test::run_hipr(
+        "replay " + quoted(test::asset("furnace_sphere.gltf")) + " " + quoted(script) +
+        " --env studio -o " + quoted(out) + " --policy " + policy + size);
     ASSERT_EQ(result.exit_code, kExitOk) << result.output;
     EXPECT_EQ(read_image(out / "final.exr").rgb, expected.rgb) << policy;
   }
@@ -398,7 +431,8 @@ TEST(Replay, FocusOpsChangeTheOrderOnly) {
   std::vector<float> reference;
   for (const char* policy : {"hipr", "full"}) {
     const fs::path out = dir / policy;
-    const test::CommandResult result = test::run_hipr("replay " + common + " -o " + quoted(out) + " --policy " + policy);
+    const test::CommandResult result =
+        test::run_hipr("replay " + common + " -o " + quoted(out) + " --policy " + policy);
     ASSERT_EQ(result.exit_code, kExitOk) << result.output;
     const ImageRGB final_image = read_image(out / "final.exr");
     if (reference.empty()) reference = final_image.rgb;
@@ -413,7 +447,8 @@ TEST(Replay, FocusOpsChangeTheOrderOnly) {
   const fs::path bad = dir / "bad.json";
   std::ofstream(bad) << R"({"edits": [{"op": "focus", "node": "teapot"}]})";
   const test::CommandResult result =
-      test::run_hipr("replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(bad) + " -o " + quoted(dir / "x"));
+      test::run_hipr("replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(bad) +
+                     " -o " + quoted(dir / "x"));
   expect_one_error_line(result);
   EXPECT_NE(result.output.find("teapot"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "x"));
@@ -434,9 +469,9 @@ TEST(Replay, GeometryEditsSaveAndRenderAsTheEditedScene) {
   std::vector<float> reference;
   for (const char* policy : {"hipr", "full"}) {
     const fs::path out = dir / policy;
-    const test::CommandResult result =
-        test::run_hipr("replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(script) + " -o " +
-                       quoted(out) + " --policy " + policy + " --save " + quoted(out / "edited.gltf") + size);
+    const test::CommandResult result = test::run_hipr(
+        "replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(script) + " -o " +
+        quoted(out) + " --policy " + policy + " --save " + quoted(out / "edited.gltf") + size);
     ASSERT_EQ(result.exit_code, kExitOk) << result.output;
     const ImageRGB final_image = read_image(out / "final.exr");
     if (reference.empty()) reference = final_image.rgb;
@@ -447,31 +482,39 @@ TEST(Replay, GeometryEditsSaveAndRenderAsTheEditedScene) {
   const Scene reloaded = load_scene(saved);
   EXPECT_THROW(find_node(reloaded, "short_block"), InputError) << "deleted";
   EXPECT_NO_THROW(find_node(reloaded, "short_block_2"));
-  ASSERT_EQ(test::run_hipr("render " + quoted(saved) + " -o " + quoted(dir / "saved.exr") + size).exit_code, kExitOk);
-  EXPECT_EQ(read_image(dir / "saved.exr").rgb, reference) << "the saved scene renders as the edited one";
+  ASSERT_EQ(test::run_hipr("render " + quoted(saved) + " -o " + quoted(dir / "saved.exr") + size)
+                .exit_code,
+            kExitOk);
+  EXPECT_EQ(read_image(dir / "saved.exr").rgb, reference)
+      << "the saved scene renders as the edited one";
 
   // An import of a file beside the script (its meshes, materials and lamp), saved as .glb.
   fs::copy_file(test::asset("cornell_sphere.glb"), dir / "sphere.glb");
   const fs::path import_script = dir / "import.json";
-  std::ofstream(import_script) << R"({"edits": [{"op": "import", "file": "sphere.glb", "translate": [0.3, 0.1, 0]}]})";
-  const std::string import_base = "replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(import_script);
-  ASSERT_EQ(test::run_hipr(import_base + " -o " + quoted(dir / "imported") + " --save " + quoted(dir / "imported.glb") + size)
+  std::ofstream(import_script)
+      << R"({"edits": [{"op": "import", "file": "sphere.glb", "translate": [0.3, 0.1, 0]}]})";
+  const std::string import_base =
+      "replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(import_script);
+  ASSERT_EQ(test::run_hipr(import_base + " -o " + quoted(dir / "imported") + " --save " +
+                           quoted(dir / "imported.glb") + size)
                 .exit_code,
             kExitOk);
-  ASSERT_EQ(test::run_hipr("render " + quoted(dir / "imported.glb") + " -o " + quoted(dir / "imported.exr") + size).exit_code,
+  ASSERT_EQ(test::run_hipr("render " + quoted(dir / "imported.glb") + " -o " +
+                           quoted(dir / "imported.exr") + size)
+                .exit_code,
             kExitOk);
   EXPECT_EQ(read_image(dir / "imported.exr").rgb, read_image(dir / "imported" / "final.exr").rgb);
 
   // A save the writer refuses (here a format it does not write) is bad input, before any render.
-  test::CommandResult result = test::run_hipr(import_base + " -o " + quoted(dir / "no") + " --save " +
-                                              quoted(dir / "no.obj") + size);
+  test::CommandResult result = test::run_hipr(import_base + " -o " + quoted(dir / "no") +
+                                              " --save " + quoted(dir / "no.obj") + size);
   expect_one_error_line(result);
   EXPECT_FALSE(fs::exists(dir / "no"));
 
   const fs::path escape = dir / "escape.json";
   std::ofstream(escape) << R"({"edits": [{"op": "import", "file": "../x.glb"}]})";
-  result = test::run_hipr("replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(escape) + " -o " +
-                          quoted(dir / "esc") + size);
+  result = test::run_hipr("replay " + quoted(test::asset("cornell_box.gltf")) + " " +
+                          quoted(escape) + " -o " + quoted(dir / "esc") + size);
   expect_one_error_line(result);
   EXPECT_FALSE(fs::exists(dir / "esc"));
 }
@@ -485,27 +528,36 @@ TEST(Replay, EditsInASceneWithoutACameraKeepTheView) {
   const fs::path scene = test::camera_less_cornell_box(dir);
   const char* move = R"({"op": "transform", "node": "tall_block", "translate": [0, 0, 0.6]})";
   std::ofstream(dir / "move.json") << "{\"edits\": [" << move << "]}";
-  std::ofstream(dir / "pinned.json") << R"({"edits": [{"op": "camera", "translate": [0, 0, 0]}, )" << move << "]}";
+  std::ofstream(dir / "pinned.json")
+      << R"({"edits": [{"op": "camera", "translate": [0, 0, 0]}, )" << move << "]}";
   const std::string size = " --width 32 --height 32 --spp 2 --tile 8 --max-depth 3 --env studio -q";
   for (const char* script : {"move", "pinned"})
-    ASSERT_EQ(test::run_hipr("replay " + quoted(scene) + " " + quoted(dir / (std::string(script) + ".json")) +
-                             " -o " + quoted(dir / script) + " --save " + quoted(dir / script / "saved.gltf") + size)
+    ASSERT_EQ(test::run_hipr("replay " + quoted(scene) + " " +
+                             quoted(dir / (std::string(script) + ".json")) + " -o " +
+                             quoted(dir / script) + " --save " +
+                             quoted(dir / script / "saved.gltf") + size)
                   .exit_code,
               kExitOk);
-  ASSERT_EQ(test::run_hipr("render " + quoted(scene) + " -o " + quoted(dir / "unmoved.exr") + size).exit_code, kExitOk);
-  ASSERT_EQ(test::run_hipr("render " + quoted(dir / "move" / "saved.gltf") + " -o " + quoted(dir / "saved.exr") + size)
+  ASSERT_EQ(test::run_hipr("render " + quoted(scene) + " -o " + quoted(dir / "unmoved.exr") + size)
+                .exit_code,
+            kExitOk);
+  ASSERT_EQ(test::run_hipr("render " + quoted(dir / "move" / "saved.gltf") + " -o " +
+                           quoted(dir / "saved.exr") + size)
                 .exit_code,
             kExitOk);
   const ImageRGB moved = read_image(dir / "move" / "final.exr");
   EXPECT_NE(moved.rgb, read_image(dir / "unmoved.exr").rgb) << "the block moved on screen";
   EXPECT_EQ(moved.rgb, read_image(dir / "pinned" / "final.exr").rgb) << "the view did not move";
-  EXPECT_EQ(moved.rgb, read_image(dir / "saved.exr").rgb) << "the saved file renders as the edit was seen";
+  EXPECT_EQ(moved.rgb, read_image(dir / "saved.exr").rgb)
+      << "the saved file renders as the edit was seen";
 
   // hipr bench: the edit's reference (the edited scene, converged) is the same image both ways.
-  const std::string bench = " --width 24 --height 24 --tile 8 --spp 2 --ref-spp 4 --max-depth 3 --env studio "
-                            "--policies hipr,full --no-ref-cache -q -o ";
+  const std::string bench =
+      " --width 24 --height 24 --tile 8 --spp 2 --ref-spp 4 --max-depth 3 --env studio "
+      "--policies hipr,full --no-ref-cache -q -o ";
   for (const char* script : {"move", "pinned"})
-    ASSERT_EQ(test::run_hipr("bench " + quoted(scene) + " " + quoted(dir / (std::string(script) + ".json")) + bench +
+    ASSERT_EQ(test::run_hipr("bench " + quoted(scene) + " " +
+                             quoted(dir / (std::string(script) + ".json")) + bench +
                              quoted(dir / (std::string("bench_") + script)))
                   .exit_code,
               kExitOk);
@@ -530,22 +582,28 @@ TEST(Cli, HostileInputsAreOneLineErrors) {
     }
   std::ofstream(dir / "huge_transform.gltf") << huge.dump();
   nlohmann::json empty_accessor = box;
-  empty_accessor["accessors"].push_back({{"componentType", 5126}, {"type", "VEC3"}, {"count", 2000000000}});
+  empty_accessor["accessors"].push_back(
+      {{"componentType", 5126}, {"type", "VEC3"}, {"count", 2000000000}});
   std::ofstream(dir / "empty_accessor.gltf") << empty_accessor.dump();
   std::ofstream(dir / "moves.json") << R"({"edits": [
       {"op": "transform", "node": "tall_block", "translate": [3e38, 0, 0]},
       {"op": "transform", "node": "tall_block", "translate": [3e38, 0, 0]}]})";
-  std::ofstream(dir / "environment.json") << R"({"edits": [{"op": "environment", "source": "/etc/hostname"}]})";
+  std::ofstream(dir / "environment.json")
+      << R"({"edits": [{"op": "environment", "source": "/etc/hostname"}]})";
   const std::string cornell = quoted(test::asset("cornell_box.gltf"));
   const std::string size = " --width 16 --height 16 --spp 1 --tile 8 -q --traversal ";
   for (const char* traversal : {"ray-query", "software"}) {
     const fs::path out = dir / traversal;
     fs::create_directories(out);
     const std::pair<std::string, const char*> commands[] = {
-        {"render " + quoted(dir / "huge_transform.gltf") + " -o " + quoted(out / "a.exr"), "out of range"},
-        {"render " + quoted(dir / "empty_accessor.gltf") + " -o " + quoted(out / "b.exr"), "no bufferView"},
-        {"replay " + cornell + " " + quoted(dir / "moves.json") + " -o " + quoted(out / "c"), "out of range"},
-        {"replay " + cornell + " " + quoted(dir / "environment.json") + " -o " + quoted(out / "d"), "script's folder"}};
+        {"render " + quoted(dir / "huge_transform.gltf") + " -o " + quoted(out / "a.exr"),
+         "out of range"},
+        {"render " + quoted(dir / "empty_accessor.gltf") + " -o " + quoted(out / "b.exr"),
+         "no bufferView"},
+        {"replay " + cornell + " " + quoted(dir / "moves.json") + " -o " + quoted(out / "c"),
+         "out of range"},
+        {"replay " + cornell + " " + quoted(dir / "environment.json") + " -o " + quoted(out / "d"),
+         "script's folder"}};
     for (const auto& [command, why] : commands) {
       SCOPED_TRACE(command);
       const test::CommandResult result = test::run_hipr(command + size + traversal);
@@ -559,14 +617,16 @@ TEST(Cli, HostileInputsAreOneLineErrors) {
 TEST(Replay, BadPolicyOrUnknownNameWritesNothing) {
   const fs::path dir = test::temp_dir("replay-bad");
   const fs::path script = dir / "edits.json";
-  std::ofstream(script) << R"({"edits": [{"op": "transform", "node": "teapot", "translate": [0, 0, 0]}]})";
+  std::ofstream(script)
+      << R"({"edits": [{"op": "transform", "node": "teapot", "translate": [0, 0, 0]}]})";
   const std::string scene = quoted(test::asset("cornell_box.gltf"));
-  test::CommandResult result = test::run_hipr("replay " + scene + " " + quoted(script) + " -o " + quoted(dir / "a"));
+  test::CommandResult result =
+      test::run_hipr("replay " + scene + " " + quoted(script) + " -o " + quoted(dir / "a"));
   EXPECT_EQ(result.exit_code, kExitBadInput);
   EXPECT_NE(result.output.find("teapot"), std::string::npos) << result.output;
   EXPECT_FALSE(fs::exists(dir / "a"));
-  result = test::run_hipr("replay " + scene + " " + quoted(test::asset("cornell_box.edits.json")) + " -o " +
-                          quoted(dir / "b") + " --policy zigzag");
+  result = test::run_hipr("replay " + scene + " " + quoted(test::asset("cornell_box.edits.json")) +
+                          " -o " + quoted(dir / "b") + " --policy zigzag");
   EXPECT_EQ(result.exit_code, kExitBadInput);
   EXPECT_FALSE(fs::exists(dir / "b"));
 }
@@ -574,10 +634,13 @@ TEST(Replay, BadPolicyOrUnknownNameWritesNothing) {
 TEST(Replay, HiprParametersAreValidated) {
   const fs::path dir = test::temp_dir("replay-params");
   const std::string base = "replay " + quoted(test::asset("cornell_box.gltf")) + " " +
-                           quoted(test::asset("cornell_box.edits.json")) + " --width 16 --height 16 --spp 1 -q -o ";
-  EXPECT_EQ(test::run_hipr(base + quoted(dir / "ok") + " --preset mirror --w-path 2,1,1 --eps 0.02").exit_code, kExitOk);
-  for (const char* bad : {"--preset shiny", "--w-lobe 1,2", "--w-lobe 0,0,0,0", "--w-path -1,1,1", "--eps 0", "--eps 2",
-                          "--w-occlusion -1"}) {
+                           quoted(test::asset("cornell_box.edits.json")) +
+                           " --width 16 --height 16 --spp 1 -q -o ";
+  EXPECT_EQ(test::run_hipr(base + quoted(dir / "ok") + " --preset mirror --w-path 2,1,1 --eps 0.02")
+                .exit_code,
+            kExitOk);
+  for (const char* bad : {"--preset shiny", "--w-lobe 1,2", "--w-lobe 0,0,0,0", "--w-path -1,1,1",
+                          "--eps 0", "--eps 2", "--w-occlusion -1"}) {
     const test::CommandResult result = test::run_hipr(base + quoted(dir / "bad") + " " + bad);
     EXPECT_EQ(result.exit_code, kExitBadInput) << bad << "\n" << result.output;
     EXPECT_FALSE(fs::exists(dir / "bad")) << bad;
@@ -588,33 +651,40 @@ TEST(Replay, HiprParametersAreValidated) {
 // image for exactly its first pass, references cached, and results that do not depend on the run.
 TEST(Bench, WritesCurvesSummaryAndPlot) {
   const fs::path dir = test::temp_dir("bench");
-  const std::string command = "bench " + quoted(test::asset("cornell_box.gltf")) + " " +
-                              quoted(test::asset("cornell_box.edits.json")) +
-                              " --width 24 --height 24 --tile 8 --spp 2 --ref-spp 8 --max-depth 3 -q --ref-cache " +
-                              quoted(dir / "cache") + " -o ";
+  const std::string command =
+      "bench " + quoted(test::asset("cornell_box.gltf")) + " " +
+      quoted(test::asset("cornell_box.edits.json")) +
+      " --width 24 --height 24 --tile 8 --spp 2 --ref-spp 8 --max-depth 3 -q --ref-cache " +
+      quoted(dir / "cache") + " -o ";
   const test::CommandResult result = test::run_hipr(command + quoted(dir / "a"));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
-  for (const char* file : {"curves.csv", "summary.json", "plot.png", "edit1_reference.png", "edit1_reference.exr",
-                           "edit2_hipr_work0.png", "edit2_hipr_work0.exr", "edit2_hipr_work1.png"})
+  for (const char* file :
+       {"curves.csv", "summary.json", "plot.png", "edit1_reference.png", "edit1_reference.exr",
+        "edit2_hipr_work0.png", "edit2_hipr_work0.exr", "edit2_hipr_work1.png"})
     EXPECT_TRUE(fs::exists(dir / "a" / file)) << file;
-  EXPECT_EQ(files_in(dir / "cache").size(), 3u) << "one reference per scene state: before the edits, after each";
+  EXPECT_EQ(files_in(dir / "cache").size(), 3u)
+      << "one reference per scene state: before the edits, after each";
 
   std::ifstream summary_file(dir / "a" / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(summary_file);
   ASSERT_EQ(summary.at("edits").size(), 2u);
   for (const auto& edit : summary.at("edits")) {
     // Stage 1's active tiles against those the references say changed.
-    EXPECT_LE(edit.at("active_and_changed_tiles").get<size_t>(), edit.at("reference_changed_tiles").get<size_t>());
-    EXPECT_LE(edit.at("active_and_changed_tiles").get<size_t>(), edit.at("changed_tiles").get<size_t>());
+    EXPECT_LE(edit.at("active_and_changed_tiles").get<size_t>(),
+              edit.at("reference_changed_tiles").get<size_t>());
+    EXPECT_LE(edit.at("active_and_changed_tiles").get<size_t>(),
+              edit.at("changed_tiles").get<size_t>());
     EXPECT_LE(edit.at("reference_changed_tiles").get<size_t>(), edit.at("tiles").get<size_t>());
     const auto& policies = edit.at("policies");
     ASSERT_EQ(policies.size(), 6u);
     const double final_relmse = policies.at("hipr").at("final_relmse");
     for (const auto& [name, p] : policies.items()) {
-      for (const char* key : {"auc_relmse", "auc_flip", "first_feedback_work", "changed_tiles_shown_work", "overhead_share"})
+      for (const char* key : {"auc_relmse", "auc_flip", "first_feedback_work",
+                              "changed_tiles_shown_work", "overhead_share"})
         EXPECT_TRUE(p.contains(key)) << name << " " << key;
       EXPECT_TRUE(p.at("converged").get<bool>()) << name;
-      EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse) << name << ": every policy ends on the same image";
+      EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse)
+          << name << ": every policy ends on the same image";
       EXPECT_EQ(p.at("nonfinite_samples").get<int>(), 0) << name;
     }
     const auto& full = policies.at("full");
@@ -622,8 +692,8 @@ TEST(Bench, WritesCurvesSummaryAndPlot) {
         << "full shows the stale image until its first pass ends, at one work unit";
     EXPECT_DOUBLE_EQ(full.at("first_feedback_work").get<double>(), 1.0);
   }
-  for (const char* key : {"hipr_vs_full_auc_relmse", "hipr_vs_oracle_auc_relmse", "hipr_vs_full_auc_flip",
-                          "hipr_vs_oracle_auc_flip"})
+  for (const char* key : {"hipr_vs_full_auc_relmse", "hipr_vs_oracle_auc_relmse",
+                          "hipr_vs_full_auc_flip", "hipr_vs_oracle_auc_flip"})
     EXPECT_GT(summary.at("ratios").at(key).get<double>(), 0.0) << key;
 
   std::ifstream curves_file(dir / "a" / "curves.csv");
@@ -647,10 +717,13 @@ TEST(Bench, WritesCurvesSummaryAndPlot) {
 // every policy still ends on the same image.
 TEST(Bench, DragMeasuresDuringAndAfterTheDrag) {
   const fs::path dir = test::temp_dir("bench_drag");
-  const test::CommandResult result = test::run_hipr(
-      "bench " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(test::asset("cornell_box.edits.json")) +
-      " --drag 0.25 --policies hipr,full,oracle --width 24 --height 24 --tile 8 --spp 2 --ref-spp 8 --max-depth 3 -q"
-      " --no-ref-cache -o " + quoted(dir));
+  const test::CommandResult result =
+      test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " +
+                     quoted(test::asset("cornell_box.edits.json")) +
+                     " --drag 0.25 --policies hipr,full,oracle --width 24 --height 24 --tile 8 "
+                     "--spp 2 --ref-spp 8 --max-depth 3 -q"
+                     " --no-ref-cache -o " +
+                     quoted(dir));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
   std::ifstream summary_file(dir / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(summary_file);
@@ -658,15 +731,19 @@ TEST(Bench, DragMeasuresDuringAndAfterTheDrag) {
   const auto& policies = summary.at("edits")[0].at("policies");
   const double final_relmse = policies.at("hipr").at("final_relmse");
   for (const auto& [name, p] : policies.items()) {
-    EXPECT_GE(p.at("drag_work").get<double>(), 0.25) << name << ": the second edit comes after 0.25 work";
-    for (const char* key : {"auc_relmse_during_drag", "auc_flip_during_drag", "auc_relmse_after_drag", "auc_flip_after_drag"})
+    EXPECT_GE(p.at("drag_work").get<double>(), 0.25)
+        << name << ": the second edit comes after 0.25 work";
+    for (const char* key : {"auc_relmse_during_drag", "auc_flip_during_drag",
+                            "auc_relmse_after_drag", "auc_flip_after_drag"})
       EXPECT_TRUE(p.contains(key)) << name << " " << key;
     EXPECT_TRUE(p.at("converged").get<bool>()) << name;
-    EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse) << name << ": every policy ends on the same image";
+    EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse)
+        << name << ": every policy ends on the same image";
   }
   EXPECT_GT(summary.at("ratios").at("hipr_vs_full_auc_relmse_during_drag").get<double>(), 0.0);
   EXPECT_EQ(test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " +
-                           quoted(test::asset("cornell_box.edits.json")) + " --drag -1 -o " + quoted(dir / "bad"))
+                           quoted(test::asset("cornell_box.edits.json")) + " --drag -1 -o " +
+                           quoted(dir / "bad"))
                 .exit_code,
             kExitBadInput);
 }
@@ -678,10 +755,12 @@ TEST(Bench, ColdStartAndCameraEditWithAFocus) {
   const fs::path script = dir / "focus.json";
   std::ofstream(script) << R"({"edits": [{"op": "focus", "node": "tall_block"},
                                          {"op": "camera", "translate": [0.02, 0, 0]}]})";
-  const std::string flags = " --policies hipr,full --width 24 --height 24 --tile 8 --spp 2 --ref-spp 8 --max-depth 3 -q"
-                            " --no-ref-cache";
-  const test::CommandResult result = test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " +
-                                                    quoted(script) + " --cold-start" + flags + " -o " + quoted(dir / "a"));
+  const std::string flags =
+      " --policies hipr,full --width 24 --height 24 --tile 8 --spp 2 --ref-spp 8 --max-depth 3 -q"
+      " --no-ref-cache";
+  const test::CommandResult result =
+      test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(script) +
+                     " --cold-start" + flags + " -o " + quoted(dir / "a"));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
   std::ifstream summary_file(dir / "a" / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(summary_file);
@@ -697,18 +776,20 @@ TEST(Bench, ColdStartAndCameraEditWithAFocus) {
       EXPECT_TRUE(p.at("converged").get<bool>()) << name;
       EXPECT_GE(p.at("auc_focus_relmse").get<double>(), 0.0) << name;
       EXPECT_GE(p.at("auc_focus_flip").get<double>(), 0.0) << name;
-      EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse) << name << ": the focus changes the order only";
+      EXPECT_EQ(p.at("final_relmse").get<double>(), final_relmse)
+          << name << ": the focus changes the order only";
     }
   }
   EXPECT_GT(summary.at("ratios").at("hipr+focus_vs_hipr_auc_focus_relmse").get<double>(), 0.0);
   EXPECT_GT(summary.at("ratios").at("hipr+focus_vs_hipr_auc_focus_flip").get<double>(), 0.0);
   // A drag measures edits only; a script of focus ops alone measures nothing without --cold-start.
-  expect_one_error_line(test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(script) +
-                                       " --drag 0.5" + flags + " -o " + quoted(dir / "b")));
+  expect_one_error_line(test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " +
+                                       quoted(script) + " --drag 0.5" + flags + " -o " +
+                                       quoted(dir / "b")));
   const fs::path only_focus = dir / "only.json";
   std::ofstream(only_focus) << R"({"edits": [{"op": "focus", "node": "tall_block"}]})";
-  expect_one_error_line(test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(only_focus) +
-                                       flags + " -o " + quoted(dir / "c")));
+  expect_one_error_line(test::run_hipr("bench " + quoted(test::asset("cornell_box.gltf")) + " " +
+                                       quoted(only_focus) + flags + " -o " + quoted(dir / "c")));
   EXPECT_FALSE(fs::exists(dir / "b"));
   EXPECT_FALSE(fs::exists(dir / "c"));
 }
@@ -731,8 +812,8 @@ nlohmann::json read_json(const fs::path& path) {
 
 // hipr compare DIR/a.exr DIR/b.exr FLAGS --json DIR/r.json
 test::CommandResult compare_in(const fs::path& dir, const std::string& flags) {
-  return test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " " + flags + " --json " +
-                        quoted(dir / "r.json"));
+  return test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " " +
+                        flags + " --json " + quoted(dir / "r.json"));
 }
 
 TEST(Compare, EqualImagesAreTheSame) {
@@ -754,8 +835,9 @@ TEST(Compare, SaysWhereImagesDiffer) {
   write_image(dir / "a.exr", grey_image(0.5f));
   write_image(dir / "b.exr", grey_image());
   const std::string images = quoted(dir / "a.exr") + " " + quoted(dir / "b.exr");
-  const auto result = test::run_hipr("compare " + images + " --metric max --threshold 0.1 --json " +
-                                     quoted(dir / "r.json") + " --heatmap " + quoted(dir / "heat.png"));
+  const auto result =
+      test::run_hipr("compare " + images + " --metric max --threshold 0.1 --json " +
+                     quoted(dir / "r.json") + " --heatmap " + quoted(dir / "heat.png"));
   EXPECT_EQ(result.exit_code, kExitDifferent) << result.output;
   const nlohmann::json r = read_json(dir / "r.json");
   EXPECT_NEAR(r.at("value").get<double>(), 0.5, 1e-6);
@@ -768,10 +850,13 @@ TEST(Compare, SaysWhereImagesDiffer) {
   EXPECT_GT(heat.rgb[(3 * 16 + 5) * 3], 0.5f) << "the patch is hot";
   EXPECT_EQ(heat.rgb[0], 0.0f) << "the rest is cold";
   // A threshold above the difference: the same.
-  EXPECT_EQ(test::run_hipr("compare " + images + " --metric max --threshold 0.6 -q").exit_code, kExitOk);
+  EXPECT_EQ(test::run_hipr("compare " + images + " --metric max --threshold 0.6 -q").exit_code,
+            kExitOk);
   // FLIP sees the patch too (its filters spread a difference over neighbouring pixels).
-  ASSERT_EQ(test::run_hipr("compare " + images + " --threshold 0.01 --json " + quoted(dir / "f.json")).exit_code,
-            kExitDifferent);
+  ASSERT_EQ(
+      test::run_hipr("compare " + images + " --threshold 0.01 --json " + quoted(dir / "f.json"))
+          .exit_code,
+      kExitDifferent);
   const nlohmann::json f = read_json(dir / "f.json");
   EXPECT_GT(f.at("value").get<double>(), 0.01);
   const auto fbox = f.at("box");
@@ -793,7 +878,8 @@ TEST(Compare, APercentileCatchesTheWorstPixels) {
   EXPECT_EQ(result.exit_code, kExitOk) << "the mean lets 5 pixels in 4096 pass: " << result.output;
   result = compare_in(dir, "--metric relmse --percentile 99.9 --threshold 0.01");
   EXPECT_EQ(result.exit_code, kExitDifferent) << result.output;
-  EXPECT_NEAR(read_json(dir / "r.json").at("value").get<double>(), 0.65 * 0.65 / (0.0625 + 0.01) / 2, 1e-5);
+  EXPECT_NEAR(read_json(dir / "r.json").at("value").get<double>(),
+              0.65 * 0.65 / (0.0625 + 0.01) / 2, 1e-5);
   result = compare_in(dir, "--metric relmse --percentile 99");
   EXPECT_EQ(result.exit_code, kExitOk) << "99% of the pixels are equal: " << result.output;
   EXPECT_EQ(read_json(dir / "r.json").at("percentile").get<double>(), 99.0);
@@ -824,10 +910,11 @@ TEST(Compare, BadInputIsOneLineAndExitTwo) {
   write_image(dir / "a.exr", grey_image());
   ImageRGB wide{20, 12, std::vector<float>(20 * 12 * 3, 0.25f)};
   write_image(dir / "wide.exr", wide);
-  for (const std::string& args : {quoted(dir / "a.exr") + " " + quoted(dir / "wide.exr"),
-                                  quoted(dir / "a.exr") + " " + quoted(dir / "missing.exr"),
-                                  quoted(dir / "a.exr") + " " + quoted(dir / "a.exr") + " --metric psnr",
-                                  quoted(dir / "a.exr") + " " + quoted(dir / "a.exr") + " --threshold -1"}) {
+  for (const std::string& args :
+       {quoted(dir / "a.exr") + " " + quoted(dir / "wide.exr"),
+        quoted(dir / "a.exr") + " " + quoted(dir / "missing.exr"),
+        quoted(dir / "a.exr") + " " + quoted(dir / "a.exr") + " --metric psnr",
+        quoted(dir / "a.exr") + " " + quoted(dir / "a.exr") + " --threshold -1"}) {
     const auto result = test::run_hipr("compare " + args + " --json " + quoted(dir / "r.json"));
     EXPECT_EQ(result.exit_code, kExitBadInput) << args << ": " << result.output;
     EXPECT_EQ(lines_of(result.output).size(), 1u) << result.output;
@@ -844,7 +931,9 @@ TEST(Compare, TwoProcessesRenderTheSamePixels) {
   ASSERT_EQ(test::run_hipr(render + quoted(dir / "a.exr")).exit_code, kExitOk);
   ASSERT_EQ(test::run_hipr(render + quoted(dir / "b.exr")).exit_code, kExitOk);
   EXPECT_EQ(read_image(dir / "a.exr").rgb, read_image(dir / "b.exr").rgb);
-  EXPECT_EQ(test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " --metric max -q").exit_code,
+  EXPECT_EQ(test::run_hipr("compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") +
+                           " --metric max -q")
+                .exit_code,
             kExitOk);
 }
 
@@ -852,26 +941,29 @@ TEST(Compare, TwoProcessesRenderTheSamePixels) {
 // says so in the statistics, and gives the same picture as ray queries up to rounding.
 TEST(Cli, TraversalIsChosenNamedAndChecked) {
   const fs::path dir = test::temp_dir("traversal");
-  const std::string render = "render " + quoted(test::asset("cornell_sphere.glb")) +
-                             " --width 32 --height 24 --spp 4 --seed 3 --max-depth 4 -q --validate -o ";
-  if (!test::context().has_ray_queries()) GTEST_SKIP() << test::context().device_name() << " has no ray queries";
+  const std::string render =
+      "render " + quoted(test::asset("cornell_sphere.glb")) +
+      " --width 32 --height 24 --spp 4 --seed 3 --max-depth 4 -q --validate -o ";
+  if (!test::context().has_ray_queries())
+    GTEST_SKIP() << test::context().device_name() << " has no ray queries";
   for (const char* traversal : {"ray-query", "software"}) {
     const fs::path out = dir / (std::string(traversal) + ".exr");
     const fs::path stats = dir / (std::string(traversal) + ".json");
-    const auto result =
-        test::run_hipr(render + quoted(out) + " --traversal " + traversal + " --stats-json " + quoted(stats));
+    const auto result = test::run_hipr(render + quoted(out) + " --traversal " + traversal +
+                                       " --stats-json " + quoted(stats));
     ASSERT_EQ(result.exit_code, kExitOk) << result.output;
     std::ifstream in(stats);
     EXPECT_EQ(nlohmann::json::parse(in)["traversal"], traversal);
   }
-  const ImageRGB queries = read_image(dir / "ray-query.exr"), software = read_image(dir / "software.exr");
+  const ImageRGB queries = read_image(dir / "ray-query.exr"),
+                 software = read_image(dir / "software.exr");
   EXPECT_NEAR(test::mean(software), test::mean(queries), 0.02 * test::mean(queries));
 
   const auto bad_option = test::run_hipr(render + quoted(dir / "x.exr") + " --traversal magic");
   EXPECT_EQ(bad_option.exit_code, kExitBadInput) << bad_option.output;
   EXPECT_EQ(lines_of(bad_option.output).size(), 1u) << bad_option.output;
-  const auto bad_environment = test::run_command("HIPR_TRAVERSAL=magic " + quoted(test::hipr_binary()) + " " + render +
-                                                 quoted(dir / "y.exr"));
+  const auto bad_environment = test::run_command(
+      "HIPR_TRAVERSAL=magic " + quoted(test::hipr_binary()) + " " + render + quoted(dir / "y.exr"));
   EXPECT_EQ(bad_environment.exit_code, kExitBadInput) << bad_environment.output;
   EXPECT_EQ(lines_of(bad_environment.output).size(), 1u) << bad_environment.output;
   EXPECT_FALSE(fs::exists(dir / "x.exr") || fs::exists(dir / "y.exr"));
@@ -880,12 +972,16 @@ TEST(Cli, TraversalIsChosenNamedAndChecked) {
 // A name with bytes that are not UTF-8 (and a terminal escape) reaches stderr escaped, on one line.
 TEST(Cli, ErrorLinesStayCleanWithBrokenBytes) {
   const fs::path dir = test::temp_dir("broken_bytes");
-  const test::CommandResult result =
-      test::run_hipr("render " + quoted(dir / ("sc\xff" "ene\x1b" "[31m.gltf")) + " -o " + quoted(dir / "out.exr"));
+  const test::CommandResult result = test::run_hipr("render " +
+                                                    quoted(dir / ("sc\xff"
+                                                                  "ene\x1b"
+                                                                  "[31m.gltf")) +
+                                                    " -o " + quoted(dir / "out.exr"));
   EXPECT_EQ(result.exit_code, kExitBadInput);
   ASSERT_EQ(lines_of(result.output).size(), 1u) << result.output;
   EXPECT_NE(result.output.find("sc\\xffene\\x1b[31m.gltf"), std::string::npos) << result.output;
-  for (char c : result.output) EXPECT_TRUE(c == '\n' || static_cast<unsigned char>(c) >= 0x20) << int(c);
+  for (char c : result.output)
+    EXPECT_TRUE(c == '\n' || static_cast<unsigned char>(c) >= 0x20) << int(c);
 }
 
 }  // namespace hipr

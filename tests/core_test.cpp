@@ -43,11 +43,14 @@ void write_text(const fs::path& path, const std::string& text) {
 
 // Error and warning lines stay one clean line whatever bytes a broken file put in a name.
 TEST(PrintableLine, KeepsUtf8AndEscapesEverythingElse) {
-  EXPECT_EQ(log::printable_line("node 'caf\xc3\xa9' \xe6\x97\xa5"), "node 'caf\xc3\xa9' \xe6\x97\xa5");  // valid UTF-8 stays
-  EXPECT_EQ(log::printable_line("a\xff" "b"), "a\\xffb");                // not UTF-8
-  EXPECT_EQ(log::printable_line("\xc0\xaf"), "\\xc0\\xaf");             // an overlong '/'
-  EXPECT_EQ(log::printable_line("\xed\xa0\x80"), "\\xed\\xa0\\x80");   // a UTF-16 surrogate
-  EXPECT_EQ(log::printable_line("\xe6\x97"), "\\xe6\\x97");             // cut short
+  EXPECT_EQ(log::printable_line("node 'caf\xc3\xa9' \xe6\x97\xa5"),
+            "node 'caf\xc3\xa9' \xe6\x97\xa5");  // valid UTF-8 stays
+  EXPECT_EQ(log::printable_line("a\xff"
+                                "b"),
+            "a\\xffb");                                               // not UTF-8
+  EXPECT_EQ(log::printable_line("\xc0\xaf"), "\\xc0\\xaf");           // an overlong '/'
+  EXPECT_EQ(log::printable_line("\xed\xa0\x80"), "\\xed\\xa0\\x80");  // a UTF-16 surrogate
+  EXPECT_EQ(log::printable_line("\xe6\x97"), "\\xe6\\x97");           // cut short
   EXPECT_EQ(log::printable_line("one\ntwo\tthree\x1b[31m"), "one two three\\x1b[31m");
 }
 
@@ -77,8 +80,8 @@ TEST(WriteAtomically, RenamesTheTemporaryFileOntoThePath) {
   fs::path written;
   write_atomically(target, [&](const fs::path& temp) {
     written = temp;
-    EXPECT_EQ(temp.parent_path(), dir);       // same folder, so the rename cannot cross devices
-    EXPECT_EQ(temp.extension(), ".exr");      // writers pick the format by extension
+    EXPECT_EQ(temp.parent_path(), dir);   // same folder, so the rename cannot cross devices
+    EXPECT_EQ(temp.extension(), ".exr");  // writers pick the format by extension
     EXPECT_NE(temp, target);
     write_text(temp, "payload");
   });
@@ -122,14 +125,18 @@ TEST(WriteAtomically, WriterThatWritesNothingIsAnError) {
 TEST(WriteAtomically, MissingFolderIsAnInputError) {
   const fs::path dir = test::temp_dir("atomic-missing");
   bool called = false;
-  EXPECT_THROW(write_atomically(dir / "no" / "such" / "out.exr", [&](const fs::path&) { called = true; }),
-               InputError);
+  EXPECT_THROW(
+      write_atomically(dir / "no" / "such" / "out.exr", [&](const fs::path&) { called = true; }),
+      InputError);
   EXPECT_FALSE(called);
 }
 
 TEST(ReadFileBytes, ReadsEveryByte) {
   const fs::path dir = test::temp_dir("read-bytes");
-  const std::string bytes("\x00\x01\xff\n\r\x7f" "end", 9);
+  const std::string bytes(
+      "\x00\x01\xff\n\r\x7f"
+      "end",
+      9);
   write_text(dir / "data.bin", bytes);
   const std::vector<unsigned char> read = read_file_bytes(dir / "data.bin");
   EXPECT_EQ(std::string(read.begin(), read.end()), bytes);
@@ -154,8 +161,8 @@ TEST(CheckUri, AcceptsPathsInsideTheFolder) {
 
 TEST(CheckUri, RefusesPathsOutsideTheFolder) {
   for (const char* uri : {"../x.bin", "a/../../x", "/etc/passwd", "C:/x", "C:\\x", "\\\\server\\x",
-                          "file:///etc/passwd", "http://example.com/x.bin", "%2e%2e/x.bin", "%2F%65tc/passwd",
-                          "sub/..%2f..%2fx.bin", ""}) {
+                          "file:///etc/passwd", "http://example.com/x.bin", "%2e%2e/x.bin",
+                          "%2F%65tc/passwd", "sub/..%2f..%2fx.bin", ""}) {
     try {
       gltf::check_uri(uri, "buffer 3");
       ADD_FAILURE() << "accepted '" << uri << "'";
@@ -182,12 +189,14 @@ TEST(DecodeUri, DecodesPercentEscapesOnly) {
 // ---- Mesh processing ----------------------------------------------------------------------
 
 glm::vec3 face_normal(const std::vector<glm::vec3>& positions, const uint32_t* triangle) {
-  const glm::vec3 a = positions[triangle[0]], b = positions[triangle[1]], c = positions[triangle[2]];
+  const glm::vec3 a = positions[triangle[0]], b = positions[triangle[1]],
+                  c = positions[triangle[2]];
   return glm::cross(b - a, c - a);
 }
 
 // Every triangle of `indices` faces +Z (counter-clockwise seen from +Z, as glTF requires).
-void expect_all_face_plus_z(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& indices) {
+void expect_all_face_plus_z(const std::vector<glm::vec3>& positions,
+                            const std::vector<uint32_t>& indices) {
   ASSERT_EQ(indices.size() % 3, 0u);
   for (size_t t = 0; t < indices.size(); t += 3)
     EXPECT_GT(face_normal(positions, &indices[t]).z, 0.0f) << "triangle " << t / 3 << " is flipped";
@@ -203,7 +212,8 @@ TEST(Triangulate, StripKeepsTheFrontFace) {
   }
   const std::vector<uint32_t> triangles = triangulate(indices, 5);
   EXPECT_EQ(triangles.size(), 3u * 5u);
-  EXPECT_EQ(std::vector<uint32_t>(triangles.begin(), triangles.begin() + 6), (std::vector<uint32_t>{0, 1, 2, 2, 1, 3}));
+  EXPECT_EQ(std::vector<uint32_t>(triangles.begin(), triangles.begin() + 6),
+            (std::vector<uint32_t>{0, 1, 2, 2, 1, 3}));
   expect_all_face_plus_z(positions, triangles);
 }
 
@@ -247,7 +257,8 @@ void expect_valid_tangent_frames(const MeshPrimitive& p) {
     const glm::vec3 t(p.tangents[i]);
     expect_unit(p.normals[i], "normal " + std::to_string(i));
     expect_unit(t, "tangent " + std::to_string(i));
-    EXPECT_NEAR(glm::dot(t, p.normals[i]), 0.0f, 1e-5f) << "tangent " << i << " is not perpendicular";
+    EXPECT_NEAR(glm::dot(t, p.normals[i]), 0.0f, 1e-5f)
+        << "tangent " << i << " is not perpendicular";
     EXPECT_EQ(std::abs(p.tangents[i].w), 1.0f) << "tangent " << i;
   }
 }
@@ -264,7 +275,8 @@ TEST(CompletePrimitive, MissingNormalsGiveUnweldedFlatNormals) {
     EXPECT_EQ(p.indices[corner], corner);
     EXPECT_EQ(p.positions[corner], source.positions[source.indices[corner]]);
     EXPECT_EQ(p.uvs[corner], source.uvs[source.indices[corner]]);
-    const glm::vec3 face = glm::normalize(face_normal(source.positions, &source.indices[corner / 3 * 3]));
+    const glm::vec3 face =
+        glm::normalize(face_normal(source.positions, &source.indices[corner / 3 * 3]));
     EXPECT_NEAR(glm::distance(p.normals[corner], face), 0.0f, 1e-6f) << "corner " << corner;
   }
   // The shared corners now carry different normals: the mesh really was unwelded.
@@ -308,7 +320,8 @@ TEST(CompletePrimitive, RepairsUnusableNormals) {
   complete_primitive(p, "mesh");
   for (const glm::vec3& n : p.normals) {
     ASSERT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
-    EXPECT_NEAR(glm::distance(n, glm::vec3(0, 0, 1)), 0.0f, 1e-6f);  // the face normal, or normalized
+    EXPECT_NEAR(glm::distance(n, glm::vec3(0, 0, 1)), 0.0f,
+                1e-6f);  // the face normal, or normalized
   }
   expect_valid_tangent_frames(p);
 }

@@ -10,13 +10,15 @@
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
 #include "render/gpu_scene.h"
-#include "test_support.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
 
-RenderSettings card_settings(uint32_t tile = 16) { return test::render_settings(32, 32, tile, 4, 5); }
+RenderSettings card_settings(uint32_t tile = 16) {
+  return test::render_settings(32, 32, tile, 4, 5);
+}
 
 MaterialParameters cutout(float opacity, float cutoff) {
   MaterialParameters m = test::black_material();
@@ -40,12 +42,15 @@ ImageRGB render(const Scene& scene, const RenderSettings& s, uint32_t spp) {
 }
 
 TEST(Cutout, MaskBelowTheCutoffIsInvisible) {
-  EXPECT_NEAR(test::mean(render(card_before_sky(cutout(0.4f, 0.5f)), card_settings(), 2)), 1.0, 1e-4);
-  EXPECT_NEAR(test::mean(render(card_before_sky(cutout(0.4f, 0.3f)), card_settings(), 2)), 0.0, 1e-6);
+  EXPECT_NEAR(test::mean(render(card_before_sky(cutout(0.4f, 0.5f)), card_settings(), 2)), 1.0,
+              1e-4);
+  EXPECT_NEAR(test::mean(render(card_before_sky(cutout(0.4f, 0.3f)), card_settings(), 2)), 0.0,
+              1e-6);
 }
 
 TEST(Cutout, BlendCoversTheFractionOfItsOpacity) {
-  const double through = test::mean(render(card_before_sky(cutout(0.25f, -1.0f)), card_settings(), 16));
+  const double through =
+      test::mean(render(card_before_sky(cutout(0.25f, -1.0f)), card_settings(), 16));
   EXPECT_NEAR(through, 0.75, 0.02);  // 16k samples: the standard error is 0.0034
 }
 
@@ -90,7 +95,8 @@ Scene shadowed_floor(const MaterialParameters& blocker) {
   white.base_color = glm::vec3(1.0f);
   white.specular_weight = 0.0f;
   test::add_card(scene, "floor", glm::mat4(1.0f), white);
-  test::add_card(scene, "blocker", glm::scale(glm::translate(glm::mat4(1.0f), {0, 0, 5}), glm::vec3(3.0f)), blocker);
+  test::add_card(scene, "blocker",
+                 glm::scale(glm::translate(glm::mat4(1.0f), {0, 0, 5}), glm::vec3(3.0f)), blocker);
   PunctualLight sun;
   sun.name = "sun";
   sun.type = LightType::Directional;
@@ -106,9 +112,12 @@ Scene shadowed_floor(const MaterialParameters& blocker) {
 
 TEST(Cutout, ShadowRaysHonourTheCutout) {
   const double lit = 1.0 / M_PI;  // white Lambert under 1 lux
-  EXPECT_NEAR(test::mean(render(shadowed_floor(cutout(0.4f, 0.5f)), card_settings(), 2)), lit, 1e-3);
-  EXPECT_NEAR(test::mean(render(shadowed_floor(cutout(0.4f, 0.3f)), card_settings(), 2)), 0.0, 1e-6);
-  EXPECT_NEAR(test::mean(render(shadowed_floor(cutout(0.25f, -1.0f)), card_settings(), 16)), 0.75 * lit, 0.01);
+  EXPECT_NEAR(test::mean(render(shadowed_floor(cutout(0.4f, 0.5f)), card_settings(), 2)), lit,
+              1e-3);
+  EXPECT_NEAR(test::mean(render(shadowed_floor(cutout(0.4f, 0.3f)), card_settings(), 2)), 0.0,
+              1e-6);
+  EXPECT_NEAR(test::mean(render(shadowed_floor(cutout(0.25f, -1.0f)), card_settings(), 16)),
+              0.75 * lit, 0.01);
 }
 
 TEST(Cutout, StageOneSeesThroughCutouts) {
@@ -123,7 +132,8 @@ TEST(Cutout, StageOneSeesThroughCutouts) {
 TEST(Cutout, StochasticCoverageIsDeterministic) {
   const Scene scene = card_before_sky(cutout(0.5f, -1.0f));
   const ImageRGB reference = render(scene, card_settings(16), 4);
-  for (uint32_t tile : {1u, 7u, 13u, 32u}) EXPECT_EQ(render(scene, card_settings(tile), 4).rgb, reference.rgb) << tile;
+  for (uint32_t tile : {1u, 7u, 13u, 32u})
+    EXPECT_EQ(render(scene, card_settings(tile), 4).rgb, reference.rgb) << tile;
   // The same holds for a card whose shadow is stochastic.
   const Scene shadow = shadowed_floor(cutout(0.5f, -1.0f));
   EXPECT_EQ(render(shadow, card_settings(8), 4).rgb, render(shadow, card_settings(11), 4).rgb);
@@ -131,9 +141,16 @@ TEST(Cutout, StochasticCoverageIsDeterministic) {
 
 TEST(Cutout, OpaqueScenesBuildOpaqueGeometry) {
   const Scene cornell = load_scene(test::asset("cornell_box.gltf"));
-  EXPECT_EQ(Renderer(test::context(), cornell, card_settings()).scene_stats().cutout_geometries, 0u);
-  EXPECT_EQ(Renderer(test::context(), card_before_sky(cutout(1.0f, -1.0f)), card_settings()).scene_stats().cutout_geometries, 0u);
-  EXPECT_EQ(Renderer(test::context(), card_before_sky(cutout(1.0f, 0.5f)), card_settings()).scene_stats().cutout_geometries, 1u);
+  EXPECT_EQ(Renderer(test::context(), cornell, card_settings()).scene_stats().cutout_geometries,
+            0u);
+  EXPECT_EQ(Renderer(test::context(), card_before_sky(cutout(1.0f, -1.0f)), card_settings())
+                .scene_stats()
+                .cutout_geometries,
+            0u);
+  EXPECT_EQ(Renderer(test::context(), card_before_sky(cutout(1.0f, 0.5f)), card_settings())
+                .scene_stats()
+                .cutout_geometries,
+            1u);
 }
 
 TEST(Cutout, OpacityEditOfAnOpaqueMaterialRebuildsItsGeometry) {

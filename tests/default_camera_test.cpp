@@ -54,9 +54,11 @@ TEST_F(DefaultCamera, MovesHidesAndGeometryEditsKeepTheLoadedView) {
   edit(TransformEdit{"tall_block", glm::vec3(0.0f, 0.0f, 1.5f), std::nullopt});
   EXPECT_NE(framing_camera(m_scene).camera_to_world, m_loaded.camera_to_world)
       << "the move grows the bounds: a view framed from them would have moved";
-  for (const char* node : {"floor", "ceiling", "back_wall", "left_wall", "right_wall", "tall_block", "light"})
+  for (const char* node :
+       {"floor", "ceiling", "back_wall", "left_wall", "right_wall", "tall_block", "light"})
     edit(VisibilityEdit{node, false});
-  EXPECT_NE(framing_camera(m_scene).camera_to_world, m_loaded.camera_to_world) << "only the short block is left";
+  EXPECT_NE(framing_camera(m_scene).camera_to_world, m_loaded.camera_to_world)
+      << "only the short block is left";
   edit(DuplicateEdit{"short_block", "copy", glm::vec3(2.0f, 0.0f, 0.0f)});
   edit(DeformEdit{"short_block", glm::scale(glm::mat4(1.0f), glm::vec3(3.0f)), nullptr});
   edit(DeleteEdit{"copy"});

@@ -20,10 +20,13 @@ namespace {
 
 constexpr uint32_t kStaleSpp = 32;
 
-RenderSettings settings(uint32_t seed, uint32_t max_depth = 4) { return test::render_settings(32, 32, 8, max_depth, seed); }
+RenderSettings settings(uint32_t seed, uint32_t max_depth = 4) {
+  return test::render_settings(32, 32, 8, max_depth, seed);
+}
 
 const Edit kRecolourRedWall = MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}};
-const Edit kMoveTallBlock = TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt};
+const Edit kMoveTallBlock =
+    TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt};
 
 Scene box() { return load_scene(test::asset("cornell_box.gltf")); }
 
@@ -63,7 +66,8 @@ TEST(DifferenceEstimate, IsAnUnbiasedEstimateOfTheEditedScene) {
       Scene scene = box();
       const auto renderer = converged_then_edited(scene, edit, seed);
       const DifferenceEstimates d = renderer->difference_estimates();
-      EXPECT_EQ(std::count(d.differenced.begin(), d.differenced.end(), 2u), 32 * 32) << "two samples compared";
+      EXPECT_EQ(std::count(d.differenced.begin(), d.differenced.end(), 2u), 32 * 32)
+          << "two samples compared";
       estimates.push_back(d.image);
       stale.push_back(renderer->displayed_image());
       edited = scene;
@@ -80,7 +84,8 @@ TEST(DifferenceEstimate, IsAnUnbiasedEstimateOfTheEditedScene) {
 TEST(DifferenceEstimate, SamplesBeyondAHalfsRangeKeepTheirValue) {
   Scene scene = box();
   apply_edit(scene, MaterialEdit{"light", {{"emission_luminance", {2e5f}}}});
-  const auto renderer = converged_then_edited(scene, MaterialEdit{"light", {{"emission_luminance", {6e5f}}}}, 1);
+  const auto renderer =
+      converged_then_edited(scene, MaterialEdit{"light", {{"emission_luminance", {6e5f}}}}, 1);
   const DifferenceEstimates d = renderer->difference_estimates();
   const ImageRGB fresh = renderer->image();  // the edited scene's first two samples
   const ImageRGB stale = renderer->displayed_image();
@@ -124,7 +129,8 @@ TEST(DifferenceEstimate, PixelsWhosePathsMissTheEditShowTheStaleValueBitForBit) 
     EXPECT_EQ(d.changed[p] != 0, differs) << "pixel " << p;
     changed += d.changed[p];
     if (d.changed[p]) continue;
-    for (size_t k = 0; k < 3; ++k) EXPECT_EQ(shown.rgb[p * 3 + k], stale.rgb[p * 3 + k]) << "pixel " << p;
+    for (size_t k = 0; k < 3; ++k)
+      EXPECT_EQ(shown.rgb[p * 3 + k], stale.rgb[p * 3 + k]) << "pixel " << p;
   }
   EXPECT_GT(changed, 32u * 32u / 20) << "the wall";
   EXPECT_LT(changed, 32u * 32u / 2);

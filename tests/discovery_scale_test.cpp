@@ -12,8 +12,8 @@
 #include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
-#include "test_support.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -70,8 +70,12 @@ Scene room(float scale) {
   Material light = diffuse("light", glm::vec3(0.0f));
   light.params.emission_color = glm::vec3(1.0f);
   light.params.emission_luminance = 20.0f;
-  scene.materials = {diffuse("floor", glm::vec3(0.7f)), mirror, diffuse("bright", glm::vec3(0.9f)), light,
-                     diffuse("block", glm::vec3(0.8f, 0.3f, 0.1f)), diffuse("occluder", glm::vec3(0.5f))};
+  scene.materials = {diffuse("floor", glm::vec3(0.7f)),
+                     mirror,
+                     diffuse("bright", glm::vec3(0.9f)),
+                     light,
+                     diffuse("block", glm::vec3(0.8f, 0.3f, 0.1f)),
+                     diffuse("occluder", glm::vec3(0.5f))};
   const auto mesh = [&](const char* name, uint32_t material, auto build) {
     MeshPrimitive p;
     p.material = material;
@@ -84,7 +88,9 @@ Scene room(float scale) {
   };
   mesh("floor", 0, [](MeshPrimitive& p) { add_quad(p, {-3, 0, -3}, {0, 0, 4.2f}, {4.8f, 0, 0}); });
   mesh("mirror", 1, [](MeshPrimitive& p) { add_quad(p, {-3, 0, -3}, {4.8f, 0, 0}, {0, 3, 0}); });
-  mesh("bright_wall", 2, [](MeshPrimitive& p) { add_quad(p, {1.8f, 0, -3}, {0, 3, 0}, {0, 0, 4.2f}); });
+  mesh("bright_wall", 2, [](MeshPrimitive& p) {
+    add_quad(p, {1.8f, 0, -3}, {0, 3, 0}, {0, 0, 4.2f});
+  });
   mesh("light", 3, [](MeshPrimitive& p) { add_quad(p, {-1, 3, -2}, {2, 0, 0}, {0, 0, 1.5f}); });
   mesh("block", 4, [](MeshPrimitive& p) { add_box(p, {0.4f, 0, -2.0f}, {1.1f, 0.7f, -1.3f}); });
   mesh("occluder", 5, [](MeshPrimitive& p) { add_box(p, kOccluderLo, kOccluderHi); });
@@ -95,8 +101,8 @@ Scene room(float scale) {
   scene.nodes.push_back(camera);
   scene.cameras.push_back(Camera{"camera", glm::mat4(1.0f), 0.8f, 0.01f});
 
-  const glm::mat4 world =
-      glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(3.0f, -2.0f, 1.0f) * scale), glm::vec3(scale));
+  const glm::mat4 world = glm::scale(
+      glm::translate(glm::mat4(1.0f), glm::vec3(3.0f, -2.0f, 1.0f) * scale), glm::vec3(scale));
   for (uint32_t n = 0; n < scene.nodes.size(); ++n) {
     scene.nodes[n].local = world * scene.nodes[n].local;
     scene.root_nodes.push_back(n);
@@ -134,17 +140,21 @@ Discovery discover(float scale, const RenderSettings& s = settings()) {
 std::vector<bool> occluder_interior_tiles(const RenderSettings& s) {
   const float tan_y = std::tan(0.4f), tan_x = tan_y * float(s.width) / float(s.height);
   const float depth = kCamera.z - kOccluderHi.z;
-  const auto px = [&](float x) { return ((x - kCamera.x) / depth / tan_x + 1.0f) * 0.5f * float(s.width); };
-  const auto py = [&](float y) { return (1.0f - (y - kCamera.y) / depth / tan_y) * 0.5f * float(s.height); };
+  const auto px = [&](float x) {
+    return ((x - kCamera.x) / depth / tan_x + 1.0f) * 0.5f * float(s.width);
+  };
+  const auto py = [&](float y) {
+    return (1.0f - (y - kCamera.y) / depth / tan_y) * 0.5f * float(s.height);
+  };
   const uint32_t tiles_x = (s.width + s.tile_size - 1) / s.tile_size;
   const uint32_t tiles_y = (s.height + s.tile_size - 1) / s.tile_size;
   std::vector<bool> interior(size_t(tiles_x) * tiles_y, false);
   for (uint32_t ty = 0; ty < tiles_y; ++ty)
     for (uint32_t tx = 0; tx < tiles_x; ++tx) {
       const float t = float(s.tile_size);
-      interior[ty * tiles_x + tx] = float(tx) * t >= px(kOccluderLo.x) + t &&
-                                    float(tx + 1) * t <= px(kOccluderHi.x) - t &&
-                                    float(ty) * t >= py(kOccluderHi.y) + t && float(ty + 1) * t <= py(kOccluderLo.y) - t;
+      interior[ty * tiles_x + tx] =
+          float(tx) * t >= px(kOccluderLo.x) + t && float(tx + 1) * t <= px(kOccluderHi.x) - t &&
+          float(ty) * t >= py(kOccluderHi.y) + t && float(ty + 1) * t <= py(kOccluderLo.y) - t;
     }
   return interior;
 }
@@ -152,7 +162,8 @@ std::vector<bool> occluder_interior_tiles(const RenderSettings& s) {
 TEST(DiscoveryAtEveryScale, SameTilesAndWeightsAndTheSameRejections) {
   const RenderSettings s = settings();
   const std::vector<bool> interior = occluder_interior_tiles(s);
-  ASSERT_GE(std::count(interior.begin(), interior.end(), true), 4) << "the occluder must cover whole tiles";
+  ASSERT_GE(std::count(interior.begin(), interior.end(), true), 4)
+      << "the occluder must cover whole tiles";
   const Discovery unit = discover(1.0f);
   size_t active = 0, discovered = 0;
   double total = 0.0;
@@ -168,17 +179,21 @@ TEST(DiscoveryAtEveryScale, SameTilesAndWeightsAndTheSameRejections) {
   for (float scale : kScales) {
     const Discovery d = scale == 1.0f ? unit : discover(scale);
     size_t pixels_differ = 0;
-    for (size_t i = 0; i < d.instances.size(); ++i) pixels_differ += d.instances[i] != unit.instances[i] ? 1 : 0;
+    for (size_t i = 0; i < d.instances.size(); ++i)
+      pixels_differ += d.instances[i] != unit.instances[i] ? 1 : 0;
     EXPECT_LE(pixels_differ, d.instances.size() / 200) << "G-buffer at scale " << scale;
     size_t flags_differ = 0;
     double weight_difference = 0.0;
     for (size_t t = 0; t < d.flags.size(); ++t) {
-      EXPECT_EQ(d.flags[t] & abi::kTileActive, unit.flags[t] & abi::kTileActive) << "tile " << t << ", scale " << scale;
-      flags_differ += (d.flags[t] & abi::kTileDiscovered) != (unit.flags[t] & abi::kTileDiscovered) ? 1 : 0;
+      EXPECT_EQ(d.flags[t] & abi::kTileActive, unit.flags[t] & abi::kTileActive)
+          << "tile " << t << ", scale " << scale;
+      flags_differ +=
+          (d.flags[t] & abi::kTileDiscovered) != (unit.flags[t] & abi::kTileDiscovered) ? 1 : 0;
       weight_difference += std::abs(d.weights[t] - unit.weights[t]);
       // The depth test rejects every vertex behind the occluder's front face.
       if (interior[t]) {
-        EXPECT_EQ(d.flags[t] & abi::kTileDiscovered, 0u) << "occluder tile " << t << ", scale " << scale;
+        EXPECT_EQ(d.flags[t] & abi::kTileDiscovered, 0u)
+            << "occluder tile " << t << ", scale " << scale;
         EXPECT_EQ(d.weights[t], 0.0) << "occluder tile " << t << ", scale " << scale;
       }
     }
@@ -196,7 +211,8 @@ TEST(DiscoveryAtEveryScale, WithoutTheDepthTestHiddenVerticesDiscoverTheOccluder
   for (float scale : kScales) {
     const Discovery d = discover(scale, s);
     size_t found = 0;
-    for (size_t t = 0; t < d.flags.size(); ++t) found += interior[t] && (d.flags[t] & abi::kTileDiscovered) ? 1 : 0;
+    for (size_t t = 0; t < d.flags.size(); ++t)
+      found += interior[t] && (d.flags[t] & abi::kTileDiscovered) ? 1 : 0;
     EXPECT_GT(found, 0u) << "scale " << scale;
   }
 }

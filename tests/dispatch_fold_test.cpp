@@ -83,7 +83,8 @@ TEST(FoldedDispatch, TheRadixSortStaysStable) {
   folding_context().submit_and_wait([&](VkCommandBuffer cmd) { sorter.record(cmd, count); });
   std::vector<uint32_t> order(count);
   std::iota(order.begin(), order.end(), 0u);
-  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });
   EXPECT_EQ(sorter.values.download_all<uint32_t>(), order);
   EXPECT_EQ(folding_context().validation_errors(), 0u);
 }

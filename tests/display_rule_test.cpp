@@ -10,8 +10,8 @@
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
 #include "image/error_metrics.h"
-#include "test_support.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -84,7 +84,8 @@ TEST_P(StatisticalRules, ASmallChangeEverywhereShowsOnceTheSharedNoiseCancels) {
   const auto light = std::find_if(box.scene.materials.begin(), box.scene.materials.end(),
                                   [](const Material& m) { return m.name == "light"; });
   ASSERT_NE(light, box.scene.materials.end());
-  box.edit(MaterialEdit{"light", {{"emission_luminance", {1.2f * light->params.emission_luminance}}}});
+  box.edit(
+      MaterialEdit{"light", {{"emission_luminance", {1.2f * light->params.emission_luminance}}}});
   box.scheduler.step();  // every tile: 15 fresh samples against 16 stale
   const ImageRGB fresh = box.renderer.image(), shown = box.scheduler.displayed_image();
   double shown_gain = 0.0, fresh_gain = 0.0;
@@ -135,7 +136,8 @@ TEST_P(StatisticalRules, AMajorChangeIsShownAtOnce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Rules, StatisticalRules,
-                         ::testing::Values(DisplayRule::Switch, DisplayRule::Blend, DisplayRule::Difference),
+                         ::testing::Values(DisplayRule::Switch, DisplayRule::Blend,
+                                           DisplayRule::Difference),
                          [](const auto& case_info) { return display_rule_name(case_info.param); });
 
 // Where an object moved in or out, the stale value is of another surface: those pixels show
@@ -156,7 +158,8 @@ TEST(DisplayRules, PixelsWhoseSurfaceChangedShowTheirFreshEstimateAtOnce) {
   size_t resurfaced = 0, blended = 0;
   for (size_t p = 0; p < after_ids.size(); ++p) {
     bool equal = true;
-    for (size_t c = p * 3; c < p * 3 + 3; ++c) equal = equal && std::abs(shown.rgb[c] - fresh.rgb[c]) <= 1e-6f * fresh.rgb[c];
+    for (size_t c = p * 3; c < p * 3 + 3; ++c)
+      equal = equal && std::abs(shown.rgb[c] - fresh.rgb[c]) <= 1e-6f * fresh.rgb[c];
     if (after_ids[p] != before_ids[p]) {
       ++resurfaced;
       EXPECT_TRUE(equal) << "pixel " << p;
@@ -209,7 +212,8 @@ TEST(DisplayRules, BlendWeightsAreContinuousAcrossTileEdges) {
   within /= double(within_pairs);
   across /= double(across_pairs);
   EXPECT_GT(within, 1e-3) << "a weight per pixel, not per tile";
-  EXPECT_LT(across, 1.5 * within) << "mean weight step across tile edges " << across << ", within tiles " << within;
+  EXPECT_LT(across, 1.5 * within) << "mean weight step across tile edges " << across
+                                  << ", within tiles " << within;
 }
 
 TEST(DisplayRules, ImmediateShowsEveryReRenderedPixel) {

@@ -46,7 +46,8 @@ TEST(EditLead, AMovedObjectsPixelsRunAheadThenEveryPixelEndsEven) {
   const std::vector<uint32_t> now = renderer.gbuffer_instances();
   const uint32_t block = instance_of(scene, "tall_block");
 
-  for (int step = 0; step < 1000 && !scheduler.lead_pass_pending() && scheduler.work_since_edit() < first; ++step)
+  for (int step = 0;
+       step < 1000 && !scheduler.lead_pass_pending() && scheduler.work_since_edit() < first; ++step)
     scheduler.step();
   ASSERT_TRUE(scheduler.lead_pass_pending()) << "the lead comes within the first round";
   while (scheduler.lead_pass_pending()) scheduler.step();
@@ -55,10 +56,12 @@ TEST(EditLead, AMovedObjectsPixelsRunAheadThenEveryPixelEndsEven) {
   for (size_t p = 0; p < counts.size(); ++p) {
     const bool moved = now[p] == block || now[p] != before[p];
     if (moved) {
-      EXPECT_EQ(counts[p], first + lead) << "pixel " << p << " shows the moved block or a surface it uncovered";
+      EXPECT_EQ(counts[p], first + lead)
+          << "pixel " << p << " shows the moved block or a surface it uncovered";
       ++leading;
     } else {
-      EXPECT_TRUE(counts[p] <= first || counts[p] == prior) << "pixel " << p << " waits for the round: " << counts[p];
+      EXPECT_TRUE(counts[p] <= first || counts[p] == prior)
+          << "pixel " << p << " waits for the round: " << counts[p];
       behind += counts[p] == prior;
     }
   }
@@ -71,7 +74,8 @@ TEST(EditLead, AMovedObjectsPixelsRunAheadThenEveryPixelEndsEven) {
       ASSERT_LE(count, spp) << "no pixel passes the converged count";
   }
   const std::vector<uint32_t> final_counts = renderer.sample_counts();
-  EXPECT_TRUE(std::all_of(final_counts.begin(), final_counts.end(), [&](uint32_t c) { return c == spp; }));
+  EXPECT_TRUE(
+      std::all_of(final_counts.begin(), final_counts.end(), [&](uint32_t c) { return c == spp; }));
   EXPECT_EQ(scheduler.displayed_image().rgb, test::full_frame_display(scene, s, spp).rgb);
 }
 

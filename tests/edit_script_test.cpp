@@ -35,7 +35,8 @@ void expect_input_error(const std::string& json, const std::string& needle) {
 
 TEST(EditScript, ShippedScriptsParseAndApply) {
   for (const char* name : {"cornell_box", "cornell_sphere"}) {
-    Scene scene = load_scene(test::asset(std::string(name) + (std::string(name) == "cornell_box" ? ".gltf" : ".glb")));
+    Scene scene = load_scene(
+        test::asset(std::string(name) + (std::string(name) == "cornell_box" ? ".gltf" : ".glb")));
     const auto edits = load_edit_script(test::asset(std::string(name) + ".edits.json"));
     ASSERT_FALSE(edits.empty());
     for (const Edit& edit : edits) EXPECT_NO_THROW(apply_edit(scene, edit)) << describe(edit);
@@ -47,20 +48,32 @@ TEST(EditScript, BadScriptsNameTheProblem) {
   expect_input_error("{\"edits\": 3}", "array");
   expect_input_error(R"({"edits": [{"op": "paint"}]})", "unknown op");
   expect_input_error(R"({"edits": [{"op": "transform", "node": "a"}]})", "translate");
-  expect_input_error(R"({"edits": [{"op": "transform", "node": "a", "translate": [1, 2]}]})", "3 numbers");
-  expect_input_error(R"({"edits": [{"op": "transform", "node": "a", "translate": [0,0,0], "scale": 2}]})", "scale");
-  expect_input_error(R"({"edits": [{"op": "material", "material": "red", "set": {"colour": [1,0,0]}}]})", "colour");
-  expect_input_error(R"({"edits": [{"op": "material", "material": "red", "set": {"base_color": [2,0,0]}}]})", "outside");
-  expect_input_error(R"({"edits": [{"op": "emission", "material": "light", "set": {"base_color": [1,1,1]}}]})", "emission");
-  expect_input_error(R"({"edits": [{"op": "light", "node": "lamp", "set": {"watts": 3}}]})", "watts");
-  expect_input_error(R"({"edits": [{"op": "visibility", "node": "a", "visible": "no"}]})", "boolean");
+  expect_input_error(R"({"edits": [{"op": "transform", "node": "a", "translate": [1, 2]}]})",
+                     "3 numbers");
+  expect_input_error(
+      R"({"edits": [{"op": "transform", "node": "a", "translate": [0,0,0], "scale": 2}]})",
+      "scale");
+  expect_input_error(
+      R"({"edits": [{"op": "material", "material": "red", "set": {"colour": [1,0,0]}}]})",
+      "colour");
+  expect_input_error(
+      R"({"edits": [{"op": "material", "material": "red", "set": {"base_color": [2,0,0]}}]})",
+      "outside");
+  expect_input_error(
+      R"({"edits": [{"op": "emission", "material": "light", "set": {"base_color": [1,1,1]}}]})",
+      "emission");
+  expect_input_error(R"({"edits": [{"op": "light", "node": "lamp", "set": {"watts": 3}}]})",
+                     "watts");
+  expect_input_error(R"({"edits": [{"op": "visibility", "node": "a", "visible": "no"}]})",
+                     "boolean");
 }
 
 TEST(EditScript, UnknownNamesAreErrorsNamingThem) {
   Scene scene = cornell();
-  for (const char* json : {R"({"edits": [{"op": "transform", "node": "teapot", "translate": [0,0,0]}]})",
-                           R"({"edits": [{"op": "material", "material": "teapot", "set": {"base_color": [1,1,1]}}]})",
-                           R"({"edits": [{"op": "light", "node": "teapot", "set": {"intensity": 1}}]})"}) {
+  for (const char* json :
+       {R"({"edits": [{"op": "transform", "node": "teapot", "translate": [0,0,0]}]})",
+        R"({"edits": [{"op": "material", "material": "teapot", "set": {"base_color": [1,1,1]}}]})",
+        R"({"edits": [{"op": "light", "node": "teapot", "set": {"intensity": 1}}]})"}) {
     const auto edits = parse_edit_script(json, "edits.json");
     try {
       apply_edit(scene, edits[0]);
@@ -79,7 +92,11 @@ TEST(Edits, TransformAddsToTheLocalTranslation) {
     return size_t(0);
   }();
   const glm::vec3 start = glm::vec3(scene.nodes[node].local[3]);
-  apply_edit(scene, parse_edit_script(R"({"edits": [{"op": "transform", "node": "tall_block", "translate": [0.06, 0, -0.08]}]})", "e")[0]);
+  apply_edit(
+      scene,
+      parse_edit_script(
+          R"({"edits": [{"op": "transform", "node": "tall_block", "translate": [0.06, 0, -0.08]}]})",
+          "e")[0]);
   EXPECT_EQ(glm::vec3(scene.nodes[node].local[3]), start + glm::vec3(0.06f, 0.0f, -0.08f));
   // "#index" names nodes by position.
   apply_edit(scene, TransformEdit{"#" + std::to_string(node), glm::vec3(1, 0, 0), std::nullopt});
@@ -258,8 +275,10 @@ TEST(EditScript, EnvironmentSourceAndSun) {
   EXPECT_EQ(describe(edits[0]), "environment sky");
   EXPECT_EQ(std::get<EnvironmentEdit>(edits[1]).sun_azimuth_degrees, -45.0f);
   EXPECT_EQ(describe(edits[1]), "environment sun");
-  // A file is relative to the script's folder (confinement: EnvironmentFilesStayInTheScriptsFolder).
-  EXPECT_EQ(std::get<EnvironmentEdit>(edits[2]).source, std::filesystem::path("/scripts/maps/room.hdr"));
+  // A file is relative to the script's folder (confinement:
+  // EnvironmentFilesStayInTheScriptsFolder).
+  EXPECT_EQ(std::get<EnvironmentEdit>(edits[2]).source,
+            std::filesystem::path("/scripts/maps/room.hdr"));
   EXPECT_EQ(std::get<EnvironmentEdit>(edits[3]).source, std::filesystem::path("none"));
 }
 
@@ -267,13 +286,16 @@ TEST(EditScript, BadEnvironmentSwitchesNameTheProblem) {
   expect_input_error(R"({"edits": [{"op": "environment"}]})", "source");
   expect_input_error(R"({"edits": [{"op": "environment", "source": ""}]})", "source");
   expect_input_error(R"({"edits": [{"op": "environment", "source": 3}]})", "source");
-  expect_input_error(R"({"edits": [{"op": "environment", "source": "studio", "set": {"turbidity": 3}}]})",
-                     "sky");
-  expect_input_error(R"({"edits": [{"op": "environment", "source": "sky", "set": {"turbidity": 11}}]})",
-                     "turbidity");
-  expect_input_error(R"({"edits": [{"op": "environment", "source": "sky", "set": {"sun_elevation": 95}}]})",
-                     "sun_elevation");
-  expect_input_error(R"({"edits": [{"op": "environment", "source": "sky", "set": {"sun": 9}}]})", "sun");
+  expect_input_error(
+      R"({"edits": [{"op": "environment", "source": "studio", "set": {"turbidity": 3}}]})", "sky");
+  expect_input_error(
+      R"({"edits": [{"op": "environment", "source": "sky", "set": {"turbidity": 11}}]})",
+      "turbidity");
+  expect_input_error(
+      R"({"edits": [{"op": "environment", "source": "sky", "set": {"sun_elevation": 95}}]})",
+      "sun_elevation");
+  expect_input_error(R"({"edits": [{"op": "environment", "source": "sky", "set": {"sun": 9}}]})",
+                     "sun");
 }
 
 // Switching what lights the scene: the new map, how bright and turned carries over, the diff
@@ -285,7 +307,8 @@ TEST(Edits, EnvironmentSwitchAndItsUndo) {
   EXPECT_FALSE(diff_scenes(studio, scene).environment_map);  // same map, brighter
   const Scene bright = scene;
 
-  const EnvironmentEdit to_sky{.source = std::filesystem::path("sky"), .sun_elevation_degrees = 20.0f};
+  const EnvironmentEdit to_sky{.source = std::filesystem::path("sky"),
+                               .sun_elevation_degrees = 20.0f};
   const Edit undo_sky = inverse_edit(scene, to_sky);
   apply_edit(scene, to_sky);
   ASSERT_TRUE(scene.environment);
@@ -333,7 +356,8 @@ TEST(Edits, EnvironmentEditsRefusedLeaveTheSceneAsItWas) {
   const EnvironmentEdit murky{.source = std::filesystem::path("sky"), .turbidity = 20.0f};
   EXPECT_THROW(inverse_edit(scene, murky), InputError);
   EXPECT_THROW(apply_edit(scene, murky), InputError);
-  EXPECT_THROW(apply_edit(scene, EnvironmentEdit{.source = test::temp_dir("env") / "missing.hdr"}), InputError);
+  EXPECT_THROW(apply_edit(scene, EnvironmentEdit{.source = test::temp_dir("env") / "missing.hdr"}),
+               InputError);
   EXPECT_TRUE(diff_scenes(before, scene).empty());
   EXPECT_EQ(scene.environment->texels, before.environment->texels);
   // Without an environment there is nothing to brighten, but one can be switched on.

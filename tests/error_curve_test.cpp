@@ -33,7 +33,8 @@ TEST(ErrorAuc, AStaleImageUntilTheHorizonScoresItsOwnError) {
 // A drag's summaries: the mean over a window of work (during the drag, the unit after it).
 TEST(ErrorMean, IsTheMeanOfTheStepFunctionOverAWindow) {
   const ErrorCurve curve = {point(0.0, 0.4), point(0.25, 0.2), point(0.75, 0.1)};
-  EXPECT_DOUBLE_EQ(error_mean(curve, Metric::RelMse, 0.0, 1.0), error_auc(curve, Metric::RelMse, 1.0));
+  EXPECT_DOUBLE_EQ(error_mean(curve, Metric::RelMse, 0.0, 1.0),
+                   error_auc(curve, Metric::RelMse, 1.0));
   EXPECT_DOUBLE_EQ(error_mean(curve, Metric::RelMse, 0.5, 1.0), (0.2 * 0.25 + 0.1 * 0.25) / 0.5);
   EXPECT_DOUBLE_EQ(error_mean(curve, Metric::RelMse, 1.0, 2.0), 0.1);
   EXPECT_THROW(error_mean(curve, Metric::RelMse, 0.5, 0.5), InternalError);

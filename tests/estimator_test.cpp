@@ -10,7 +10,8 @@
 namespace hipr {
 namespace {
 
-double render_mean(const Scene& scene, LightSampling mode, uint32_t size, uint32_t spp, uint32_t max_depth) {
+double render_mean(const Scene& scene, LightSampling mode, uint32_t size, uint32_t spp,
+                   uint32_t max_depth) {
   RenderSettings s;
   s.width = s.height = size;
   s.max_depth = max_depth;
@@ -22,7 +23,8 @@ double render_mean(const Scene& scene, LightSampling mode, uint32_t size, uint32
   return test::mean(renderer.image());
 }
 
-void expect_estimators_agree(const Scene& scene, uint32_t size, uint32_t spp, uint32_t max_depth, double tolerance) {
+void expect_estimators_agree(const Scene& scene, uint32_t size, uint32_t spp, uint32_t max_depth,
+                             double tolerance) {
   const double mis = render_mean(scene, LightSampling::Mis, size, spp, max_depth);
   const double bsdf = render_mean(scene, LightSampling::BsdfOnly, size, spp, max_depth);
   const double light = render_mean(scene, LightSampling::LightOnly, size, spp, max_depth);

@@ -26,22 +26,28 @@ RenderSettings settings() { return test::render_settings(64, 48, 8, 6, 21); }
 Scene cornell() { return load_scene(test::asset("cornell_box.gltf")); }
 
 // A full-frame render of `scene`, as a display shows it.
-ImageRGB fresh(const Scene& scene, uint32_t spp) { return test::full_frame_display(scene, settings(), spp); }
+ImageRGB fresh(const Scene& scene, uint32_t spp) {
+  return test::full_frame_display(scene, settings(), spp);
+}
 
 void run_to_convergence(Scheduler& scheduler, uint32_t spp) {
   for (int s = 0; s < 10000 && scheduler.work_since_edit() < double(spp); ++s) scheduler.step();
 }
 
 // The tiles holding at least one pixel of `pixels` (row-major, one per pixel).
-std::set<uint32_t> tiles_of(const std::vector<uint8_t>& pixels, const RenderSettings& s, uint32_t tiles_x) {
+std::set<uint32_t> tiles_of(const std::vector<uint8_t>& pixels, const RenderSettings& s,
+                            uint32_t tiles_x) {
   std::set<uint32_t> tiles;
   for (uint32_t y = 0; y < s.height; ++y)
     for (uint32_t x = 0; x < s.width; ++x)
-      if (pixels[size_t(y) * s.width + x]) tiles.insert((y / s.tile_size) * tiles_x + x / s.tile_size);
+      if (pixels[size_t(y) * s.width + x])
+        tiles.insert((y / s.tile_size) * tiles_x + x / s.tile_size);
   return tiles;
 }
 
-Focus focus_on(const Scene& scene, const char* node) { return {{focus_on_node(scene, find_node(scene, node))}}; }
+Focus focus_on(const Scene& scene, const char* node) {
+  return {{focus_on_node(scene, find_node(scene, node))}};
+}
 
 // The focus's tiles (where its object is seen) lead the schedule.
 void expect_leading(const std::vector<uint32_t>& order, const std::set<uint32_t>& tiles) {
@@ -67,7 +73,8 @@ TEST(Focus, NodeSeedsHoldTheSubtreesInstances) {
 TEST(Focus, ScriptOpsAddSeedsUntilCleared) {
   const Scene scene = cornell();
   Focus focus = with_focus_edit(scene, {}, FocusEdit{.node = "tall_block"});
-  focus = with_focus_edit(scene, focus, FocusEdit{.pixel = glm::vec2(10.0f, 20.0f), .radius = 5.0f, .weight = 3.0f});
+  focus = with_focus_edit(
+      scene, focus, FocusEdit{.pixel = glm::vec2(10.0f, 20.0f), .radius = 5.0f, .weight = 3.0f});
   ASSERT_EQ(focus.seeds.size(), 2u);
   EXPECT_EQ(focus.seeds[1].weight, 3.0f);
   EXPECT_EQ(describe(scene, focus), "tall_block; disc (10, 20) r 5 x3");
@@ -84,8 +91,8 @@ TEST(Focus, ColdStartRendersTheFocusFirstAndEndsOnTheFullFrameImage) {
   Scheduler scheduler(renderer, Policy::Hipr, 4);
   const Focus focus = focus_on(scene, "tall_block");
   scheduler.set_focus(focus);
-  const std::set<uint32_t> focus_tiles = tiles_of(focus_pixels(focus, renderer.gbuffer_instances(), s.width, s.height),
-                                                  s, renderer.tiles_x());
+  const std::set<uint32_t> focus_tiles = tiles_of(
+      focus_pixels(focus, renderer.gbuffer_instances(), s.width, s.height), s, renderer.tiles_x());
   const std::vector<uint32_t> flags = renderer.tile_flags();
   std::set<uint32_t> active;
   for (uint32_t t = 0; t < flags.size(); ++t)
@@ -111,7 +118,8 @@ TEST(Focus, ColdStartRendersTheFocusFirstAndEndsOnTheFullFrameImage) {
   EXPECT_TRUE(seen_undiscovered);
   // Nothing else changed: with the same samples the image is the full-frame render's.
   const uint32_t spp = 3;
-  for (int step = 0; step < 1000 && scheduler.work_since_edit() < double(spp); ++step) scheduler.step();
+  for (int step = 0; step < 1000 && scheduler.work_since_edit() < double(spp); ++step)
+    scheduler.step();
   renderer.resolve_display_all(DisplayRule::Immediate);
   const std::vector<uint32_t> counts = renderer.sample_counts();
   EXPECT_TRUE(std::all_of(counts.begin(), counts.end(), [&](uint32_t c) { return c == spp; }));
@@ -129,7 +137,8 @@ TEST(Focus, ARefocusMidwayRestartsNothingAndKeepsCountsEven) {
   scheduler.step();  // part of a third pass
   scheduler.step();
   scheduler.set_focus(focus_on(scene, "short_block"));
-  scheduler.set_focus({{FocusSeed{.pixel = glm::vec2(40.0f, 30.0f), .radius = 6.0f}}});  // again, midway
+  scheduler.set_focus(
+      {{FocusSeed{.pixel = glm::vec2(40.0f, 30.0f), .radius = 6.0f}}});  // again, midway
   for (int step = 0; step < 200; ++step) {
     scheduler.step();
     const std::vector<uint32_t> counts = renderer.sample_counts();
@@ -160,11 +169,13 @@ TEST(Focus, AfterAnEditTheEditsTilesComeFirstThenTheFocus) {
   const ChangeSet red = diff_scenes(before, scene);
   scheduler.on_edit(scene, red);
   const std::vector<uint32_t> ids = renderer.gbuffer_instances();
-  const std::set<uint32_t> focus_tiles = tiles_of(focus_pixels(focus, ids, s.width, s.height), s, renderer.tiles_x());
+  const std::set<uint32_t> focus_tiles =
+      tiles_of(focus_pixels(focus, ids, s.width, s.height), s, renderer.tiles_x());
   const std::vector<uint32_t> flags = renderer.tile_flags();
   const std::vector<uint32_t> order = renderer.schedule();
   const Focus red_wall{{FocusSeed{.instances = red.instances}}};
-  const std::set<uint32_t> wall_tiles = tiles_of(focus_pixels(red_wall, ids, s.width, s.height), s, renderer.tiles_x());
+  const std::set<uint32_t> wall_tiles =
+      tiles_of(focus_pixels(red_wall, ids, s.width, s.height), s, renderer.tiles_x());
   expect_leading(order, wall_tiles);
   // Then the focus's tiles not already among the wall's, before any other tile.
   std::set<uint32_t> focus_only;
@@ -182,7 +193,8 @@ TEST(Focus, AfterAnEditTheEditsTilesComeFirstThenTheFocus) {
   apply_edit(scene, TransformEdit{"short_block", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt});
   scheduler.on_edit(scene, diff_scenes(moved_from, scene));
   scheduler.step();
-  scheduler.set_focus({{FocusSeed{.pixel = glm::vec2(10.0f, 40.0f), .radius = 9.0f, .weight = 2.0f}}});
+  scheduler.set_focus(
+      {{FocusSeed{.pixel = glm::vec2(10.0f, 40.0f), .radius = 9.0f, .weight = 2.0f}}});
   scheduler.step();
   scheduler.set_focus({});
   run_to_convergence(scheduler, spp);
@@ -204,7 +216,8 @@ TEST(Focus, OrdersACameraEditsTilesFromTheFocus) {
   apply_edit(scene, CameraEdit{glm::vec3(0.02f, 0.0f, 0.0f), std::nullopt});
   scheduler.on_edit(scene, diff_scenes(before, scene));
   const std::set<uint32_t> disc_tiles =
-      tiles_of(focus_pixels({{disc}}, renderer.gbuffer_instances(), s.width, s.height), s, renderer.tiles_x());
+      tiles_of(focus_pixels({{disc}}, renderer.gbuffer_instances(), s.width, s.height), s,
+               renderer.tiles_x());
   const std::vector<uint32_t> order = renderer.schedule();
   expect_leading(order, disc_tiles);
   // The other tiles go outward from the disc: distance never decreases along the schedule.
@@ -237,7 +250,8 @@ TEST(Focus, TheFocusRunsAheadButNeverPastTheConvergedCount) {
     scheduler.set_focus(focus_on(scene, "tall_block"));
     while (scheduler.leading_steps_pending()) scheduler.step();
     std::vector<uint32_t> counts = renderer.sample_counts();
-    EXPECT_EQ(*std::max_element(counts.begin(), counts.end()), 1u) << "first one visit, where the focus is";
+    EXPECT_EQ(*std::max_element(counts.begin(), counts.end()), 1u)
+        << "first one visit, where the focus is";
     EXPECT_TRUE(scheduler.lead_pass_pending());
     while (scheduler.lead_pass_pending()) scheduler.step();
     const std::vector<uint32_t> flags = renderer.tile_flags();
@@ -258,10 +272,12 @@ TEST(Focus, TheFocusRunsAheadButNeverPastTheConvergedCount) {
     for (int step = 0; step < 1000 && scheduler.work_since_edit() < double(spp); ++step) {
       scheduler.step();
       const std::vector<uint32_t> now = renderer.sample_counts();
-      ASSERT_LE(*std::max_element(now.begin(), now.end()), spp) << "no pixel passes the converged count";
+      ASSERT_LE(*std::max_element(now.begin(), now.end()), spp)
+          << "no pixel passes the converged count";
     }
     const std::vector<uint32_t> final_counts = renderer.sample_counts();
-    EXPECT_TRUE(std::all_of(final_counts.begin(), final_counts.end(), [&](uint32_t c) { return c == spp; }));
+    EXPECT_TRUE(std::all_of(final_counts.begin(), final_counts.end(),
+                            [&](uint32_t c) { return c == spp; }));
     renderer.resolve_display_all(DisplayRule::Immediate);
     EXPECT_EQ(renderer.displayed_image().rgb, fresh(scene, spp).rgb) << spp;
   }

@@ -7,9 +7,9 @@
 
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
-#include "test_support.h"
 #include "image/image_io.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -45,7 +45,8 @@ class FurnaceAtScale : public ::testing::TestWithParam<float> {};
 TEST_P(FurnaceAtScale, NoEnergyLostToSelfIntersection) {
   const float scale = GetParam();
   // Far from the origin as well, where float spacing is coarse.
-  const Scene scene = test::make_furnace_scene(scale, glm::vec3(3.0f * scale, -2.0f * scale, scale), 1.0f, 1.0f);
+  const Scene scene =
+      test::make_furnace_scene(scale, glm::vec3(3.0f * scale, -2.0f * scale, scale), 1.0f, 1.0f);
   expect_white(render(scene, 32), 0.015, 0.2);
 }
 

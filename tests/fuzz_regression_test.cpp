@@ -35,19 +35,23 @@ void replay_all(const char* target, Run run) {
 
 TEST(FuzzRegressions, GltfInputs) {
   const fs::path folder = test::temp_dir("fuzz_gltf");
-  replay_all("gltf", [&](const std::vector<uint8_t>& d) { fuzz::load_gltf_bytes(d.data(), d.size(), folder); });
+  replay_all("gltf", [&](const std::vector<uint8_t>& d) {
+    fuzz::load_gltf_bytes(d.data(), d.size(), folder);
+  });
 }
 
 TEST(FuzzRegressions, EditScriptInputs) {
   replay_all("edit_script", [](const std::vector<uint8_t>& d) {
-    fuzz::apply_edit_script_bytes(d.data(), d.size(), test::asset("cornell_box.gltf").parent_path());
+    fuzz::apply_edit_script_bytes(d.data(), d.size(),
+                                  test::asset("cornell_box.gltf").parent_path());
   });
 }
 
 TEST(FuzzRegressions, EnvironmentInputs) {
   const fs::path folder = test::temp_dir("fuzz_env");
-  replay_all("environment",
-             [&](const std::vector<uint8_t>& d) { fuzz::load_environment_bytes(d.data(), d.size(), folder); });
+  replay_all("environment", [&](const std::vector<uint8_t>& d) {
+    fuzz::load_environment_bytes(d.data(), d.size(), folder);
+  });
 }
 
 }  // namespace

@@ -38,14 +38,16 @@ Scene cornell_with_lamp() {
 
 size_t instances_of(const Scene& scene, const std::string& name) {
   size_t count = 0;
-  for (const Instance& instance : scene.instances()) count += scene.nodes[instance.node].name == name ? 1 : 0;
+  for (const Instance& instance : scene.instances())
+    count += scene.nodes[instance.node].name == name ? 1 : 0;
   return count;
 }
 
 size_t camera_nodes(const Scene& scene) {
   const std::vector<bool> in_scene = scene.reachable_nodes();
   size_t count = 0;
-  for (size_t n = 0; n < scene.nodes.size(); ++n) count += in_scene[n] && scene.nodes[n].camera >= 0 ? 1 : 0;
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    count += in_scene[n] && scene.nodes[n].camera >= 0 ? 1 : 0;
   return count;
 }
 
@@ -82,12 +84,14 @@ TEST(GeometryEdits, DuplicateCopiesTheNodeBesideItAtTheOffset) {
   const glm::mat4 original = scene.world_transform(uint32_t(find_node(scene, "short_block")));
   apply_edit(scene, DuplicateEdit{"short_block", "short_block_2", glm::vec3(0.1f, 0.0f, -0.2f)});
   const size_t copy = find_node(scene, "short_block_2");
-  EXPECT_EQ(scene.nodes[copy].mesh, scene.nodes[find_node(scene, "short_block")].mesh) << "copies share meshes";
+  EXPECT_EQ(scene.nodes[copy].mesh, scene.nodes[find_node(scene, "short_block")].mesh)
+      << "copies share meshes";
   EXPECT_EQ(scene.meshes.size(), meshes);
   const glm::mat4 moved = scene.world_transform(uint32_t(copy));
   EXPECT_EQ(glm::vec3(moved[3]), glm::vec3(original[3]) + glm::vec3(0.1f, 0.0f, -0.2f));
   EXPECT_EQ(instances_of(scene, "short_block_2"), 1u);
-  EXPECT_THROW(apply_edit(scene, DuplicateEdit{"short_block", "short_block_2", {}}), InputError) << "name taken";
+  EXPECT_THROW(apply_edit(scene, DuplicateEdit{"short_block", "short_block_2", {}}), InputError)
+      << "name taken";
   EXPECT_THROW(apply_edit(scene, DuplicateEdit{"nothing", "x", {}}), InputError);
   // Without a name: "<node>.1", then ".2".
   apply_edit(scene, DuplicateEdit{"tall_block", "", {}});
@@ -114,14 +118,18 @@ TEST(GeometryEdits, DeleteRemovesTheSubtreeAndTheUndoPutsItBack) {
   EXPECT_EQ(scene.instances().size(), instances - 1);
   EXPECT_EQ(instances_of(scene, "tall_block"), 0u);
   EXPECT_THROW(find_node(scene, "tall_block"), InputError) << "a deleted node cannot be edited";
-  EXPECT_THROW(apply_edit(scene, TransformEdit{"tall_block", glm::vec3(1.0f), std::nullopt}), InputError);
+  EXPECT_THROW(apply_edit(scene, TransformEdit{"tall_block", glm::vec3(1.0f), std::nullopt}),
+               InputError);
 }
 
 TEST(GeometryEdits, DuplicateAndImportUndoExactly) {
   Scene scene = cornell();
   expect_undo_restores(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.1f)});
-  expect_undo_restores(scene, ImportEdit{test::asset("cornell_sphere.glb"), "sphere", glm::vec3(0.0f, 0.2f, 0.0f)});
-  expect_undo_restores(scene, DeformEdit{"short_block", glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 2.0f, 1.0f)), nullptr});
+  expect_undo_restores(
+      scene, ImportEdit{test::asset("cornell_sphere.glb"), "sphere", glm::vec3(0.0f, 0.2f, 0.0f)});
+  expect_undo_restores(
+      scene,
+      DeformEdit{"short_block", glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 2.0f, 1.0f)), nullptr});
 }
 
 TEST(GeometryEdits, AThousandDuplicateDeleteCyclesLeaveTheSceneAsItWas) {
@@ -139,19 +147,22 @@ TEST(GeometryEdits, AThousandDuplicateDeleteCyclesLeaveTheSceneAsItWas) {
 TEST(GeometryEdits, ImportAppendsTheFilesSceneUnderANewNode) {
   Scene scene = cornell();
   const Scene other = load_scene(test::asset("cornell_sphere.glb"));
-  const size_t meshes = scene.meshes.size(), materials = scene.materials.size(), instances = scene.instances().size();
+  const size_t meshes = scene.meshes.size(), materials = scene.materials.size(),
+               instances = scene.instances().size();
   apply_edit(scene, ImportEdit{test::asset("cornell_sphere.glb"), "", glm::vec3(0.0f, 1.0f, 0.0f)});
   EXPECT_EQ(scene.meshes.size(), meshes + other.meshes.size());
   EXPECT_EQ(scene.materials.size(), materials + other.materials.size());
   EXPECT_EQ(scene.instances().size(), instances + other.instances().size());
-  EXPECT_NE(scene.content_hash, cornell().content_hash) << "cached references must tell the scenes apart";
+  EXPECT_NE(scene.content_hash, cornell().content_hash)
+      << "cached references must tell the scenes apart";
   const size_t root = find_node(scene, "cornell_sphere");  // the file's stem
   EXPECT_EQ(scene.nodes[root].parent, -1);
   // Every imported instance sits one metre up, its primitives on the imported materials.
   const std::vector<Instance> all = scene.instances();
   for (size_t i = instances; i < all.size(); ++i) {
     EXPECT_GE(all[i].mesh, meshes);
-    for (const MeshPrimitive& p : scene.meshes[all[i].mesh].primitives) EXPECT_GE(p.material, materials);
+    for (const MeshPrimitive& p : scene.meshes[all[i].mesh].primitives)
+      EXPECT_GE(p.material, materials);
   }
   EXPECT_EQ(camera_nodes(scene), 1u) << "the file's cameras stay out";
 }
@@ -173,22 +184,29 @@ TEST(GeometryEdits, DeformMovesTheVerticesOfEveryUserOfTheMesh) {
   const glm::vec3 first = scene.meshes[mesh].primitives[0].positions[0];
   const uint64_t revision = scene.meshes[mesh].revision;
   apply_edit(scene, DuplicateEdit{"short_block", "twin", glm::vec3(0.3f, 0.0f, 0.0f)});
-  apply_edit(scene, DeformEdit{"short_block", glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 2.0f, 1.0f)), nullptr});
+  apply_edit(scene, DeformEdit{"short_block",
+                               glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 2.0f, 1.0f)), nullptr});
   EXPECT_EQ(scene.meshes[mesh].primitives[0].positions[0], first * glm::vec3(1.0f, 2.0f, 1.0f));
   EXPECT_NE(scene.meshes[mesh].revision, revision);
-  EXPECT_EQ(scene.nodes[find_node(scene, "twin")].mesh, int(mesh)) << "the twin shares the deformed mesh";
+  EXPECT_EQ(scene.nodes[find_node(scene, "twin")].mesh, int(mesh))
+      << "the twin shares the deformed mesh";
   // A mirror keeps triangles facing their normals: the winding turns with it.
   const std::vector<uint32_t> indices = scene.meshes[mesh].primitives[0].indices;
-  apply_edit(scene, DeformEdit{"short_block", glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)), nullptr});
+  apply_edit(scene, DeformEdit{"short_block",
+                               glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)), nullptr});
   EXPECT_EQ(scene.meshes[mesh].primitives[0].indices[1], indices[2]);
-  EXPECT_THROW(apply_edit(scene, DeformEdit{"short_block", glm::mat4(0.0f), nullptr}), InputError) << "singular";
-  EXPECT_THROW(apply_edit(scene, DeformEdit{"camera", glm::mat4(1.0f), nullptr}), InputError) << "no mesh";
+  EXPECT_THROW(apply_edit(scene, DeformEdit{"short_block", glm::mat4(0.0f), nullptr}), InputError)
+      << "singular";
+  EXPECT_THROW(apply_edit(scene, DeformEdit{"camera", glm::mat4(1.0f), nullptr}), InputError)
+      << "no mesh";
 }
 
 TEST(GeometryEdits, TheDiffPairsInstancesByNode) {
   Scene scene = cornell();
-  ChangeSet changes = test::edit_scene(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.1f, 0.0f, 0.0f)});
-  ASSERT_EQ(changes.instances.size(), 1u) << "only the copy is new; the instances after it did not change";
+  ChangeSet changes =
+      test::edit_scene(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.1f, 0.0f, 0.0f)});
+  ASSERT_EQ(changes.instances.size(), 1u)
+      << "only the copy is new; the instances after it did not change";
   EXPECT_EQ(scene.nodes[scene.instances()[changes.instances[0]].node].name, "copy");
   EXPECT_TRUE(changes.transforms);
   EXPECT_FALSE(changes.geometry);
@@ -199,16 +217,19 @@ TEST(GeometryEdits, TheDiffPairsInstancesByNode) {
   EXPECT_EQ(changes.departed, std::vector<uint32_t>{uint32_t(tall)});
 
   changes = test::edit_scene(
-      scene, DeformEdit{"short_block", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.1f, 0.0f)), nullptr});
+      scene, DeformEdit{"short_block", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.1f, 0.0f)),
+                        nullptr});
   EXPECT_TRUE(changes.geometry);
   EXPECT_EQ(changes.instances.size(), 2u) << "the block and its copy share the mesh";
 
   changes = test::edit_scene(scene, ImportEdit{test::asset("cornell_sphere.glb"), "sphere", {}});
   EXPECT_TRUE(changes.geometry);
   EXPECT_TRUE(changes.materials);
-  EXPECT_EQ(changes.instances.size(), load_scene(test::asset("cornell_sphere.glb")).instances().size());
+  EXPECT_EQ(changes.instances.size(),
+            load_scene(test::asset("cornell_sphere.glb")).instances().size());
   EXPECT_TRUE(diff_scenes(scene, scene).empty());
-  EXPECT_TRUE(diff_scenes(cornell(), cornell()).empty()) << "two loads of one file are the same scene";
+  EXPECT_TRUE(diff_scenes(cornell(), cornell()).empty())
+      << "two loads of one file are the same scene";
 }
 
 // The same objects (by node), placed alike, with the same triangles on the same materials, and
@@ -228,7 +249,8 @@ void expect_same_content(const Scene& a, const Scene& b, const std::string& what
       EXPECT_EQ(ma.primitives[p].indices, mb.primitives[p].indices) << what;
       const MaterialParameters& pa = a.materials[ma.primitives[p].material].params;
       const MaterialParameters& pb = b.materials[mb.primitives[p].material].params;
-      EXPECT_EQ(std::memcmp(&pa, &pb, sizeof pa), 0) << what << ": material of " << a.nodes[ia[i].node].name;
+      EXPECT_EQ(std::memcmp(&pa, &pb, sizeof pa), 0)
+          << what << ": material of " << a.nodes[ia[i].node].name;
     }
   }
   ASSERT_EQ(a.light_nodes(), b.light_nodes()) << what;
@@ -242,8 +264,10 @@ void expect_same_content(const Scene& a, const Scene& b, const std::string& what
 // scene, in .gltf and .glb (textured imports: geometry_update_test.cpp renders them).
 TEST(GeometryEdits, SavedImportsLoadAsTheEditedScene) {
   Scene scene = cornell();
-  apply_edit(scene, ImportEdit{test::asset("cornell_sphere.glb"), "sphere", glm::vec3(0.3f, 0.1f, 0.0f)});
-  apply_edit(scene, MaterialEdit{"#" + std::to_string(scene.materials.size() - 1), {{"base_color", {0.2f, 0.3f, 0.4f}}}});
+  apply_edit(scene,
+             ImportEdit{test::asset("cornell_sphere.glb"), "sphere", glm::vec3(0.3f, 0.1f, 0.0f)});
+  apply_edit(scene, MaterialEdit{"#" + std::to_string(scene.materials.size() - 1),
+                                 {{"base_color", {0.2f, 0.3f, 0.4f}}}});
   const std::filesystem::path dir = test::temp_dir("saved_import");
   for (const char* name : {"imported.gltf", "imported.glb"}) {
     save_scene(scene, dir / name);
@@ -259,7 +283,8 @@ TEST(GeometryEdits, ScriptsParseTheFourOps) {
     {"op": "delete", "node": "tall_block"},
     {"op": "import", "file": "props/chair.glb", "as": "chair", "translate": [0, 0, 1]},
     {"op": "deform", "node": "short_block", "matrix": [1,0,0,0, 0,2,0,0, 0,0,1,0, 0,0,0,1]}
-  ]})", "s.json", dir);
+  ]})",
+                                       "s.json", dir);
   ASSERT_EQ(edits.size(), 4u);
   EXPECT_EQ(std::get<DuplicateEdit>(edits[0]).as, "short_block_2");
   EXPECT_EQ(std::get<DeleteEdit>(edits[1]).node, "tall_block");
@@ -267,7 +292,8 @@ TEST(GeometryEdits, ScriptsParseTheFourOps) {
   EXPECT_EQ(std::get<DeformEdit>(edits[3]).matrix[1][1], 2.0f);
 
   const auto refused = [&](const std::string& edit) {
-    EXPECT_THROW(parse_edit_script(R"({"edits": [)" + edit + "]}", "s.json", dir), InputError) << edit;
+    EXPECT_THROW(parse_edit_script(R"({"edits": [)" + edit + "]}", "s.json", dir), InputError)
+        << edit;
   };
   refused(R"({"op": "import", "file": "../outside.glb"})");
   refused(R"({"op": "import", "file": "props/../../outside.glb"})");
@@ -288,10 +314,13 @@ TEST(GeometryEdits, ScriptsParseTheFourOps) {
 TEST(EditScript, EnvironmentFilesStayInTheScriptsFolder) {
   const std::filesystem::path dir = test::temp_dir("environment_script");
   const auto parse = [&](const std::string& source) {
-    return parse_edit_script(R"({"edits": [{"op": "environment", "source": ")" + source + R"("}]})", "s.json", dir);
+    return parse_edit_script(R"({"edits": [{"op": "environment", "source": ")" + source + R"("}]})",
+                             "s.json", dir);
   };
-  for (const char* source : {"/etc/hostname", "../outside.hdr", "maps/../../outside.exr", "escape/hostname"}) {
-    if (std::string(source) == "escape/hostname") std::filesystem::create_symlink("/etc", dir / "escape");
+  for (const char* source :
+       {"/etc/hostname", "../outside.hdr", "maps/../../outside.exr", "escape/hostname"}) {
+    if (std::string(source) == "escape/hostname")
+      std::filesystem::create_symlink("/etc", dir / "escape");
     try {
       parse(source);
       ADD_FAILURE() << "accepted " << source;
@@ -299,7 +328,8 @@ TEST(EditScript, EnvironmentFilesStayInTheScriptsFolder) {
       EXPECT_NE(std::string(e.what()).find("script's folder"), std::string::npos) << e.what();
     }
   }
-  EXPECT_EQ(std::get<EnvironmentEdit>(parse("maps/room.hdr").front()).source, dir / "maps/room.hdr");
+  EXPECT_EQ(std::get<EnvironmentEdit>(parse("maps/room.hdr").front()).source,
+            dir / "maps/room.hdr");
   for (const char* name : {"studio", "sky", "none"})
     EXPECT_EQ(std::get<EnvironmentEdit>(parse(name).front()).source, std::filesystem::path(name));
 }

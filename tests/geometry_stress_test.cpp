@@ -34,12 +34,12 @@ void add_quad(MeshPrimitive& p, glm::vec3 o, glm::vec3 u, glm::vec3 v) {
 void add_box(MeshPrimitive& p, glm::vec3 lo, glm::vec3 hi) {
   const glm::vec3 d = hi - lo;
   const glm::vec3 x(d.x, 0, 0), y(0, d.y, 0), z(0, 0, d.z);
-  add_quad(p, lo, z, x);           // bottom (-y)
-  add_quad(p, lo + y, x, z);       // top (+y)
-  add_quad(p, lo, y, z);           // -x
-  add_quad(p, lo + x, z, y);       // +x
-  add_quad(p, lo, x, y);           // -z
-  add_quad(p, lo + z, y, x);       // +z
+  add_quad(p, lo, z, x);      // bottom (-y)
+  add_quad(p, lo + y, x, z);  // top (+y)
+  add_quad(p, lo, y, z);      // -x
+  add_quad(p, lo + x, z, y);  // +x
+  add_quad(p, lo, x, y);      // -z
+  add_quad(p, lo + z, y, x);  // +z
 }
 
 Material material(const char* name, glm::vec3 color, float emission = 0.0f) {
@@ -55,7 +55,8 @@ Material material(const char* name, glm::vec3 color, float emission = 0.0f) {
 
 Scene stress_scene(float scale) {
   Scene scene;
-  scene.materials = {material("floor", glm::vec3(0.8f)), material("coincident", glm::vec3(0.8f, 0.1f, 0.1f)),
+  scene.materials = {material("floor", glm::vec3(0.8f)),
+                     material("coincident", glm::vec3(0.8f, 0.1f, 0.1f)),
                      material("hot", glm::vec3(0.0f), 1e6f), material("box", glm::vec3(0.5f))};
   scene.materials[1].params.base_metalness = 1.0f;
 
@@ -65,12 +66,17 @@ Scene stress_scene(float scale) {
   hot.material = 2;
   box.material = 3;
   add_quad(floor, glm::vec3(-2, 0, -2), glm::vec3(0, 0, 4), glm::vec3(4, 0, 0));
-  add_quad(coincident, glm::vec3(-1, 0, -1), glm::vec3(0, 0, 2), glm::vec3(2, 0, 0));  // in the floor's plane
-  add_triangle(hot, glm::vec3(0.3f, 0.5f, 0.0f), glm::vec3(0.3f, 0.5f, 0.0f), glm::vec3(0.3f, 0.5f, 0.0f));
-  add_triangle(hot, glm::vec3(-0.5f, 0.4f, 0.0f), glm::vec3(0.0f, 0.4f, 0.0f), glm::vec3(0.5f, 0.4f, 0.0f));
-  add_triangle(hot, glm::vec3(-1.0f, 0.6f, -0.5f), glm::vec3(1.0f, 0.6f, -0.5f), glm::vec3(0.0f, 0.6f + 1e-6f, -0.5f));
+  add_quad(coincident, glm::vec3(-1, 0, -1), glm::vec3(0, 0, 2),
+           glm::vec3(2, 0, 0));  // in the floor's plane
+  add_triangle(hot, glm::vec3(0.3f, 0.5f, 0.0f), glm::vec3(0.3f, 0.5f, 0.0f),
+               glm::vec3(0.3f, 0.5f, 0.0f));
+  add_triangle(hot, glm::vec3(-0.5f, 0.4f, 0.0f), glm::vec3(0.0f, 0.4f, 0.0f),
+               glm::vec3(0.5f, 0.4f, 0.0f));
+  add_triangle(hot, glm::vec3(-1.0f, 0.6f, -0.5f), glm::vec3(1.0f, 0.6f, -0.5f),
+               glm::vec3(0.0f, 0.6f + 1e-6f, -0.5f));
   add_box(box, glm::vec3(0.4f, 0.0f, 0.4f), glm::vec3(0.7f, 0.3f, 0.7f));
-  add_triangle(hot, glm::vec3(0.5f, 0.1f, 0.5f), glm::vec3(0.6f, 0.1f, 0.5f), glm::vec3(0.55f, 0.1f, 0.6f));  // sealed in
+  add_triangle(hot, glm::vec3(0.5f, 0.1f, 0.5f), glm::vec3(0.6f, 0.1f, 0.5f),
+               glm::vec3(0.55f, 0.1f, 0.6f));  // sealed in
   scene.meshes.push_back({"stress", {floor, coincident, hot, box}});
 
   PunctualLight sealed;
@@ -90,7 +96,8 @@ Scene stress_scene(float scale) {
   Node camera;
   camera.name = "camera";
   camera.camera = 0;
-  camera.local = world * glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.002f, 3.0f));  // skims the floor
+  camera.local =
+      world * glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.002f, 3.0f));  // skims the floor
   scene.nodes = {geometry, light, camera};
   scene.children = {{}, {}, {}};
   scene.root_nodes = {0, 1, 2};

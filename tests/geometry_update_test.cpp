@@ -19,8 +19,8 @@
 #include "hipr/scheduler.h"
 #include "image/error_metrics.h"
 #include "render/gpu_scene.h"
-#include "vk/buffer.h"
 #include "test_support.h"
+#include "vk/buffer.h"
 
 namespace hipr {
 namespace {
@@ -28,7 +28,9 @@ namespace {
 RenderSettings settings() { return test::render_settings(32, 32, 16, 6, 4); }
 
 // A renderer made for the scene, its samples checked (non-fatally) to be finite.
-ImageRGB fresh_render(const Scene& scene, uint32_t spp) { return test::render_finite(scene, settings(), spp); }
+ImageRGB fresh_render(const Scene& scene, uint32_t spp) {
+  return test::render_finite(scene, settings(), spp);
+}
 
 glm::mat4 stretch() { return glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 1.6f, 1.0f)); }
 glm::mat4 mirror() { return glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)); }
@@ -52,9 +54,11 @@ std::vector<OpCase> op_cases() {
       // A freed record range taken by a later instance of another size; an instance whose node
       // is gone and back.
       {"delete_then_duplicate",
-       {DeleteEdit{"short_block"}, DuplicateEdit{"tall_block", "copy", glm::vec3(0.2f, 0.0f, 0.0f)}}},
+       {DeleteEdit{"short_block"},
+        DuplicateEdit{"tall_block", "copy", glm::vec3(0.2f, 0.0f, 0.0f)}}},
       {"import_delete_import",
-       {ImportEdit{sphere, "a", {}}, DeleteEdit{"a"}, ImportEdit{sphere, "b", glm::vec3(0.0f, 0.1f, 0.0f)}}},
+       {ImportEdit{sphere, "a", {}}, DeleteEdit{"a"},
+        ImportEdit{sphere, "b", glm::vec3(0.0f, 0.1f, 0.0f)}}},
   };
 }
 
@@ -72,7 +76,8 @@ TEST_P(GeometryUpdate, MatchesAFreshUploadBitForBitAndUndoes) {
     undo.push_back(inverse_edit(scene, edit));
     test::expect_update_matches_fresh(renderer, scene, edit);
   }
-  for (auto it = undo.rbegin(); it != undo.rend(); ++it) renderer.update_scene(scene, test::edit_scene(scene, *it));
+  for (auto it = undo.rbegin(); it != undo.rend(); ++it)
+    renderer.update_scene(scene, test::edit_scene(scene, *it));
   renderer.reset();
   renderer.add_samples_full_frame(2);
   EXPECT_EQ(renderer.image().rgb, original.rgb) << "undone";
@@ -110,7 +115,8 @@ TEST(GeometryUpdate, DuplicateDeleteCyclesKeepRecordsAndDeviceMemoryFlat) {
     hipr_stages(renderer).stage1_visibility(changes);
   };
   for (int i = 0; i < 200; ++i) {
-    update(DuplicateEdit{i % 3 ? "short_block" : "tall_block", "copy", glm::vec3(0.01f * float(i % 5))});
+    update(DuplicateEdit{i % 3 ? "short_block" : "tall_block", "copy",
+                         glm::vec3(0.01f * float(i % 5))});
     if (i == 0) after_first = gpu.record_count();
     EXPECT_EQ(gpu.record_count(), after_first) << i;
     update(DeleteEdit{"copy"});
@@ -137,13 +143,16 @@ TEST(GeometryUpdate, StageOneMarksWhereTheNodeWasAndWhereTheCopyIs) {
   const auto tiles_showing = [&](const std::vector<uint32_t>& pixel_instances, uint32_t instance) {
     std::vector<bool> tiles(renderer.tile_count(), false);
     for (size_t p = 0; p < pixel_instances.size(); ++p)
-      if (pixel_instances[p] == instance) tiles[(p / s.width / s.tile_size) * renderer.tiles_x() + (p % s.width) / s.tile_size] = true;
+      if (pixel_instances[p] == instance)
+        tiles[(p / s.width / s.tile_size) * renderer.tiles_x() + (p % s.width) / s.tile_size] =
+            true;
     return tiles;
   };
   const std::vector<bool> tall_tiles = tiles_showing(was, tall);
   // Stage 1 after the edit; then how many of the tiles `showing` names (asked after stage 1) it
   // made active, of how many.
-  const auto stage1_marks = [&](const ChangeSet& changes, const std::function<std::vector<bool>()>& showing) {
+  const auto stage1_marks = [&](const ChangeSet& changes,
+                                const std::function<std::vector<bool>()>& showing) {
     renderer.update_scene(scene, changes);
     hipr_stages(renderer).stage1_visibility(changes);
     const std::vector<uint32_t> flags = renderer.tile_flags();
@@ -164,10 +173,11 @@ TEST(GeometryUpdate, StageOneMarksWhereTheNodeWasAndWhereTheCopyIs) {
   ASSERT_GT(expected, 0u);
   EXPECT_EQ(marked, expected) << "every tile that showed the deleted block is active";
 
-  const ChangeSet changes = test::edit_scene(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.25f, 0.0f, 0.0f)});
+  const ChangeSet changes =
+      test::edit_scene(scene, DuplicateEdit{"short_block", "copy", glm::vec3(0.25f, 0.0f, 0.0f)});
   ASSERT_EQ(changes.instances.size(), 1u);
-  const auto [copy_marked, copy_expected] =
-      stage1_marks(changes, [&] { return tiles_showing(renderer.gbuffer_instances(), changes.instances[0]); });
+  const auto [copy_marked, copy_expected] = stage1_marks(
+      changes, [&] { return tiles_showing(renderer.gbuffer_instances(), changes.instances[0]); });
   ASSERT_GT(copy_expected, 0u);
   EXPECT_EQ(copy_marked, copy_expected) << "every tile that shows the copy is active";
 }
@@ -181,9 +191,10 @@ TEST(TexturedImport, SavedRendersAsTheEditedScene) {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
   apply_edit(scene, ImportEdit{test::shared_scene("DamagedHelmet/DamagedHelmet.glb"), "helmet",
                                glm::vec3(0.28f, 0.25f, 0.28f)});
-  apply_edit(scene, TransformEdit{"helmet", std::nullopt,
-                                  glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.28f, 0.25f, 0.28f)),
-                                             glm::vec3(0.15f))});
+  apply_edit(scene, TransformEdit{
+                        "helmet", std::nullopt,
+                        glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.28f, 0.25f, 0.28f)),
+                                   glm::vec3(0.15f))});
   const ImageRGB edited = fresh_render(scene, 2);
   RenderSettings other_seed = settings();
   other_seed.seed = 1;
@@ -197,7 +208,8 @@ TEST(TexturedImport, SavedRendersAsTheEditedScene) {
     const Scene reloaded = load_scene(dir / name);
     EXPECT_EQ(reloaded.images.size(), scene.images.size()) << name;
     for (size_t i = 0; i < scene.images.size() && i < reloaded.images.size(); ++i)
-      EXPECT_EQ(reloaded.images[i].rgba8, scene.images[i].rgba8) << name << ": image " << i << " lossless";
+      EXPECT_EQ(reloaded.images[i].rgba8, scene.images[i].rgba8)
+          << name << ": image " << i << " lossless";
     EXPECT_LT(relmse(fresh_render(reloaded, 2), edited), 1e-3 * noise_level) << name;
   }
 }
@@ -206,17 +218,21 @@ TEST(TexturedImport, SavedRendersAsTheEditedScene) {
 // where they are); an undone import's images are replaced by the next one's at the same
 // indices. Each update renders as a fresh upload does.
 TEST(TexturedImport, AppendsItsImagesAndUpdatesAsAFreshUpload) {
-  if (!test::shared_scenes_available()) GTEST_SKIP() << "no shared scenes (DamagedHelmet, SheenChair)";
-  Scene scene = load_scene(test::shared_scene("DamagedHelmet/DamagedHelmet.glb"), {.environment = "studio"});
+  if (!test::shared_scenes_available())
+    GTEST_SKIP() << "no shared scenes (DamagedHelmet, SheenChair)";
+  Scene scene =
+      load_scene(test::shared_scene("DamagedHelmet/DamagedHelmet.glb"), {.environment = "studio"});
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(1);
-  const Edit chair = ImportEdit{test::shared_scene("SheenChair/SheenChair.gltf"), "chair", glm::vec3(0.5f, -0.6f, 0.0f)};
+  const Edit chair = ImportEdit{test::shared_scene("SheenChair/SheenChair.gltf"), "chair",
+                                glm::vec3(0.5f, -0.6f, 0.0f)};
   const Edit undo = inverse_edit(scene, chair);
   test::expect_update_matches_fresh(renderer, scene, chair);
   test::expect_update_matches_fresh(renderer, scene, undo);
   test::expect_update_matches_fresh(
       renderer, scene,
-      ImportEdit{test::shared_scene("DamagedHelmet/DamagedHelmet.glb"), "helmet", glm::vec3(0.6f, 0.0f, -0.5f)});
+      ImportEdit{test::shared_scene("DamagedHelmet/DamagedHelmet.glb"), "helmet",
+                 glm::vec3(0.6f, 0.0f, -0.5f)});
 }
 
 // A focus names instances by number: a delete before them renumbers them, and the focus follows
@@ -262,14 +278,16 @@ TEST_P(GeometryEveryPolicy, ConvergesToTheFullFrameImageOfTheEditedScene) {
   Scheduler scheduler(renderer, bench::make_bench_policy(c.policy, expected), 7);
   scheduler.set_display_rule(c.display);
   renderer.add_samples_full_frame(spp);
-  const std::vector<Edit> edits = {DuplicateEdit{"short_block", "copy", glm::vec3(-0.3f, 0.0f, 0.25f)},
-                                   DeformEdit{"tall_block", stretch(), nullptr}, DeleteEdit{"short_block"},
-                                   ImportEdit{test::asset("cornell_sphere.glb"), "sphere", glm::vec3(0.0f, 0.1f, 0.0f)}};
+  const std::vector<Edit> edits = {
+      DuplicateEdit{"short_block", "copy", glm::vec3(-0.3f, 0.0f, 0.25f)},
+      DeformEdit{"tall_block", stretch(), nullptr}, DeleteEdit{"short_block"},
+      ImportEdit{test::asset("cornell_sphere.glb"), "sphere", glm::vec3(0.0f, 0.1f, 0.0f)}};
   for (const Edit& edit : edits) {
     const ChangeSet changes = test::edit_scene(scene, edit);
     expected = full_frame(scene);
     scheduler.on_edit(scene, changes);
-    for (int step = 0; step < 10000 && scheduler.work_since_edit() < double(spp); ++step) scheduler.step();
+    for (int step = 0; step < 10000 && scheduler.work_since_edit() < double(spp); ++step)
+      scheduler.step();
     EXPECT_EQ(scheduler.displayed_image().rgb, expected.rgb) << describe(edit);
   }
 }
@@ -283,7 +301,8 @@ INSTANTIATE_TEST_SUITE_P(Policies, GeometryEveryPolicy,
                                            PolicyCase{Policy::Random, DisplayRule::Immediate},
                                            PolicyCase{Policy::Oracle, DisplayRule::Difference}),
                          [](const auto& param_info) {
-                           return policy_name(param_info.param.policy) + "_" + display_rule_name(param_info.param.display);
+                           return policy_name(param_info.param.policy) + "_" +
+                                  display_rule_name(param_info.param.display);
                          });
 
 }  // namespace

@@ -10,10 +10,12 @@ using nlohmann::json;
 namespace {
 
 std::string base64(const std::vector<unsigned char>& bytes) {
-  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  static const char* const kAlphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   for (size_t i = 0; i < bytes.size(); i += 3) {
-    const uint32_t chunk = uint32_t(bytes[i]) << 16 | (i + 1 < bytes.size() ? uint32_t(bytes[i + 1]) << 8 : 0u) |
+    const uint32_t chunk = uint32_t(bytes[i]) << 16 |
+                           (i + 1 < bytes.size() ? uint32_t(bytes[i + 1]) << 8 : 0u) |
                            (i + 2 < bytes.size() ? uint32_t(bytes[i + 2]) : 0u);
     out += kAlphabet[chunk >> 18 & 63];
     out += kAlphabet[chunk >> 12 & 63];
@@ -40,8 +42,10 @@ Document triangle_document() {
               {"materials", json::array({{{"name", "mat"}}})},
               {"bufferViews", json::array()},
               {"accessors", json::array()}};
-  const int position = doc.add_accessor(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, kFloat, "VEC3", 3);
-  const int normal = doc.add_accessor(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1}, kFloat, "VEC3", 3);
+  const int position =
+      doc.add_accessor(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, kFloat, "VEC3", 3);
+  const int normal =
+      doc.add_accessor(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1}, kFloat, "VEC3", 3);
   const int indices = doc.add_accessor(std::vector<uint16_t>{0, 1, 2}, kUnsignedShort, "SCALAR", 3);
   doc.gltf["meshes"] = json::array(
       {{{"name", "tri_mesh"},
@@ -52,7 +56,8 @@ Document triangle_document() {
 }
 
 void write_document(const fs::path& file, Document doc, const std::string& buffer_uri) {
-  const std::string uri = buffer_uri.empty() ? "data:application/octet-stream;base64," + base64(doc.bin) : buffer_uri;
+  const std::string uri =
+      buffer_uri.empty() ? "data:application/octet-stream;base64," + base64(doc.bin) : buffer_uri;
   doc.gltf["buffers"] = json::array({{{"byteLength", doc.bin.size()}, {"uri", uri}}});
   fs::create_directories(file.parent_path());
   std::ofstream(file) << doc.gltf.dump(1);

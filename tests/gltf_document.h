@@ -20,12 +20,14 @@ struct Document {
 
   // Appends `values` as a new bufferView + accessor; returns the accessor index.
   template <typename T>
-  int add_accessor(const std::vector<T>& values, int component_type, const char* type, size_t count) {
+  int add_accessor(const std::vector<T>& values, int component_type, const char* type,
+                   size_t count) {
     const size_t offset = bin.size();
     const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
     bin.insert(bin.end(), bytes, bytes + values.size() * sizeof(T));
     bin.resize((bin.size() + 3) / 4 * 4, 0);  // keep every view 4-byte aligned
-    gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
+    gltf["bufferViews"].push_back(
+        {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
     gltf["accessors"].push_back({{"bufferView", gltf["bufferViews"].size() - 1},
                                  {"componentType", component_type},
                                  {"type", type},
@@ -42,6 +44,7 @@ Document triangle_document();
 
 // Writes `doc` as `file`; an empty `buffer_uri` embeds the buffer as a data: URI, any other is
 // written as is (the test places the bytes where it wants them).
-void write_document(const std::filesystem::path& file, Document doc, const std::string& buffer_uri = "");
+void write_document(const std::filesystem::path& file, Document doc,
+                    const std::string& buffer_uri = "");
 
 }  // namespace hipr::test

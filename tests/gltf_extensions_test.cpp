@@ -8,8 +8,8 @@
 #include "gltf_document.h"
 #include "hipr/scene_loader.h"
 #include "image/image_io.h"
-#include "test_support.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -49,12 +49,15 @@ Loaded load_with(const json& material, const std::vector<std::string>& extension
 json texture(int index) { return {{"index", index}}; }
 
 TEST(GltfExtensions, IorSpecularAndEmissiveStrength) {
-  const Loaded l = load_with({{"extensions",
-                               {{"KHR_materials_ior", {{"ior", 1.7}}},
-                                {"KHR_materials_specular",
-                                 {{"specularFactor", 0.5}, {"specularColorFactor", {0.2, 0.3, 0.4}},
-                                  {"specularTexture", texture(0)}, {"specularColorTexture", texture(1)}}},
-                                {"KHR_materials_emissive_strength", {{"emissiveStrength", 6.0}}}}}});
+  const Loaded l =
+      load_with({{"extensions",
+                  {{"KHR_materials_ior", {{"ior", 1.7}}},
+                   {"KHR_materials_specular",
+                    {{"specularFactor", 0.5},
+                     {"specularColorFactor", {0.2, 0.3, 0.4}},
+                     {"specularTexture", texture(0)},
+                     {"specularColorTexture", texture(1)}}},
+                   {"KHR_materials_emissive_strength", {{"emissiveStrength", 6.0}}}}}});
   const MaterialParameters& m = l.material();
   EXPECT_FLOAT_EQ(m.specular_ior, 1.7f);
   EXPECT_FLOAT_EQ(m.specular_weight, 0.5f);
@@ -69,10 +72,14 @@ TEST(GltfExtensions, IorSpecularAndEmissiveStrength) {
 }
 
 TEST(GltfExtensions, TransmissionWithVolumeIsThick) {
-  const Loaded l = load_with({{"extensions",
-                               {{"KHR_materials_transmission", {{"transmissionFactor", 0.8}, {"transmissionTexture", texture(0)}}},
-                                {"KHR_materials_volume",
-                                 {{"thicknessFactor", 0.1}, {"attenuationColor", {0.9, 0.5, 0.1}}, {"attenuationDistance", 0.25}}}}}});
+  const Loaded l =
+      load_with({{"extensions",
+                  {{"KHR_materials_transmission",
+                    {{"transmissionFactor", 0.8}, {"transmissionTexture", texture(0)}}},
+                   {"KHR_materials_volume",
+                    {{"thicknessFactor", 0.1},
+                     {"attenuationColor", {0.9, 0.5, 0.1}},
+                     {"attenuationDistance", 0.25}}}}}});
   const MaterialParameters& m = l.material();
   EXPECT_FLOAT_EQ(m.transmission_weight, 0.8f);
   EXPECT_NE(m.transmission_texture, abi::kInvalidIndex);
@@ -82,26 +89,31 @@ TEST(GltfExtensions, TransmissionWithVolumeIsThick) {
 }
 
 TEST(GltfExtensions, TransmissionWithoutVolumeIsThinAndTintedByBaseColour) {
-  const Loaded l = load_with({{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 1.0}}}},
-                              {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}});
+  const Loaded l =
+      load_with({{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 1.0}}}},
+                 {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}});
   EXPECT_TRUE(l.material().flags & abi::kMaterialThinWalled);
   EXPECT_EQ(l.material().transmission_color, glm::vec3(0.2f, 0.4f, 0.6f));
   EXPECT_EQ(l.material().transmission_depth, 0.0f);
   // A volume of zero thickness is thin too; an infinite attenuation distance absorbs nothing.
-  const Loaded zero = load_with({{"extensions", {{"KHR_materials_volume", {{"thicknessFactor", 0.0}}}}}});
+  const Loaded zero =
+      load_with({{"extensions", {{"KHR_materials_volume", {{"thicknessFactor", 0.0}}}}}});
   EXPECT_TRUE(zero.material().flags & abi::kMaterialThinWalled);
-  const Loaded clear = load_with({{"extensions", {{"KHR_materials_volume", {{"thicknessFactor", 1.0}}}}}});
+  const Loaded clear =
+      load_with({{"extensions", {{"KHR_materials_volume", {{"thicknessFactor", 1.0}}}}}});
   EXPECT_FALSE(clear.material().flags & abi::kMaterialThinWalled);
   EXPECT_EQ(clear.material().transmission_color, glm::vec3(1.0f));
   EXPECT_EQ(clear.material().transmission_depth, 0.0f);
 }
 
 TEST(GltfExtensions, ClearcoatBecomesCoat) {
-  const Loaded l = load_with(
-      {{"extensions",
-        {{"KHR_materials_clearcoat",
-          {{"clearcoatFactor", 0.7}, {"clearcoatRoughnessFactor", 0.2}, {"clearcoatTexture", texture(0)},
-           {"clearcoatRoughnessTexture", texture(0)}, {"clearcoatNormalTexture", {{"index", 1}, {"scale", 0.5}}}}}}}});
+  const Loaded l = load_with({{"extensions",
+                               {{"KHR_materials_clearcoat",
+                                 {{"clearcoatFactor", 0.7},
+                                  {"clearcoatRoughnessFactor", 0.2},
+                                  {"clearcoatTexture", texture(0)},
+                                  {"clearcoatRoughnessTexture", texture(0)},
+                                  {"clearcoatNormalTexture", {{"index", 1}, {"scale", 0.5}}}}}}}});
   const MaterialParameters& m = l.material();
   EXPECT_FLOAT_EQ(m.coat_weight, 0.7f);
   EXPECT_FLOAT_EQ(m.coat_roughness, 0.2f);
@@ -110,15 +122,18 @@ TEST(GltfExtensions, ClearcoatBecomesCoat) {
   EXPECT_EQ(m.coat_darkening, 0.0f);
   EXPECT_FLOAT_EQ(m.coat_normal_scale, 0.5f);
   EXPECT_NE(m.clearcoat_texture, abi::kInvalidIndex);
-  EXPECT_EQ(m.clearcoat_roughness_texture, m.clearcoat_texture) << "equal references share one entry";
+  EXPECT_EQ(m.clearcoat_roughness_texture, m.clearcoat_texture)
+      << "equal references share one entry";
   EXPECT_NE(m.clearcoat_normal_texture, abi::kInvalidIndex);
 }
 
 TEST(GltfExtensions, SheenBecomesFuzz) {
   const Loaded l = load_with({{"extensions",
                                {{"KHR_materials_sheen",
-                                 {{"sheenColorFactor", {0.5, 0.25, 0.1}}, {"sheenRoughnessFactor", 0.3},
-                                  {"sheenColorTexture", texture(0)}, {"sheenRoughnessTexture", texture(1)}}}}}});
+                                 {{"sheenColorFactor", {0.5, 0.25, 0.1}},
+                                  {"sheenRoughnessFactor", 0.3},
+                                  {"sheenColorTexture", texture(0)},
+                                  {"sheenRoughnessTexture", texture(1)}}}}}});
   const MaterialParameters& m = l.material();
   EXPECT_EQ(m.fuzz_weight, 1.0f);
   EXPECT_EQ(m.fuzz_color, glm::vec3(0.5f, 0.25f, 0.1f));
@@ -126,14 +141,19 @@ TEST(GltfExtensions, SheenBecomesFuzz) {
   EXPECT_TRUE(l.scene.textures[m.sheen_color_texture].flags & abi::kTextureSrgb);
   EXPECT_FALSE(l.scene.textures[m.sheen_roughness_texture].flags & abi::kTextureSrgb);
   // Black sheen (glTF's default colour) is no sheen.
-  EXPECT_EQ(load_with({{"extensions", {{"KHR_materials_sheen", json::object()}}}}).material().fuzz_weight, 0.0f);
+  EXPECT_EQ(
+      load_with({{"extensions", {{"KHR_materials_sheen", json::object()}}}}).material().fuzz_weight,
+      0.0f);
 }
 
 TEST(GltfExtensions, IridescenceBecomesThinFilmInNanometres) {
   const Loaded l = load_with({{"extensions",
                                {{"KHR_materials_iridescence",
-                                 {{"iridescenceFactor", 0.9}, {"iridescenceIor", 1.8}, {"iridescenceThicknessMinimum", 200.0},
-                                  {"iridescenceThicknessMaximum", 650.0}, {"iridescenceTexture", texture(0)},
+                                 {{"iridescenceFactor", 0.9},
+                                  {"iridescenceIor", 1.8},
+                                  {"iridescenceThicknessMinimum", 200.0},
+                                  {"iridescenceThicknessMaximum", 650.0},
+                                  {"iridescenceTexture", texture(0)},
                                   {"iridescenceThicknessTexture", texture(1)}}}}}});
   const MaterialParameters& m = l.material();
   EXPECT_FLOAT_EQ(m.thin_film_weight, 0.9f);
@@ -143,7 +163,8 @@ TEST(GltfExtensions, IridescenceBecomesThinFilmInNanometres) {
   EXPECT_NE(m.iridescence_texture, abi::kInvalidIndex);
   EXPECT_NE(m.iridescence_thickness_texture, abi::kInvalidIndex);
   // glTF's defaults: 100-400 nm, ior 1.3.
-  const MaterialParameters d = load_with({{"extensions", {{"KHR_materials_iridescence", json::object()}}}}).material();
+  const MaterialParameters d =
+      load_with({{"extensions", {{"KHR_materials_iridescence", json::object()}}}}).material();
   EXPECT_FLOAT_EQ(d.thin_film_thickness_min, 100.0f);
   EXPECT_FLOAT_EQ(d.thin_film_thickness, 400.0f);
   EXPECT_FLOAT_EQ(d.thin_film_ior, 1.3f);
@@ -152,7 +173,9 @@ TEST(GltfExtensions, IridescenceBecomesThinFilmInNanometres) {
 TEST(GltfExtensions, AnisotropyKeepsRadians) {
   const Loaded l = load_with({{"extensions",
                                {{"KHR_materials_anisotropy",
-                                 {{"anisotropyStrength", 0.6}, {"anisotropyRotation", 1.25}, {"anisotropyTexture", texture(0)}}}}}});
+                                 {{"anisotropyStrength", 0.6},
+                                  {"anisotropyRotation", 1.25},
+                                  {"anisotropyTexture", texture(0)}}}}}});
   EXPECT_FLOAT_EQ(l.material().specular_anisotropy, 0.6f);
   EXPECT_FLOAT_EQ(l.material().specular_rotation, 1.25f);
   EXPECT_NE(l.material().anisotropy_texture, abi::kInvalidIndex);
@@ -161,7 +184,8 @@ TEST(GltfExtensions, AnisotropyKeepsRadians) {
 TEST(GltfExtensions, DiffuseTransmissionBecomesThinSubsurface) {
   const Loaded l = load_with({{"extensions",
                                {{"KHR_materials_diffuse_transmission",
-                                 {{"diffuseTransmissionFactor", 0.4}, {"diffuseTransmissionColorFactor", {0.1, 0.8, 0.2}}}}}}});
+                                 {{"diffuseTransmissionFactor", 0.4},
+                                  {"diffuseTransmissionColorFactor", {0.1, 0.8, 0.2}}}}}}});
   EXPECT_FLOAT_EQ(l.material().subsurface_weight, 0.4f);
   EXPECT_EQ(l.material().subsurface_color, glm::vec3(0.1f, 0.8f, 0.2f));
   EXPECT_TRUE(l.material().flags & abi::kMaterialThinWalled);
@@ -177,7 +201,8 @@ TEST(GltfExtensions, ValuesOutOfRangeAreClamped) {
 
 TEST(GltfAlphaModes, MaskBlendAndOpaque) {
   const json base = {{"baseColorFactor", {1, 1, 1, 0.4}}, {"baseColorTexture", texture(0)}};
-  const Loaded mask = load_with({{"pbrMetallicRoughness", base}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.3}});
+  const Loaded mask =
+      load_with({{"pbrMetallicRoughness", base}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.3}});
   EXPECT_FLOAT_EQ(mask.material().geometry_opacity, 0.4f);
   EXPECT_FLOAT_EQ(mask.material().alpha_cutoff, 0.3f);
   EXPECT_FALSE(material_is_opaque(mask.material()));
@@ -195,16 +220,21 @@ TEST(GltfAlphaModes, MaskBlendAndOpaque) {
 }
 
 TEST(GltfTextureTransform, OffsetRotationScaleAndTexCoordOverride) {
-  const json transform = {{"offset", {0.25, -0.5}}, {"rotation", 0.5}, {"scale", {2.0, 3.0}}, {"texCoord", 1}};
-  const Loaded l = load_with({{"pbrMetallicRoughness",
-                               {{"baseColorTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}},
-                                {"metallicRoughnessTexture", texture(0)}}}},
-                             {"KHR_texture_transform"});
+  const json transform = {
+      {"offset", {0.25, -0.5}}, {"rotation", 0.5}, {"scale", {2.0, 3.0}}, {"texCoord", 1}};
+  const Loaded l =
+      load_with({{"pbrMetallicRoughness",
+                  {{"baseColorTexture",
+                    {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}},
+                   {"metallicRoughnessTexture", texture(0)}}}},
+                {"KHR_texture_transform"});
   const Texture& t = l.scene.textures[l.material().base_color_texture];
-  // uv' = T(offset) R(rotation) S(scale) uv, the spec's order; u' = cos*u + sin*v before the offset.
+  // uv' = T(offset) R(rotation) S(scale) uv, the spec's order; u' = cos*u + sin*v before the
+  // offset.
   const float c = std::cos(0.5f), s = std::sin(0.5f);
   const glm::vec2 uv(0.3f, 0.7f), scaled(0.6f, 2.1f);
-  const glm::vec2 expected(c * scaled.x + s * scaled.y + 0.25f, -s * scaled.x + c * scaled.y - 0.5f);
+  const glm::vec2 expected(c * scaled.x + s * scaled.y + 0.25f,
+                           -s * scaled.x + c * scaled.y - 0.5f);
   EXPECT_NEAR(glm::dot(t.uv_transform_u, glm::vec3(uv, 1.0f)), expected.x, 1e-5f);
   EXPECT_NEAR(glm::dot(t.uv_transform_v, glm::vec3(uv, 1.0f)), expected.y, 1e-5f);
   EXPECT_TRUE(t.flags & abi::kTextureUv1) << "the transform's texCoord overrides the textureInfo's";
@@ -220,12 +250,14 @@ TEST(GltfTextureTransform, OffsetRotationScaleAndTexCoordOverride) {
 TEST(GltfTexCoords, SecondUvSetIsLoadedAndSelected) {
   Document doc = test::triangle_document();
   const int uv0 = doc.add_accessor(std::vector<float>{0, 0, 1, 0, 0, 1}, test::kFloat, "VEC2", 3);
-  const int uv1 = doc.add_accessor(std::vector<float>{0.5f, 0.5f, 0.25f, 0.75f, 1, 1}, test::kFloat, "VEC2", 3);
+  const int uv1 =
+      doc.add_accessor(std::vector<float>{0.5f, 0.5f, 0.25f, 0.75f, 1, 1}, test::kFloat, "VEC2", 3);
   doc.primitive()["attributes"]["TEXCOORD_0"] = uv0;
   doc.primitive()["attributes"]["TEXCOORD_1"] = uv1;
   doc.gltf["images"] = json::array({{{"uri", "grey.png"}}});
   doc.gltf["textures"] = json::array({{{"source", 0}}});
-  doc.gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}, {"texCoord", 1}};
+  doc.gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0},
+                                                                          {"texCoord", 1}};
   doc.gltf["materials"][0]["emissiveTexture"] = {{"index", 0}};
   const fs::path dir = test::temp_dir("gltf-texcoord1");
   write_image(dir / "grey.png", ImageRGB{1, 1, {0.5f, 0.5f, 0.5f}});
@@ -234,23 +266,29 @@ TEST(GltfTexCoords, SecondUvSetIsLoadedAndSelected) {
   const MeshPrimitive& p = scene.meshes[0].primitives[0];
   EXPECT_EQ(p.uvs1, (std::vector<glm::vec2>{{0.5f, 0.5f}, {0.25f, 0.75f}, {1, 1}}));
   EXPECT_EQ(p.uvs[1], glm::vec2(1, 0));
-  EXPECT_TRUE(scene.textures[scene.materials[0].params.base_color_texture].flags & abi::kTextureUv1);
+  EXPECT_TRUE(scene.textures[scene.materials[0].params.base_color_texture].flags &
+              abi::kTextureUv1);
   EXPECT_FALSE(scene.textures[scene.materials[0].params.emission_texture].flags & abi::kTextureUv1);
   // Without TEXCOORD_1 the second set is zeros, one per vertex.
   const Scene plain = load_scene(test::asset("cornell_box.gltf"));
   for (const Mesh& mesh : plain.meshes)
-    for (const MeshPrimitive& q : mesh.primitives) EXPECT_EQ(q.uvs1, std::vector<glm::vec2>(q.positions.size(), glm::vec2(0)));
+    for (const MeshPrimitive& q : mesh.primitives)
+      EXPECT_EQ(q.uvs1, std::vector<glm::vec2>(q.positions.size(), glm::vec2(0)));
 }
 
 TEST(GltfExtensionSupport, UnknownOptionalExtensionWarnsOncePerExtension) {
-  const Loaded l = load_with(json::object(), {"EXT_hipr_made_up", "KHR_materials_dispersion", "KHR_materials_variants",
-                                              "KHR_materials_sheen"});
+  const Loaded l = load_with(json::object(), {"EXT_hipr_made_up", "KHR_materials_dispersion",
+                                              "KHR_materials_variants", "KHR_materials_sheen"});
   const auto lines = test::lines_of(l.warnings);
   ASSERT_EQ(lines.size(), 3u) << l.warnings;
   EXPECT_NE(lines[0].find("EXT_hipr_made_up is not supported"), std::string::npos) << lines[0];
-  EXPECT_NE(lines[1].find("KHR_materials_dispersion is not supported"), std::string::npos) << lines[1];
-  EXPECT_NE(lines[2].find("KHR_materials_variants is not supported; the default materials are used"), std::string::npos);
-  for (const std::string& line : lines) EXPECT_EQ(line.rfind("hipr: warning: scene.gltf: ", 0), 0u) << line;
+  EXPECT_NE(lines[1].find("KHR_materials_dispersion is not supported"), std::string::npos)
+      << lines[1];
+  EXPECT_NE(
+      lines[2].find("KHR_materials_variants is not supported; the default materials are used"),
+      std::string::npos);
+  for (const std::string& line : lines)
+    EXPECT_EQ(line.rfind("hipr: warning: scene.gltf: ", 0), 0u) << line;
 }
 
 TEST(GltfExtensionSupport, EveryImplementedExtensionMayBeRequired) {
@@ -274,7 +312,8 @@ TEST(GltfExtensionSupport, RequiredDispersionIsRefused) {
     load_scene(file);
     ADD_FAILURE() << "loaded a scene that requires an unsupported extension";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "tri.gltf: requires unsupported glTF extension KHR_materials_dispersion");
+    EXPECT_EQ(std::string(e.what()),
+              "tri.gltf: requires unsupported glTF extension KHR_materials_dispersion");
   }
 }
 

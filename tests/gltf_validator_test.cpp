@@ -4,8 +4,8 @@
 // validator package (installed into tools/node_modules by tools/setup-deps.sh) is absent.
 #include <gtest/gtest.h>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <sys/wait.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <array>
 #include <cstdio>
@@ -61,7 +61,8 @@ std::vector<Report> validate(const std::vector<fs::path>& files) {
     Report report;
     report.errors = summary["errors"];
     report.warnings = summary["warnings"];
-    for (const auto& [code_name, count] : summary["error_codes"].items()) report.error_codes[code_name] = count;
+    for (const auto& [code_name, count] : summary["error_codes"].items())
+      report.error_codes[code_name] = count;
     reports.push_back(report);
   }
   EXPECT_EQ(reports.size(), files.size());
@@ -73,19 +74,23 @@ void expect_no_new_errors(const Report& original, const Report& saved, const std
   EXPECT_LE(saved.warnings, original.warnings) << what << ": new warnings";
   for (const auto& [code, count] : saved.error_codes) {
     const auto it = original.error_codes.find(code);
-    EXPECT_TRUE(it != original.error_codes.end() && count <= it->second) << what << ": new error " << code;
+    EXPECT_TRUE(it != original.error_codes.end() && count <= it->second)
+        << what << ": new error " << code;
   }
 }
 
 TEST(GltfValidator, SavedScenesHaveNoNewErrors) {
   if (!validator_available()) {
-    if (test::gltf_validator_required()) FAIL() << "the set-up installs the glTF validator, yet it is absent";
+    if (test::gltf_validator_required())
+      FAIL() << "the set-up installs the glTF validator, yet it is absent";
     GTEST_SKIP() << "node or the gltf-validator package is absent (see tools/setup-deps.sh)";
   }
-  std::vector<fs::path> sources = {test::asset("cornell_box.gltf"), test::asset("cornell_sphere.glb"),
+  std::vector<fs::path> sources = {test::asset("cornell_box.gltf"),
+                                   test::asset("cornell_sphere.glb"),
                                    test::asset("furnace_sphere.gltf")};
   if (test::shared_scenes_available())
-    for (const test::SharedScene& s : test::shared_scenes_to_save()) sources.push_back(test::shared_scene(s.file));
+    for (const test::SharedScene& s : test::shared_scenes_to_save())
+      sources.push_back(test::shared_scene(s.file));
 
   const fs::path dir = test::temp_dir("validator");
   for (const fs::path& source : sources) {
@@ -107,22 +112,26 @@ TEST(GltfValidator, SavedScenesHaveNoNewErrors) {
     if (!instances.empty()) {
       const std::string first = "#" + std::to_string(instances.front().node);
       apply_edit(scene, DuplicateEdit{first, "validator_copy", glm::vec3(0.1f)});
-      apply_edit(scene, DeformEdit{first, glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 1.2f, 1.0f)), nullptr});
-      if (instances.size() > 1) apply_edit(scene, DeleteEdit{"#" + std::to_string(instances.back().node)});
+      apply_edit(scene, DeformEdit{first, glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 1.2f, 1.0f)),
+                                   nullptr});
+      if (instances.size() > 1)
+        apply_edit(scene, DeleteEdit{"#" + std::to_string(instances.back().node)});
     }
     save_scene(scene, out / "geometry.gltf");
     save_scene(scene, out / "geometry.glb");
-    const std::vector<std::string> names = {"unedited.gltf", "unedited.glb", "edited.gltf", "edited.glb",
-                                            "every_parameter.gltf", "geometry.gltf", "geometry.glb"};
+    const std::vector<std::string> names = {
+        "unedited.gltf",        "unedited.glb",  "edited.gltf", "edited.glb",
+        "every_parameter.gltf", "geometry.gltf", "geometry.glb"};
     std::vector<fs::path> files = {source};
     for (const std::string& name : names) files.push_back(out / name);
     const std::vector<Report> reports = validate(files);
     ASSERT_EQ(reports.size(), files.size());
-    std::cout << "[validator] " << source.filename().string() << ": original " << reports[0].errors << " errors, "
-              << reports[0].warnings << " warnings";
+    std::cout << "[validator] " << source.filename().string() << ": original " << reports[0].errors
+              << " errors, " << reports[0].warnings << " warnings";
     for (size_t i = 0; i < names.size(); ++i) {
       expect_no_new_errors(reports[0], reports[i + 1], names[i]);
-      std::cout << "; " << names[i] << " " << reports[i + 1].errors << "/" << reports[i + 1].warnings;
+      std::cout << "; " << names[i] << " " << reports[i + 1].errors << "/"
+                << reports[i + 1].warnings;
     }
     std::cout << " (errors/warnings)\n";
   }

@@ -39,7 +39,8 @@ TEST_P(RadixSort, MatchesStdStableSort) {
   ctx.submit_and_wait([&](VkCommandBuffer cmd) { sorter.record(cmd, count); });
   std::vector<uint32_t> order(count);
   std::iota(order.begin(), order.end(), 0u);
-  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });
   const auto sorted_keys = sorter.keys.download_all<uint32_t>();
   const auto sorted_values = sorter.values.download_all<uint32_t>();
   for (uint32_t i = 0; i < count; ++i) {
@@ -48,7 +49,8 @@ TEST_P(RadixSort, MatchesStdStableSort) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Counts, RadixSort, ::testing::Values(1u, 2u, 255u, 256u, 257u, 1000u, 65537u, 1000000u));
+INSTANTIATE_TEST_SUITE_P(Counts, RadixSort,
+                         ::testing::Values(1u, 2u, 255u, 256u, 257u, 1000u, 65537u, 1000000u));
 
 RenderSettings settings() { return test::render_settings(64, 48, 8, 8, 9); }
 
@@ -65,7 +67,9 @@ Edited edit_scene(Scene base, const Edit& edit) {
   return e;
 }
 
-Edited edit_cornell(const Edit& edit) { return edit_scene(load_scene(test::asset("cornell_box.gltf")), edit); }
+Edited edit_cornell(const Edit& edit) {
+  return edit_scene(load_scene(test::asset("cornell_box.gltf")), edit);
+}
 
 // The Cornell box with its back wall turned into a mirror (smooth white metal).
 Scene mirror_cornell() {
@@ -78,7 +82,8 @@ Scene mirror_cornell() {
   mirror.params.specular_roughness = 0.0f;
   scene.materials.push_back(mirror);
   for (const Node& node : scene.nodes)
-    if (node.name == "back_wall") scene.meshes[size_t(node.mesh)].primitives[0].material = uint32_t(scene.materials.size() - 1);
+    if (node.name == "back_wall")
+      scene.meshes[size_t(node.mesh)].primitives[0].material = uint32_t(scene.materials.size() - 1);
   return scene;
 }
 
@@ -96,12 +101,14 @@ std::unique_ptr<Renderer> run_stages(const Edited& e) {
 }
 
 size_t count_flag(const std::vector<uint32_t>& flags, uint32_t bit) {
-  return size_t(std::count_if(flags.begin(), flags.end(), [&](uint32_t f) { return (f & bit) != 0; }));
+  return size_t(
+      std::count_if(flags.begin(), flags.end(), [&](uint32_t f) { return (f & bit) != 0; }));
 }
 
 TEST(HiprStages, ScheduledRerenderConvergesToTheFullFrameImage) {
   for (uint32_t tile : {8u, 16u}) {
-    const Edited e = edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt});
+    const Edited e =
+        edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt});
     RenderSettings s = settings();
     s.tile_size = tile;
     Renderer renderer(test::context(), e.before, s);
@@ -113,7 +120,8 @@ TEST(HiprStages, ScheduledRerenderConvergesToTheFullFrameImage) {
     test::discover_all(renderer, 1);
     hipr_stages(renderer).build_schedule();
     // Stage 3 in steps of 5 tiles, then ordinary passes: every pixel ends with 3 samples.
-    for (uint32_t offset = 0; offset < renderer.tile_count(); offset += 5) renderer.render_schedule(offset, 5, 1, true);
+    for (uint32_t offset = 0; offset < renderer.tile_count(); offset += 5)
+      renderer.render_schedule(offset, 5, 1, true);
     renderer.render_schedule(0, renderer.tile_count(), 2, false);
     Renderer full(test::context(), e.after, s);
     full.add_samples_full_frame(3);
@@ -124,13 +132,15 @@ TEST(HiprStages, ScheduledRerenderConvergesToTheFullFrameImage) {
 }
 
 TEST(HiprStages, ScheduleListsActiveThenDiscoveredByWeightThenTheRest) {
-  const auto renderer = run_stages(edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt}));
+  const auto renderer = run_stages(
+      edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt}));
   const auto flags = renderer->tile_flags();
   const auto weights = renderer->tile_weights();
   const auto order = renderer->schedule();
   std::vector<uint32_t> sorted = order;
   std::sort(sorted.begin(), sorted.end());
-  for (uint32_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i) << "the schedule is a permutation";
+  for (uint32_t i = 0; i < sorted.size(); ++i)
+    ASSERT_EQ(sorted[i], i) << "the schedule is a permutation";
   const size_t active = count_flag(flags, 1);
   ASSERT_GT(active, 0u);
   for (size_t i = 0; i < order.size(); ++i) EXPECT_EQ((flags[order[i]] & 1) != 0, i < active) << i;
@@ -139,7 +149,8 @@ TEST(HiprStages, ScheduleListsActiveThenDiscoveredByWeightThenTheRest) {
 }
 
 TEST(HiprStages, RecolouredWallDiscoversItsColourBleeding) {
-  const auto renderer = run_stages(edit_cornell(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}}));
+  const auto renderer =
+      run_stages(edit_cornell(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}}));
   const auto flags = renderer->tile_flags();
   const auto weights = renderer->tile_weights();
   // The wall's light reaches most of the box (floor, ceiling, back wall, blocks, and most of
@@ -165,7 +176,6 @@ TEST(HiprStages, HiddenObjectWithoutLightInteractionDiscoversNothing) {
   EXPECT_EQ(count_flag(flags, 2), 0u);
 }
 
-
 // Discovery completeness: tiles whose converged radiance the edit really changed (shadows,
 // colour bleeding), outside the active set, must be discovered.
 void expect_changed_tiles_discovered(const Edited& e) {
@@ -190,24 +200,29 @@ void expect_changed_tiles_discovered(const Edited& e) {
     }
   size_t changed = 0, found = 0;
   for (size_t t = 0; t < flags.size(); ++t) {
-    if ((flags[t] & 1) || std::abs(change[t]) <= 0.15 * level[t]) continue;  // >15%: far above noise
+    if ((flags[t] & 1) || std::abs(change[t]) <= 0.15 * level[t])
+      continue;  // >15%: far above noise
     ++changed;
     found += (flags[t] & 2) ? 1 : 0;
   }
   EXPECT_GT(changed, 0u) << "the edit should change some tiles outside the active set";
-  EXPECT_GE(double(found), 0.9 * double(changed)) << found << " of " << changed << " changed tiles discovered";
+  EXPECT_GE(double(found), 0.9 * double(changed))
+      << found << " of " << changed << " changed tiles discovered";
 }
 
 TEST(HiprStages, TilesChangedByAMovedBlockAreDiscovered) {
-  expect_changed_tiles_discovered(edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt}));
+  expect_changed_tiles_discovered(
+      edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt}));
 }
 
 TEST(HiprStages, TilesChangedByARecolouredWallAreDiscovered) {
-  expect_changed_tiles_discovered(edit_cornell(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}}));
+  expect_changed_tiles_discovered(
+      edit_cornell(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}}));
 }
 
 TEST(HiprStages, BlockMovedBesideAMirrorDiscoversTheMirror) {
-  const Edited e = edit_scene(mirror_cornell(), TransformEdit{"short_block", glm::vec3(-0.05f, 0.0f, 0.1f), std::nullopt});
+  const Edited e = edit_scene(
+      mirror_cornell(), TransformEdit{"short_block", glm::vec3(-0.05f, 0.0f, 0.1f), std::nullopt});
   expect_changed_tiles_discovered(e);
   // The mirror's tiles (back wall in the G-buffer) that are not active are discovered through
   // specular paths.
@@ -256,7 +271,8 @@ std::vector<bool> tiles_where(const std::vector<uint32_t>& instances, const Rend
   const RenderSettings& s = renderer.settings();
   std::vector<bool> tiles(renderer.tile_count(), false);
   for (uint32_t i = 0; i < instances.size(); ++i)
-    if (test(i)) tiles[(i / s.width / s.tile_size) * renderer.tiles_x() + (i % s.width) / s.tile_size] = true;
+    if (test(i))
+      tiles[(i / s.width / s.tile_size) * renderer.tiles_x() + (i % s.width) / s.tile_size] = true;
   return tiles;
 }
 
@@ -301,7 +317,8 @@ TEST(HiprStages, TilesAnObjectLeftTwoEditsAgoStayActive) {
   for (uint32_t t = 0; t < left.size(); ++t) {
     if (!left[t]) continue;
     ++checked;
-    EXPECT_TRUE(flags[t] & abi::kTileActive) << "tile " << t << " still shows the block's first place";
+    EXPECT_TRUE(flags[t] & abi::kTileActive)
+        << "tile " << t << " still shows the block's first place";
   }
   EXPECT_GT(checked, 0u) << "the moves must uncover tiles";
 }

@@ -9,9 +9,9 @@
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
 #include "render/kernel_features.h"
-#include "vk/buffer.h"
-#include "test_support.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
+#include "vk/buffer.h"
 
 namespace hipr {
 namespace {
@@ -29,21 +29,25 @@ class IncrementalUpdate : public ::testing::TestWithParam<std::string> {};
 // For every edit of the shipped scripts: render, edit, update, restart -> same as fresh.
 TEST_P(IncrementalUpdate, MatchesAFreshUploadBitForBit) {
   const std::string name = GetParam();
-  Scene scene = load_scene(test::asset(name == "cornell_box" ? "cornell_box.gltf" : "cornell_sphere.glb"));
+  Scene scene =
+      load_scene(test::asset(name == "cornell_box" ? "cornell_box.gltf" : "cornell_sphere.glb"));
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(2);
   for (const Edit& edit : load_edit_script(test::asset(name + ".edits.json")))
     test::expect_update_matches_fresh(renderer, scene, edit);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scripts, IncrementalUpdate, ::testing::Values("cornell_box", "cornell_sphere"));
+INSTANTIATE_TEST_SUITE_P(Scripts, IncrementalUpdate,
+                         ::testing::Values("cornell_box", "cornell_sphere"));
 
 TEST(IncrementalUpdate, FiftyRapidEditsEndInTheFinalScene) {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
   Renderer renderer(test::context(), scene, settings());
   for (int i = 0; i < 50; ++i) {
     const Scene before = scene;
-    apply_edit(scene, TransformEdit{"short_block", glm::vec3(0.002f * float(i % 7) - 0.006f, 0.0f, 0.001f), std::nullopt});
+    apply_edit(scene,
+               TransformEdit{"short_block", glm::vec3(0.002f * float(i % 7) - 0.006f, 0.0f, 0.001f),
+                             std::nullopt});
     renderer.update_scene(scene, diff_scenes(before, scene));
     renderer.add_samples_full_frame(1);  // one step per edit
   }
@@ -81,7 +85,8 @@ TEST(IncrementalUpdate, EditsAllocateNothingAndSubmitAtMostTheTlasBuild) {
         const vk::DeviceCounts update = vk::DeviceCounts::now() - before;
         EXPECT_EQ(update.allocations, 0u) << describe(e);
         const bool moves = std::holds_alternative<TransformEdit>(e);
-        EXPECT_LE(update.submissions, moves && !test::context().software_traversal() ? 1u : 0u) << describe(e);
+        EXPECT_LE(update.submissions, moves && !test::context().software_traversal() ? 1u : 0u)
+            << describe(e);
       }
     }
   renderer.reset();
@@ -145,20 +150,30 @@ INSTANTIATE_TEST_SUITE_P(
     Edits, FeatureEdits,
     ::testing::Values(
         // The Lambert-only box has no coat or transmission.
-        FeatureEdit{"CoatAndTransmission", "cornell_box.gltf",
-                    MaterialEdit{"white", {{"coat_weight", {1.0f}}, {"transmission_weight", {0.5f}}}},
-                    MaterialEdit{"white", {{"coat_weight", {0.0f}}, {"transmission_weight", {0.0f}}}},
-                    {"HIPR_FEATURE_COAT", "HIPR_FEATURE_TRANSMISSION"}},
-        // A glowing sphere in the otherwise unlit furnace scene: emission at hits and light sampling.
-        FeatureEdit{"Emission", "furnace_sphere.gltf",
-                    MaterialEdit{"white_lambert",
-                                 {{"emission_luminance", {2.0f}}, {"emission_color", {1.0f, 0.9f, 0.8f}}}},
-                    MaterialEdit{"white_lambert", {{"emission_luminance", {0.0f}}}},
-                    {"HIPR_FEATURE_EMISSION"}},
+        FeatureEdit{
+            "CoatAndTransmission",
+            "cornell_box.gltf",
+            MaterialEdit{"white", {{"coat_weight", {1.0f}}, {"transmission_weight", {0.5f}}}},
+            MaterialEdit{"white", {{"coat_weight", {0.0f}}, {"transmission_weight", {0.0f}}}},
+            {"HIPR_FEATURE_COAT", "HIPR_FEATURE_TRANSMISSION"}},
+        // A glowing sphere in the otherwise unlit furnace scene: emission at hits and light
+        // sampling.
+        FeatureEdit{
+            "Emission",
+            "furnace_sphere.gltf",
+            MaterialEdit{"white_lambert",
+                         {{"emission_luminance", {2.0f}}, {"emission_color", {1.0f, 0.9f, 0.8f}}}},
+            MaterialEdit{"white_lambert", {{"emission_luminance", {0.0f}}}},
+            {"HIPR_FEATURE_EMISSION"}},
         // A half-transparent wall: the kernel's rays must stop treating everything as opaque.
-        FeatureEdit{"Cutout", "cornell_box.gltf", MaterialEdit{"red", {{"geometry_opacity", {0.5f}}}},
-                    MaterialEdit{"red", {{"geometry_opacity", {1.0f}}}}, {"HIPR_FEATURE_CUTOUT"}}),
-    [](const testing::TestParamInfo<FeatureEdit>& param_info) { return std::string(param_info.param.name); });
+        FeatureEdit{"Cutout",
+                    "cornell_box.gltf",
+                    MaterialEdit{"red", {{"geometry_opacity", {0.5f}}}},
+                    MaterialEdit{"red", {{"geometry_opacity", {1.0f}}}},
+                    {"HIPR_FEATURE_CUTOUT"}}),
+    [](const testing::TestParamInfo<FeatureEdit>& param_info) {
+      return std::string(param_info.param.name);
+    });
 
 // An environment with structure (a bright warm band on one side), so that rotating it changes
 // the picture; a uniform sky would not show a rotation.
@@ -179,7 +194,8 @@ TEST(IncrementalUpdate, EnvironmentEditMatchesAFreshUpload) {
   scene.environment = banded_environment();
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(1);
-  for (const Edit& edit : {Edit{EnvironmentEdit{.rotation = 2.0f}}, Edit{EnvironmentEdit{.intensity = 3.0f}}})
+  for (const Edit& edit :
+       {Edit{EnvironmentEdit{.rotation = 2.0f}}, Edit{EnvironmentEdit{.intensity = 3.0f}}})
     test::expect_update_matches_fresh(renderer, scene, edit);
 }
 
@@ -193,7 +209,9 @@ TEST(IncrementalUpdate, EnvironmentSwitchMatchesAFreshUpload) {
   renderer.add_samples_full_frame(1);
   const Edit edits[] = {
       EnvironmentEdit{.source = std::filesystem::path("studio")},
-      EnvironmentEdit{.source = std::filesystem::path("sky"), .sun_elevation_degrees = 15.0f, .intensity = 0.001f},
+      EnvironmentEdit{.source = std::filesystem::path("sky"),
+                      .sun_elevation_degrees = 15.0f,
+                      .intensity = 0.001f},
       EnvironmentEdit{.sun_azimuth_degrees = 150.0f},
       EnvironmentEdit{.source = std::filesystem::path("none")},
   };

@@ -107,7 +107,8 @@ TEST_P(RefusedInput, CliExitsTwoAndWritesNothing) {
   ASSERT_EQ(lines.size(), 1u) << run.result.output;
   EXPECT_EQ(lines[0].rfind("hipr: error: ", 0), 0u) << lines[0];
   EXPECT_NE(lines[0].find(m_path.filename().string()), std::string::npos) << lines[0];
-  EXPECT_TRUE(fs::is_empty(run.out_dir)) << "the output folder is not empty";  // no output, no temp file
+  EXPECT_TRUE(fs::is_empty(run.out_dir))
+      << "the output folder is not empty";  // no output, no temp file
 }
 
 TEST_P(FallbackInput, LoaderWarnsAndLoads) {
@@ -115,10 +116,12 @@ TEST_P(FallbackInput, LoaderWarnsAndLoads) {
   Scene scene;
   EXPECT_NO_THROW(scene = load_scene(m_path));
   const std::string warnings = testing::internal::GetCapturedStderr();
-  EXPECT_NE(warnings.find("hipr: warning: " + m_path.filename().string()), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("hipr: warning: " + m_path.filename().string()), std::string::npos)
+      << warnings;
   if (GetParam().file == "mesh/primitive_no_position.gltf") {
     ASSERT_EQ(scene.meshes.size(), 1u);
-    EXPECT_TRUE(scene.meshes[0].primitives.empty()) << "the primitive without POSITION was not skipped";
+    EXPECT_TRUE(scene.meshes[0].primitives.empty())
+        << "the primitive without POSITION was not skipped";
   } else {
     EXPECT_NE(warnings.find("not_found.png"), std::string::npos) << warnings;
     EXPECT_TRUE(scene.textures.empty()) << "no texture uses the missing image";
@@ -140,8 +143,10 @@ std::string invalid_input_name(const testing::TestParamInfo<InvalidInput>& param
   return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, RefusedInput, testing::ValuesIn(invalid_inputs(false)), invalid_input_name);
-INSTANTIATE_TEST_SUITE_P(Files, FallbackInput, testing::ValuesIn(invalid_inputs(true)), invalid_input_name);
+INSTANTIATE_TEST_SUITE_P(Files, RefusedInput, testing::ValuesIn(invalid_inputs(false)),
+                         invalid_input_name);
+INSTANTIATE_TEST_SUITE_P(Files, FallbackInput, testing::ValuesIn(invalid_inputs(true)),
+                         invalid_input_name);
 
 TEST(InvalidInputsList, CoversEveryFile) {
   if (!test::shared_scenes_available()) GTEST_SKIP() << "../shared/scenes is not available";

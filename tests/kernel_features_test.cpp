@@ -16,9 +16,9 @@
 #include "hipr/scene_loader.h"
 #include "render/background_tiles.h"
 #include "render/kernel_features.h"
+#include "shaders/shared/abi.h"
 #include "test_support.h"
 #include "vk/embedded_shaders.h"
-#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
@@ -34,7 +34,8 @@ TEST(KernelFeatures, TableFollowsFeaturesGlsl) {
   ASSERT_FALSE(glsl.empty());
   std::vector<std::string> defines;
   const std::regex guard("#ifndef (HIPR_FEATURE_[A-Z_]+)");
-  for (auto it = std::sregex_iterator(glsl.begin(), glsl.end(), guard); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(glsl.begin(), glsl.end(), guard);
+       it != std::sregex_iterator(); ++it)
     defines.push_back((*it)[1]);
   std::vector<std::string> table;
   uint32_t bits = 0;
@@ -42,14 +43,17 @@ TEST(KernelFeatures, TableFollowsFeaturesGlsl) {
     table.emplace_back(f.define);
     EXPECT_EQ(bits & f.bit, 0u) << f.define << " shares a bit";
     bits |= f.bit;
-    EXPECT_NE(f.material_needs == nullptr, f.scene_needs == nullptr) << f.define << ": one kind of test";
+    EXPECT_NE(f.material_needs == nullptr, f.scene_needs == nullptr)
+        << f.define << ": one kind of test";
   }
-  EXPECT_EQ(table, defines) << "kernel_features.cpp and features.glsl list the same features in the same order";
+  EXPECT_EQ(table, defines)
+      << "kernel_features.cpp and features.glsl list the same features in the same order";
   EXPECT_EQ(bits, all_kernel_features());
 }
 
 TEST(KernelFeatures, TheLambertCornellBoxNeedsOnlyEmission) {
-  EXPECT_EQ(kernel_features(load_scene(test::asset("cornell_box.gltf"))), bit("HIPR_FEATURE_EMISSION"));
+  EXPECT_EQ(kernel_features(load_scene(test::asset("cornell_box.gltf"))),
+            bit("HIPR_FEATURE_EMISSION"));
   EXPECT_EQ(kernel_features(load_scene(test::asset("cornell_sphere.glb"))),
             bit("HIPR_FEATURE_EMISSION") | bit("HIPR_FEATURE_PUNCTUAL_LIGHTS"));
 }
@@ -63,19 +67,21 @@ TEST(KernelFeatures, EachFeatureIsFoundWhereTheSceneUsesIt) {
     return kernel_features(scene) & ~base;
   };
   using M = MaterialParameters;
-  EXPECT_EQ(with([](Scene&, M& m) { m.metallic_roughness_texture = 0; }), bit("HIPR_FEATURE_TEXTURES"));
+  EXPECT_EQ(with([](Scene&, M& m) { m.metallic_roughness_texture = 0; }),
+            bit("HIPR_FEATURE_TEXTURES"));
   EXPECT_EQ(with([](Scene&, M& m) {
               m.base_metalness = 1.0f;
               m.specular_weight = 1.0f;
             }),
             bit("HIPR_FEATURE_METAL"));
   // The texture scales metalness down: the dielectric specular shows where it does.
-  EXPECT_EQ(with([](Scene&, M& m) {
-              m.base_metalness = 1.0f;
-              m.specular_weight = 1.0f;
-              m.metallic_roughness_texture = 0;
-            }),
-            bit("HIPR_FEATURE_METAL") | bit("HIPR_FEATURE_SPECULAR") | bit("HIPR_FEATURE_TEXTURES"));
+  EXPECT_EQ(
+      with([](Scene&, M& m) {
+        m.base_metalness = 1.0f;
+        m.specular_weight = 1.0f;
+        m.metallic_roughness_texture = 0;
+      }),
+      bit("HIPR_FEATURE_METAL") | bit("HIPR_FEATURE_SPECULAR") | bit("HIPR_FEATURE_TEXTURES"));
   EXPECT_EQ(with([](Scene&, M& m) { m.normal_texture = 0; }),
             bit("HIPR_FEATURE_TEXTURES") | bit("HIPR_FEATURE_NORMAL_MAP"));
   EXPECT_EQ(with([](Scene&, M& m) { m.geometry_opacity = 0.5f; }), bit("HIPR_FEATURE_CUTOUT"));
@@ -83,7 +89,8 @@ TEST(KernelFeatures, EachFeatureIsFoundWhereTheSceneUsesIt) {
   EXPECT_EQ(with([](Scene&, M& m) {
               m.transmission_weight = 1.0f;
               m.transmission_depth = 0.1f;
-              m.flags &= ~abi::kMaterialThinWalled;  // glTF without KHR_materials_volume is thin-walled
+              m.flags &=
+                  ~abi::kMaterialThinWalled;  // glTF without KHR_materials_volume is thin-walled
             }),
             bit("HIPR_FEATURE_TRANSMISSION") | bit("HIPR_FEATURE_VOLUME"));
   EXPECT_EQ(with([](Scene&, M& m) {
@@ -175,7 +182,8 @@ Scene half_metal_card() {
   Image image;
   image.name = "metalness";
   image.width = image.height = 2;
-  image.rgba8 = {0, 128, 255, 255, 0, 60, 0, 255, 0, 200, 0, 255, 0, 30, 255, 255};  // G roughness, B metalness
+  image.rgba8 = {0, 128, 255, 255, 0, 60, 0,   255,
+                 0, 200, 0,   255, 0, 30, 255, 255};  // G roughness, B metalness
   scene.images.push_back(image);
   Texture texture;
   texture.name = "metalness";
@@ -185,7 +193,8 @@ Scene half_metal_card() {
   card.base_color = glm::vec3(0.9f, 0.6f, 0.3f);
   card.base_metalness = 1.0f;
   card.metallic_roughness_texture = 0;
-  test::add_card(scene, "card", glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(1.0f, 0.0f, 0.0f)), card);
+  test::add_card(scene, "card", glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(1.0f, 0.0f, 0.0f)),
+                 card);
   return scene;
 }
 
@@ -205,20 +214,27 @@ TEST_P(SpecializedKernel, RendersWhatTheUberKernelRendersBitForBit) {
   EXPECT_EQ(uber.features, all_kernel_features());
   EXPECT_GT(test::mean(uber.image), 0.0) << "a black image would prove nothing";
   EXPECT_EQ(specialized.image.rgb, uber.image.rgb);
-  if (GetParam().fewer_rays) EXPECT_LT(specialized.counters.rays, uber.counters.rays);
-  else EXPECT_EQ(specialized.counters.rays, uber.counters.rays);
+  if (GetParam().fewer_rays)
+    EXPECT_LT(specialized.counters.rays, uber.counters.rays);
+  else
+    EXPECT_EQ(specialized.counters.rays, uber.counters.rays);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, SpecializedKernel,
-    ::testing::Values(SceneCase{"CornellBox", [] { return load_scene(test::asset("cornell_box.gltf")); }, false},
-                      SceneCase{"CornellSphere", [] { return load_scene(test::asset("cornell_sphere.glb")); }, false},
-                      SceneCase{"LampOnly", lamp_only, true},
-                      SceneCase{"TexturedBlendCard", textured_blend_card, false},
-                      SceneCase{"HalfMetalCard", half_metal_card, false},
-                      SceneCase{"FurnaceUnderSky",
-                                [] { return test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.8f, 1.0f); }, false}),
-    [](const testing::TestParamInfo<SceneCase>& param_info) { return std::string(param_info.param.name); });
+    ::testing::Values(
+        SceneCase{"CornellBox", [] { return load_scene(test::asset("cornell_box.gltf")); }, false},
+        SceneCase{"CornellSphere", [] { return load_scene(test::asset("cornell_sphere.glb")); },
+                  false},
+        SceneCase{"LampOnly", lamp_only, true},
+        SceneCase{"TexturedBlendCard", textured_blend_card, false},
+        SceneCase{"HalfMetalCard", half_metal_card, false},
+        SceneCase{"FurnaceUnderSky",
+                  [] { return test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.8f, 1.0f); },
+                  false}),
+    [](const testing::TestParamInfo<SceneCase>& param_info) {
+      return std::string(param_info.param.name);
+    });
 
 // ---- rays nobody needs ----
 
@@ -253,7 +269,9 @@ std::vector<uint32_t> background_mask(const Scene& scene, const RenderSettings& 
   return BackgroundTiles(scene).mask(scene, s.width, s.height, s.tile_size);
 }
 
-size_t count_background(const std::vector<uint32_t>& mask) { return size_t(std::count(mask.begin(), mask.end(), 1u)); }
+size_t count_background(const std::vector<uint32_t>& mask) {
+  return size_t(std::count(mask.begin(), mask.end(), 1u));
+}
 
 Scene cornell_from_afar() {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
@@ -297,8 +315,9 @@ TEST(BackgroundTiles, FollowTheCameraAndTheObjects) {
   Renderer renderer(test::context(), scene, settings());
   renderer.add_samples_full_frame(1);
   const std::vector<uint32_t> before = background_mask(scene);
-  for (const Edit& edit : std::vector<Edit>{TransformEdit{"tall_block", glm::vec3(0.9f, 0.3f, 0.0f), std::nullopt},
-                                            CameraEdit{glm::vec3(0.2f, 0.0f, 0.5f), std::nullopt}}) {
+  for (const Edit& edit :
+       std::vector<Edit>{TransformEdit{"tall_block", glm::vec3(0.9f, 0.3f, 0.0f), std::nullopt},
+                         CameraEdit{glm::vec3(0.2f, 0.0f, 0.5f), std::nullopt}}) {
     const Scene previous = scene;
     apply_edit(scene, edit);
     renderer.update_scene(scene, diff_scenes(previous, scene));
@@ -339,12 +358,13 @@ TEST(BackgroundTiles, HiprStagesAreTheSameWithTheShortcut) {
     test::discover_all(renderer, 2);
     hipr_stages(renderer).build_schedule();
     renderer.render_schedule(0, renderer.tile_count(), 2, true);
-    return Result{renderer.tile_flags(), renderer.schedule(), renderer.tile_weights(), renderer.image(),
-                  renderer.counters().rays};
+    return Result{renderer.tile_flags(), renderer.schedule(), renderer.tile_weights(),
+                  renderer.image(), renderer.counters().rays};
   };
   const Result skipped = run(true), traced = run(false);
   size_t active_background = 0;
-  for (size_t t = 0; t < left.size(); ++t) active_background += left[t] && (traced.flags[t] & abi::kTileActive) ? 1 : 0;
+  for (size_t t = 0; t < left.size(); ++t)
+    active_background += left[t] && (traced.flags[t] & abi::kTileActive) ? 1 : 0;
   EXPECT_GT(active_background, 0u);
   EXPECT_EQ(skipped.flags, traced.flags);
   EXPECT_EQ(skipped.weights, traced.weights);
@@ -357,16 +377,19 @@ TEST(BackgroundTiles, NoneAroundACameraInsideGeometryAllWhenEverythingIsBehind) 
   Scene inside = load_scene(test::asset("cornell_box.gltf"));
   EXPECT_EQ(count_background(background_mask(inside)), 0u);
   // The camera inside the tall block: every direction may hit it.
-  apply_edit(inside, CameraEdit{std::nullopt, glm::translate(glm::mat4(1.0f), glm::vec3(0.3685f, 0.15f, 0.35125f))});
+  apply_edit(inside, CameraEdit{std::nullopt, glm::translate(glm::mat4(1.0f),
+                                                             glm::vec3(0.3685f, 0.15f, 0.35125f))});
   EXPECT_EQ(count_background(background_mask(inside)), 0u);
   // In front of the box, turned away from it (down -Z): nothing to see.
   Scene away = load_scene(test::asset("cornell_box.gltf"));
-  apply_edit(away, CameraEdit{std::nullopt, glm::translate(glm::mat4(1.0f), glm::vec3(0.278f, 0.273f, -0.8f))});
+  apply_edit(away, CameraEdit{std::nullopt,
+                              glm::translate(glm::mat4(1.0f), glm::vec3(0.278f, 0.273f, -0.8f))});
   EXPECT_EQ(count_background(background_mask(away)), 36u);
   // Hidden instances are never hit.
   Scene hidden = cornell_from_afar();
   const size_t shown = count_background(background_mask(hidden));
-  for (Node& node : hidden.nodes) node.visible = node.name != "tall_block" && node.name != "short_block";
+  for (Node& node : hidden.nodes)
+    node.visible = node.name != "tall_block" && node.name != "short_block";
   EXPECT_GE(count_background(background_mask(hidden)), shown);
   for (Node& node : hidden.nodes) node.visible = false;
   EXPECT_EQ(count_background(background_mask(hidden)), 36u);

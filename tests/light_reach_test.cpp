@@ -32,7 +32,8 @@ MaterialParameters white() {
 }
 
 // Adds a light on its own root node (which travels down the node's -Z); returns the node.
-uint32_t add_light(Scene& scene, const std::string& name, const PunctualLight& light, const glm::mat4& local) {
+uint32_t add_light(Scene& scene, const std::string& name, const PunctualLight& light,
+                   const glm::mat4& local) {
   scene.lights.push_back(light);
   scene.lights.back().name = name;
   Node node;
@@ -68,7 +69,8 @@ std::vector<bool> tiles_in_range(const std::vector<glm::vec3>& lamps, float rang
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x < kSize; ++x)
       for (const glm::vec3& lamp : lamps)
-        if (glm::length(glm::vec3(floor_point(x, y), 0.0f) - lamp) < range) tiles[(y / kTile) * kTilesX + x / kTile] = true;
+        if (glm::length(glm::vec3(floor_point(x, y), 0.0f) - lamp) < range)
+          tiles[(y / kTile) * kTilesX + x / kTile] = true;
   return tiles;
 }
 
@@ -93,7 +95,9 @@ Staged stage_one(const Scene& before, const Scene& after, uint32_t spp = 2) {
   return s;
 }
 
-bool active(const std::vector<uint32_t>& flags, uint32_t tile) { return (flags[tile] & abi::kTileActive) != 0; }
+bool active(const std::vector<uint32_t>& flags, uint32_t tile) {
+  return (flags[tile] & abi::kTileActive) != 0;
+}
 
 TEST(LightReach, ChangeSetKeepsTheLightBeforeAndAfter) {
   const Scene before = lamp_floor();
@@ -110,7 +114,8 @@ TEST(LightReach, ALampWhoseRangeCoversHalfTheFrameActivatesThoseTiles) {
   const Scene before = lamp_floor();
   Scene after = before;
   apply_edit(after, TransformEdit{"lamp", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt});
-  const std::vector<bool> expected = tiles_in_range({{-1.0f, 0.0f, 0.2f}, {-0.95f, 0.0f, 0.2f}}, 1.1f);
+  const std::vector<bool> expected =
+      tiles_in_range({{-1.0f, 0.0f, 0.2f}, {-0.95f, 0.0f, 0.2f}}, 1.1f);
   const size_t in_range = size_t(std::count(expected.begin(), expected.end(), true));
   ASSERT_GT(in_range, expected.size() * 4 / 10);  // the scene is what the test says: about half
   ASSERT_LT(in_range, expected.size() * 6 / 10);
@@ -137,9 +142,10 @@ TEST(LightReach, ARangeChangeActivatesWhereEitherRangeReaches) {
 Scene half_shadowed_floor() {
   Scene scene = test::make_card_camera_scene(0.0f);
   test::add_card(scene, "floor", glm::mat4(1.0f), white());
-  test::add_card(scene, "blocker",
-                 glm::scale(glm::translate(glm::mat4(1.0f), {2.0f, 0.0f, 5.0f}), glm::vec3(2.0f, 3.0f, 1.0f)),
-                 test::black_material());
+  test::add_card(
+      scene, "blocker",
+      glm::scale(glm::translate(glm::mat4(1.0f), {2.0f, 0.0f, 5.0f}), glm::vec3(2.0f, 3.0f, 1.0f)),
+      test::black_material());
   PunctualLight sun;
   sun.type = LightType::Directional;
   add_light(scene, "sun", sun, glm::mat4(1.0f));
@@ -152,7 +158,8 @@ TEST(LightReach, ShadowedSurfacesAreNotReached) {
   apply_edit(after, LightEdit{.node = "sun", .color = glm::vec3(1.0f, 0.5f, 0.2f)});
   const Staged s = stage_one(before, after);
   // Left half lit (columns 0-3 of 8), right half in the blocker's shadow in both states.
-  for (uint32_t t = 0; t < s.flags.size(); ++t) EXPECT_EQ(active(s.flags, t), t % kTilesX < kTilesX / 2) << t;
+  for (uint32_t t = 0; t < s.flags.size(); ++t)
+    EXPECT_EQ(active(s.flags, t), t % kTilesX < kTilesX / 2) << t;
 }
 
 TEST(LightReach, TilesWhereTheShadowMovedComeFirst) {
@@ -160,9 +167,12 @@ TEST(LightReach, TilesWhereTheShadowMovedComeFirst) {
   Scene after = before;
   // Tilted about Y: the light now travels toward -X a little, the shadow's edge moves left by
   // 5 tan(4 deg) = 0.35, across a strip of tile columns 2 and 3 (x in [-0.5, 0)).
-  apply_edit(after, TransformEdit{"sun", std::nullopt, glm::rotate(glm::mat4(1.0f), glm::radians(4.0f), glm::vec3(0, 1, 0))});
+  apply_edit(after,
+             TransformEdit{"sun", std::nullopt,
+                           glm::rotate(glm::mat4(1.0f), glm::radians(4.0f), glm::vec3(0, 1, 0))});
   Staged s = stage_one(before, after);
-  for (uint32_t t = 0; t < s.flags.size(); ++t) EXPECT_EQ(active(s.flags, t), t % kTilesX < kTilesX / 2) << t;
+  for (uint32_t t = 0; t < s.flags.size(); ++t)
+    EXPECT_EQ(active(s.flags, t), t % kTilesX < kTilesX / 2) << t;
   test::discover_all(*s.renderer, 1);
   hipr_stages(*s.renderer).build_schedule();
   const std::vector<uint32_t> order = s.renderer->schedule();
@@ -178,7 +188,8 @@ TEST(LightReach, MovedLightScheduleEndsOnTheFullFrameImage) {
   Renderer& renderer = *s.renderer;
   test::discover_all(renderer, 1);
   hipr_stages(renderer).build_schedule();
-  for (uint32_t offset = 0; offset < renderer.tile_count(); offset += 7) renderer.render_schedule(offset, 7, 1, true);
+  for (uint32_t offset = 0; offset < renderer.tile_count(); offset += 7)
+    renderer.render_schedule(offset, 7, 1, true);
   renderer.render_schedule(0, renderer.tile_count(), 2, false);
   Renderer full(test::context(), after, settings());
   full.add_samples_full_frame(3);
@@ -198,7 +209,8 @@ TEST(LightReach, MoreChangedLightsThanItFollowsActivateEveryTile) {
   PunctualLight lamp;
   lamp.range = 0.1f;
   for (uint32_t i = 0; i <= abi::kMaxReachLights; ++i) {
-    const uint32_t node = add_light(before, "far" + std::to_string(i), lamp, glm::translate(glm::mat4(1.0f), {50.0f, 0, 0}));
+    const uint32_t node = add_light(before, "far" + std::to_string(i), lamp,
+                                    glm::translate(glm::mat4(1.0f), {50.0f, 0, 0}));
     before.root_nodes.pop_back();
     before.nodes[node].parent = int(rig);
     before.children[rig].push_back(node);

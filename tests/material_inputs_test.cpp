@@ -6,8 +6,8 @@
 
 #include "card_scene.h"
 #include "render/material_probe.h"
-#include "test_support.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -15,7 +15,9 @@ namespace {
 // One texel of every texture: RGBA = (0.2, 0.4, 0.6, 0.8), so each channel is recognisable.
 constexpr float kTexel[4] = {51 / 255.0f, 102 / 255.0f, 153 / 255.0f, 204 / 255.0f};
 
-float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float srgb_to_linear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
 
 struct Probe {
   Scene scene = test::make_card_camera_scene(0.0f);
@@ -78,9 +80,11 @@ TEST(MaterialInputs, TexturesScaleTheFactorsByTheirGltfChannels) {
   probe.m.specular_anisotropy = 0.5f;
   probe.m.specular_rotation = 0.0f;
   probe.m.coat_normal_scale = 1.0f;
-  for (uint32_t* slot : {&probe.m.transmission_texture, &probe.m.clearcoat_texture, &probe.m.clearcoat_roughness_texture,
-                         &probe.m.clearcoat_normal_texture, &probe.m.sheen_roughness_texture, &probe.m.specular_texture,
-                         &probe.m.iridescence_texture, &probe.m.iridescence_thickness_texture, &probe.m.anisotropy_texture})
+  for (uint32_t* slot :
+       {&probe.m.transmission_texture, &probe.m.clearcoat_texture,
+        &probe.m.clearcoat_roughness_texture, &probe.m.clearcoat_normal_texture,
+        &probe.m.sheen_roughness_texture, &probe.m.specular_texture, &probe.m.iridescence_texture,
+        &probe.m.iridescence_thickness_texture, &probe.m.anisotropy_texture})
     *slot = probe.linear;
   probe.m.sheen_color_texture = probe.m.specular_color_texture = probe.srgb;
   const abi::MaterialInputsProbe p = probe.run();
@@ -93,12 +97,15 @@ TEST(MaterialInputs, TexturesScaleTheFactorsByTheirGltfChannels) {
   EXPECT_NEAR(p.thinFilmWeight, 0.5f * r, 1e-5f) << "iridescenceTexture.r";
   EXPECT_NEAR(p.thinFilmThickness, 100.0f + 500.0f * g, 1e-3f) << "iridescenceThicknessTexture.g";
   EXPECT_NEAR(p.anisotropyStrength, 0.5f * b, 1e-5f) << "anisotropyTexture.b";
-  const glm::vec3 colour = 0.5f * glm::vec3(srgb_to_linear(r), srgb_to_linear(g), srgb_to_linear(b));
+  const glm::vec3 colour =
+      0.5f * glm::vec3(srgb_to_linear(r), srgb_to_linear(g), srgb_to_linear(b));
   expect_near(p.fuzzColor, colour, "sheenColorTexture.rgb (sRGB)");
   expect_near(p.specularColor, colour, "specularColorTexture.rgb (sRGB)");
   // anisotropyTexture.rg and clearcoatNormalTexture.rgb in the card's frame (+X, +Y, +Z).
-  expect_near(p.anisotropyDirection, glm::normalize(glm::vec3(2 * r - 1, 2 * g - 1, 0)), "anisotropy direction");
-  expect_near(p.coatNormal, glm::normalize(glm::vec3(2 * r - 1, 2 * g - 1, 2 * b - 1)), "coat normal");
+  expect_near(p.anisotropyDirection, glm::normalize(glm::vec3(2 * r - 1, 2 * g - 1, 0)),
+              "anisotropy direction");
+  expect_near(p.coatNormal, glm::normalize(glm::vec3(2 * r - 1, 2 * g - 1, 2 * b - 1)),
+              "coat normal");
 }
 
 }  // namespace

@@ -30,7 +30,8 @@ RenderSettings settings() { return test::render_settings(48, 48, 16, 8, 9); }
 
 TEST_P(MaterialScenes, RenderWithoutNonFiniteSamples) {
   if (!test::shared_scenes_available()) GTEST_SKIP() << "../shared/scenes is not available";
-  EXPECT_GT(test::mean(test::render_finite(load(GetParam()), settings(), 4)), 0.01) << "a black frame";
+  EXPECT_GT(test::mean(test::render_finite(load(GetParam()), settings(), 4)), 0.01)
+      << "a black frame";
 }
 
 ImageRGB render(const Scene& scene, const RenderSettings& s) {
@@ -53,7 +54,8 @@ TEST_P(MaterialScenes, SkippingWhatTheSceneDoesNotNeedChangesNoPixel) {
 
 INSTANTIATE_TEST_SUITE_P(
     Shared, MaterialScenes,
-    ::testing::Values(MaterialScene{"MetalRoughSpheresNoTextures", "MetalRoughSpheresNoTextures.glb"},
+    ::testing::Values(MaterialScene{"MetalRoughSpheresNoTextures",
+                                    "MetalRoughSpheresNoTextures.glb"},
                       MaterialScene{"TransmissionTest", "TransmissionTest.glb"},
                       MaterialScene{"TransmissionRoughnessTest", "TransmissionRoughnessTest.glb"},
                       MaterialScene{"AttenuationTest", "AttenuationTest.glb"},

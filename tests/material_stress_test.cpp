@@ -7,8 +7,8 @@
 #include <string>
 
 #include "hipr/renderer.h"
-#include "test_support.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -68,7 +68,8 @@ class MaterialStress : public ::testing::TestWithParam<std::tuple<Extreme, float
 
 TEST_P(MaterialStress, NoNonFiniteSamples) {
   const auto& [extreme, scale] = GetParam();
-  Scene scene = test::make_furnace_scene(scale, glm::vec3(3.0f * scale, -2.0f * scale, scale), 1.0f, 1.0f);
+  Scene scene =
+      test::make_furnace_scene(scale, glm::vec3(3.0f * scale, -2.0f * scale, scale), 1.0f, 1.0f);
   for (Material& m : scene.materials) extreme.set(m.params);
   RenderSettings s;
   s.width = s.height = 24;
@@ -78,11 +79,14 @@ TEST_P(MaterialStress, NoNonFiniteSamples) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Extremes, MaterialStress,
-                         ::testing::Combine(::testing::ValuesIn(kExtremes), ::testing::Values(1e-4f, 1.0f, 1e5f)),
+                         ::testing::Combine(::testing::ValuesIn(kExtremes),
+                                            ::testing::Values(1e-4f, 1.0f, 1e5f)),
                          [](const auto& test_info) {
                            const float scale = std::get<1>(test_info.param);
                            return std::string(std::get<0>(test_info.param).name) +
-                                  (scale < 1.0f ? "_Tiny" : scale > 1.0f ? "_Huge" : "_Unit");
+                                  (scale < 1.0f   ? "_Tiny"
+                                   : scale > 1.0f ? "_Huge"
+                                                  : "_Unit");
                          });
 
 }  // namespace

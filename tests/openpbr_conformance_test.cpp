@@ -43,8 +43,8 @@ TEST(OpenPbrConformance, ColouredCoatOverTheDefaultBase) {
     p.coatEta = 1.6f;
     p.coatColor = glm::vec3(1.0f, 0.5f, 0.5f);
     const glm::dvec3 a = albedo(p, view(kCosines[k]), 200000);
-    std::printf("coloured coat, cos %.1f: R %.3f G %.3f (reference %.3f %.3f)\n", kCosines[k], a.x, a.y, reference[k][0],
-                reference[k][1]);
+    std::printf("coloured coat, cos %.1f: R %.3f G %.3f (reference %.3f %.3f)\n", kCosines[k], a.x,
+                a.y, reference[k][0], reference[k][1]);
     EXPECT_LT(relative(a.x, reference[k][0]), 0.02) << "R at cos " << kCosines[k] << ": " << a.x;
     EXPECT_LT(relative(a.y, reference[k][1]), 0.02) << "G at cos " << kCosines[k] << ": " << a.y;
   }
@@ -58,21 +58,26 @@ TEST(OpenPbrConformance, BaseReflectionUnderACoatSeesTheCoatsIndex) {
   EXPECT_NEAR(shader::specular_eta_under_coat(eta, 1.0f, 1.0f, 1.6f), 1.6f / 1.5f, 1e-4f);
   EXPECT_NEAR(shader::specular_eta_under_coat(eta, 1.0f, 0.5f, 1.6f), 1.5f / 1.3f, 1e-4f);
   EXPECT_EQ(shader::specular_eta_under_coat(eta, 1.0f, 0.0f, 1.6f), eta);
-  EXPECT_EQ(shader::specular_eta_under_coat(shader::ior_with_specular_weight(eta, 0.0f), 0.0f, 1.0f, 1.6f), 1.0f);
+  EXPECT_EQ(shader::specular_eta_under_coat(shader::ior_with_specular_weight(eta, 0.0f), 0.0f, 1.0f,
+                                            1.6f),
+            1.0f);
   const auto f0 = [](float n) { return (n - 1) * (n - 1) / ((n + 1) * (n + 1)); };
   for (float weight : {0.01f, 0.3f, 0.8f}) {
-    const float under = shader::specular_eta_under_coat(shader::ior_with_specular_weight(eta, weight), weight, 1.0f, 1.6f);
+    const float under = shader::specular_eta_under_coat(
+        shader::ior_with_specular_weight(eta, weight), weight, 1.0f, 1.6f);
     EXPECT_NEAR(f0(under), weight * f0(1.6f / 1.5f), 1e-5f) << "weight " << weight;
   }
 }
 
 // The coat roughens the base's specular as the specification recommends.
 TEST(OpenPbrConformance, ARoughCoatRoughensTheBase) {
-  EXPECT_NEAR(shader::coat_roughened(0.3f, 0.1f, 1.0f), std::pow(0.3f * 0.3f * 0.3f * 0.3f + 2.0e-4f, 0.25f), 1e-6f);
+  EXPECT_NEAR(shader::coat_roughened(0.3f, 0.1f, 1.0f),
+              std::pow(0.3f * 0.3f * 0.3f * 0.3f + 2.0e-4f, 0.25f), 1e-6f);
   EXPECT_EQ(shader::coat_roughened(0.3f, 0.8f, 0.0f), 0.3f);
   EXPECT_NEAR(shader::coat_roughened(0.3f, 0.0f, 1.0f), 0.3f, 1e-6f);
   EXPECT_EQ(shader::coat_roughened(0.2f, 1.0f, 1.0f), 1.0f);
-  EXPECT_NEAR(shader::coat_roughened(0.0f, 0.5f, 0.5f), 0.5f * std::pow(2.0f * 0.0625f, 0.25f), 1e-6f);
+  EXPECT_NEAR(shader::coat_roughened(0.0f, 0.5f, 0.5f), 0.5f * std::pow(2.0f * 0.0625f, 0.25f),
+              1e-6f);
 }
 
 // Under a coat the film sees the coat's index above it: a film of the coat's own index is then
@@ -90,13 +95,18 @@ TEST(OpenPbrConformance, AFilmOfTheCoatsIndexUnderTheCoatIsInvisible) {
     p.thinFilmIor = 1.6f;
     p.thinFilmThickness = 400.0f;
     const glm::vec3 filmed = shader::openpbr_eval_cos(p, wo, wi);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(filmed[c], bare[c], 1e-3f * bare[c] + 1e-6f) << "dielectric, cos " << cosine;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(filmed[c], bare[c], 1e-3f * bare[c] + 1e-6f) << "dielectric, cos " << cosine;
     p.thinFilmIor = 1.3f;
-    EXPECT_GT(glm::length(shader::openpbr_eval_cos(p, wo, wi) - bare), 1e-3f * glm::length(bare)) << "a film of another index shows";
+    EXPECT_GT(glm::length(shader::openpbr_eval_cos(p, wo, wi) - bare), 1e-3f * glm::length(bare))
+        << "a film of another index shows";
     const glm::vec3 nk = glm::vec3(0.9f, 0.6f, 0.3f);
-    const glm::vec3 metal_under = shader::fresnel_thin_film_metal(cosine, 1.6f, nk, glm::vec3(1.0f), 400.0f, 1.6f);
-    const glm::vec3 metal_thin = shader::fresnel_thin_film_metal(cosine, 1.6f, nk, glm::vec3(1.0f), 0.0f, 1.6f);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(metal_under[c], metal_thin[c], 2e-3f) << "metal, cos " << cosine;
+    const glm::vec3 metal_under =
+        shader::fresnel_thin_film_metal(cosine, 1.6f, nk, glm::vec3(1.0f), 400.0f, 1.6f);
+    const glm::vec3 metal_thin =
+        shader::fresnel_thin_film_metal(cosine, 1.6f, nk, glm::vec3(1.0f), 0.0f, 1.6f);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(metal_under[c], metal_thin[c], 2e-3f) << "metal, cos " << cosine;
   }
 }
 
@@ -135,7 +145,8 @@ TEST(OpenPbrConformance, FuzzAlbedoIsTheVolumes) {
   for (float alpha : {0.37f, 0.81f})
     for (float cosine : {0.23f, 0.64f, 0.97f}) {
       const double fresh = tools::sheen_volume_albedo(cosine, alpha, 200000, 99);
-      EXPECT_NEAR(shader::fuzz_energy(cosine, alpha), fresh, 0.004 + 0.02 * fresh) << "alpha " << alpha << " cos " << cosine;
+      EXPECT_NEAR(shader::fuzz_energy(cosine, alpha), fresh, 0.004 + 0.02 * fresh)
+          << "alpha " << alpha << " cos " << cosine;
     }
 }
 
@@ -151,7 +162,8 @@ TEST(OpenPbrConformance, FuzzOverDiffuse) {
     EXPECT_NEAR(albedo(p, view(kCosines[k]), 100000).x, 1.0, 0.005) << "white, cos " << kCosines[k];
     p.baseColor = glm::vec3(0.5f);
     const double a = albedo(p, view(kCosines[k]), 100000).x;
-    std::printf("fuzz over diffuse 0.5, cos %.1f: %.3f (reference %.3f)\n", kCosines[k], a, reference[k]);
+    std::printf("fuzz over diffuse 0.5, cos %.1f: %.3f (reference %.3f)\n", kCosines[k], a,
+                reference[k]);
     EXPECT_LT(relative(a, reference[k]), 0.02) << "diffuse 0.5, cos " << kCosines[k];
   }
 }
@@ -161,7 +173,8 @@ TEST(OpenPbrConformance, FuzzOverDiffuse) {
 // the spectrum (what the reference's recommended random wavelengths converge to), so colours
 // agree in kind, not to 2 %: within 0.04 per channel. Without the film the metal is unchanged.
 TEST(OpenPbrConformance, ThinFilmOverMetal) {
-  const double reference[3][3] = {{0.873, 0.694, 0.223}, {0.930, 0.703, 0.384}, {0.826, 0.830, 0.601}};
+  const double reference[3][3] = {
+      {0.873, 0.694, 0.223}, {0.930, 0.703, 0.384}, {0.826, 0.830, 0.601}};
   for (int k = 0; k < 3; ++k) {
     OpenPbrParams p = metal(0.2f);
     p.baseColor = glm::vec3(0.9f, 0.6f, 0.3f);
@@ -171,10 +184,15 @@ TEST(OpenPbrConformance, ThinFilmOverMetal) {
     const glm::dvec3 film = albedo(p, view(kCosines[k]), 200000);
     p.thinFilm = 0.0f;
     const glm::dvec3 bare = albedo(p, view(kCosines[k]), 200000);
-    std::printf("film over metal, cos %.1f: %.3f %.3f %.3f (reference %.3f %.3f %.3f; bare metal %.3f %.3f %.3f)\n", kCosines[k],
-                film.x, film.y, film.z, reference[k][0], reference[k][1], reference[k][2], bare.x, bare.y, bare.z);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(film[c], reference[k][c], 0.04) << "channel " << c << " cos " << kCosines[k];
-    EXPECT_GT(std::abs(film.z - bare.z), 0.02) << "the film must change the metal's colour, cos " << kCosines[k];
+    std::printf(
+        "film over metal, cos %.1f: %.3f %.3f %.3f (reference %.3f %.3f %.3f; bare metal %.3f %.3f "
+        "%.3f)\n",
+        kCosines[k], film.x, film.y, film.z, reference[k][0], reference[k][1], reference[k][2],
+        bare.x, bare.y, bare.z);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(film[c], reference[k][c], 0.04) << "channel " << c << " cos " << kCosines[k];
+    EXPECT_GT(std::abs(film.z - bare.z), 0.02)
+        << "the film must change the metal's colour, cos " << kCosines[k];
   }
 }
 
@@ -194,9 +212,11 @@ TEST(OpenPbrConformance, MetalIndexReproducesTheBaseColour) {
   for (float r : {0.05f, 0.3f, 0.6f, 0.95f})
     for (float g : {0.0f, 0.5f, 1.0f}) {
       const glm::vec2 nk = shader::metal_complex_index(r, g);
-      const float normal = ((nk.x - 1) * (nk.x - 1) + nk.y * nk.y) / ((nk.x + 1) * (nk.x + 1) + nk.y * nk.y);
+      const float normal =
+          ((nk.x - 1) * (nk.x - 1) + nk.y * nk.y) / ((nk.x + 1) * (nk.x + 1) + nk.y * nk.y);
       EXPECT_NEAR(normal, r, 1e-4f) << "r " << r << " g " << g;
-      const glm::vec3 vacuum = shader::fresnel_thin_film_metal(1.0f, 1.0f, glm::vec3(r), glm::vec3(g), 400.0f, 1.0f);
+      const glm::vec3 vacuum =
+          shader::fresnel_thin_film_metal(1.0f, 1.0f, glm::vec3(r), glm::vec3(g), 400.0f, 1.0f);
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(vacuum[c], r, 2e-3f) << "r " << r << " g " << g;
     }
 }
@@ -206,14 +226,16 @@ TEST(OpenPbrConformance, MetalIndexReproducesTheBaseColour) {
 // F_avg^2: hipr is 2-7 % darker at normal incidence and up to 10 % brighter in blue at grazing
 // (docs/openpbr.md). Pinned so a change shows.
 TEST(OpenPbrConformance, RoughColouredMetalStaysNearTheReference) {
-  const double reference[3][3] = {{0.863, 0.503, 0.216}, {0.867, 0.515, 0.229}, {0.879, 0.550, 0.268}};
+  const double reference[3][3] = {
+      {0.863, 0.503, 0.216}, {0.867, 0.515, 0.229}, {0.879, 0.550, 0.268}};
   for (int k = 0; k < 3; ++k) {
     OpenPbrParams p = metal(0.8f);
     p.baseColor = glm::vec3(0.9f, 0.6f, 0.3f);
     const glm::dvec3 a = albedo(p, view(kCosines[k]), 100000);
-    std::printf("rough metal, cos %.1f: %.3f %.3f %.3f (reference %.3f %.3f %.3f)\n", kCosines[k], a.x, a.y, a.z, reference[k][0],
-                reference[k][1], reference[k][2]);
-    for (int c = 0; c < 3; ++c) EXPECT_LT(relative(a[c], reference[k][c]), 0.1) << "channel " << c << " cos " << kCosines[k];
+    std::printf("rough metal, cos %.1f: %.3f %.3f %.3f (reference %.3f %.3f %.3f)\n", kCosines[k],
+                a.x, a.y, a.z, reference[k][0], reference[k][1], reference[k][2]);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_LT(relative(a[c], reference[k][c]), 0.1) << "channel " << c << " cos " << kCosines[k];
   }
 }
 

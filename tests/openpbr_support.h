@@ -16,7 +16,6 @@ namespace hipr::test {
 
 using shader::OpenPbrParams;
 
-
 // A white, non-absorbing dielectric: the spec's defaults with a white base.
 inline OpenPbrParams dielectric(float roughness, float ior = 1.5f) {
   OpenPbrParams p;
@@ -80,7 +79,8 @@ inline OpenPbrParams random_params(unsigned seed) {
   p.transmission = u(rng);
   p.transmissionColor = color();
   p.thinWalled = u(rng) < 0.5f;
-  if (p.thinWalled && p.eta < 1.0f) p.eta = 1.0f / p.eta;  // a slab has the same index on both sides
+  if (p.thinWalled && p.eta < 1.0f)
+    p.eta = 1.0f / p.eta;  // a slab has the same index on both sides
   p.subsurface = u(rng);
   p.subsurfaceColor = color();
   p.coat = u(rng);
@@ -98,7 +98,9 @@ inline OpenPbrParams random_params(unsigned seed) {
   return p;
 }
 
-inline glm::vec3 direction(float theta) { return glm::vec3(std::sin(theta), 0.0f, std::cos(theta)); }
+inline glm::vec3 direction(float theta) {
+  return glm::vec3(std::sin(theta), 0.0f, std::cos(theta));
+}
 
 // The BSDF seen from wo through bsdf_stats.h's sampler interface. Delta events (index-matched
 // pass-through) carry no density: the chi-square sampler skips them, the albedo one counts them.
@@ -117,7 +119,8 @@ inline SampleFn sampler(const OpenPbrParams& p, glm::vec3 wo, bool count_delta =
 }
 
 inline ChiSquareResult fit(const OpenPbrParams& p, glm::vec3 wo) {
-  return chi_square_sphere(sampler(p, wo), [&](glm::vec3 wi) { return shader::openpbr_pdf(p, wo, wi); });
+  return chi_square_sphere(sampler(p, wo),
+                           [&](glm::vec3 wi) { return shader::openpbr_pdf(p, wo, wi); });
 }
 
 inline glm::dvec3 albedo(const OpenPbrParams& p, glm::vec3 wo, int samples = 40000) {

@@ -34,12 +34,9 @@ struct Case {
 // furnace and the analytic tests.
 std::vector<Case> lobe_cases() {
   std::vector<Case> cases = {
-      {"diffuse_under_specular", dielectric(0.4f)},
-      {"metal", metal(0.5f)},
-      {"glass_entering", glass(0.4f, 1.5f)},
-      {"glass_leaving", glass(0.4f, 1.0f / 1.5f)},
-      {"thin_walled_glass", glass(0.4f, 1.5f, true)},
-      {"coat_over_diffuse", coated(0.5f, 0.3f)},
+      {"diffuse_under_specular", dielectric(0.4f)},   {"metal", metal(0.5f)},
+      {"glass_entering", glass(0.4f, 1.5f)},          {"glass_leaving", glass(0.4f, 1.0f / 1.5f)},
+      {"thin_walled_glass", glass(0.4f, 1.5f, true)}, {"coat_over_diffuse", coated(0.5f, 0.3f)},
   };
   OpenPbrParams aniso = metal(0.6f);
   aniso.alpha = shader::ggx_alpha_anisotropic(0.6f, 0.8f);
@@ -56,7 +53,8 @@ std::vector<Case> lobe_cases() {
   translucent.subsurface = 1.0f;
   translucent.subsurfaceColor = glm::vec3(0.9f, 0.5f, 0.2f);
   cases.push_back({"thin_subsurface", translucent});
-  for (unsigned seed = 1; seed <= 8; ++seed) cases.push_back({"random_" + std::to_string(seed), random_params(seed)});
+  for (unsigned seed = 1; seed <= 8; ++seed)
+    cases.push_back({"random_" + std::to_string(seed), random_params(seed)});
   return cases;
 }
 
@@ -67,17 +65,19 @@ TEST_P(OpenPbrFit, SamplesFollowThePdf) {
   const Case c = lobe_cases()[size_t(index)];
   const glm::vec3 wo = direction(theta);
   const test::ChiSquareResult r = fit(c.params, wo);
-  EXPECT_GT(r.p_value, 0.001) << c.name << " chi2 " << r.statistic << " dof " << r.degrees_of_freedom;
+  EXPECT_GT(r.p_value, 0.001) << c.name << " chi2 " << r.statistic << " dof "
+                              << r.degrees_of_freedom;
   // Samples that leave on the wrong side are rejected, so the pdf integrates to the sampled
   // mass (not to 1); delta events are neither.
   EXPECT_NEAR(r.pdf_integral, r.sampled_fraction, 0.01) << c.name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Lobes, OpenPbrFit,
-                         ::testing::Combine(::testing::Range(0, 18), ::testing::Values(0.3f, 1.0f, 1.4f)),
+                         ::testing::Combine(::testing::Range(0, 18),
+                                            ::testing::Values(0.3f, 1.0f, 1.4f)),
                          [](const auto& test_info) {
-                           return lobe_cases()[size_t(std::get<0>(test_info.param))].name + "_theta" +
-                                  std::to_string(int(std::get<1>(test_info.param) * 10));
+                           return lobe_cases()[size_t(std::get<0>(test_info.param))].name +
+                                  "_theta" + std::to_string(int(std::get<1>(test_info.param) * 10));
                          });
 
 // A white stack made at each roughness: reflects (and transmits) all it receives to within
@@ -116,7 +116,8 @@ TEST(OpenPbrFurnace, RoughDiffuseUnderTheSpecularLayerKeepsNearlyAllItsEnergy) {
     for (float theta : {0.0f, 0.6f, 1.1f, 1.45f}) {
       OpenPbrParams p = dielectric(roughness);
       p.diffuseRoughness = 1.0f;
-      EXPECT_NEAR(albedo(p, direction(theta), 100000).x, 1.0, 0.02) << "roughness " << roughness << " theta " << theta;
+      EXPECT_NEAR(albedo(p, direction(theta), 100000).x, 1.0, 0.02)
+          << "roughness " << roughness << " theta " << theta;
     }
 }
 
@@ -124,8 +125,10 @@ TEST(OpenPbrFurnace, AlbedoNeverExceedsOne) {
   for (unsigned seed = 100; seed < 140; ++seed) {
     OpenPbrParams p = random_params(seed);
     // White everything: the worst case for energy gain.
-    p.baseColor = p.specularColor = p.transmissionColor = p.subsurfaceColor = p.coatColor = p.fuzzColor = glm::vec3(1.0f);
-    p.thinFilm = 0.0f;  // a film may reflect more than the bare interface: not an energy-neutral layer
+    p.baseColor = p.specularColor = p.transmissionColor = p.subsurfaceColor = p.coatColor =
+        p.fuzzColor = glm::vec3(1.0f);
+    p.thinFilm =
+        0.0f;  // a film may reflect more than the bare interface: not an energy-neutral layer
     for (float theta : {0.2f, 1.0f, 1.5f}) {
       const glm::dvec3 a = albedo(p, direction(theta), 20000);
       EXPECT_LE(a.x, 1.01) << "seed " << seed << " theta " << theta;
@@ -137,30 +140,35 @@ TEST(OpenPbrFurnace, AlbedoNeverExceedsOne) {
 // albedo tables agree with the lobes they stand for, and the layering is exact.
 TEST(OpenPbrFurnace, WhiteLayerStacksKeepTheirEnergy) {
   const FurnaceRow rows[] = {
-      {"coat over white diffuse", [](float r) {
+      {"coat over white diffuse",
+       [](float r) {
          OpenPbrParams p = coated(0.5f, r);
          p.specularWeight = 0.0f;
          p.eta = 1.0f;  // what shading makes of any ior at specular_weight 0
          return p;
        }},
       {"coat over white dielectric", [](float r) { return coated(0.5f, r); }},
-      {"coat over white metal", [](float r) {
+      {"coat over white metal",
+       [](float r) {
          OpenPbrParams p = coated(r, 0.1f);
          p.metalness = 1.0f;
          return p;
        }},
-      {"coat over glass", [](float r) {
+      {"coat over glass",
+       [](float r) {
          OpenPbrParams p = coated(r, 0.2f);
          p.transmission = 1.0f;
          return p;
        }},
-      {"fuzz over white dielectric", [](float r) {
+      {"fuzz over white dielectric",
+       [](float r) {
          OpenPbrParams p = dielectric(0.5f);
          p.fuzz = 1.0f;
          p.fuzzRoughness = r;
          return p;
        }},
-      {"fuzz over coat over white dielectric", [](float r) {
+      {"fuzz over coat over white dielectric",
+       [](float r) {
          OpenPbrParams p = coated(0.5f, r);
          p.fuzz = 1.0f;
          p.fuzzRoughness = 1.0f - r;
@@ -201,7 +209,8 @@ TEST(OpenPbrReciprocity, OpaqueConfigurationsWithoutCoatOrFuzz) {
   for (const OpenPbrParams& p : configs)
     for (float a : {0.1f, 0.6f, 1.2f})
       for (float b : {0.2f, 0.9f, 1.4f}) {
-        const glm::vec3 wo = direction(a), wi = glm::vec3(-std::sin(b) * 0.6f, std::sin(b) * 0.8f, std::cos(b));
+        const glm::vec3 wo = direction(a),
+                        wi = glm::vec3(-std::sin(b) * 0.6f, std::sin(b) * 0.8f, std::cos(b));
         const glm::vec3 f1 = shader::openpbr_eval_cos(p, wo, wi) / wi.z;
         const glm::vec3 f2 = shader::openpbr_eval_cos(p, wi, wo) / wo.z;
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(f1[c], f2[c], 1e-3f * std::max(1.0f, f1[c]));
@@ -229,12 +238,15 @@ TEST(OpenPbrAnalytic, SmoothDielectricReflectsFresnel) {
   OpenPbrParams p = dielectric(0.0f);
   p.baseColor = glm::vec3(0.0f);
   for (float theta : {0.0f, 0.8f, 1.2f})
-    EXPECT_NEAR(albedo(p, direction(theta), 20000).x, shader::fresnel_dielectric(std::cos(theta), 1.5f), 0.01) << theta;
+    EXPECT_NEAR(albedo(p, direction(theta), 20000).x,
+                shader::fresnel_dielectric(std::cos(theta), 1.5f), 0.01)
+        << theta;
 }
 
 // Share of the albedo that leaves on each side of a smooth interface. Transmitted samples must
 // leave along `expected_transmitted`, up to the long tail of even the smoothest GGX lobe.
-std::pair<double, double> reflected_and_transmitted(const OpenPbrParams& p, glm::vec3 wo, glm::vec3 expected_transmitted) {
+std::pair<double, double> reflected_and_transmitted(const OpenPbrParams& p, glm::vec3 wo,
+                                                    glm::vec3 expected_transmitted) {
   const auto sample = sampler(p, wo, true);
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -270,7 +282,8 @@ TEST(OpenPbrAnalytic, SmoothGlassSplitsByFresnelAndRefractsBySnell) {
 
 TEST(OpenPbrAnalytic, TotalInternalReflectionBeyondTheCriticalAngle) {
   const float critical = std::asin(1.0f / 1.5f);
-  const auto [r, t] = reflected_and_transmitted(glass(0.0f, 1.0f / 1.5f), direction(critical + 0.1f), glm::vec3(0.0f));
+  const auto [r, t] = reflected_and_transmitted(glass(0.0f, 1.0f / 1.5f),
+                                                direction(critical + 0.1f), glm::vec3(0.0f));
   EXPECT_NEAR(r, 1.0, 0.01);
   EXPECT_EQ(t, 0.0);
 }
@@ -327,7 +340,9 @@ TEST(OpenPbrTables, LookupsMatchDirectIntegration) {
         const int n = 40000;
         for (int i = 0; i < n; ++i) {
           glm::vec3 wi;
-          if (shader::dielectric_interface_sample(wo, eta, p.alpha, glm::vec2(u(rng), u(rng)), u(rng), wi) != 1) continue;
+          if (shader::dielectric_interface_sample(wo, eta, p.alpha, glm::vec2(u(rng), u(rng)),
+                                                  u(rng), wi) != 1)
+            continue;
           sum += shader::ggx_g2(wo, wi, p.alpha) / shader::ggx_g1(wo, p.alpha);
         }
         EXPECT_NEAR(shader::dielectric_interface_energy(wo.z, p.alpha.x, eta), sum / n, 0.01)
@@ -351,10 +366,13 @@ TEST(OpenPbrRobustness, ExtremeInputsStayFinite) {
   zero.specularWeight = 0.0f;
   zero.baseColor = glm::vec3(0.0f);
   configs.push_back(zero);
-  const auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  const auto finite = [](glm::vec3 v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+  };
   for (const OpenPbrParams& p : configs)
     for (float theta : {0.0f, 1.5707f, 1.5708f, 3.0f})
-      for (glm::vec2 u : {glm::vec2(0.0f), glm::vec2(0.999999f), glm::vec2(0.5f, 0.0f), glm::vec2(1.0f)})
+      for (glm::vec2 u :
+           {glm::vec2(0.0f), glm::vec2(0.999999f), glm::vec2(0.5f, 0.0f), glm::vec2(1.0f)})
         for (float u_lobe : {0.0f, 0.3f, 0.7f, 0.999999f}) {
           glm::vec3 wo = direction(theta);
           wo.z = std::max(wo.z, 1e-4f);  // bsdf.glsl lifts wo above the horizon the same way

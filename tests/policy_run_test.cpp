@@ -31,9 +31,11 @@ TEST(PolicyRun, ADragOfOneEditIsScheduledAsThatEdit) {
   options.dense_until = 1e9;  // both evaluate after every step
   ASSERT_GT(options.schedule.edit_lead, 0u);
 
-  const bench::PolicyRun single = bench::run_policy(renderer, after, changes, start, reference, {}, options);
+  const bench::PolicyRun single =
+      bench::run_policy(renderer, after, changes, start, reference, {}, options);
   renderer.update_scene(before, diff_scenes(after, before));
-  const bench::PolicyRun drag = bench::run_drag(renderer, {before, after}, {changes}, start, {reference}, 0.25, options);
+  const bench::PolicyRun drag =
+      bench::run_drag(renderer, {before, after}, {changes}, start, {reference}, 0.25, options);
   ASSERT_TRUE(single.converged);
   ASSERT_TRUE(drag.converged);
   ASSERT_EQ(drag.curve.size(), single.curve.size());

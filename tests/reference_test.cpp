@@ -5,8 +5,8 @@
 
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
-#include "test_support.h"
 #include "image/image_io.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {

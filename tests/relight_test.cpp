@@ -40,7 +40,8 @@ ImageRGB relit_after(const Scene& before, const Edit& edit, uint32_t spp, bool* 
 double max_relative_difference(const ImageRGB& a, const ImageRGB& b) {
   double worst = 0.0;
   for (size_t i = 0; i < a.rgb.size(); ++i)
-    worst = std::max(worst, std::abs(double(a.rgb[i]) - b.rgb[i]) / std::max(1e-3, double(std::abs(b.rgb[i]))));
+    worst = std::max(
+        worst, std::abs(double(a.rgb[i]) - b.rgb[i]) / std::max(1e-3, double(std::abs(b.rgb[i]))));
   return worst;
 }
 
@@ -67,7 +68,8 @@ TEST(LightGroups, EachEmitterHasAGroupAndTheSharesSumToTheImage) {
 TEST(LightGroups, RadianceIsTheSameBitForBitWithoutGroups) {
   RenderSettings without = settings();
   without.light_groups = 0;
-  for (const Scene& scene : {sphere_box(), load_scene(test::asset("furnace_sphere.gltf"), {.environment = "sky"})})
+  for (const Scene& scene :
+       {sphere_box(), load_scene(test::asset("furnace_sphere.gltf"), {.environment = "sky"})})
     EXPECT_EQ(render(scene, settings(), 4).rgb, render(scene, without, 4).rgb);
 }
 
@@ -88,14 +90,16 @@ TEST(LightGroups, OverTheBudgetEmittersArePooledAndNotRelit) {
 // on its power: the relit image is the edited scene's render, up to float rounding.
 TEST(Relight, OneEmitterRelitIsTheEditedRenderExactly) {
   const Scene before = load_scene(test::asset("cornell_box.gltf"));
-  const Edit dimmer = MaterialEdit{"light", {{"emission_luminance", {2.5f}}, {"emission_color", {1.0f, 0.5f, 0.25f}}}};
+  const Edit dimmer = MaterialEdit{
+      "light", {{"emission_luminance", {2.5f}}, {"emission_color", {1.0f, 0.5f, 0.25f}}}};
   bool relit = false;
   const ImageRGB image = relit_after(before, dimmer, 16, &relit);
   ASSERT_TRUE(relit);
   Scene after = before;
   apply_edit(after, dimmer);
   EXPECT_LT(max_relative_difference(image, render(after, settings(), 16)), 1e-4);
-  EXPECT_GT(max_relative_difference(render(before, settings(), 16), render(after, settings(), 16)), 0.5);
+  EXPECT_GT(max_relative_difference(render(before, settings(), 16), render(after, settings(), 16)),
+            0.5);
 }
 
 // With two emitters, light selection follows their powers, so the edited scene's samples differ;
@@ -119,7 +123,8 @@ TEST(Relight, TwoEmittersRelitMatchesTheEditedSceneWithinNoise) {
   const ImageRGB reference = render(after, s, 1024);
   EXPECT_LT(test::error_to_noise_ratio(relit, reference), 1.6);
   std::vector<ImageRGB> stale;
-  for (uint32_t seed : {11u, 12u, 13u}) stale.push_back(render(before, test::render_settings(32, 32, 8, 6, seed), 64));
+  for (uint32_t seed : {11u, 12u, 13u})
+    stale.push_back(render(before, test::render_settings(32, 32, 8, 6, seed), 64));
   EXPECT_GT(test::error_to_noise_ratio(stale, reference), 3.0);
 }
 
@@ -137,7 +142,8 @@ TEST(Relight, EditsInARowCompose) {
     ASSERT_TRUE(renderer.relight(diff_scenes(previous, scene).emitter_scales));
     renderer.mark_all_owed();  // as the scheduler does: the accumulation is no longer current
   }
-  EXPECT_LT(max_relative_difference(renderer.displayed_image(), render(scene, settings(), 16)), 1e-4);
+  EXPECT_LT(max_relative_difference(renderer.displayed_image(), render(scene, settings(), 16)),
+            1e-4);
 }
 
 // The viewer's flow for a scene loaded without light: switch the studio on, then turn its
@@ -155,7 +161,8 @@ TEST(Relight, AnEnvironmentSwitchedOnLaterIsRelitToo) {
   apply_edit(scene, EnvironmentEdit{.intensity = 0.25f});
   scheduler.on_edit(scene, diff_scenes(before, scene));
   ASSERT_TRUE(scheduler.relit());
-  EXPECT_LT(max_relative_difference(scheduler.displayed_image(), render(scene, settings(), 16)), 1e-4);
+  EXPECT_LT(max_relative_difference(scheduler.displayed_image(), render(scene, settings(), 16)),
+            1e-4);
 }
 
 TEST(Relight, OnlyLinearEditsScaleEmitters) {
@@ -168,16 +175,22 @@ TEST(Relight, OnlyLinearEditsScaleEmitters) {
   EXPECT_EQ(scales(LightEdit{"lamp", 2.0f, std::nullopt, std::nullopt}).size(), 1u);
   EXPECT_EQ(scales(MaterialEdit{"light", {{"emission_luminance", {3.0f}}}}).size(), 1u);
   EXPECT_TRUE(scales(LightEdit{"lamp", std::nullopt, std::nullopt, 2.0f}).empty()) << "range";
-  EXPECT_TRUE(scales(TransformEdit{"lamp", glm::vec3(0.1f, 0.0f, 0.0f), std::nullopt}).empty()) << "moved";
-  EXPECT_TRUE(scales(MaterialEdit{"light", {{"emission_luminance", {3.0f}}, {"base_color", {0.5f, 0.5f, 0.5f}}}})
-                  .empty())
+  EXPECT_TRUE(scales(TransformEdit{"lamp", glm::vec3(0.1f, 0.0f, 0.0f), std::nullopt}).empty())
+      << "moved";
+  EXPECT_TRUE(
+      scales(MaterialEdit{"light",
+                          {{"emission_luminance", {3.0f}}, {"base_color", {0.5f, 0.5f, 0.5f}}}})
+          .empty())
       << "emission and more";
-  EXPECT_TRUE(scales(MaterialEdit{"white", {{"emission_color", {1.0f, 1.0f, 1.0f}}, {"emission_luminance", {3.0f}}}})
-                  .empty())
+  EXPECT_TRUE(
+      scales(MaterialEdit{"white",
+                          {{"emission_color", {1.0f, 1.0f, 1.0f}}, {"emission_luminance", {3.0f}}}})
+          .empty())
       << "from black";
-  const EmitterScale lamp = scales(LightEdit{"lamp", 0.25f, glm::vec3(1.0f, 0.5f, 0.0f), std::nullopt})[0];
+  const EmitterScale lamp =
+      scales(LightEdit{"lamp", 0.25f, glm::vec3(1.0f, 0.5f, 0.0f), std::nullopt})[0];
   EXPECT_EQ(lamp.kind, EmitterScale::Kind::PunctualLight);
-  EXPECT_FLOAT_EQ(lamp.factor.r, 0.5f);   // 0.5 cd -> 0.25 cd
+  EXPECT_FLOAT_EQ(lamp.factor.r, 0.5f);  // 0.5 cd -> 0.25 cd
   EXPECT_FLOAT_EQ(lamp.factor.g, 0.25f);
   EXPECT_FLOAT_EQ(lamp.factor.b, 0.0f);
   Scene sky = load_scene(test::asset("furnace_sphere.gltf"), {.environment = "studio"});
@@ -201,7 +214,9 @@ TEST(Relight, TheSchedulerShowsItAtOnceAndEndsOnTheFreshRender) {
   scheduler.on_edit(scene, diff_scenes(before, scene));
   EXPECT_TRUE(scheduler.relit());
   const ImageRGB shown = scheduler.displayed_image();
-  EXPECT_LT(test::error_to_noise_ratio({shown, render(scene, settings(21), 32)}, render(scene, settings(22), 512)), 2.0);
+  EXPECT_LT(test::error_to_noise_ratio({shown, render(scene, settings(21), 32)},
+                                       render(scene, settings(22), 512)),
+            2.0);
   // Moving the lamp cannot be relit.
   const Scene lit = scene;
   apply_edit(scene, TransformEdit{"lamp", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt});
@@ -230,7 +245,8 @@ TEST(Relight, TheRelitValueStaysUntilTheFreshSamplesAreAsMany) {
     while (scheduler.work_since_edit() < 6.0) scheduler.step();  // every pixel has 2 to 6 samples
     EXPECT_EQ(scheduler.displayed_image().rgb, relit.rgb) << display_rule_name(rule);
     while (scheduler.work_since_edit() < 8.0) scheduler.step();
-    EXPECT_EQ(scheduler.displayed_image().rgb, render(scene, settings(), 8).rgb) << display_rule_name(rule);
+    EXPECT_EQ(scheduler.displayed_image().rgb, render(scene, settings(), 8).rgb)
+        << display_rule_name(rule);
   }
 }
 

@@ -8,8 +8,8 @@
 
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
-#include "test_support.h"
 #include "image/image_io.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -21,9 +21,11 @@ RenderSettings small_settings(uint32_t tile, Sampler sampler = Sampler::Sobol) {
   return s;
 }
 
-ImageRGB render_full(const Scene& scene, const RenderSettings& s, uint32_t spp, uint32_t per_dispatch) {
+ImageRGB render_full(const Scene& scene, const RenderSettings& s, uint32_t spp,
+                     uint32_t per_dispatch) {
   Renderer renderer(test::context(), scene, s);
-  for (uint32_t done = 0; done < spp; done += per_dispatch) renderer.add_samples_full_frame(per_dispatch);
+  for (uint32_t done = 0; done < spp; done += per_dispatch)
+    renderer.add_samples_full_frame(per_dispatch);
   return renderer.image();
 }
 
@@ -46,7 +48,8 @@ TEST(Determinism, TileSizeAndBatchingDoNotChangeTheImage) {
       EXPECT_EQ(render_full(cornell(), small_settings(tile, sampler), 4, 1).rgb, reference.rgb)
           << sampler_name(sampler) << ", tile " << tile;
     }
-    EXPECT_EQ(render_full(cornell(), small_settings(16, sampler), 4, 2).rgb, reference.rgb) << sampler_name(sampler);
+    EXPECT_EQ(render_full(cornell(), small_settings(16, sampler), 4, 2).rgb, reference.rgb)
+        << sampler_name(sampler);
     // Uneven batches: 1 + 3 samples.
     Renderer renderer(test::context(), cornell(), small_settings(16, sampler));
     renderer.add_samples_full_frame(1);
@@ -83,7 +86,8 @@ TEST(Determinism, TileOrderDoesNotChangeTheImage) {
 TEST(Determinism, DifferentSeedsGiveDifferentNoise) {
   RenderSettings other = small_settings(16);
   other.seed = 8;
-  EXPECT_NE(render_full(cornell(), small_settings(16), 2, 2).rgb, render_full(cornell(), other, 2, 2).rgb);
+  EXPECT_NE(render_full(cornell(), small_settings(16), 2, 2).rgb,
+            render_full(cornell(), other, 2, 2).rgb);
 }
 
 TEST(Renderer, OnlyListedTilesReceiveSamples) {
@@ -110,7 +114,8 @@ TEST(Renderer, TotalSamplesIsTheSumOfThePixelsCounts) {
   const uint32_t first = 0, last = renderer.tile_count() - 1;
   renderer.add_samples(std::span(&first, 1), 3);
   renderer.add_samples(std::span(&last, 1), 5);
-  const uint64_t expected = 40u * 36u * 2u + 64u * 3u + 32u * 5u;  // the last tile has 8 x 4 pixels in the image
+  const uint64_t expected =
+      40u * 36u * 2u + 64u * 3u + 32u * 5u;  // the last tile has 8 x 4 pixels in the image
   EXPECT_EQ(renderer.total_samples(), expected);
   renderer.mark_all_owed();
   EXPECT_EQ(renderer.total_samples(), expected);
@@ -134,7 +139,8 @@ struct GoldenComparison {
 };
 
 GoldenComparison compare_with_golden(const Scene& scene) {
-  const ImageRGB golden = read_image(std::filesystem::path(HIPR_TEST_DATA_DIR) / "cornell_golden_64.exr");
+  const ImageRGB golden =
+      read_image(std::filesystem::path(HIPR_TEST_DATA_DIR) / "cornell_golden_64.exr");
   EXPECT_EQ(golden.width, 64u);
   std::vector<ImageRGB> renders;
   double mean = 0.0;
@@ -157,7 +163,8 @@ TEST(Golden, CornellBoxMatchesTheStoredImage) {
 
 TEST(Golden, DetectsASmallSceneChange) {
   // The tall block moved by 6 cm x 8 cm: the comparison must notice.
-  const GoldenComparison result = compare_with_golden(load_scene(test::asset("cornell_box_moved.gltf")));
+  const GoldenComparison result =
+      compare_with_golden(load_scene(test::asset("cornell_box_moved.gltf")));
   EXPECT_GT(result.error_to_noise, 3.0);
 }
 

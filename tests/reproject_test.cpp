@@ -49,7 +49,9 @@ void run_to_convergence(Scheduler& scheduler, uint32_t spp) {
   for (int s = 0; s < 10000 && scheduler.work_since_edit() < double(spp); ++s) scheduler.step();
 }
 
-float at(const ImageRGB& image, uint32_t x, uint32_t y, int c) { return image.rgb[(size_t(y) * image.width + x) * 3 + size_t(c)]; }
+float at(const ImageRGB& image, uint32_t x, uint32_t y, int c) {
+  return image.rgb[(size_t(y) * image.width + x) * 3 + size_t(c)];
+}
 
 TEST(Reproject, APanReprojectsExactlyWhereNothingIsDisoccluded) {
   Scene scene = lit_card();
@@ -67,11 +69,13 @@ TEST(Reproject, APanReprojectsExactlyWhereNothingIsDisoccluded) {
   const ImageRGB after = scheduler.displayed_image();
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x + 2 < kSize; ++x)
-      for (int c = 0; c < 3; ++c) ASSERT_EQ(at(after, x, y, c), at(before, x + 2, y, c)) << x << "," << y;
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(at(after, x, y, c), at(before, x + 2, y, c)) << x << "," << y;
   // The two right columns see past the card's edge: rejected, so their tiles (the right column
   // of tiles) are the ones scored, first in the schedule.
   const std::vector<uint32_t> order = renderer.schedule();
-  for (uint32_t i = 0; i < kSize / kTile; ++i) EXPECT_EQ(order[i] % (kSize / kTile), kSize / kTile - 1) << i;
+  for (uint32_t i = 0; i < kSize / kTile; ++i)
+    EXPECT_EQ(order[i] % (kSize / kTile), kSize / kTile - 1) << i;
 }
 
 // A silhouette's pixels mix, by their footprint, the card in front and the black behind it; after
@@ -100,7 +104,8 @@ TEST(Reproject, ASilhouetteMovesWithTheSurfaceInFront) {
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x + 2 < kSize; ++x) {
       if (x == 31) continue;
-      for (int c = 0; c < 3; ++c) ASSERT_EQ(at(after, x, y, c), at(before, x + 2, y, c)) << x << "," << y;
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(at(after, x, y, c), at(before, x + 2, y, c)) << x << "," << y;
     }
 }
 
@@ -135,7 +140,8 @@ TEST(Reproject, AnEmittersEdgeIsNeverCarriedOntoWhatLiesBehind) {
   // x = 30 now mixes as x = 32 did, but its centre sees the lit card: it is kept at the lit
   // card's value (too dark, which is bounded) until it is rendered.
   for (uint32_t y = 0; y < kSize; ++y)
-    for (uint32_t x = 30; x < kSize; ++x) ASSERT_LE(at(after, x, y, 0), 1.5f * lit) << x << "," << y;
+    for (uint32_t x = 30; x < kSize; ++x)
+      ASSERT_LE(at(after, x, y, 0), 1.5f * lit) << x << "," << y;
 }
 
 // A smooth mirror filling the frame, reflecting a bright panel behind the camera over half of
@@ -198,9 +204,11 @@ std::vector<uint32_t> schedule_after_pan(Scene scene, float dx) {
 }
 
 // Where each tile of `tiles` stands in the schedule.
-std::vector<size_t> positions(const std::vector<uint32_t>& order, const std::vector<uint32_t>& tiles) {
+std::vector<size_t> positions(const std::vector<uint32_t>& order,
+                              const std::vector<uint32_t>& tiles) {
   std::vector<size_t> at;
-  for (uint32_t tile : tiles) at.push_back(size_t(std::find(order.begin(), order.end(), tile) - order.begin()));
+  for (uint32_t tile : tiles)
+    at.push_back(size_t(std::find(order.begin(), order.end(), tile) - order.begin()));
   return at;
 }
 
@@ -225,17 +233,20 @@ TEST(Reproject, ViewDependentSurfacesRankWithTheRejectedOnes) {
   ASSERT_FALSE(material_is_view_dependent(matte));
   // The mirror on the left half of the view, the matte card on the right half.
   const glm::mat4 half = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 1.0f, 1.0f));
-  test::add_card(scene, "mirror", glm::translate(glm::mat4(1.0f), {-0.5f, 0.0f, 0.0f}) * half, mirror);
+  test::add_card(scene, "mirror", glm::translate(glm::mat4(1.0f), {-0.5f, 0.0f, 0.0f}) * half,
+                 mirror);
   test::add_card(scene, "matte", glm::translate(glm::mat4(1.0f), {0.5f, 0.0f, 0.0f}) * half, matte);
   const std::vector<uint32_t> order = schedule_after_pan(scene, 2.0f * 2.0f / kSize);  // two pixels
   // The mirror covers tile columns 0-3 (it moved two pixels left; column 3 also shows matte),
   // the right column saw past the cards' edge (rejected); columns 4-6 are matte and kept.
   const std::vector<size_t> mirror_at = positions(order, tile_columns(0, 2));
   const std::vector<size_t> matte_at = positions(order, tile_columns(5, 6));
-  EXPECT_LT(*std::max_element(mirror_at.begin(), mirror_at.end()), *std::min_element(matte_at.begin(), matte_at.end()))
+  EXPECT_LT(*std::max_element(mirror_at.begin(), mirror_at.end()),
+            *std::min_element(matte_at.begin(), matte_at.end()))
       << "every mirror tile before every kept matte tile";
   for (uint32_t tile : tile_columns(kSize / kTile - 1, kSize / kTile - 1))
-    EXPECT_LT(positions(order, {tile})[0], 5u * (kSize / kTile)) << "rejected tile " << tile << " among the first";
+    EXPECT_LT(positions(order, {tile})[0], 5u * (kSize / kTile))
+        << "rejected tile " << tile << " among the first";
 }
 
 // The per-object "barely moved" rule: a surface whose pixels moved less than a quarter pixel
@@ -248,7 +259,8 @@ TEST(Reproject, TilesThatBarelyMovedComeLast) {
   // over the left half of the view, taller than it: a sideways move shifts it twice as far.
   test::add_card(scene, "far", glm::mat4(1.0f), matte);
   test::add_card(scene, "near",
-                 glm::translate(glm::mat4(1.0f), {-0.5f, 0.0f, 1.5f}) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 1.0f, 1.0f)),
+                 glm::translate(glm::mat4(1.0f), {-0.5f, 0.0f, 1.5f}) *
+                     glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 1.0f, 1.0f)),
                  matte);
   // 32 pixels per unit at the far card: 0.005 moves it 0.16 pixels, the near card 0.32.
   const std::vector<uint32_t> order = schedule_after_pan(scene, 0.005f);
@@ -256,13 +268,15 @@ TEST(Reproject, TilesThatBarelyMovedComeLast) {
   // edge and 7 the frame's, where pixels are rejected: they rank first).
   const std::vector<size_t> moved_at = positions(order, tile_columns(0, 2));
   const std::vector<size_t> still_at = positions(order, tile_columns(5, 6));
-  EXPECT_LT(*std::max_element(moved_at.begin(), moved_at.end()), *std::min_element(still_at.begin(), still_at.end()))
+  EXPECT_LT(*std::max_element(moved_at.begin(), moved_at.end()),
+            *std::min_element(still_at.begin(), still_at.end()))
       << "the far card's tiles last, though they lie nearer the rejected columns";
   EXPECT_EQ(*std::max_element(still_at.begin(), still_at.end()), order.size() - 1);
 }
 
 TEST(Reproject, AnOrbitEndsOnTheFullFrameImageOfTheNewView) {
-  for (const DisplayRule rule : {DisplayRule::Blend, DisplayRule::Difference, DisplayRule::Switch}) {
+  for (const DisplayRule rule :
+       {DisplayRule::Blend, DisplayRule::Difference, DisplayRule::Switch}) {
     Scene scene = load_scene(test::asset("cornell_box.gltf"));
     Renderer renderer(test::context(), scene, settings());
     Scheduler scheduler(renderer, Policy::Hipr, 5);
@@ -272,7 +286,8 @@ TEST(Reproject, AnOrbitEndsOnTheFullFrameImageOfTheNewView) {
     // Two degrees about the box's vertical axis through its centre.
     const int node = scene.camera_node();
     ASSERT_GE(node, 0);
-    ASSERT_LT(scene.nodes[size_t(node)].parent, 0) << "the camera's local transform is its world transform";
+    ASSERT_LT(scene.nodes[size_t(node)].parent, 0)
+        << "the camera's local transform is its world transform";
     const glm::mat4 world = scene.nodes[size_t(node)].local;
     const glm::vec3 centre(0.28f, 0.27f, 0.28f);
     const glm::mat4 orbit = glm::translate(glm::mat4(1.0f), centre) *

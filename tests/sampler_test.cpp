@@ -66,11 +66,13 @@ TEST(Sobol, MortonIndexInterleavesTheCoordinates) {
 // Pixels are given by their coordinates; the random sampler hashes a linear index.
 constexpr uint32_t kWidth = 4096;
 
-sh::PathRng path_rng(glm::uvec2 pixel, uint32_t sample, uint32_t sampler = kSamplerSobol, uint32_t seed = 5) {
+sh::PathRng path_rng(glm::uvec2 pixel, uint32_t sample, uint32_t sampler = kSamplerSobol,
+                     uint32_t seed = 5) {
   return sh::PathRng{pixel.y * kWidth + pixel.x, pixel, sample, seed, sampler};
 }
 
-std::vector<glm::vec4> pixel_samples(glm::uvec2 pixel, uint32_t first, uint32_t count, uint32_t bounce, uint32_t block,
+std::vector<glm::vec4> pixel_samples(glm::uvec2 pixel, uint32_t first, uint32_t count,
+                                     uint32_t bounce, uint32_t block,
                                      uint32_t sampler = kSamplerSobol, uint32_t seed = 5) {
   std::vector<glm::vec4> points;
   for (uint32_t i = first; i < first + count; ++i)
@@ -84,7 +86,8 @@ bool is_02_net(const std::vector<glm::vec4>& points, int x, int y) {
   for (int a = 0; a <= m; ++a) {
     const int b = m - a;
     std::set<std::pair<uint32_t, uint32_t>> cells;
-    for (const glm::vec4& p : points) cells.insert({uint32_t(p[x] * float(1u << a)), uint32_t(p[y] * float(1u << b))});
+    for (const glm::vec4& p : points)
+      cells.insert({uint32_t(p[x] * float(1u << a)), uint32_t(p[y] * float(1u << b))});
     if (cells.size() != points.size()) return false;
   }
   return true;
@@ -98,7 +101,8 @@ bool is_stratified_1d(const std::vector<glm::vec4>& points, int d) {
 }
 
 TEST(Sampler, EveryPowerOfTwoRunOfAPixelIsAnElementaryNet) {
-  for (glm::uvec2 pixel : {glm::uvec2(0, 0), glm::uvec2(1, 0), glm::uvec2(4095, 0), glm::uvec2(1234, 567)}) {
+  for (glm::uvec2 pixel :
+       {glm::uvec2(0, 0), glm::uvec2(1, 0), glm::uvec2(4095, 0), glm::uvec2(1234, 567)}) {
     for (uint32_t block : {0u, 1u, 2u}) {
       for (uint32_t bounce : {0u, 3u}) {
         for (uint32_t m = 0; m <= 10; ++m) {
@@ -106,12 +110,13 @@ TEST(Sampler, EveryPowerOfTwoRunOfAPixelIsAnElementaryNet) {
           // The first n samples, and the next n (the second batch of a progressive render).
           for (uint32_t first : {0u, n}) {
             const std::vector<glm::vec4> points = pixel_samples(pixel, first, n, bounce, block);
-            const std::string where = "pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) +
-                                      " block " + std::to_string(block) + " n " + std::to_string(n) +
-                                      " from " + std::to_string(first);
+            const std::string where = "pixel " + std::to_string(pixel.x) + "," +
+                                      std::to_string(pixel.y) + " block " + std::to_string(block) +
+                                      " n " + std::to_string(n) + " from " + std::to_string(first);
             EXPECT_TRUE(is_02_net(points, 0, 1)) << where;
             EXPECT_TRUE(is_02_net(points, 2, 3)) << where;
-            for (int d = 0; d < 4; ++d) EXPECT_TRUE(is_stratified_1d(points, d)) << "dimension " << d << " n " << n;
+            for (int d = 0; d < 4; ++d)
+              EXPECT_TRUE(is_stratified_1d(points, d)) << "dimension " << d << " n " << n;
           }
         }
       }
@@ -120,12 +125,14 @@ TEST(Sampler, EveryPowerOfTwoRunOfAPixelIsAnElementaryNet) {
 }
 
 // Sample `sample` of every pixel of the size x size block at `corner`.
-std::vector<glm::vec4> block_samples(glm::uvec2 corner, uint32_t size, uint32_t sample, uint32_t bounce, uint32_t block,
+std::vector<glm::vec4> block_samples(glm::uvec2 corner, uint32_t size, uint32_t sample,
+                                     uint32_t bounce, uint32_t block,
                                      uint32_t sampler = kSamplerSobol) {
   std::vector<glm::vec4> points;
   for (uint32_t y = 0; y < size; ++y)
     for (uint32_t x = 0; x < size; ++x)
-      points.push_back(sh::rng_uniform4(path_rng(corner + glm::uvec2(x, y), sample, sampler), bounce, block));
+      points.push_back(
+          sh::rng_uniform4(path_rng(corner + glm::uvec2(x, y), sample, sampler), bounce, block));
   return points;
 }
 
@@ -134,18 +141,21 @@ TEST(Sampler, AtOneSampleIndexEveryAlignedPixelBlockIsAnElementaryNet) {
   for (uint32_t sample : {0u, 1u, 7u, 100u}) {
     for (uint32_t block : {0u, 1u, 2u}) {
       for (uint32_t size : {2u, 4u, 8u, 16u}) {
-        for (glm::uvec2 corner :
-             {glm::uvec2(0, 0), glm::uvec2(size, 0), glm::uvec2(3 * size, 5 * size), glm::uvec2(640, 368)}) {
+        for (glm::uvec2 corner : {glm::uvec2(0, 0), glm::uvec2(size, 0),
+                                  glm::uvec2(3 * size, 5 * size), glm::uvec2(640, 368)}) {
           const std::vector<glm::vec4> points = block_samples(corner, size, sample, 1, block);
-          EXPECT_TRUE(is_02_net(points, 0, 1)) << "sample " << sample << " block " << block << " size " << size;
-          EXPECT_TRUE(is_02_net(points, 2, 3)) << "sample " << sample << " block " << block << " size " << size;
+          EXPECT_TRUE(is_02_net(points, 0, 1))
+              << "sample " << sample << " block " << block << " size " << size;
+          EXPECT_TRUE(is_02_net(points, 2, 3))
+              << "sample " << sample << " block " << block << " size " << size;
         }
       }
     }
   }
   // The control: with independent random numbers, blocks miss cells.
   int nets = 0;
-  for (uint32_t y = 0; y < 8; ++y) nets += is_02_net(block_samples({0, 8 * y}, 8, 0, 1, 0, kSamplerRandom), 0, 1);
+  for (uint32_t y = 0; y < 8; ++y)
+    nets += is_02_net(block_samples({0, 8 * y}, 8, 0, 1, 0, kSamplerRandom), 0, 1);
   EXPECT_EQ(nets, 0);
 }
 
@@ -180,7 +190,8 @@ double rmse(F f, double exact, uint32_t n, uint32_t sampler, int x = 0, int y = 
   double sum = 0.0;
   for (uint32_t pixel = 0; pixel < pixels; ++pixel) {
     double estimate = 0.0;
-    for (const glm::vec4& p : pixel_samples({pixel % 16, pixel / 16}, 0, n, 1, 0, sampler, pixel + 1))
+    for (const glm::vec4& p :
+         pixel_samples({pixel % 16, pixel / 16}, 0, n, 1, 0, sampler, pixel + 1))
       estimate += f(p[x], p[y]);
     estimate /= n;
     sum += (estimate - exact) * (estimate - exact);
@@ -191,11 +202,14 @@ double rmse(F f, double exact, uint32_t n, uint32_t sampler, int x = 0, int y = 
 // Error slope between n = 16 and n = 1024 (log-log).
 template <class F>
 double error_slope(F f, double exact, uint32_t sampler, int x = 0, int y = 1) {
-  return std::log(rmse(f, exact, 1024, sampler, x, y) / rmse(f, exact, 16, sampler, x, y)) / std::log(64.0);
+  return std::log(rmse(f, exact, 1024, sampler, x, y) / rmse(f, exact, 16, sampler, x, y)) /
+         std::log(64.0);
 }
 
 TEST(Sampler, ErrorFallsFasterThanTheSquareRootOfTheSampleCount) {
-  const auto smooth = [](float x, float y) { return double(x) * std::exp(double(y)); };  // integral e - 1 over 2
+  const auto smooth = [](float x, float y) {
+    return double(x) * std::exp(double(y));
+  };  // integral e - 1 over 2
   const double smooth_exact = 0.5 * (std::exp(1.0) - 1.0);
   // A discontinuous integrand, as a shadow edge: the quarter disc of radius 1 (area pi / 4).
   const auto disc = [](float x, float y) { return x * x + y * y < 1.0f ? 1.0 : 0.0; };
@@ -258,7 +272,8 @@ TEST(Sampler, BouncesAndPairsAreUncorrelated) {
   // Sample 0 of 20000 pixels: each pair's first dimension against the others'. (Neighbouring
   // pixels are correlated on purpose: they take different strata.)
   const uint32_t pixels = 20000;
-  std::vector<float> camera(pixels), light(pixels), light_choice(pixels), bsdf(pixels), lobe(pixels), bsdf_next(pixels);
+  std::vector<float> camera(pixels), light(pixels), light_choice(pixels), bsdf(pixels),
+      lobe(pixels), bsdf_next(pixels);
   for (uint32_t p = 0; p < pixels; ++p) {
     const glm::uvec2 pixel(p % 160, p / 160);
     camera[p] = sh::rng_uniform4(path_rng(pixel, 0), 0, 2).x;

@@ -40,8 +40,10 @@ test::Document with_node_matrix(const std::vector<double>& matrix) {
 
 TEST(SceneLimits, TransformsThatOverflowAreRefusedAtLoad) {
   // Finite numbers, so the loader's finiteness check let them through; their bounds overflow.
-  expect_refused(with_node_matrix({3e38, 0, 0, 0, 0, 3e38, 0, 0, 0, 0, 3e38, 0, 3e38, 0, 0, 1}), "out of range");
-  expect_refused(with_node_matrix({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2e9, 0, 0, 1}), "out of range");
+  expect_refused(with_node_matrix({3e38, 0, 0, 0, 0, 3e38, 0, 0, 0, 0, 3e38, 0, 3e38, 0, 0, 1}),
+                 "out of range");
+  expect_refused(with_node_matrix({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2e9, 0, 0, 1}),
+                 "out of range");
   // Far, but within the range: loads.
   const fs::path file = test::temp_dir("scene_limits_far") / "far.gltf";
   test::write_document(file, with_node_matrix({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1e8, 0, 0, 1}));
@@ -53,26 +55,33 @@ void expect_edit_refused(Scene& scene, const Edit& edit) {
   const Scene before = scene;
   EXPECT_THROW(apply_edit(scene, edit), InputError) << describe(edit);
   ASSERT_EQ(scene.nodes.size(), before.nodes.size()) << describe(edit);
-  for (size_t n = 0; n < scene.nodes.size(); ++n) EXPECT_EQ(scene.nodes[n].local, before.nodes[n].local) << describe(edit);
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    EXPECT_EQ(scene.nodes[n].local, before.nodes[n].local) << describe(edit);
   EXPECT_EQ(scene.root_nodes, before.root_nodes) << describe(edit);
   EXPECT_EQ(scene.cameras.size(), before.cameras.size()) << describe(edit);
   EXPECT_EQ(scene.meshes.size(), before.meshes.size()) << describe(edit);
   for (size_t m = 0; m < scene.meshes.size(); ++m)
     for (size_t p = 0; p < scene.meshes[m].primitives.size(); ++p)
-      EXPECT_EQ(scene.meshes[m].primitives[p].positions, before.meshes[m].primitives[p].positions) << describe(edit);
+      EXPECT_EQ(scene.meshes[m].primitives[p].positions, before.meshes[m].primitives[p].positions)
+          << describe(edit);
   EXPECT_EQ(scene.lights, before.lights) << describe(edit);
-  EXPECT_EQ(resolve_camera(scene).camera_to_world, resolve_camera(before).camera_to_world) << describe(edit);
+  EXPECT_EQ(resolve_camera(scene).camera_to_world, resolve_camera(before).camera_to_world)
+      << describe(edit);
 }
 
 TEST(SceneLimits, AnEditBeyondTheRangeLeavesTheSceneAsItWas) {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
-  expect_edit_refused(scene, TransformEdit{"tall_block", glm::vec3(3e38f, 0.0f, 0.0f), std::nullopt});
+  expect_edit_refused(scene,
+                      TransformEdit{"tall_block", glm::vec3(3e38f, 0.0f, 0.0f), std::nullopt});
   // Two moves that are each in range but add up beyond it: the second is refused.
   apply_edit(scene, TransformEdit{"tall_block", glm::vec3(6e8f, 0.0f, 0.0f), std::nullopt});
-  expect_edit_refused(scene, TransformEdit{"tall_block", glm::vec3(6e8f, 0.0f, 0.0f), std::nullopt});
-  expect_edit_refused(scene, TransformEdit{"short_block", std::nullopt, glm::scale(glm::mat4(1.0f), glm::vec3(1e30f))});
+  expect_edit_refused(scene,
+                      TransformEdit{"tall_block", glm::vec3(6e8f, 0.0f, 0.0f), std::nullopt});
+  expect_edit_refused(scene, TransformEdit{"short_block", std::nullopt,
+                                           glm::scale(glm::mat4(1.0f), glm::vec3(1e30f))});
   expect_edit_refused(scene, DuplicateEdit{"short_block", "far", glm::vec3(0.0f, 3e38f, 0.0f)});
-  expect_edit_refused(scene, DeformEdit{"short_block", glm::scale(glm::mat4(1.0f), glm::vec3(1e36f)), nullptr});
+  expect_edit_refused(
+      scene, DeformEdit{"short_block", glm::scale(glm::mat4(1.0f), glm::vec3(1e36f)), nullptr});
   expect_edit_refused(scene, CameraEdit{glm::vec3(0.0f, 0.0f, 3e38f), std::nullopt});
   expect_edit_refused(scene, CameraEdit{std::nullopt, glm::mat4(0.0f)});  // no frame at all
   expect_edit_refused(scene, MaterialEdit{"light", {{"emission_luminance", {1e13f}}}});
@@ -80,7 +89,9 @@ TEST(SceneLimits, AnEditBeyondTheRangeLeavesTheSceneAsItWas) {
   // before any value is written.
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const MaterialParameters white = scene.materials[0].params;
-  expect_edit_refused(scene, MaterialEdit{"white", {{"specular_roughness", {0.5f}}, {"base_color", {nan, 0.5f, 0.5f}}}});
+  expect_edit_refused(
+      scene,
+      MaterialEdit{"white", {{"specular_roughness", {0.5f}}, {"base_color", {nan, 0.5f, 0.5f}}}});
   expect_edit_refused(scene, MaterialEdit{"white", {{"base_color", {2.0f, 0.5f, 0.5f}}}});
   EXPECT_EQ(scene.materials[0].params.specular_roughness, white.specular_roughness);
 
@@ -94,17 +105,20 @@ TEST(SceneLimits, AnEditBeyondTheRangeLeavesTheSceneAsItWas) {
   ASSERT_FALSE(lamp.light_nodes().empty());
   const std::string light = lamp.nodes[lamp.light_nodes().front()].name;
   expect_edit_refused(lamp, LightEdit{light, 1e13f, std::nullopt, std::nullopt});
-  expect_edit_refused(lamp, LightEdit{light, std::nullopt, glm::vec3(nan, 1.0f, 1.0f), std::nullopt});
+  expect_edit_refused(lamp,
+                      LightEdit{light, std::nullopt, glm::vec3(nan, 1.0f, 1.0f), std::nullopt});
   expect_edit_refused(lamp, LightEdit{light, std::nullopt, std::nullopt, -1.0f});
   expect_edit_refused(lamp, TransformEdit{light, glm::vec3(0.0f, -2e9f, 0.0f), std::nullopt});
 }
 
 TEST(GltfLimits, AnAccessorWithoutDataIsBounded) {
   test::Document doc = test::triangle_document();
-  doc.gltf["accessors"].push_back({{"componentType", test::kFloat}, {"type", "VEC3"}, {"count", 2000000000}});
+  doc.gltf["accessors"].push_back(
+      {{"componentType", test::kFloat}, {"type", "VEC3"}, {"count", 2000000000}});
   expect_refused(doc, "no bufferView");
   test::Document small = test::triangle_document();
-  small.gltf["accessors"].push_back({{"componentType", test::kFloat}, {"type", "VEC3"}, {"count", 1000}});
+  small.gltf["accessors"].push_back(
+      {{"componentType", test::kFloat}, {"type", "VEC3"}, {"count", 1000}});
   const fs::path file = test::temp_dir("gltf_limits_small") / "small.gltf";
   test::write_document(file, small);
   EXPECT_NO_THROW(load_scene(file)) << "a small one is all zeros, per the spec";
@@ -112,12 +126,17 @@ TEST(GltfLimits, AnAccessorWithoutDataIsBounded) {
 
 TEST(GltfLimits, SparseCountsStayWithinTheirAccessorAndViews) {
   test::Document doc = test::triangle_document();
-  const int indices = doc.add_accessor(std::vector<uint16_t>{0, 1}, test::kUnsignedShort, "SCALAR", 2);
-  const int values = doc.add_accessor(std::vector<float>{1, 1, 1, 2, 2, 2}, test::kFloat, "VEC3", 2);
-  const auto view_of = [&](int accessor) { return doc.gltf["accessors"][size_t(accessor)]["bufferView"]; };
-  nlohmann::json sparse = {{"count", 2},
-                           {"indices", {{"bufferView", view_of(indices)}, {"componentType", test::kUnsignedShort}}},
-                           {"values", {{"bufferView", view_of(values)}}}};
+  const int indices =
+      doc.add_accessor(std::vector<uint16_t>{0, 1}, test::kUnsignedShort, "SCALAR", 2);
+  const int values =
+      doc.add_accessor(std::vector<float>{1, 1, 1, 2, 2, 2}, test::kFloat, "VEC3", 2);
+  const auto view_of = [&](int accessor) {
+    return doc.gltf["accessors"][size_t(accessor)]["bufferView"];
+  };
+  nlohmann::json sparse = {
+      {"count", 2},
+      {"indices", {{"bufferView", view_of(indices)}, {"componentType", test::kUnsignedShort}}},
+      {"values", {{"bufferView", view_of(values)}}}};
   test::Document more = doc;
   more.gltf["accessors"].push_back(
       {{"componentType", test::kFloat}, {"type", "VEC3"}, {"count", 1}, {"sparse", sparse}});
@@ -132,7 +151,8 @@ TEST(GltfLimits, SparseCountsStayWithinTheirAccessorAndViews) {
 TEST(GltfLimits, PrimitivesSharingAnAccessorAddUpBeforeAnyIsRead) {
   test::Document doc = test::triangle_document();
   const size_t count = gltf::kMaxZeroFilledElements;  // allowed alone: all zeros
-  doc.gltf["accessors"].push_back({{"componentType", test::kFloat}, {"type", "VEC3"}, {"count", count}});
+  doc.gltf["accessors"].push_back(
+      {{"componentType", test::kFloat}, {"type", "VEC3"}, {"count", count}});
   const int shared = int(doc.gltf["accessors"].size() - 1);
   nlohmann::json primitives = nlohmann::json::array();
   // Each makes count vertices and count indices: one more than the scene's budget holds.
@@ -147,16 +167,20 @@ TEST(GltfLimits, PrimitivesSharingAnAccessorAddUpBeforeAnyIsRead) {
 // image falls back, with a warning, as a broken one does).
 TEST(GltfLimits, AnImageBeyondTheLimitsIsNotDecoded) {
   for (const auto& [width, height] : {std::pair{20000u, 1u}, std::pair{16384u, 8192u}}) {
-    std::vector<unsigned char> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R'};
+    std::vector<unsigned char> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n',
+                                      0,    0,   0,   13,  'I',  'H',  'D',  'R'};
     for (const uint32_t side : {width, height})
       for (int shift = 24; shift >= 0; shift -= 8) png.push_back((unsigned char)(side >> shift));
-    for (const unsigned char b : {8, 6, 0, 0, 0, 0, 0, 0, 0}) png.push_back(b);  // RGBA8, then a CRC
+    for (const unsigned char b : {8, 6, 0, 0, 0, 0, 0, 0, 0})
+      png.push_back(b);  // RGBA8, then a CRC
     test::Document doc = test::triangle_document();
     const size_t offset = doc.bin.size();
     doc.bin.insert(doc.bin.end(), png.begin(), png.end());
     doc.bin.resize((doc.bin.size() + 3) / 4 * 4, 0);
-    doc.gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", png.size()}});
-    doc.gltf["images"] = {{{"bufferView", doc.gltf["bufferViews"].size() - 1}, {"mimeType", "image/png"}}};
+    doc.gltf["bufferViews"].push_back(
+        {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", png.size()}});
+    doc.gltf["images"] = {
+        {{"bufferView", doc.gltf["bufferViews"].size() - 1}, {"mimeType", "image/png"}}};
     doc.gltf["textures"] = {{{"source", 0}}};
     doc.gltf["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
     const fs::path file = test::temp_dir("gltf_limits_image") / "image.gltf";

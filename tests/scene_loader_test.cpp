@@ -11,12 +11,12 @@
 #include <limits>
 
 #include "core/error.h"
-#include "hipr/scene_loader.h"
-#include "scene/default_camera.h"
 #include "gltf_document.h"
-#include "test_support.h"
+#include "hipr/scene_loader.h"
 #include "image/image_io.h"
+#include "scene/default_camera.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -53,16 +53,19 @@ glm::mat4 instance_world(const Scene& scene, const std::string& node) {
   return glm::mat4(1.0f);
 }
 
-void expect_near(const glm::vec3& actual, const glm::vec3& expected, float tolerance, const std::string& what) {
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(actual[k], expected[k], tolerance) << what << " [" << k << "]";
+void expect_near(const glm::vec3& actual, const glm::vec3& expected, float tolerance,
+                 const std::string& what) {
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(actual[k], expected[k], tolerance) << what << " [" << k << "]";
 }
 
 TEST(ShippedScenes, CornellBoxStructure) {
   const Scene scene = load_scene(test::asset("cornell_box.gltf"));
   std::vector<std::string> nodes;
   for (const Node& node : scene.nodes) nodes.push_back(node.name);
-  EXPECT_EQ(nodes, (std::vector<std::string>{"floor", "ceiling", "back_wall", "left_wall", "right_wall",
-                                             "short_block", "tall_block", "light", "camera"}));
+  EXPECT_EQ(nodes,
+            (std::vector<std::string>{"floor", "ceiling", "back_wall", "left_wall", "right_wall",
+                                      "short_block", "tall_block", "light", "camera"}));
   ASSERT_EQ(scene.meshes.size(), 8u);
   EXPECT_EQ(scene.meshes[5].name, "short_block");
   std::vector<std::string> materials;
@@ -106,7 +109,8 @@ TEST(ShippedScenes, CornellBoxCamera) {
   ASSERT_EQ(scene.camera_node(), node_named(scene, "camera"));
   const Camera camera = resolve_camera(scene);
   EXPECT_NEAR(camera.yfov, 2.0 * std::atan(0.0125 / 0.035), 1e-6);  // 35 mm lens, 25 mm film
-  expect_near(glm::vec3(camera.camera_to_world[3]), {0.278f, 0.273f, -0.8f}, 1e-6f, "camera position");
+  expect_near(glm::vec3(camera.camera_to_world[3]), {0.278f, 0.273f, -0.8f}, 1e-6f,
+              "camera position");
   // Cameras look down their local -Z; this one is turned to look into the box, down +Z.
   const glm::vec3 forward = glm::vec3(camera.camera_to_world * glm::vec4(0, 0, -1, 0));
   expect_near(forward, {0.0f, 0.0f, 1.0f}, 1e-6f, "camera forward");
@@ -137,7 +141,8 @@ TEST(ShippedScenes, GlbWithPunctualLamp) {
   const int node = node_named(scene, "lamp");
   ASSERT_GE(node, 0);
   EXPECT_EQ(scene.nodes[size_t(node)].light, 0);
-  expect_near(glm::vec3(scene.world_transform(uint32_t(node))[3]), {0.278f, 0.45f, 0.28f}, 1e-6f, "lamp position");
+  expect_near(glm::vec3(scene.world_transform(uint32_t(node))[3]), {0.278f, 0.45f, 0.28f}, 1e-6f,
+              "lamp position");
   EXPECT_NE(node_named(scene, "sphere"), -1);
 }
 
@@ -211,7 +216,8 @@ TEST(WrittenScenes, MissingNormalsGiveFlatNormals) {
 TEST(WrittenScenes, TriangleStripLoads) {
   Document doc = triangle_document();
   // A unit quad as a strip: (0,1,2) and (2,1,3), both facing +Z.
-  const int position = doc.add_accessor(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, kFloat, "VEC3", 4);
+  const int position =
+      doc.add_accessor(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, kFloat, "VEC3", 4);
   doc.primitive() = {{"attributes", {{"POSITION", position}}}, {"mode", kTriangleStrip}};
   const fs::path file = test::temp_dir("strip") / "strip.gltf";
   write_document(file, doc);
@@ -259,7 +265,8 @@ TEST(WrittenScenes, SupportedRequiredExtensionLoads) {
 
 TEST(WrittenScenes, NodeCycleIsRefused) {
   Document doc = triangle_document();
-  doc.gltf["nodes"] = json::array({{{"name", "a"}, {"mesh", 0}, {"children", {1}}}, {{"name", "b"}, {"children", {0}}}});
+  doc.gltf["nodes"] = json::array(
+      {{{"name", "a"}, {"mesh", 0}, {"children", {1}}}, {{"name", "b"}, {"children", {0}}}});
   expect_refused(doc, "cycle");
 }
 
@@ -313,7 +320,8 @@ TEST(WrittenScenes, HugeAccessorOffsetIsRefused) {
 TEST(WrittenScenes, UnusedBrokenAccessorIsRefused) {
   // Broken data is refused even where no mesh reads it: the file is invalid either way.
   Document doc = triangle_document();
-  doc.gltf["accessors"].push_back({{"bufferView", 0}, {"componentType", kFloat}, {"type", "VEC3"}, {"count", 50}});
+  doc.gltf["accessors"].push_back(
+      {{"bufferView", 0}, {"componentType", kFloat}, {"type", "VEC3"}, {"count", 50}});
   expect_refused(doc, "runs past the end");
   doc = triangle_document();
   doc.gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 40}, {"byteLength", 400}});
@@ -328,7 +336,8 @@ TEST(WrittenScenes, NodeThatIsItsOwnChildIsRefused) {
 
 TEST(WrittenScenes, IndexOutOfRangeIsRefused) {
   Document doc = triangle_document();
-  doc.primitive()["indices"] = doc.add_accessor(std::vector<uint16_t>{0, 1, 7}, kUnsignedShort, "SCALAR", 3);
+  doc.primitive()["indices"] =
+      doc.add_accessor(std::vector<uint16_t>{0, 1, 7}, kUnsignedShort, "SCALAR", 3);
   expect_refused(doc, "index 7");
 }
 
@@ -389,7 +398,8 @@ LoadedTexture load_texture(const fs::path& file, const std::string& uri) {
   LoadedTexture loaded;
   loaded.warnings = testing::internal::GetCapturedStderr();
   EXPECT_EQ(scene.materials[0].params.base_color_texture, 0u);
-  if (scene.textures.size() != 1 || scene.images.size() != 1) throw std::runtime_error("expected exactly one texture");
+  if (scene.textures.size() != 1 || scene.images.size() != 1)
+    throw std::runtime_error("expected exactly one texture");
   loaded.texture = scene.textures[0];
   loaded.image = scene.images[loaded.texture.image];
   return loaded;
@@ -407,7 +417,8 @@ TEST(Textures, ImageInsideTheFolderIsDecoded) {
 }
 
 TEST(Textures, MissingImageFallsBackToAMagentaChecker) {
-  const LoadedTexture loaded = load_texture(test::temp_dir("texture-missing") / "scene.gltf", "missing.png");
+  const LoadedTexture loaded =
+      load_texture(test::temp_dir("texture-missing") / "scene.gltf", "missing.png");
   EXPECT_TRUE(is_fallback_checker(loaded.image));
   EXPECT_NE(loaded.warnings.find("hipr: warning:"), std::string::npos) << loaded.warnings;
   EXPECT_NE(loaded.warnings.find("missing.png"), std::string::npos) << loaded.warnings;
@@ -436,8 +447,9 @@ TEST(Textures, SymlinkedImageOutsideTheFolderIsNeverRead) {
 
 // URIs that point outside the scene folder; "@" stands for the test's folder, for absolute
 // URIs to a file that really exists.
-const char* const kOutsideUris[] = {"../outside.bin", "sub/../../outside.bin", "%2e%2e/outside.bin", "/etc/passwd",
-                                    "@/outside.bin",  "file:///etc/passwd",    "file:@/outside.bin"};
+const char* const kOutsideUris[] = {
+    "../outside.bin", "sub/../../outside.bin", "%2e%2e/outside.bin", "/etc/passwd",
+    "@/outside.bin",  "file:///etc/passwd",    "file:@/outside.bin"};
 
 enum class UriUse { Buffer, Image };
 
@@ -458,7 +470,8 @@ void expect_outside_uris_refused(UriUse use) {
       ADD_FAILURE() << "loaded the scene";
     } catch (const InputError& e) {
       const std::string message = e.what();
-      EXPECT_NE(message.find("only files inside the scene folder are read"), std::string::npos) << message;
+      EXPECT_NE(message.find("only files inside the scene folder are read"), std::string::npos)
+          << message;
       EXPECT_NE(message.find("scene.gltf"), std::string::npos) << message;
     }
   }
@@ -491,7 +504,8 @@ TEST(ConfinementSymlinks, LinkInsideTheFolderIsFollowed) {
   write_bytes(dir / "real.bin", doc.bin);
   write_document(dir / "scene.gltf", doc, "link.bin");
   fs::create_symlink("real.bin", dir / "link.bin");
-  EXPECT_EQ(load_scene(dir / "scene.gltf").meshes[0].primitives[0].positions[1], glm::vec3(1, 0, 0));
+  EXPECT_EQ(load_scene(dir / "scene.gltf").meshes[0].primitives[0].positions[1],
+            glm::vec3(1, 0, 0));
 }
 
 TEST(ConfinementSymlinks, SubfolderBufferLoads) {
@@ -499,7 +513,8 @@ TEST(ConfinementSymlinks, SubfolderBufferLoads) {
   const Document doc = triangle_document();
   write_bytes(dir / "sub" / "data.bin", doc.bin);
   write_document(dir / "scene.gltf", doc, "sub/data.bin");
-  EXPECT_EQ(load_scene(dir / "scene.gltf").meshes[0].primitives[0].positions[1], glm::vec3(1, 0, 0));
+  EXPECT_EQ(load_scene(dir / "scene.gltf").meshes[0].primitives[0].positions[1],
+            glm::vec3(1, 0, 0));
 }
 
 // ---- Real-world scenes (../shared/scenes, when present) -----------------------------------
@@ -538,7 +553,8 @@ TEST_P(SharedScene, Loads) {
   const Scene scene = load_scene(file);
   EXPECT_FALSE(scene.instances().empty());
   EXPECT_EQ(scene.content_hash.size(), 16u);
-  for (const Image& t : scene.images) EXPECT_EQ(t.rgba8.size(), size_t(t.width) * t.height * 4) << t.name;
+  for (const Image& t : scene.images)
+    EXPECT_EQ(t.rgba8.size(), size_t(t.width) * t.height * 4) << t.name;
   for (const Texture& t : scene.textures) EXPECT_LT(t.image, scene.images.size()) << t.name;
 }
 
@@ -546,7 +562,8 @@ std::string shared_scene_name(const testing::TestParamInfo<std::string>& param_i
   return test_name_for(param_info.param);
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, SharedScene, testing::ValuesIn(shared_scene_files()), shared_scene_name);
+INSTANTIATE_TEST_SUITE_P(Files, SharedScene, testing::ValuesIn(shared_scene_files()),
+                         shared_scene_name);
 
 }  // namespace
 }  // namespace hipr

@@ -40,7 +40,8 @@ void expect_same_scene(const Scene& want, const Scene& got, bool same_extensions
     EXPECT_EQ(a.light, b.light);
     EXPECT_EQ(a.visible, b.visible);
     for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r) EXPECT_EQ(a.local[c][r], b.local[c][r]) << "local[" << c << "][" << r << "]";
+      for (int r = 0; r < 4; ++r)
+        EXPECT_EQ(a.local[c][r], b.local[c][r]) << "local[" << c << "][" << r << "]";
   }
   std::vector<uint32_t> roots = got.root_nodes;
   std::vector<std::vector<uint32_t>> children = got.children;
@@ -145,8 +146,8 @@ std::vector<Edit> typical_edits(const Scene& scene) {
   const auto [lo, hi] = scene.bounds();
   const float size = glm::length(hi - lo);
   if (first_mesh >= 0)
-    edits.push_back(
-        TransformEdit{"#" + std::to_string(first_mesh), glm::vec3(0.05f, 0.02f, -0.03f) * size, std::nullopt});
+    edits.push_back(TransformEdit{"#" + std::to_string(first_mesh),
+                                  glm::vec3(0.05f, 0.02f, -0.03f) * size, std::nullopt});
   if (last_mesh >= 0) edits.push_back(VisibilityEdit{"#" + std::to_string(last_mesh), false});
   edits.push_back(MaterialEdit{"#0",
                                {{"base_color", {0.2f, 0.4f, 0.6f}},
@@ -155,7 +156,8 @@ std::vector<Edit> typical_edits(const Scene& scene) {
                                 {"base_diffuse_roughness", {0.5f}}}});
   if (light >= 0) {
     const PunctualLight& l = scene.lights[size_t(scene.nodes[size_t(light)].light)];
-    edits.push_back(LightEdit{"#" + std::to_string(light), l.intensity * 2.0f, glm::vec3(1.0f, 0.5f, 0.25f), 10.0f});
+    edits.push_back(LightEdit{"#" + std::to_string(light), l.intensity * 2.0f,
+                              glm::vec3(1.0f, 0.5f, 0.25f), 10.0f});
   }
   edits.push_back(CameraEdit{glm::vec3(0.0f, 0.01f, 0.02f) * size, std::nullopt});
   return edits;

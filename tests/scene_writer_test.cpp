@@ -85,14 +85,18 @@ std::vector<Edit> cornell_box_edits() {
   glm::mat4 matrix = glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.01f, 0.2f)) *
                      glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(0, 1, 0)) *
                      glm::scale(glm::mat4(1.0f), glm::vec3(0.9f));
-  return {TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt},
-          TransformEdit{"short_block", std::nullopt, matrix},
-          VisibilityEdit{"back_wall", false},
-          CameraEdit{glm::vec3(0.0f, 0.02f, -0.1f), std::nullopt},
-          test::every_parameter_edit("white", 1),
-          MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}, {"specular_roughness", {0.25f}}}},
-          MaterialEdit{"green", {{"specular_roughness", {0.5f}}, {"base_metalness", {0.3f}}, {"specular_ior", {1.7f}}}},
-          MaterialEdit{"light", {{"emission_luminance", {30.0f}}, {"emission_color", {2.0f, 1.0f, 0.5f}}}}};
+  return {
+      TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt},
+      TransformEdit{"short_block", std::nullopt, matrix},
+      VisibilityEdit{"back_wall", false},
+      CameraEdit{glm::vec3(0.0f, 0.02f, -0.1f), std::nullopt},
+      test::every_parameter_edit("white", 1),
+      MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}, {"specular_roughness", {0.25f}}}},
+      MaterialEdit{
+          "green",
+          {{"specular_roughness", {0.5f}}, {"base_metalness", {0.3f}}, {"specular_ior", {1.7f}}}},
+      MaterialEdit{"light",
+                   {{"emission_luminance", {30.0f}}, {"emission_color", {2.0f, 1.0f, 0.5f}}}}};
 }
 
 TEST(SceneWriter, GltfIntoAnotherFolderRoundTripsEveryEditKind) {
@@ -100,7 +104,8 @@ TEST(SceneWriter, GltfIntoAnotherFolderRoundTripsEveryEditKind) {
   round_trip(test::asset("cornell_box.gltf"), cornell_box_edits(), dir / "edited.gltf");
   // The buffer was copied beside it; no temporary file is left.
   EXPECT_EQ(folder_listing(dir), (std::vector<std::string>{"cornell_box.bin", "edited.gltf"}));
-  EXPECT_EQ(read_file_bytes(dir / "cornell_box.bin"), read_file_bytes(test::asset("cornell_box.bin")));
+  EXPECT_EQ(read_file_bytes(dir / "cornell_box.bin"),
+            read_file_bytes(test::asset("cornell_box.bin")));
 
   const json doc = read_json(dir / "edited.gltf");
   const auto node = [&](const std::string& name) {
@@ -117,8 +122,8 @@ TEST(SceneWriter, GltfIntoAnotherFolderRoundTripsEveryEditKind) {
   EXPECT_EQ(node("back_wall")["extensions"]["KHR_node_visibility"]["visible"], false);
   EXPECT_FALSE(node("floor").contains("extensions"));
   const auto used = doc["extensionsUsed"].get<std::vector<std::string>>();
-  for (const char* e :
-       {"KHR_node_visibility", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_iridescence"})
+  for (const char* e : {"KHR_node_visibility", "KHR_materials_clearcoat", "KHR_materials_sheen",
+                        "KHR_materials_iridescence"})
     EXPECT_NE(std::find(used.begin(), used.end(), e), used.end()) << e;
 
   // Values glTF can hold go to glTF (and only there); the rest to extras.hipr_openpbr.
@@ -141,7 +146,9 @@ TEST(SceneWriter, GltfIntoAnotherFolderRoundTripsEveryEditKind) {
   // Emission above glTF's range: the glTF fields give the same light, the extras the exact split.
   const json& light = doc["materials"][3];
   EXPECT_FLOAT_EQ(light["emissiveFactor"][0].get<float>(), 1.0f);
-  EXPECT_FLOAT_EQ(light["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"].get<float>(), 60.0f);
+  EXPECT_FLOAT_EQ(
+      light["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"].get<float>(),
+      60.0f);
   EXPECT_EQ(light["extras"]["hipr_openpbr"]["emission_color"][0], 2.0);
 }
 
@@ -150,19 +157,22 @@ TEST(SceneWriter, GlbRoundTripsEveryEditKindInOneFile) {
   round_trip(test::asset("cornell_box.gltf"), cornell_box_edits(), dir / "edited.glb");
   EXPECT_EQ(folder_listing(dir), std::vector<std::string>{"edited.glb"});
   // And back from .glb to .gltf: the BIN chunk becomes <name>.bin.
-  round_trip(dir / "edited.glb", {TransformEdit{"floor", glm::vec3(0.0f, -0.01f, 0.0f), std::nullopt}},
+  round_trip(dir / "edited.glb",
+             {TransformEdit{"floor", glm::vec3(0.0f, -0.01f, 0.0f), std::nullopt}},
              dir / "again.gltf");
   EXPECT_TRUE(fs::exists(dir / "again.bin"));
 }
 
 TEST(SceneWriter, LightEditsRoundTrip) {
   const fs::path dir = test::temp_dir("writer-light");
-  const std::vector<Edit> edits = {LightEdit{"lamp", 3.0f, glm::vec3(1.0f, 0.9f, 0.8f), 2.5f},
-                                   TransformEdit{"sphere", glm::vec3(-0.1f, 0.0f, 0.05f), std::nullopt}};
+  const std::vector<Edit> edits = {
+      LightEdit{"lamp", 3.0f, glm::vec3(1.0f, 0.9f, 0.8f), 2.5f},
+      TransformEdit{"sphere", glm::vec3(-0.1f, 0.0f, 0.05f), std::nullopt}};
   round_trip(test::asset("cornell_sphere.glb"), edits, dir / "a.glb");
   round_trip(test::asset("cornell_sphere.glb"), edits, dir / "a.gltf");
   // A colour above glTF's [0, 1]: written as colour / peak and intensity x peak, exact in extras.
-  const std::vector<Edit> bright = {LightEdit{"lamp", 2.0f, glm::vec3(4.0f, 2.0f, 1.0f), std::nullopt}};
+  const std::vector<Edit> bright = {
+      LightEdit{"lamp", 2.0f, glm::vec3(4.0f, 2.0f, 1.0f), std::nullopt}};
   round_trip(test::asset("cornell_sphere.glb"), bright, dir / "b.gltf");
   const json light = read_json(dir / "b.gltf")["extensions"]["KHR_lights_punctual"]["lights"][0];
   EXPECT_FLOAT_EQ(light["color"][0].get<float>(), 1.0f);
@@ -172,7 +182,8 @@ TEST(SceneWriter, LightEditsRoundTrip) {
   Scene scene = load_scene(dir / "a.gltf");
   apply_edit(scene, LightEdit{"lamp", std::nullopt, std::nullopt, 0.0f});
   save_scene(scene, dir / "c.gltf");
-  EXPECT_FALSE(read_json(dir / "c.gltf")["extensions"]["KHR_lights_punctual"]["lights"][0].contains("range"));
+  EXPECT_FALSE(read_json(dir / "c.gltf")["extensions"]["KHR_lights_punctual"]["lights"][0].contains(
+      "range"));
   expect_same_scene(scene, load_scene(dir / "c.gltf"), false);
 }
 
@@ -182,14 +193,16 @@ TEST(SceneWriter, SavingInPlaceIsAtomicAndKeepsSideFiles) {
   fs::copy(test::asset("cornell_box.bin"), dir / "cornell_box.bin");
   round_trip(dir / "box.gltf", cornell_box_edits(), dir / "box.gltf");
   EXPECT_EQ(folder_listing(dir), (std::vector<std::string>{"box.gltf", "cornell_box.bin"}));
-  EXPECT_EQ(read_file_bytes(dir / "cornell_box.bin"), read_file_bytes(test::asset("cornell_box.bin")));
+  EXPECT_EQ(read_file_bytes(dir / "cornell_box.bin"),
+            read_file_bytes(test::asset("cornell_box.bin")));
   // A second save of the saved file changes nothing: the extras are recomputed, not stacked.
   const std::vector<unsigned char> first = read_file_bytes(dir / "box.gltf");
   save_scene(load_scene(dir / "box.gltf"), dir / "box.gltf");
   EXPECT_EQ(read_file_bytes(dir / "box.gltf"), first);
 
   fs::copy(test::asset("cornell_sphere.glb"), dir / "sphere.glb");
-  round_trip(dir / "sphere.glb", {VisibilityEdit{"sphere", false}, LightEdit{"lamp", 1.0f, std::nullopt, std::nullopt}},
+  round_trip(dir / "sphere.glb",
+             {VisibilityEdit{"sphere", false}, LightEdit{"lamp", 1.0f, std::nullopt, std::nullopt}},
              dir / "sphere.glb");
 }
 
@@ -222,32 +235,37 @@ TEST(SceneWriter, EveryParameterRoundTripsOnAMaterialWithEveryExtension) {
   // A thick, masked material with every extension the loader reads; then every editable
   // parameter set (twice: varied values, then all weights and colours at their minimum).
   test::Document doc = test::triangle_document();
-  doc.gltf["materials"][0] = {{"name", "mat"},
-                              {"alphaMode", "MASK"},
-                              {"alphaCutoff", 0.3},
-                              {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.4, 0.3, 0.8}}}},
-                              {"extensions",
-                               {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}},
-                                {"KHR_materials_volume", {{"thicknessFactor", 0.2}, {"attenuationDistance", 0.5}}},
-                                {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.5}}},
-                                {"KHR_materials_sheen", {{"sheenColorFactor", {0.2, 0.2, 0.2}}}},
-                                {"KHR_materials_iridescence", {{"iridescenceFactor", 0.5}}},
-                                {"KHR_materials_anisotropy", {{"anisotropyStrength", 0.5}}},
-                                {"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.1}}},
-                                {"KHR_materials_ior", {{"ior", 1.3}}},
-                                {"KHR_materials_specular", {{"specularFactor", 0.7}}},
-                                {"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}};
+  doc.gltf["materials"][0] = {
+      {"name", "mat"},
+      {"alphaMode", "MASK"},
+      {"alphaCutoff", 0.3},
+      {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.4, 0.3, 0.8}}}},
+      {"extensions",
+       {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}},
+        {"KHR_materials_volume", {{"thicknessFactor", 0.2}, {"attenuationDistance", 0.5}}},
+        {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.5}}},
+        {"KHR_materials_sheen", {{"sheenColorFactor", {0.2, 0.2, 0.2}}}},
+        {"KHR_materials_iridescence", {{"iridescenceFactor", 0.5}}},
+        {"KHR_materials_anisotropy", {{"anisotropyStrength", 0.5}}},
+        {"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.1}}},
+        {"KHR_materials_ior", {{"ior", 1.3}}},
+        {"KHR_materials_specular", {{"specularFactor", 0.7}}},
+        {"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}};
   const fs::path dir = test::temp_dir("writer-every-parameter");
   test::write_document(dir / "source.gltf", doc);
   for (int variant : {1, 2, 0}) {
     const std::string out = "saved" + std::to_string(variant);
-    round_trip(dir / "source.gltf", {test::every_parameter_edit("mat", variant)}, dir / (out + ".gltf"));
-    round_trip(dir / "source.gltf", {test::every_parameter_edit("mat", variant)}, dir / (out + ".glb"));
+    round_trip(dir / "source.gltf", {test::every_parameter_edit("mat", variant)},
+               dir / (out + ".gltf"));
+    round_trip(dir / "source.gltf", {test::every_parameter_edit("mat", variant)},
+               dir / (out + ".glb"));
   }
-  // glTF's default material (primitives without one) is editable too: kept in the document's extras.
+  // glTF's default material (primitives without one) is editable too: kept in the document's
+  // extras.
   doc.primitive().erase("material");
   test::write_document(dir / "no_material.gltf", doc);
-  round_trip(dir / "no_material.gltf", {test::every_parameter_edit("default", 1)}, dir / "no_material_saved.gltf");
+  round_trip(dir / "no_material.gltf", {test::every_parameter_edit("default", 1)},
+             dir / "no_material_saved.gltf");
 }
 
 TEST(SceneWriter, AnimatedNodesStayTrs) {
@@ -257,8 +275,9 @@ TEST(SceneWriter, AnimatedNodesStayTrs) {
   const int moves = doc.add_accessor(std::vector<float>{0, 0, 0, 1, 0, 0}, test::kFloat, "VEC3", 2);
   doc.gltf["accessors"][size_t(times)]["min"] = {0.0};
   doc.gltf["accessors"][size_t(times)]["max"] = {1.0};
-  doc.gltf["animations"] = json::array({{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}},
-                                         {"samplers", {{{"input", times}, {"output", moves}}}}}});
+  doc.gltf["animations"] = json::array(
+      {{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}},
+        {"samplers", {{{"input", times}, {"output", moves}}}}}});
   const fs::path dir = test::temp_dir("writer-animated");
   test::write_document(dir / "animated.gltf", doc);
   Scene scene = load_scene(dir / "animated.gltf");
@@ -293,8 +312,10 @@ TEST(SceneWriter, SharedScenesRoundTrip) {
     const fs::path unedited = folder / (stem + "_unedited" + source.extension().string());
     save_scene(scene, unedited);
     expect_same_scene(scene, load_scene(unedited), true);
-    if (source.extension() == ".gltf") EXPECT_EQ(ordered_text(unedited), ordered_text(source));
-    else EXPECT_EQ(glb_chunks(unedited), glb_chunks(source));
+    if (source.extension() == ".gltf")
+      EXPECT_EQ(ordered_text(unedited), ordered_text(source));
+    else
+      EXPECT_EQ(glb_chunks(unedited), glb_chunks(source));
   }
   // SheenChair's images were copied beside the .gltf under their own names (URIs with "./").
   EXPECT_TRUE(fs::exists(dir / "SheenChair" / "chair_fabric_albedo.png"));
@@ -336,7 +357,8 @@ TEST(SceneWriter, RefusesToReplaceOtherFilesAndNeedsItsSource) {
   EXPECT_EQ(folder_listing(dir), std::vector<std::string>{"cornell_box.bin"});
   EXPECT_EQ(read_file_bytes(dir / "cornell_box.bin"), (std::vector<unsigned char>{1, 2, 3, 4}));
   // ... but an identical one (an earlier save) is simply reused.
-  fs::copy(test::asset("cornell_box.bin"), dir / "cornell_box.bin", fs::copy_options::overwrite_existing);
+  fs::copy(test::asset("cornell_box.bin"), dir / "cornell_box.bin",
+           fs::copy_options::overwrite_existing);
   save_scene(scene, dir / "scene.gltf");
   expect_same_scene(scene, load_scene(dir / "scene.gltf"), true);
 
@@ -354,8 +376,9 @@ TEST(SceneWriter, RefusesToReplaceOtherFilesAndNeedsItsSource) {
   EXPECT_THROW(save_scene(infinite, dir / "infinite.gltf"), InputError);
   EXPECT_FALSE(fs::exists(dir / "infinite.gltf"));
   // A scene built in code has no source at all.
-  EXPECT_THROW(save_scene(test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.5f, 1.0f), dir / "furnace.gltf"),
-               InputError);
+  EXPECT_THROW(
+      save_scene(test::make_furnace_scene(1.0f, glm::vec3(0.0f), 0.5f, 1.0f), dir / "furnace.gltf"),
+      InputError);
   EXPECT_FALSE(fs::exists(dir / "furnace.gltf"));
 }
 
@@ -371,8 +394,9 @@ TEST(SceneWriterLoader, ReadsNodeVisibilityAndExtras) {
   doc.gltf["nodes"][0]["extensions"]["KHR_node_visibility"]["visible"] = false;
   doc.gltf["extensionsRequired"] = {"KHR_node_visibility"};
   doc.gltf["extensionsUsed"] = {"KHR_node_visibility"};
-  doc.gltf["materials"][0]["extras"] = {{"note", "kept"},
-                                        {"hipr_openpbr", {{"coat_darkening", 0.25}, {"fuzz_color", {0.1, 0.2, 0.3}}}}};
+  doc.gltf["materials"][0]["extras"] = {
+      {"note", "kept"},
+      {"hipr_openpbr", {{"coat_darkening", 0.25}, {"fuzz_color", {0.1, 0.2, 0.3}}}}};
   doc.gltf["extras"]["hipr_default_material"] = {{"base_weight", 0.5}};
   const Scene scene = load_document(doc, "good");
   EXPECT_FALSE(scene.nodes[0].visible);
@@ -407,23 +431,25 @@ TEST(SceneWriterLoader, BadExtrasAndVisibilityAreInputErrors) {
   light.gltf["extensions"]["KHR_lights_punctual"]["lights"] = {
       {{"type", "point"}, {"extras", {{"hipr_light", {{"color", {1.0, -2.0, 1.0}}}}}}}};
   EXPECT_THROW(load_document(light, "light"), InputError);
-  light.gltf["extensions"]["KHR_lights_punctual"]["lights"][0]["extras"]["hipr_light"] = {{"power", 1.0}};
+  light.gltf["extensions"]["KHR_lights_punctual"]["lights"][0]["extras"]["hipr_light"] = {
+      {"power", 1.0}};
   EXPECT_THROW(load_document(light, "light_key"), InputError);
 }
 
 TEST(SceneWriter, EditedAndSavedScenesRenderBitIdentical) {
   const fs::path dir = test::temp_dir("writer-render");
   Scene scene = load_scene(test::asset("cornell_sphere.glb"));
-  const std::vector<Edit> edits = {TransformEdit{"sphere", glm::vec3(-0.05f, 0.0f, 0.05f), std::nullopt},
-                                   VisibilityEdit{"tall_block", false},
-                                   LightEdit{"lamp", 2.0f, glm::vec3(3.0f, 0.9f, 0.8f), 1.5f},
-                                   MaterialEdit{"red",
-                                                {{"base_color", {0.1f, 0.6f, 0.2f}},
-                                                 {"specular_roughness", {0.4f}},
-                                                 {"base_diffuse_roughness", {0.7f}},
-                                                 {"specular_weight", {1.0f}}}},
-                                   MaterialEdit{"light", {{"emission_luminance", {25.0f}}}},
-                                   CameraEdit{glm::vec3(0.01f, 0.0f, -0.05f), std::nullopt}};
+  const std::vector<Edit> edits = {
+      TransformEdit{"sphere", glm::vec3(-0.05f, 0.0f, 0.05f), std::nullopt},
+      VisibilityEdit{"tall_block", false},
+      LightEdit{"lamp", 2.0f, glm::vec3(3.0f, 0.9f, 0.8f), 1.5f},
+      MaterialEdit{"red",
+                   {{"base_color", {0.1f, 0.6f, 0.2f}},
+                    {"specular_roughness", {0.4f}},
+                    {"base_diffuse_roughness", {0.7f}},
+                    {"specular_weight", {1.0f}}}},
+      MaterialEdit{"light", {{"emission_luminance", {25.0f}}}},
+      CameraEdit{glm::vec3(0.01f, 0.0f, -0.05f), std::nullopt}};
   for (const Edit& edit : edits) apply_edit(scene, edit);
   save_scene(scene, dir / "edited.glb");
   const Scene reloaded = load_scene(dir / "edited.glb");
@@ -436,7 +462,8 @@ TEST(SceneWriter, EditedAndSavedScenesRenderBitIdentical) {
   const ImageRGB b = test::render_finite(reloaded, settings, 4);
   EXPECT_EQ(a.rgb, b.rgb);
   // The edits are visible (so the comparison means something).
-  EXPECT_NE(test::render_finite(load_scene(test::asset("cornell_sphere.glb")), settings, 4).rgb, a.rgb);
+  EXPECT_NE(test::render_finite(load_scene(test::asset("cornell_sphere.glb")), settings, 4).rgb,
+            a.rgb);
 }
 
 }  // namespace

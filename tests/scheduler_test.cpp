@@ -26,7 +26,9 @@ void run_to_convergence(Scheduler& scheduler, uint32_t spp) {
 }
 
 // A full-frame render of `scene`, as a display shows it.
-ImageRGB fresh(const Scene& scene, uint32_t spp) { return test::full_frame_display(scene, settings(), spp); }
+ImageRGB fresh(const Scene& scene, uint32_t spp) {
+  return test::full_frame_display(scene, settings(), spp);
+}
 
 struct PolicyCase {
   Policy policy;
@@ -59,18 +61,22 @@ TEST_P(EveryPolicy, ConvergesToTheFullFrameImageOfTheEditedScene) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Policies, EveryPolicy,
-    ::testing::Values(PolicyCase{Policy::Hipr, DisplayRule::Difference, 2}, PolicyCase{Policy::Hipr, DisplayRule::Blend, 2},
-                      PolicyCase{Policy::Hipr, DisplayRule::Switch, 2},
-                      PolicyCase{Policy::Hipr, DisplayRule::Immediate, 1}, PolicyCase{Policy::Full, DisplayRule::Immediate, 1},
-                      PolicyCase{Policy::Scanline, DisplayRule::Immediate, 2},
-                      PolicyCase{Policy::Spiral, DisplayRule::Blend, 1}, PolicyCase{Policy::Random, DisplayRule::Immediate, 1},
-                      PolicyCase{Policy::Oracle, DisplayRule::Difference, 2}, PolicyCase{Policy::Hipr, DisplayRule::Difference, 1}),
-    [](const auto& case_info) {
-      return policy_name(case_info.param.policy) + "_" + display_rule_name(case_info.param.display) + "_first" +
-             std::to_string(case_info.param.first_visit_spp);
-    });
+INSTANTIATE_TEST_SUITE_P(Policies, EveryPolicy,
+                         ::testing::Values(PolicyCase{Policy::Hipr, DisplayRule::Difference, 2},
+                                           PolicyCase{Policy::Hipr, DisplayRule::Blend, 2},
+                                           PolicyCase{Policy::Hipr, DisplayRule::Switch, 2},
+                                           PolicyCase{Policy::Hipr, DisplayRule::Immediate, 1},
+                                           PolicyCase{Policy::Full, DisplayRule::Immediate, 1},
+                                           PolicyCase{Policy::Scanline, DisplayRule::Immediate, 2},
+                                           PolicyCase{Policy::Spiral, DisplayRule::Blend, 1},
+                                           PolicyCase{Policy::Random, DisplayRule::Immediate, 1},
+                                           PolicyCase{Policy::Oracle, DisplayRule::Difference, 2},
+                                           PolicyCase{Policy::Hipr, DisplayRule::Difference, 1}),
+                         [](const auto& case_info) {
+                           return policy_name(case_info.param.policy) + "_" +
+                                  display_rule_name(case_info.param.display) + "_first" +
+                                  std::to_string(case_info.param.first_visit_spp);
+                         });
 
 TEST(Scheduler, TheOracleNeedsAReference) {
   Scene scene = load_scene(test::asset("cornell_box.gltf"));
@@ -104,9 +110,12 @@ TEST(Scheduler, FiftyRapidEditsEndInExactlyTheFinalScene) {
   renderer.add_samples_full_frame(1);
   for (int i = 0; i < 50; ++i) {
     const Scene before = scene;
-    apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.003f * float(i % 5) - 0.006f, 0.0f, 0.002f), std::nullopt});
+    apply_edit(scene,
+               TransformEdit{"tall_block", glm::vec3(0.003f * float(i % 5) - 0.006f, 0.0f, 0.002f),
+                             std::nullopt});
     scheduler.on_edit(scene, diff_scenes(before, scene));
-    scheduler.step();  // one step per edit (part of stage 2): schedules are interrupted all the time
+    scheduler
+        .step();  // one step per edit (part of stage 2): schedules are interrupted all the time
   }
   run_to_convergence(scheduler, 1);
   EXPECT_EQ(scheduler.displayed_image().rgb, fresh(scene, 1).rgb);
@@ -137,13 +146,15 @@ TEST(Scheduler, EditTimesCountEveryPart) {
   renderer.add_samples_full_frame(1);
   for (int edit = 0; edit < 2; ++edit) {
     const Scene before = scene;
-    apply_edit(scene, MaterialEdit{"white", {{"base_color", {0.2f + 0.3f * float(edit), 0.2f, 0.2f}}}});
+    apply_edit(scene,
+               MaterialEdit{"white", {{"base_color", {0.2f + 0.3f * float(edit), 0.2f, 0.2f}}}});
     const ChangeSet changes = diff_scenes(before, scene);
     const auto start = std::chrono::steady_clock::now();
     scheduler.on_edit(scene, changes);
     uint32_t steps = 0;
     for (; steps < 10000 && scheduler.work_since_edit() < 1.0; ++steps) scheduler.step();
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Scheduler::EditTimes& t = scheduler.edit_times();
     EXPECT_EQ(t.leading_steps + t.steps, steps) << "edit " << edit;
     EXPECT_GT(t.leading_steps, 0u);
@@ -154,8 +165,8 @@ TEST(Scheduler, EditTimesCountEveryPart) {
     EXPECT_GE(t.scene_seconds, 0.0);
     // Every part of the edit's work is counted once: together they are the time it took (the
     // loop's own bookkeeping aside), neither more nor much less.
-    const double parts = t.capture_seconds + t.scene_seconds + t.plan_seconds + t.sort_seconds + t.focus_seconds +
-                         t.leading_step_seconds + t.step_seconds;
+    const double parts = t.capture_seconds + t.scene_seconds + t.plan_seconds + t.sort_seconds +
+                         t.focus_seconds + t.leading_step_seconds + t.step_seconds;
     EXPECT_LE(parts, wall) << "edit " << edit;
     EXPECT_GE(parts, 0.8 * wall) << "edit " << edit;
   }

@@ -35,7 +35,8 @@ struct FakeStages final : HiprStageRunner {
     ++focus_calls;
     return focus_active;
   }
-  void stage2_discover(uint32_t offset, uint32_t count, uint32_t, std::optional<DisplayRule>) override {
+  void stage2_discover(uint32_t offset, uint32_t count, uint32_t,
+                       std::optional<DisplayRule>) override {
     stage2.emplace_back(offset, count);
   }
   void build_schedule() override { ++schedule_builds; }
@@ -117,7 +118,8 @@ TEST(SchedulingInterface, BucketOrderRendersItsOrderInStepsAndShowsEachStep) {
   for (int s = 0; s < 4; ++s) scheduler.step();  // 12 tiles: 5 + 5 + 2, then a second round
   const std::vector<uint32_t> spiral = tile_order(Policy::Spiral, 4, 3, 5);
   ASSERT_GE(renderer.rendered.size(), 12u);
-  EXPECT_EQ(std::vector<uint32_t>(renderer.rendered.begin(), renderer.rendered.begin() + 12), spiral);
+  EXPECT_EQ(std::vector<uint32_t>(renderer.rendered.begin(), renderer.rendered.begin() + 12),
+            spiral);
   EXPECT_EQ(renderer.samples_given, (std::vector<uint32_t>{2, 2, 2, 1}));  // first visits get more
   for (const auto& rule : renderer.step_rules) EXPECT_EQ(rule, DisplayRule::Immediate);
 }
@@ -156,7 +158,8 @@ TEST(SchedulingInterface, HiprRendersItsActiveTilesAsLeadingStepsThenTheSortedRe
   EXPECT_EQ(renderer.stages->schedule_builds, 2u);  // stage 3 after the last active tile
   scheduler.step();
   EXPECT_EQ(renderer.rendered, (std::vector<uint32_t>{8, 7}));  // entries 3 and 4 of the order
-  for (const auto& rule : renderer.step_rules) EXPECT_EQ(rule, DisplayRule::Difference);  // hipr's own rule
+  for (const auto& rule : renderer.step_rules)
+    EXPECT_EQ(rule, DisplayRule::Difference);  // hipr's own rule
 }
 
 // A focus (docs/method.md#focus) re-plans at once without capturing, restarting or updating
@@ -186,7 +189,7 @@ TEST(SchedulingInterface, AFocusReplansWithoutRestartingAndEndsTheRoundEven) {
   EXPECT_EQ(renderer.stages->schedule_builds, 2u);
   for (int s = 0; s < 2; ++s) scheduler.step();  // the rest of the round: tiles 2..11
   for (uint32_t t = 2; t < 12; ++t) EXPECT_EQ(renderer.tile_samples[t], 1u) << t;  // none ran ahead
-  EXPECT_EQ(renderer.target, 2u);  // the next round
+  EXPECT_EQ(renderer.target, 2u);                                                  // the next round
   // The scheduler keeps the focus; an empty one clears it (and plans again).
   EXPECT_EQ(scheduler.focus(), focus);
   scheduler.set_focus({});
@@ -274,7 +277,8 @@ TEST(SchedulingInterface, TheEditsLeadComesAfterTheStronglyDiscoveredTiles) {
   scheduler.step();
   scheduler.step();
   // A lead step holds 2 x 2 / 3 tiles (one): about a first visit's work.
-  EXPECT_EQ(renderer.lead_calls, (std::vector<std::pair<uint32_t, uint32_t>>{{0, 1}, {1, 1}, {2, 1}}));
+  EXPECT_EQ(renderer.lead_calls,
+            (std::vector<std::pair<uint32_t, uint32_t>>{{0, 1}, {1, 1}, {2, 1}}));
   const size_t rendered = renderer.rendered.size();
   scheduler.step();  // the round goes on from entry 7
   ASSERT_EQ(renderer.rendered.size(), rendered + 2);
@@ -325,7 +329,8 @@ TEST(EditPipeline, DiffsLikeAFullCopyAndSkipsEditsThatChangeNothing) {
   EXPECT_EQ(renderer.scene_updates, 1u);
   EXPECT_TRUE(pipeline.apply(TransformEdit{"tall_block", glm::vec3(0.0f), std::nullopt}).empty());
   EXPECT_EQ(renderer.scene_updates, 1u);  // nothing changed: no re-render
-  EXPECT_THROW(pipeline.apply(TransformEdit{"no_such_node", glm::vec3(1.0f), std::nullopt}), InputError);
+  EXPECT_THROW(pipeline.apply(TransformEdit{"no_such_node", glm::vec3(1.0f), std::nullopt}),
+               InputError);
   EXPECT_EQ(renderer.scene_updates, 1u);
 }
 

@@ -22,12 +22,15 @@ class ShaderCache : public ::testing::Test {
     setenv("HIPR_CACHE_DIR", m_dir.c_str(), 1);
   }
   void TearDown() override {
-    if (m_previous.empty()) unsetenv("HIPR_CACHE_DIR");
-    else setenv("HIPR_CACHE_DIR", m_previous.c_str(), 1);
+    if (m_previous.empty())
+      unsetenv("HIPR_CACHE_DIR");
+    else
+      setenv("HIPR_CACHE_DIR", m_previous.c_str(), 1);
   }
   std::vector<std::filesystem::path> cache_files() const {
     std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(m_dir / "shaders")) files.push_back(entry.path());
+    for (const auto& entry : std::filesystem::directory_iterator(m_dir / "shaders"))
+      files.push_back(entry.path());
     return files;
   }
   std::filesystem::path m_dir;
@@ -47,7 +50,8 @@ TEST_F(ShaderCache, CompilesOnceThenReusesTheCache) {
 
 TEST_F(ShaderCache, DefinesAreAPartOfTheKey) {
   vk::compile_compute_shader("trace_tiles.comp", {});
-  const vk::CompiledShader specialized = vk::compile_compute_shader("trace_tiles.comp", {{"HIPR_TEST_DEFINE", "1"}});
+  const vk::CompiledShader specialized =
+      vk::compile_compute_shader("trace_tiles.comp", {{"HIPR_TEST_DEFINE", "1"}});
   EXPECT_FALSE(specialized.from_cache);
   EXPECT_EQ(cache_files().size(), 2u);
 }
@@ -76,8 +80,10 @@ TEST(ShaderCompiler, ArithmeticIsNeverContracted) {
   std::set<uint32_t> arithmetic, no_contraction;
   for (size_t at = 5; at < spirv.size(); at += spirv[at] >> 16) {
     const uint32_t opcode = spirv[at] & 0xffffu;
-    if (opcode == 129 || opcode == 131 || opcode == 133 || opcode == 136) arithmetic.insert(spirv[at + 2]);  // FAdd FSub FMul FDiv
-    if (opcode == 71 && spirv[at + 2] == 42) no_contraction.insert(spirv[at + 1]);  // OpDecorate NoContraction
+    if (opcode == 129 || opcode == 131 || opcode == 133 || opcode == 136)
+      arithmetic.insert(spirv[at + 2]);  // FAdd FSub FMul FDiv
+    if (opcode == 71 && spirv[at + 2] == 42)
+      no_contraction.insert(spirv[at + 1]);  // OpDecorate NoContraction
   }
   EXPECT_GT(arithmetic.size(), 3u) << "the display kernel does float arithmetic";
   for (uint32_t id : arithmetic) EXPECT_TRUE(no_contraction.count(id)) << "%" << id;
@@ -91,13 +97,16 @@ TEST(Device, MissingDeviceIsAClearError) {
     FAIL() << "expected an error";
   } catch (const std::exception& e) {
     // It names what was asked for and what is there.
-    EXPECT_NE(std::string(e.what()).find("'no such device anywhere'"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find(test::context().device_name()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'no such device anywhere'"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find(test::context().device_name()), std::string::npos)
+        << e.what();
   }
 }
 
 TEST(Device, ForcedRayQueriesOnADeviceWithoutThemIsAClearError) {
-  if (test::context().has_ray_queries()) GTEST_SKIP() << test::context().device_name() << " has ray queries";
+  if (test::context().has_ray_queries())
+    GTEST_SKIP() << test::context().device_name() << " has ray queries";
   vk::ContextOptions options;
   options.traversal = vk::Traversal::RayQuery;
   try {

@@ -10,14 +10,14 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/error.h"
+#include "core/log.h"
+#include "core/memory_usage.h"
 #include "hipr/edit_pipeline.h"
 #include "hipr/edits.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
-#include "core/error.h"
-#include "core/log.h"
-#include "core/memory_usage.h"
 #include "vk/context.h"
 
 namespace {
@@ -31,16 +31,26 @@ Edit hostile_edit(std::mt19937& rng) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const auto scaled = [](glm::vec3 s) { return glm::scale(glm::mat4(1.0f), s); };
   switch (rng() % 10) {
-    case 0: return TransformEdit{"sphere", std::nullopt, scaled(glm::vec3(3e38f))};
-    case 1: return TransformEdit{"tall_block", std::nullopt, scaled(glm::vec3(1e-30f))};
-    case 2: return TransformEdit{"tall_block", std::nullopt, scaled(glm::vec3(1.0f, 0.0f, 1.0f))};
-    case 3: return TransformEdit{"sphere", glm::vec3(3e38f, 0.0f, 0.0f), std::nullopt};
-    case 4: return TransformEdit{"lamp", glm::vec3(0.0f, nan, 0.0f), std::nullopt};
-    case 5: return DeformEdit{"light", scaled(glm::vec3(0.0f, 1.0f, 1.0f)), nullptr};
-    case 6: return LightEdit{"lamp", 1e30f, std::nullopt, std::nullopt};
-    case 7: return MaterialEdit{"light", {{"emission_luminance", {3e38f}}}};
-    case 8: return MaterialEdit{"white", {{"base_color", {nan, 0.5f, 0.5f}}}};
-    default: return CameraEdit{std::nullopt, glm::mat4(0.0f)};
+    case 0:
+      return TransformEdit{"sphere", std::nullopt, scaled(glm::vec3(3e38f))};
+    case 1:
+      return TransformEdit{"tall_block", std::nullopt, scaled(glm::vec3(1e-30f))};
+    case 2:
+      return TransformEdit{"tall_block", std::nullopt, scaled(glm::vec3(1.0f, 0.0f, 1.0f))};
+    case 3:
+      return TransformEdit{"sphere", glm::vec3(3e38f, 0.0f, 0.0f), std::nullopt};
+    case 4:
+      return TransformEdit{"lamp", glm::vec3(0.0f, nan, 0.0f), std::nullopt};
+    case 5:
+      return DeformEdit{"light", scaled(glm::vec3(0.0f, 1.0f, 1.0f)), nullptr};
+    case 6:
+      return LightEdit{"lamp", 1e30f, std::nullopt, std::nullopt};
+    case 7:
+      return MaterialEdit{"light", {{"emission_luminance", {3e38f}}}};
+    case 8:
+      return MaterialEdit{"white", {{"base_color", {nan, 0.5f, 0.5f}}}};
+    default:
+      return CameraEdit{std::nullopt, glm::mat4(0.0f)};
   }
 }
 
@@ -55,24 +65,36 @@ Edit random_edit(std::mt19937& rng, const Scene& scene) {
   };
   const glm::vec3 step = (glm::vec3(u(rng), u(rng), u(rng)) - 0.5f) * 0.02f;
   switch (rng() % 11) {
-    case 0: return TransformEdit{pick({"sphere", "tall_block", "light", "lamp"}), step, std::nullopt};
-    case 1: return MaterialEdit{pick({"white", "red", "green"}), {{"base_color", {u(rng), u(rng), u(rng)}}}};
-    case 2: return MaterialEdit{pick({"white", "red", "green"}), {{"specular_roughness", {u(rng)}}}};
-    case 3: return LightEdit{"lamp", 0.05f + u(rng), glm::vec3(0.2f + u(rng), 0.2f + u(rng), 0.2f + u(rng)), std::nullopt};
-    case 4: return MaterialEdit{"light", {{"emission_luminance", {1.0f + 30.0f * u(rng)}}}};
-    case 5: return VisibilityEdit{pick({"sphere", "tall_block", "light"}), u(rng) < 0.7f};
-    case 6: return CameraEdit{step * 0.5f, std::nullopt};
-    case 7: return EnvironmentEdit{.intensity = 0.01f * u(rng), .rotation = 6.0f * u(rng)};
+    case 0:
+      return TransformEdit{pick({"sphere", "tall_block", "light", "lamp"}), step, std::nullopt};
+    case 1:
+      return MaterialEdit{pick({"white", "red", "green"}),
+                          {{"base_color", {u(rng), u(rng), u(rng)}}}};
+    case 2:
+      return MaterialEdit{pick({"white", "red", "green"}), {{"specular_roughness", {u(rng)}}}};
+    case 3:
+      return LightEdit{"lamp", 0.05f + u(rng),
+                       glm::vec3(0.2f + u(rng), 0.2f + u(rng), 0.2f + u(rng)), std::nullopt};
+    case 4:
+      return MaterialEdit{"light", {{"emission_luminance", {1.0f + 30.0f * u(rng)}}}};
+    case 5:
+      return VisibilityEdit{pick({"sphere", "tall_block", "light"}), u(rng) < 0.7f};
+    case 6:
+      return CameraEdit{step * 0.5f, std::nullopt};
+    case 7:
+      return EnvironmentEdit{.intensity = 0.01f * u(rng), .rotation = 6.0f * u(rng)};
     case 9: {
       bool has_copy = false;
       const std::vector<bool> in_scene = scene.reachable_nodes();
-      for (size_t n = 0; n < scene.nodes.size(); ++n) has_copy = has_copy || (in_scene[n] && scene.nodes[n].name == "copy");
+      for (size_t n = 0; n < scene.nodes.size(); ++n)
+        has_copy = has_copy || (in_scene[n] && scene.nodes[n].name == "copy");
       if (has_copy) return DeleteEdit{"copy"};
       return DuplicateEdit{pick({"sphere", "tall_block", "lamp"}), "copy", step * 10.0f};
     }
     case 10: {
       const float scale = 1.0f + 0.1f * (u(rng) - 0.5f);
-      return DeformEdit{"sphere", glm::scale(glm::mat4(1.0f), glm::vec3(scale, 1.0f / scale, 1.0f)), nullptr};
+      return DeformEdit{"sphere", glm::scale(glm::mat4(1.0f), glm::vec3(scale, 1.0f / scale, 1.0f)),
+                        nullptr};
     }
     default:
       return EnvironmentEdit{.source = std::filesystem::path(pick({"studio", "sky", "studio"})),
@@ -87,7 +109,8 @@ int main(int argc, char** argv) {
   const unsigned seed = argc > 2 ? unsigned(std::stoul(argv[2])) : 1u;
   log::set_quiet(true);
   const vk::Context ctx(vk::ContextOptions{});
-  Scene scene = load_scene(std::string(HIPR_ASSETS_DIR) + "/cornell_sphere.glb", {.environment = "studio"});
+  Scene scene =
+      load_scene(std::string(HIPR_ASSETS_DIR) + "/cornell_sphere.glb", {.environment = "studio"});
   RenderSettings settings;
   settings.width = settings.height = 32;
   settings.tile_size = 8;
@@ -119,9 +142,12 @@ int main(int argc, char** argv) {
   fresh.add_samples_full_frame(spp);
   const bool same = scheduler.displayed_image().rgb == fresh.image().rgb;
   const bool finite = renderer.counters().non_finite_samples == 0;
-  std::printf("{\"edits\": %d, \"seed\": %u, \"traversal\": \"%s\", \"refused\": %d, \"bit_identical\": %s, "
-              "\"nonfinite_samples\": %llu, \"resident_kib\": [%s], \"growth_kib_after_first_tenth\": %ld}\n",
-              edits, seed, ctx.traversal_name(), refused, same ? "true" : "false",
-              (unsigned long long)renderer.counters().non_finite_samples, samples.c_str(), last - first);
+  std::printf(
+      "{\"edits\": %d, \"seed\": %u, \"traversal\": \"%s\", \"refused\": %d, \"bit_identical\": "
+      "%s, "
+      "\"nonfinite_samples\": %llu, \"resident_kib\": [%s], \"growth_kib_after_first_tenth\": "
+      "%ld}\n",
+      edits, seed, ctx.traversal_name(), refused, same ? "true" : "false",
+      (unsigned long long)renderer.counters().non_finite_samples, samples.c_str(), last - first);
   return same && finite ? 0 : 1;
 }

@@ -29,7 +29,8 @@ const vk::Context& software_context() {
   return *ctx;
 }
 
-ImageRGB render(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings, uint32_t spp) {
+ImageRGB render(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings,
+                uint32_t spp) {
   Renderer renderer(ctx, scene, settings);
   renderer.add_samples_full_frame(spp);
   return renderer.image();
@@ -46,7 +47,8 @@ double relative_difference(const ImageRGB& a, const ImageRGB& b) {
   return sum / double(a.rgb.size());
 }
 
-std::vector<uint32_t> camera_hits(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
+std::vector<uint32_t> camera_hits(const vk::Context& ctx, const Scene& scene,
+                                  const RenderSettings& settings) {
   Renderer renderer(ctx, scene, settings);
   hipr_stages(renderer).stage1_visibility(ChangeSet{});
   return renderer.gbuffer_instances();
@@ -54,8 +56,10 @@ std::vector<uint32_t> camera_hits(const vk::Context& ctx, const Scene& scene, co
 
 // Renders with both traversals (and ray queries with another seed, the scale of noise).
 void expect_traversals_agree(const Scene& scene, RenderSettings settings, uint32_t spp) {
-  if (!test::context().has_ray_queries()) GTEST_SKIP() << test::context().device_name() << " has no ray queries";
-  if (test::context().software_traversal()) GTEST_SKIP() << "the shared context traces in software (HIPR_TRAVERSAL)";
+  if (!test::context().has_ray_queries())
+    GTEST_SKIP() << test::context().device_name() << " has no ray queries";
+  if (test::context().software_traversal())
+    GTEST_SKIP() << "the shared context traces in software (HIPR_TRAVERSAL)";
   ASSERT_TRUE(software_context().software_traversal());
   const std::vector<uint32_t> query_hits = camera_hits(test::context(), scene, settings);
   const std::vector<uint32_t> software_hits = camera_hits(software_context(), scene, settings);
@@ -103,20 +107,26 @@ TEST(SoftwareTraversal, AgreesOnRotatedMirroredHiddenAndCutoutInstances) {
                  glm::translate(glm::mat4(1.0f), glm::vec3(0.509f, 0.523f, -0.2f)) *
                      glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)) * small,
                  grey);
-  test::add_card(scene, "masked", glm::translate(glm::mat4(1.0f), glm::vec3(-0.491f, -0.517f, 0.0f)) * small, mask);
-  test::add_card(scene, "blended", glm::translate(glm::mat4(1.0f), glm::vec3(0.513f, -0.489f, 0.0f)) * small, blend);
-  test::add_card(scene, "hidden", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 0.5f)) * small, grey);
+  test::add_card(scene, "masked",
+                 glm::translate(glm::mat4(1.0f), glm::vec3(-0.491f, -0.517f, 0.0f)) * small, mask);
+  test::add_card(scene, "blended",
+                 glm::translate(glm::mat4(1.0f), glm::vec3(0.513f, -0.489f, 0.0f)) * small, blend);
+  test::add_card(scene, "hidden",
+                 glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 0.5f)) * small, grey);
   scene.nodes.back().visible = false;
   // A floor behind the cards, for shadows and bounces between instances.
-  test::add_card(scene, "back", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -1.0f)) *
-                                    glm::scale(glm::mat4(1.0f), glm::vec3(3.0f)), grey);
+  test::add_card(scene, "back",
+                 glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -1.0f)) *
+                     glm::scale(glm::mat4(1.0f), glm::vec3(3.0f)),
+                 grey);
   expect_traversals_agree(scene, test::render_settings(64, 64, 16, 4, 5), 8);
 }
 
 TEST(SoftwareTraversal, SameSettingsTwiceAreBitIdentical) {
   const Scene scene = load_scene(test::asset("cornell_sphere.glb"));
   const RenderSettings settings = test::render_settings(32, 32, 16, 3, 1);
-  EXPECT_EQ(render(software_context(), scene, settings, 2).rgb, render(software_context(), scene, settings, 2).rgb);
+  EXPECT_EQ(render(software_context(), scene, settings, 2).rgb,
+            render(software_context(), scene, settings, 2).rgb);
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ std::vector<fs::path>& created_temp_dirs() {
 }  // namespace
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("hipr-test-" + name + "-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("hipr-test-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   created_temp_dirs().push_back(dir);
@@ -51,7 +52,8 @@ fs::path camera_less_cornell_box(const fs::path& dir) {
   std::ifstream(asset("cornell_box.gltf")) >> gltf;
   gltf.erase("cameras");
   for (auto& node : gltf["nodes"]) node.erase("camera");
-  fs::copy_file(asset("cornell_box.bin"), dir / "cornell_box.bin", fs::copy_options::overwrite_existing);
+  fs::copy_file(asset("cornell_box.bin"), dir / "cornell_box.bin",
+                fs::copy_options::overwrite_existing);
   const fs::path path = dir / "cornell_no_camera.gltf";
   std::ofstream(path) << gltf.dump(2);
   return path;
@@ -92,7 +94,8 @@ const vk::Context& context() {
   return *ctx;
 }
 
-RenderSettings render_settings(uint32_t width, uint32_t height, uint32_t tile_size, uint32_t max_depth, uint32_t seed) {
+RenderSettings render_settings(uint32_t width, uint32_t height, uint32_t tile_size,
+                               uint32_t max_depth, uint32_t seed) {
   RenderSettings s;
   s.width = width;
   s.height = height;
@@ -144,7 +147,8 @@ CommandResult run_command(const std::string& command_line) {
   if (!pipe) return result;
   std::array<char, 4096> buffer;
   size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    result.output.append(buffer.data(), n);
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
@@ -204,7 +208,8 @@ Scene make_furnace_scene(float radius, glm::vec3 center, float albedo, float env
     const float theta = float(M_PI) * float(r) / kRings;
     for (int s = 0; s <= kSegments; ++s) {
       const float phi = 2.0f * float(M_PI) * float(s) / kSegments;
-      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                        std::sin(theta) * std::sin(phi));
       sphere.positions.push_back(n);
       sphere.normals.push_back(n);
       sphere.tangents.push_back(glm::vec4(-std::sin(phi), 0.0f, std::cos(phi), 1.0f));
@@ -227,11 +232,13 @@ Scene make_furnace_scene(float radius, glm::vec3 center, float albedo, float env
   Node node;
   node.name = "sphere";
   node.mesh = 0;
-  node.local = glm::translate(glm::mat4(1.0f), center) * glm::scale(glm::mat4(1.0f), glm::vec3(radius));
+  node.local =
+      glm::translate(glm::mat4(1.0f), center) * glm::scale(glm::mat4(1.0f), glm::vec3(radius));
   Node camera_node;
   camera_node.name = "camera";
   camera_node.camera = 0;
-  camera_node.local = glm::translate(glm::mat4(1.0f), center + glm::vec3(0.0f, 0.0f, 4.0f * radius));
+  camera_node.local =
+      glm::translate(glm::mat4(1.0f), center + glm::vec3(0.0f, 0.0f, 4.0f * radius));
   scene.nodes = {node, camera_node};
   scene.children = {{}, {}};
   scene.root_nodes = {0, 1};

@@ -21,7 +21,7 @@ bool shared_scenes_available();
 // Whether the glTF validator must be there: tools/test.sh, whose set-up installs it, says so
 // (HIPR_REQUIRE_GLTF_VALIDATOR=1); a validator test then fails without it instead of skipping.
 bool gltf_validator_required();
-std::filesystem::path temp_dir(const std::string& name);      // fresh, empty
+std::filesystem::path temp_dir(const std::string& name);  // fresh, empty
 // The shipped Cornell box without its camera, written into `dir` (as most real assets come: the
 // view is the default camera that frames the scene as loaded).
 std::filesystem::path camera_less_cornell_box(const std::filesystem::path& dir);
@@ -30,7 +30,8 @@ std::filesystem::path camera_less_cornell_box(const std::filesystem::path& dir);
 // the run at exit if the layer reported any error.
 const vk::Context& context();
 // Small render settings for GPU tests, everything else at its default.
-RenderSettings render_settings(uint32_t width, uint32_t height, uint32_t tile_size, uint32_t max_depth, uint32_t seed);
+RenderSettings render_settings(uint32_t width, uint32_t height, uint32_t tile_size,
+                               uint32_t max_depth, uint32_t seed);
 // HiPR's stage 2 over every active tile in one dispatch, after ordering the schedule.
 void discover_all(Renderer& renderer, uint32_t samples_per_pixel);
 // Applies the edit to `scene` and returns what it changed (diff_scenes of before and after).
@@ -38,7 +39,8 @@ ChangeSet edit_scene(Scene& scene, const Edit& edit);
 // Applies `edit`, updates the renderer and restarts it with `spp` samples per pixel: it must
 // render what a renderer made for the edited scene (same settings) renders, bit for bit, the
 // edit must change something, and that must differ from the scene before (non-fatal checks).
-void expect_update_matches_fresh(Renderer& renderer, Scene& scene, const Edit& edit, uint32_t spp = 2);
+void expect_update_matches_fresh(Renderer& renderer, Scene& scene, const Edit& edit,
+                                 uint32_t spp = 2);
 
 struct CommandResult {
   int exit_code = -1;

@@ -6,8 +6,8 @@
 
 #include "card_scene.h"
 #include "hipr/renderer.h"
-#include "test_support.h"
 #include "shaders/shared/abi.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -21,7 +21,8 @@ std::array<Texel, 4> quadrants(uint32_t flags, glm::vec3 row_u, glm::vec3 row_v)
   Image checker;
   checker.name = "checker";
   checker.width = checker.height = 2;
-  checker.rgba8 = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};  // R G / B W
+  checker.rgba8 = {255, 0, 0,   255, 0,   255, 0,   255,
+                   0,   0, 255, 255, 255, 255, 255, 255};  // R G / B W
   scene.images.push_back(checker);
   scene.textures.push_back({"checker", 0, flags | abi::kTextureNearest, row_u, row_v});
   MaterialParameters m = test::black_material();
@@ -47,14 +48,18 @@ std::array<Texel, 4> quadrants(uint32_t flags, glm::vec3 row_u, glm::vec3 row_v)
 
 const glm::vec3 kU(1, 0, 0), kV(0, 1, 0);
 
-TEST(TextureTransform, IdentityShowsTheTexture) { EXPECT_EQ(quadrants(0, kU, kV), (std::array<Texel, 4>{R, G, B, W})); }
+TEST(TextureTransform, IdentityShowsTheTexture) {
+  EXPECT_EQ(quadrants(0, kU, kV), (std::array<Texel, 4>{R, G, B, W}));
+}
 
 TEST(TextureTransform, OffsetShiftsByHalfATexture) {
   EXPECT_EQ(quadrants(0, {1, 0, 0.5f}, kV), (std::array<Texel, 4>{G, R, W, B}));
   EXPECT_EQ(quadrants(0, kU, {0, 1, 0.5f}), (std::array<Texel, 4>{B, W, R, G}));
 }
 
-TEST(TextureTransform, ScaleMagnifies) { EXPECT_EQ(quadrants(0, {0.5f, 0, 0}, {0, 0.5f, 0}), (std::array<Texel, 4>{R, R, R, R})); }
+TEST(TextureTransform, ScaleMagnifies) {
+  EXPECT_EQ(quadrants(0, {0.5f, 0, 0}, {0, 0.5f, 0}), (std::array<Texel, 4>{R, R, R, R}));
+}
 
 TEST(TextureTransform, QuarterTurnRotates) {
   // rotation pi/2: u' = v, v' = -u (wrapping to 1 - u)

@@ -15,14 +15,14 @@
 #include "core/error.h"
 #include "hipr/edits.h"
 #include "hipr/hipr_stages.h"
-#include "hipr/scene_diff.h"
 #include "hipr/renderer.h"
+#include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
 #include "image/debug_images.h"
+#include "image/image_io.h"
 #include "image/tonemap.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
-#include "image/image_io.h"
 
 namespace hipr {
 namespace {
@@ -88,10 +88,11 @@ class ViewerWindow : public ::testing::Test {
 
   // Runs the viewer for `frames` frames with `edits` as its script (saved as `name`) and --save
   // to `saved`; returns the box with the edits applied, which the saved file must load as.
-  static Scene save_from_viewer(const char* edits, const std::string& name, const fs::path& saved, int frames) {
+  static Scene save_from_viewer(const char* edits, const std::string& name, const fs::path& saved,
+                                int frames) {
     const test::CommandResult result =
-        run_in_xvfb(view_arguments("--exit-after-frames " + std::to_string(frames) + " --save " + quoted(saved) +
-                                   " --script " + quoted(script(name, edits))));
+        run_in_xvfb(view_arguments("--exit-after-frames " + std::to_string(frames) + " --save " +
+                                   quoted(saved) + " --script " + quoted(script(name, edits))));
     EXPECT_EQ(result.exit_code, kExitOk) << result.output;
     Scene expected = load_scene(test::asset("cornell_box.gltf"));
     for (const Edit& edit : parse_edit_script(edits, name)) apply_edit(expected, edit);
@@ -180,7 +181,8 @@ TEST_F(ViewerWindow, NoImageCrossesTheHostWhileReRendering) {
     std::ifstream in(stats);
     const nlohmann::json json = nlohmann::json::parse(in);
     ASSERT_TRUE(json.contains("host_transfer_bytes_per_frame")) << json.dump();
-    EXPECT_LT(json["host_transfer_bytes_per_frame"].get<double>(), 2048.0) << overlay << ": " << json.dump();
+    EXPECT_LT(json["host_transfer_bytes_per_frame"].get<double>(), 2048.0)
+        << overlay << ": " << json.dump();
     EXPECT_GT(json["steps"].get<double>(), 0.0);
     ASSERT_EQ(json["edits"].size(), 1u);
     EXPECT_GE(json["edits"][0]["latency_seconds"].get<double>(), 0.0) << "the recolour was shown";
@@ -193,9 +195,9 @@ TEST_F(ViewerWindow, NoImageCrossesTheHostWhileReRendering) {
 TEST_F(ViewerWindow, FramesDirHoldsEveryFrameAndTheEditsItShows) {
   const fs::path frames = s_dir / "frames";
   fs::create_directories(frames);
-  const test::CommandResult result = run_in_xvfb(view_arguments(
-      "--exit-after-frames 9 --script-start 6 --frames-dir " + quoted(frames) + " --script " +
-      quoted(script("recolour_late.json", kRecolour))));
+  const test::CommandResult result = run_in_xvfb(
+      view_arguments("--exit-after-frames 9 --script-start 6 --frames-dir " + quoted(frames) +
+                     " --script " + quoted(script("recolour_late.json", kRecolour))));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
   std::ifstream in(frames / "frames.json");
   const nlohmann::json log = nlohmann::json::parse(in);
@@ -237,13 +239,15 @@ TEST_F(ViewerWindow, ObjectIdOverlayShowsTheEditedScene) {
 // (the tall block in front of the box) changes the object ids only where the block was or is.
 TEST_F(ViewerWindow, AMoveInASceneWithoutACameraKeepsTheView) {
   const fs::path scene = test::camera_less_cornell_box(s_dir);
-  const char* move = R"({"edits": [{"op": "transform", "node": "tall_block", "translate": [0, 0, 0.6]}]})";
+  const char* move =
+      R"({"edits": [{"op": "transform", "node": "tall_block", "translate": [0, 0, 0.6]}]})";
   const fs::path png = s_dir / "camera_less_ids.png";
-  const test::CommandResult result = run_in_xvfb(
-      "view " + quoted(scene) +
-      " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 64 --steps-per-frame 1 --script-every 4 "
-      "--env studio --no-ui -q --exit-after-frames 6 --overlay ids --script " +
-      quoted(script("camera_less_move.json", move)) + " --screenshot " + quoted(png));
+  const test::CommandResult result =
+      run_in_xvfb("view " + quoted(scene) +
+                  " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 64 "
+                  "--steps-per-frame 1 --script-every 4 "
+                  "--env studio --no-ui -q --exit-after-frames 6 --overlay ids --script " +
+                  quoted(script("camera_less_move.json", move)) + " --screenshot " + quoted(png));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
   const ImageRGB shot = read_image(png);
   ASSERT_EQ(shot.width, kSize);
@@ -251,15 +255,19 @@ TEST_F(ViewerWindow, AMoveInASceneWithoutACameraKeepsTheView) {
   Scene moved = loaded;
   apply_edit(moved, parse_edit_script(move, "move").front());
   const std::vector<uint32_t> before = instance_ids(loaded), after = instance_ids(moved);
-  const std::vector<uint8_t> expected = tonemap_srgb8(object_id_image(after, kSize, kSize).rgb, 0.0f);
+  const std::vector<uint8_t> expected =
+      tonemap_srgb8(object_id_image(after, kSize, kSize).rgb, 0.0f);
   size_t mismatches = 0;
-  for (size_t i = 0; i < expected.size(); ++i) mismatches += std::lround(shot.rgb[i] * 255.0f) != expected[i];
+  for (size_t i = 0; i < expected.size(); ++i)
+    mismatches += std::lround(shot.rgb[i] * 255.0f) != expected[i];
   EXPECT_EQ(mismatches, 0u) << "the screen shows the moved scene's ids";
   const uint32_t block = instance_of(loaded, "tall_block");
   size_t block_pixels = 0, other_changes = 0;
   for (size_t i = 0; i < before.size(); ++i) {
-    if (before[i] == block || after[i] == block) ++block_pixels;
-    else other_changes += before[i] != after[i];
+    if (before[i] == block || after[i] == block)
+      ++block_pixels;
+    else
+      other_changes += before[i] != after[i];
   }
   EXPECT_GT(block_pixels, 100u);
   EXPECT_EQ(other_changes, 0u) << "outside the block's pixels the view shows what it showed";
@@ -380,7 +388,8 @@ TEST_F(ViewerWindow, SavedSceneReloadsToTheEditedScene) {
   }
   EXPECT_FLOAT_EQ(reloaded.materials[1].params.specular_roughness, 0.2f);
   const auto reports = validate_gltf({test::asset("cornell_box.gltf"), saved});
-  if (!reports && test::gltf_validator_required()) FAIL() << "the set-up installs the glTF validator, yet it is absent";
+  if (!reports && test::gltf_validator_required())
+    FAIL() << "the set-up installs the glTF validator, yet it is absent";
   if (!reports)
     GTEST_SKIP()
         << "node or the gltf-validator package is absent (tools/setup-deps.sh installs it)";
@@ -403,7 +412,8 @@ TEST_F(ViewerWindow, GeometryEditsAreSavedAsMade) {
   const Scene expected = save_from_viewer(edits, "geometry.json", saved, 13);
   ASSERT_TRUE(fs::exists(saved));
   const Scene reloaded = load_scene(saved);
-  EXPECT_TRUE(diff_scenes(expected, reloaded).empty()) << "the saved file loads as the edited scene";
+  EXPECT_TRUE(diff_scenes(expected, reloaded).empty())
+      << "the saved file loads as the edited scene";
   EXPECT_THROW(find_node(reloaded, "short_block"), InputError);
   EXPECT_NO_THROW(find_node(reloaded, "short_block_2"));
 }
@@ -421,11 +431,12 @@ TEST_F(ViewerWindow, AMovedLampRerendersWhereItReachesFirst) {
   std::map<std::string, ImageRGB> shots;
   for (const char* overlay : {"none", "owed"}) {
     const fs::path png = s_dir / (std::string("reach-") + overlay + ".png");
-    const test::CommandResult result = run_in_xvfb(
-        "view " + quoted(scene_file) +
-        " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 4 --steps-per-frame 1 --no-ui -q"
-        " --script-every 24 --exit-after-frames 49 --script " + quoted(edits) + " --overlay " + overlay +
-        " --screenshot " + quoted(png));
+    const test::CommandResult result =
+        run_in_xvfb("view " + quoted(scene_file) +
+                    " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 4 "
+                    "--steps-per-frame 1 --no-ui -q"
+                    " --script-every 24 --exit-after-frames 49 --script " +
+                    quoted(edits) + " --overlay " + overlay + " --screenshot " + quoted(png));
     ASSERT_EQ(result.exit_code, kExitOk) << result.output;
     shots[overlay] = read_image(png);
   }
@@ -451,7 +462,8 @@ TEST_F(ViewerWindow, AMovedLampRerendersWhereItReachesFirst) {
   for (uint32_t t = 0; t < 64; ++t) {
     if (!same_tile(shots["none"], shots["owed"], t)) continue;
     ++clean;
-    EXPECT_NE(flags[t] & abi::kTileActive, 0u) << "tile " << t << " was re-rendered first but the lamp does not reach it";
+    EXPECT_NE(flags[t] & abi::kTileActive, 0u)
+        << "tile " << t << " was re-rendered first but the lamp does not reach it";
   }
   EXPECT_EQ(clean, 4u) << "one step of 4 tiles";
 }
@@ -466,16 +478,20 @@ TEST_F(ViewerWindow, TheSelectedObjectIsRenderedFirst) {
   std::map<std::string, ImageRGB> shots;
   for (const char* focus : {"", "--no-focus"}) {
     const fs::path exr = s_dir / (std::string("focus") + focus + ".exr");
-    const test::CommandResult result = run_in_xvfb(
-        "view " + quoted(test::asset("cornell_box.gltf")) +
-        " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 4 --steps-per-frame 1 --no-ui -q"
-        " --select short_block --exit-after-frames 2 --screenshot " + quoted(exr) + " " + focus);
+    const test::CommandResult result =
+        run_in_xvfb("view " + quoted(test::asset("cornell_box.gltf")) +
+                    " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 4 "
+                    "--steps-per-frame 1 --no-ui -q"
+                    " --select short_block --exit-after-frames 2 --screenshot " +
+                    quoted(exr) + " " + focus);
     ASSERT_EQ(result.exit_code, kExitOk) << result.output;
     shots[focus] = read_image(exr);
   }
-  const double block_focused = masked_mean(shots[""], ids, block, 0) + masked_mean(shots[""], ids, block, 1);
+  const double block_focused =
+      masked_mean(shots[""], ids, block, 0) + masked_mean(shots[""], ids, block, 1);
   EXPECT_GT(block_focused, 0.01) << "the block's tiles were rendered first";
-  EXPECT_EQ(masked_mean(shots["--no-focus"], ids, block, 0), 0.0) << "scanline order has not reached the block";
+  EXPECT_EQ(masked_mean(shots["--no-focus"], ids, block, 0), 0.0)
+      << "scanline order has not reached the block";
   EXPECT_GT(masked_mean(shots["--no-focus"], ids, ceiling, 0), 0.0) << "it starts at the top";
 }
 
@@ -533,8 +549,9 @@ TEST(ViewerHeadless, RunsWithoutADisplay) {
   const fs::path png = dir / "panels.png", stats = dir / "stats.json";
   const test::CommandResult result = test::run_command(
       "env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " " +
-      view_arguments("--headless --exit-after-frames 8 --screenshot " + quoted(png) + " --stats-json " +
-                         quoted(stats) + " --script " + quoted(write_script(dir, "recolour.json", kRecolour)),
+      view_arguments("--headless --exit-after-frames 8 --screenshot " + quoted(png) +
+                         " --stats-json " + quoted(stats) + " --script " +
+                         quoted(write_script(dir, "recolour.json", kRecolour)),
                      /*panels=*/true));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
   std::ifstream in(stats);
@@ -545,8 +562,10 @@ TEST(ViewerHeadless, RunsWithoutADisplay) {
   // One step a frame until 2 spp: frames 1-2 and, after the edit at frame 4, two more.
   EXPECT_EQ(json["rendering"]["frames"].get<int>(), 4) << json.dump();
   EXPECT_GT(json["rendering"]["fps"].get<double>(), 0.0);
-  EXPECT_LE(json["rendering"]["frame_ms_median"].get<double>(), json["rendering"]["frame_ms_max"].get<double>());
-  // The status line's mean samples per pixel is summed on the GPU: no image crosses with panels either.
+  EXPECT_LE(json["rendering"]["frame_ms_median"].get<double>(),
+            json["rendering"]["frame_ms_max"].get<double>());
+  // The status line's mean samples per pixel is summed on the GPU: no image crosses with panels
+  // either.
   EXPECT_LT(json["host_transfer_bytes_per_frame"].get<double>(), 2048.0) << json.dump();
   ASSERT_EQ(json["edits"].size(), 1u);
   EXPECT_GE(json["edits"][0]["latency_seconds"].get<double>(), 0.0) << "the recolour was shown";
@@ -567,11 +586,12 @@ TEST(ViewerHeadless, ReRenderingAllocatesNothingOnADiscreteGpusPath) {
   const fs::path dir = test::temp_dir("viewer-headless-staged");
   const fs::path stats = dir / "stats.json";
   const test::CommandResult result = test::run_command(
-      "env -u DISPLAY -u WAYLAND_DISPLAY HIPR_DEVICE_MEMORY=staged " + quoted(test::hipr_binary()) + " view " +
-      quoted(test::asset("cornell_box.gltf")) +
-      " --size 128x128 --tile 16 --spp 8 --max-depth 4 --tiles-per-step 16 --steps-per-frame 1 --script-every 20"
-      " --headless --exit-after-frames 40 -q --stats-json " + quoted(stats) + " --script " +
-      quoted(write_script(dir, "recolour.json", kRecolour)));
+      "env -u DISPLAY -u WAYLAND_DISPLAY HIPR_DEVICE_MEMORY=staged " + quoted(test::hipr_binary()) +
+      " view " + quoted(test::asset("cornell_box.gltf")) +
+      " --size 128x128 --tile 16 --spp 8 --max-depth 4 --tiles-per-step 16 --steps-per-frame 1 "
+      "--script-every 20"
+      " --headless --exit-after-frames 40 -q --stats-json " +
+      quoted(stats) + " --script " + quoted(write_script(dir, "recolour.json", kRecolour)));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
   std::ifstream in(stats);
   const nlohmann::json json = nlohmann::json::parse(in);
@@ -591,11 +611,12 @@ TEST(ViewerHeadless, ARelitEditIsPresentedBeforeAnyStep) {
       dir, "edits.json",
       R"({"edits": [{"op": "emission", "material": "light", "set": {"emission_luminance": 2.0}},
                     {"op": "material", "material": "red", "set": {"base_color": [0.05, 0.1, 0.65]}}]})");
-  const test::CommandResult result = test::run_command(
-      "env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " view " +
-      quoted(test::asset("cornell_box.gltf")) + " --size 64x64 --tile 16 --spp 4 --max-depth 4 --script-start 20"
-      " --script-every 40 --headless --exit-after-frames 100 -q --stats-json " + quoted(stats) + " --script " +
-      quoted(script));
+  const test::CommandResult result =
+      test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) +
+                        " view " + quoted(test::asset("cornell_box.gltf")) +
+                        " --size 64x64 --tile 16 --spp 4 --max-depth 4 --script-start 20"
+                        " --script-every 40 --headless --exit-after-frames 100 -q --stats-json " +
+                        quoted(stats) + " --script " + quoted(script));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
   std::ifstream in(stats);
   const nlohmann::json json = nlohmann::json::parse(in);
@@ -603,11 +624,14 @@ TEST(ViewerHeadless, ARelitEditIsPresentedBeforeAnyStep) {
   const nlohmann::json& relit = json["edits"][0];
   const nlohmann::json& recolour = json["edits"][1];
   EXPECT_GE(relit["latency_seconds"].get<double>(), 0.0) << json.dump();
-  EXPECT_EQ(relit["work_at_first_change"].get<double>(), 0.0) << "shown before any step: " << json.dump();
+  EXPECT_EQ(relit["work_at_first_change"].get<double>(), 0.0)
+      << "shown before any step: " << json.dump();
   EXPECT_GE(recolour["latency_seconds"].get<double>(), 0.0) << json.dump();
-  EXPECT_GT(recolour["work_at_first_change"].get<double>(), 0.0) << "shown after a step: " << json.dump();
+  EXPECT_GT(recolour["work_at_first_change"].get<double>(), 0.0)
+      << "shown after a step: " << json.dump();
   EXPECT_EQ(relit["steps_at_first_change"].get<int>(), 0) << json.dump();
-  EXPECT_EQ(recolour["steps_at_first_change"].get<int>(), 1) << "presented with its first step: " << json.dump();
+  EXPECT_EQ(recolour["steps_at_first_change"].get<int>(), 1)
+      << "presented with its first step: " << json.dump();
 }
 
 // Valid input without a display: one line that says what to do, no crash.

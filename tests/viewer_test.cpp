@@ -268,7 +268,8 @@ TEST(DiffSnapshot, ReportsWhatAFullDiffReports) {
     EXPECT_EQ(lean.environment, full.environment) << describe(edit);
     EXPECT_EQ(lean.environment_map, full.environment_map) << describe(edit);
   }
-  base.images.push_back({"texels", 2, 2, std::vector<uint8_t>(16, 200)});  // the sphere scene has none
+  base.images.push_back(
+      {"texels", 2, 2, std::vector<uint8_t>(16, 200)});  // the sphere scene has none
   const Scene snapshot = diff_snapshot(base);
   EXPECT_TRUE(snapshot.images.empty());
   EXPECT_TRUE(snapshot.environment->texels.empty());
@@ -347,7 +348,8 @@ TEST(Session, GpuOverlaysAreTheCpuOverlaysOfTheSameData) {
   session.edit(TransformEdit{"tall_block", glm::vec3(0.1f, 0.0f, 0.0f), std::nullopt});
   session.render(1e9, 1);  // stage 2's weights, some tiles re-rendered, the rest owed
   const Renderer& renderer = session.renderer();
-  const OverlayGrid grid{settings.render.width, settings.render.height, settings.render.tile_size, renderer.tiles_x()};
+  const OverlayGrid grid{settings.render.width, settings.render.height, settings.render.tile_size,
+                         renderer.tiles_x()};
   DisplayPass display(test::context(), grid.width, grid.height);
   const auto gpu_overlay = [&](Renderer::DebugOverlay kind, uint32_t node) {
     session.render_overlay(kind, node, display.overlay_buffer());
@@ -355,15 +357,19 @@ TEST(Session, GpuOverlaysAreTheCpuOverlaysOfTheSameData) {
   };
   const std::vector<uint32_t> ids = session.instance_ids();
   EXPECT_EQ(gpu_overlay(Renderer::DebugOverlay::Ids, UINT32_MAX), id_overlay(ids, grid));
-  EXPECT_EQ(gpu_overlay(Renderer::DebugOverlay::OwedTiles, UINT32_MAX), owed_overlay(renderer.owed_tiles(), grid));
+  EXPECT_EQ(gpu_overlay(Renderer::DebugOverlay::OwedTiles, UINT32_MAX),
+            owed_overlay(renderer.owed_tiles(), grid));
 
-  const std::vector<uint32_t> weights = gpu_overlay(Renderer::DebugOverlay::TileWeights, UINT32_MAX);
-  const std::vector<uint32_t> expected = weight_overlay(renderer.tile_weights(), renderer.tile_flags(), grid);
+  const std::vector<uint32_t> weights =
+      gpu_overlay(Renderer::DebugOverlay::TileWeights, UINT32_MAX);
+  const std::vector<uint32_t> expected =
+      weight_overlay(renderer.tile_weights(), renderer.tile_flags(), grid);
   ASSERT_EQ(weights.size(), expected.size());
   size_t coloured = 0;
   for (size_t i = 0; i < weights.size(); ++i) {
     for (uint32_t shift : {0u, 8u, 16u, 24u})
-      ASSERT_LE(std::abs(int((weights[i] >> shift) & 0xff) - int((expected[i] >> shift) & 0xff)), 1) << i;
+      ASSERT_LE(std::abs(int((weights[i] >> shift) & 0xff) - int((expected[i] >> shift) & 0xff)), 1)
+          << i;
     coloured += (expected[i] & 0xffffffu) != 0u;
   }
   EXPECT_GT(coloured, 0u) << "a heat map of nothing would prove nothing";
@@ -410,7 +416,8 @@ TEST(Session, UndoReRendersToTheOriginalImageBitForBit) {
 // the new light, a slider drag is one undo step, and undo comes back to the studio bit for bit.
 TEST(Session, EnvironmentSwitchAndSunDragUndo) {
   const SessionSettings s = small_settings();
-  Session session(test::context(), load_scene(test::asset("furnace_sphere.gltf"), {.environment = "studio"}), s);
+  Session session(test::context(),
+                  load_scene(test::asset("furnace_sphere.gltf"), {.environment = "studio"}), s);
   converge(session);
   const ImageRGB studio = session.displayed();
   session.edit(EnvironmentEdit{.source = std::filesystem::path("sky"), .intensity = 0.0005f});
@@ -498,10 +505,12 @@ TEST(Session, ViewerSettingsKeepTheScene) {
   EXPECT_EQ(session.settings().render.tile_size, 4u);
   change_schedule(session, [](ScheduleSettings& s) { s.policy = Policy::Full; });
   EXPECT_EQ(session.scheduler().policy(), Policy::Full);
-  EXPECT_THROW(change_schedule(session, [](ScheduleSettings& s) { s.policy = Policy::Oracle; }), InputError)
+  EXPECT_THROW(change_schedule(session, [](ScheduleSettings& s) { s.policy = Policy::Oracle; }),
+               InputError)
       << "the oracle needs a reference render";
   EXPECT_EQ(session.scheduler().policy(), Policy::Full);
-  EXPECT_EQ(session.settings().schedule.policy, Policy::Full) << "a refused policy leaves the settings alone";
+  EXPECT_EQ(session.settings().schedule.policy, Policy::Full)
+      << "a refused policy leaves the settings alone";
   change_schedule(session, [](ScheduleSettings& s) { s.display = DisplayRule::Switch; });
   EXPECT_EQ(session.scheduler().display_rule(), DisplayRule::Switch);
   change_schedule(session, [](ScheduleSettings& s) { s.display.reset(); });
@@ -568,7 +577,9 @@ TEST(Session, AnEditBeyondTheLimitsLeavesTheSceneAndTheHistory) {
   session.edit(TransformEdit{"short_block", glm::vec3(0.04f, 0.0f, 0.0f), std::nullopt});
   const Scene moved = session.scene();
   const std::string label = session.history().undo_label();
-  EXPECT_THROW(session.edit(TransformEdit{"short_block", glm::vec3(3e38f, 0.0f, 0.0f), std::nullopt}), InputError);
+  EXPECT_THROW(
+      session.edit(TransformEdit{"short_block", glm::vec3(3e38f, 0.0f, 0.0f), std::nullopt}),
+      InputError);
   EXPECT_TRUE(diff_scenes(moved, session.scene()).empty());
   EXPECT_EQ(session.history().undo_label(), label);
   ASSERT_TRUE(session.undo());
@@ -776,9 +787,12 @@ TEST(Session, ADragLeavesNoGhostWhereTheObjectWas) {
   const ImageRGB shown = session.displayed();
   SessionSettings reference = s;
   reference.spp = 16;
-  const ImageRGB pre = fresh_render(before, reference), post = fresh_render(session.scene(), reference);
-  const std::vector<double> change = tile_mean_abs(post, &pre, 8), level = tile_mean_abs(pre, nullptr, 8);
-  const std::vector<double> to_pre = tile_mean_abs(shown, &pre, 8), to_post = tile_mean_abs(shown, &post, 8);
+  const ImageRGB pre = fresh_render(before, reference),
+                 post = fresh_render(session.scene(), reference);
+  const std::vector<double> change = tile_mean_abs(post, &pre, 8),
+                            level = tile_mean_abs(pre, nullptr, 8);
+  const std::vector<double> to_pre = tile_mean_abs(shown, &pre, 8),
+                            to_post = tile_mean_abs(shown, &post, 8);
   size_t strong = 0, ghosts = 0;
   for (size_t t = 0; t < change.size(); ++t) {
     if (change[t] <= 0.5 * (level[t] + 1e-3)) continue;
@@ -786,7 +800,8 @@ TEST(Session, ADragLeavesNoGhostWhereTheObjectWas) {
     if (to_pre[t] < to_post[t]) ++ghosts;
   }
   ASSERT_GT(strong, 10u);
-  EXPECT_LE(double(ghosts), 0.1 * double(strong)) << ghosts << " of " << strong << " strongly changed tiles";
+  EXPECT_LE(double(ghosts), 0.1 * double(strong))
+      << ghosts << " of " << strong << " strongly changed tiles";
 }
 
 // Ctrl+D, Delete and Import are session edits like any other: the copy becomes the selection,
@@ -814,10 +829,13 @@ TEST(Session, DuplicateDeleteAndImportReRenderAndUndo) {
   converge(session);
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
 
-  ASSERT_TRUE(try_edit(session, state, ImportEdit{test::asset("cornell_sphere.glb"), "", glm::vec3(0.0f, 0.1f, 0.0f)}));
+  ASSERT_TRUE(
+      try_edit(session, state,
+               ImportEdit{test::asset("cornell_sphere.glb"), "", glm::vec3(0.0f, 0.1f, 0.0f)}));
   converge(session);
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
-  EXPECT_FALSE(try_edit(session, state, ImportEdit{test::asset("missing.glb"), "", glm::vec3(0.0f)}));
+  EXPECT_FALSE(
+      try_edit(session, state, ImportEdit{test::asset("missing.glb"), "", glm::vec3(0.0f)}));
   EXPECT_EQ(state.messages.size(), 1u) << "a bad file is a message, the scene unchanged";
 
   for (int i = 0; i < 3; ++i) ASSERT_TRUE(session.undo());

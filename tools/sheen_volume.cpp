@@ -25,21 +25,26 @@ Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 Vec operator*(double s, Vec a) { return {s * a.x, s * a.y, s * a.z}; }
 double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 Vec normalize(Vec a) { return (1.0 / std::sqrt(dot(a, a))) * a; }
-Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+Vec cross(Vec a, Vec b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 
 // Uniform in [0, 1) from 53 random bits: the same on every platform (std's distributions are not).
 double uniform(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-53; }
 
 struct Fibres {
   double sigma;  // alpha^2: S = diag(1, 1, sigma^2)
-  double extinction(Vec d) const { return std::sqrt(d.x * d.x + d.y * d.y + sigma * sigma * d.z * d.z); }
+  double extinction(Vec d) const {
+    return std::sqrt(d.x * d.x + d.y * d.y + sigma * sigma * d.z * d.z);
+  }
   // A flake normal seen by light travelling along d (from the side -d).
   Vec visible_normal(Vec d, std::mt19937_64& rng) const {
     const Vec w = normalize({-d.x, -d.y, -sigma * d.z});  // S^(1/2) (-d)
     const Vec a = normalize(cross(w, std::abs(w.z) < 0.9 ? Vec{0, 0, 1} : Vec{1, 0, 0}));
     const Vec b = cross(w, a);
     const double r = std::sqrt(uniform(rng)), phi = 2.0 * M_PI * uniform(rng);
-    const Vec y = (r * std::cos(phi)) * a + (r * std::sin(phi)) * b + std::sqrt(std::max(0.0, 1.0 - r * r)) * w;
+    const Vec y = (r * std::cos(phi)) * a + (r * std::sin(phi)) * b +
+                  std::sqrt(std::max(0.0, 1.0 - r * r)) * w;
     return normalize({y.x, y.y, sigma * y.z});  // S^(1/2) y
   }
 };

@@ -144,8 +144,8 @@ struct StructureEdit {
 
 // "emission" edits are material edits restricted to emission keys.
 using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit, CameraEdit,
-                          EnvironmentEdit, FocusEdit, DuplicateEdit, DeleteEdit, ImportEdit, DeformEdit,
-                          StructureEdit>;
+                          EnvironmentEdit, FocusEdit, DuplicateEdit, DeleteEdit, ImportEdit,
+                          DeformEdit, StructureEdit>;
 
 // Whether the edit is a focus op (no change of the scene).
 inline bool is_focus(const Edit& edit) { return std::holds_alternative<FocusEdit>(edit); }

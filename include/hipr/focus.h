@@ -52,13 +52,14 @@ Focus with_focus_edit(const Scene& scene, Focus focus, const FocusEdit& edit);
 
 // `focus` after an edit that added or removed instances (Scene::instances() before and after
 // it): each seed's instances renumbered by their node, those that left dropped.
-Focus follow_instances(const Focus& focus, const std::vector<Instance>& before, const std::vector<Instance>& after);
+Focus follow_instances(const Focus& focus, const std::vector<Instance>& before,
+                       const std::vector<Instance>& after);
 
 // The pixels the focus covers, row-major, 1 where a pixel sees one of its instances
 // (`pixel_instances`: the instance each pixel sees, as Renderer::gbuffer_instances) or where its
 // centre lies in one of its discs; stage 1 marks the tiles of these pixels.
-std::vector<uint8_t> focus_pixels(const Focus& focus, const std::vector<uint32_t>& pixel_instances, uint32_t width,
-                                  uint32_t height);
+std::vector<uint8_t> focus_pixels(const Focus& focus, const std::vector<uint32_t>& pixel_instances,
+                                  uint32_t width, uint32_t height);
 
 // A one-line description ("tall_block, disc (12, 40) r 8").
 std::string describe(const Scene& scene, const Focus& focus);

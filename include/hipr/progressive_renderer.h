@@ -42,12 +42,14 @@ class ProgressiveRenderer {
   virtual void set_schedule(std::span<const uint32_t> order) = 0;
   // Adds samples to the tiles of schedule entries [offset, offset + count) (skip_active: not
   // those stage 2 rendered) and, with `then_resolve`, resolves their display.
-  virtual void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
+  virtual void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
+                               bool skip_active,
                                std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
   // Brings the focus's tiles and the pixels that lead after the edit among schedule entries
   // [offset, offset + count) to their targets (set_sample_target; the rest is left alone) and,
   // with `then_resolve`, resolves them.
-  virtual void render_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
+  virtual void render_lead(uint32_t offset, uint32_t count,
+                           std::optional<DisplayRule> then_resolve = std::nullopt) = 0;
   // Every pixel owes a restart: its next visit drops its old samples.
   virtual void mark_all_owed() = 0;
   // The scheduler's round target: from now on a visit brings each pixel to `target` samples
@@ -55,7 +57,8 @@ class ProgressiveRenderer {
   // whatever the pixel has). A round re-planned midway then still ends uniform. The tiles where
   // stage 1 saw the focus are brought to `focus_target` instead (0: `target`): they run ahead.
   // The pixels stage 1 marked to lead after the edit are brought to at least `lead_target`.
-  virtual void set_sample_target(uint32_t target, uint32_t focus_target = 0, uint32_t lead_target = 0) = 0;
+  virtual void set_sample_target(uint32_t target, uint32_t focus_target = 0,
+                                 uint32_t lead_target = 0) = 0;
   // The fewest and the most samples a pixel has since its last restart (owed pixels count as
   // 0).
   virtual std::pair<uint32_t, uint32_t> sample_count_range() const = 0;

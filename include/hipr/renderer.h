@@ -21,7 +21,7 @@ namespace hipr {
 namespace vk {
 class Buffer;
 class Context;
-}
+}  // namespace vk
 
 // Which estimators of direct light take part. Only Mis is for production; the others exist so
 // tests can show that each estimator alone converges to the same image.
@@ -30,7 +30,7 @@ enum class LightSampling { Mis = 0, BsdfOnly = 1, LightOnly = 2 };
 // The random numbers of paths. Sobol: Owen-scrambled, shuffled 4D Sobol blocks (lower error
 // per sample). Random: independent hashes, the sampler before Sobol, kept for comparison.
 enum class Sampler { Sobol = 0, Random = 1 };
-const char* sampler_name(Sampler sampler);                   // "sobol", "random"
+const char* sampler_name(Sampler sampler);                    // "sobol", "random"
 std::optional<Sampler> parse_sampler(std::string_view name);  // nullopt for an unknown name
 
 struct RenderSettings {
@@ -71,8 +71,8 @@ struct RenderCounters {
 // What the renderer holds of the scene.
 struct SceneStats {
   size_t instance_count = 0;
-  size_t triangle_count = 0;     // over all visible instances
-  size_t light_count = 0;        // entries of the light table (emissive triangles, lights, environment)
+  size_t triangle_count = 0;  // over all visible instances
+  size_t light_count = 0;  // entries of the light table (emissive triangles, lights, environment)
   size_t cutout_geometries = 0;  // geometries that need an alpha test (not marked opaque)
   float scene_radius = 1.0f;
   // The mesh acceleration structures the last update_scene built (a new, deformed or re-cut
@@ -122,15 +122,18 @@ class Renderer final : public ProgressiveRenderer {
   void add_samples_full_frame(uint32_t samples_per_pixel);
   void update_scene(const Scene& scene, const ChangeSet& changes) override;
   void set_schedule(std::span<const uint32_t> order) override;
-  void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
+  void render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
+                       bool skip_active,
                        std::optional<DisplayRule> then_resolve = std::nullopt) override;
-  void render_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve = std::nullopt) override;
+  void render_lead(uint32_t offset, uint32_t count,
+                   std::optional<DisplayRule> then_resolve = std::nullopt) override;
   void mark_all_owed() override;
-  void set_sample_target(uint32_t target, uint32_t focus_target = 0, uint32_t lead_target = 0) override;
+  void set_sample_target(uint32_t target, uint32_t focus_target = 0,
+                         uint32_t lead_target = 0) override;
   std::pair<uint32_t, uint32_t> sample_count_range() const override;  // reads the accumulation back
-  ImageRGB image() const;                       // per-pixel mean radiance
-  std::vector<uint32_t> sample_counts() const;  // per pixel
-  uint64_t total_samples() const;               // their sum, added up on the GPU (8 bytes read back)
+  ImageRGB image() const;                                             // per-pixel mean radiance
+  std::vector<uint32_t> sample_counts() const;                        // per pixel
+  uint64_t total_samples() const;  // their sum, added up on the GPU (8 bytes read back)
   RenderCounters counters() const;
   uint64_t samples_since_reset() const override { return counters().samples; }
   void reset_counters() override;  // on the GPU, no read-back

@@ -73,8 +73,8 @@ uint64_t image_revision(const Image& image);
 // One way a material reads an image: colour space, sampler, UV set and UV transform.
 struct Texture {
   std::string name;
-  uint32_t image = 0;   // into Scene::images
-  uint32_t flags = 0;   // kTexture* (hipr/material.h)
+  uint32_t image = 0;                          // into Scene::images
+  uint32_t flags = 0;                          // kTexture* (hipr/material.h)
   glm::vec3 uv_transform_u{1.0f, 0.0f, 0.0f};  // u' = dot(uv_transform_u, (u, v, 1))
   glm::vec3 uv_transform_v{0.0f, 1.0f, 0.0f};
 };
@@ -174,7 +174,7 @@ struct Scene {
   int camera_node() const;
   // World-space bounds of all instances (min, max); a unit box when empty.
   std::pair<glm::vec3, glm::vec3> bounds() const;
-  std::vector<uint32_t> root_nodes;  // of the default scene
+  std::vector<uint32_t> root_nodes;             // of the default scene
   std::vector<std::vector<uint32_t>> children;  // per node
 
   // Per node, whether it is in the scene: reachable from root_nodes. A deleted node is one no

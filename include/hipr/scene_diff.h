@@ -43,10 +43,10 @@ struct ChangeSet {
   std::vector<LightChange> lights;  // punctual lights that changed
   bool materials = false;           // material parameters changed: patch the material table
   bool transforms = false;          // an instance moved, appeared or disappeared: rebuild the TLAS
-  bool geometry = false;            // meshes added, removed or deformed: upload vertices, build BLASes
-  bool light_tables = false;        // emitters or punctual lights changed: rebuild light tables
-  bool camera = false;              // the view changed
-  Camera camera_before;             // the view before the edit (when `camera`)
+  bool geometry = false;      // meshes added, removed or deformed: upload vertices, build BLASes
+  bool light_tables = false;  // emitters or punctual lights changed: rebuild light tables
+  bool camera = false;        // the view changed
+  Camera camera_before;       // the view before the edit (when `camera`)
   // The environment changed (intensity, rotation or map). Like a punctual light it reaches
   // every tile without being visible in a G-buffer, so everything restarts.
   bool environment = false;
@@ -59,13 +59,13 @@ struct ChangeSet {
 
   // Nothing but the view changed: the image before the edit can be reprojected into the new one.
   bool camera_only() const {
-    return camera && instances.empty() && departed.empty() && lights.empty() && !materials && !transforms &&
-           !geometry && !light_tables && !environment;
+    return camera && instances.empty() && departed.empty() && lights.empty() && !materials &&
+           !transforms && !geometry && !light_tables && !environment;
   }
 
   bool empty() const {
-    return instances.empty() && departed.empty() && lights.empty() && !materials && !transforms && !geometry &&
-           !light_tables && !camera && !environment;
+    return instances.empty() && departed.empty() && lights.empty() && !materials && !transforms &&
+           !geometry && !light_tables && !camera && !environment;
   }
 };
 

@@ -9,12 +9,13 @@
 namespace hipr {
 
 // Values of SceneLoadOptions::environment that name no file.
-inline constexpr const char* kAutoEnvironment = "auto";  // the studio when nothing in the scene emits
+inline constexpr const char* kAutoEnvironment =
+    "auto";  // the studio when nothing in the scene emits
 inline constexpr const char* kNoEnvironment = "none";
 
 struct SceneLoadOptions {
-  // An equirectangular .hdr/.exr, "studio" or "sky" (built in: image/builtin_environments.h), "auto"
-  // (the studio when the scene has no light, else none), or "none"; empty = none. (A file
+  // An equirectangular .hdr/.exr, "studio" or "sky" (built in: image/builtin_environments.h),
+  // "auto" (the studio when the scene has no light, else none), or "none"; empty = none. (A file
   // with one of these names is reached as ./studio.)
   std::filesystem::path environment;
   float environment_intensity = 1.0f;

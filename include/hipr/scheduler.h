@@ -20,9 +20,10 @@ class Scheduler {
  public:
   // `tiles_per_step`: the budget of one step; `visit_spp`: samples a tile gets per visit.
   // The display starts as the renderer's current accumulation.
-  Scheduler(ProgressiveRenderer& renderer, std::unique_ptr<SchedulingPolicy> policy, uint32_t tiles_per_step,
-            uint32_t visit_spp = 1);
-  Scheduler(ProgressiveRenderer& renderer, Policy policy, uint32_t tiles_per_step, uint32_t visit_spp = 1)
+  Scheduler(ProgressiveRenderer& renderer, std::unique_ptr<SchedulingPolicy> policy,
+            uint32_t tiles_per_step, uint32_t visit_spp = 1);
+  Scheduler(ProgressiveRenderer& renderer, Policy policy, uint32_t tiles_per_step,
+            uint32_t visit_spp = 1)
       : Scheduler(renderer, make_policy(policy), tiles_per_step, visit_spp) {}
 
   // Every setting but the policy, the step budget and the visit's samples (the constructor's)
@@ -85,19 +86,22 @@ class Scheduler {
   // display pass that follows each step's rendering in the same submission counts as
   // rendering, as any viewer's tone mapping.)
   double overhead_seconds() const {
-    return m_times.capture_seconds + m_times.plan_seconds + m_times.sort_seconds + m_times.focus_seconds;
+    return m_times.capture_seconds + m_times.plan_seconds + m_times.sort_seconds +
+           m_times.focus_seconds;
   }
   // Where the time since the last edit went, part by part (wall time of each part's submissions,
   // which wait for the device: on a GPU, its time plus a submission's overhead).
   struct EditTimes {
-    double capture_seconds = 0.0;  // the stale display captured (and relit) at the edit
-    double scene_seconds = 0.0;    // the scene's device copy updated (materials, transforms, BVH)
+    double capture_seconds = 0.0;    // the stale display captured (and relit) at the edit
+    double scene_seconds = 0.0;      // the scene's device copy updated (materials, transforms, BVH)
     uint32_t scene_allocations = 0;  // device memory allocations the scene update made
     uint32_t scene_submissions = 0;  // and the queue submissions it waited for
-    double plan_seconds = 0.0;     // the policy's plan: HiPR's stage 1 (G-buffer, marking, reach, reprojection)
-    double sort_seconds = 0.0;     // after the leading steps: HiPR's stage 3 (keys, radix sort)
-    double focus_seconds = 0.0;    // re-planning for a new focus (set_focus)
-    double leading_step_seconds = 0.0;  // the policy's own steps (HiPR's stage 2: discovery + display)
+    double plan_seconds =
+        0.0;  // the policy's plan: HiPR's stage 1 (G-buffer, marking, reach, reprojection)
+    double sort_seconds = 0.0;   // after the leading steps: HiPR's stage 3 (keys, radix sort)
+    double focus_seconds = 0.0;  // re-planning for a new focus (set_focus)
+    double leading_step_seconds =
+        0.0;  // the policy's own steps (HiPR's stage 2: discovery + display)
     uint32_t leading_steps = 0;
     double step_seconds = 0.0;  // scheduled steps (path tracing + display)
     uint32_t steps = 0;
@@ -137,29 +141,33 @@ class Scheduler {
   uint32_t m_tiles_per_step;
   uint32_t m_visit_spp;
   uint32_t m_first_visit_spp;
-  uint32_t m_cursor = 0;       // next schedule entry
-  bool m_edited = false;       // an edit happened: the display rule applies
+  uint32_t m_cursor = 0;  // next schedule entry
+  bool m_edited = false;  // an edit happened: the display rule applies
   bool m_relight = true;
   bool m_reproject = true;
   bool m_relit = false;
-  bool m_first_round = false;  // still in the first pass over the schedule since the edit
-  uint32_t m_leading = 0;          // schedule entries [0, m_leading) are the policy's own steps
-  uint32_t m_leading_cursor = 0;   // the next of them
-  EditTimes m_times;  // since the last edit
+  bool m_first_round = false;     // still in the first pass over the schedule since the edit
+  uint32_t m_leading = 0;         // schedule entries [0, m_leading) are the policy's own steps
+  uint32_t m_leading_cursor = 0;  // the next of them
+  EditTimes m_times;              // since the last edit
   // The samples every pixel has when the round under way ends; unknown before the first edit
   // or focus (the renderer may have been given samples outside the scheduler).
   std::optional<uint32_t> m_round_target;
   Focus m_focus;
   bool m_follows_focus = false;  // the policy ordered by the focus (its tiles may run ahead)
-  bool m_focus_ahead = false;    // the focus's tiles are brought to their lead (not before their first visit)
-  uint32_t m_lead_cursor = 0, m_lead_end = 0;  // the lead pass over schedule entries [0, m_lead_end)
-  uint32_t m_lead_at = 0;     // leading entries [0, m_lead_at) hold the edit's and the focus's tiles
-  bool m_lead_begun = false;  // the leading steps have passed them
+  bool m_focus_ahead =
+      false;  // the focus's tiles are brought to their lead (not before their first visit)
+  uint32_t m_lead_cursor = 0,
+           m_lead_end = 0;  // the lead pass over schedule entries [0, m_lead_end)
+  uint32_t m_lead_at = 0;   // leading entries [0, m_lead_at) hold the edit's and the focus's tiles
+  bool m_lead_begun = false;    // the leading steps have passed them
   uint32_t m_focus_target = 0;  // what the focus's tiles are brought to (0: the round target)
   uint32_t m_edit_lead = kDefaultEditLead;
-  uint32_t m_edit_lead_target = 0;  // what the pixels that lead after the edit are brought to (0: none)
-  std::optional<uint32_t> m_edit_lead_at;  // the schedule entry before which the edit's lead pass runs
-  bool m_edit_plan = false;         // the last plan was an edit's (not a new focus's)
+  uint32_t m_edit_lead_target =
+      0;  // what the pixels that lead after the edit are brought to (0: none)
+  std::optional<uint32_t>
+      m_edit_lead_at;        // the schedule entry before which the edit's lead pass runs
+  bool m_edit_plan = false;  // the last plan was an edit's (not a new focus's)
   uint32_t m_converged_spp = 0;
   uint32_t m_focus_lead = kDefaultFocusLead;
 };

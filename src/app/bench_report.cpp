@@ -14,7 +14,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// AUC horizons in work units: the headline (1) and the longer views of docs/method.md#measuring-run-time-against-error.
+// AUC horizons in work units: the headline (1) and the longer views of
+// docs/method.md#measuring-run-time-against-error.
 constexpr double kHorizons[] = {1.0, 4.0, 16.0};
 
 // Debian's python3-matplotlib belongs to /usr/bin/python3; another python3 earlier in PATH
@@ -57,10 +58,13 @@ nlohmann::json policy_summary(const bench::PolicyRun& run) {
   j["final_flip"] = run.curve.back().flip;
   j["final_work"] = run.curve.back().work;
   j["nonfinite_samples"] = run.non_finite_samples;
-  if (run.drag_work > 0.0) {  // a drag: the mean error while dragging and over the work unit after it
+  if (run.drag_work >
+      0.0) {  // a drag: the mean error while dragging and over the work unit after it
     j["drag_work"] = run.drag_work;
-    for (const auto& [name, metric] : {std::pair{"relmse", bench::Metric::RelMse}, std::pair{"flip", bench::Metric::Flip}}) {
-      j[std::string("auc_") + name + "_during_drag"] = bench::error_mean(run.curve, metric, 0.0, run.drag_work);
+    for (const auto& [name, metric] :
+         {std::pair{"relmse", bench::Metric::RelMse}, std::pair{"flip", bench::Metric::Flip}}) {
+      j[std::string("auc_") + name + "_during_drag"] =
+          bench::error_mean(run.curve, metric, 0.0, run.drag_work);
       j[std::string("auc_") + name + "_after_drag"] =
           bench::error_mean(run.curve, metric, run.drag_work, run.drag_work + 1.0);
     }
@@ -120,8 +124,10 @@ nlohmann::json BenchReport::summary() const {
         const std::string key = std::string("auc_") + metric + phase;
         bool drag = !edits.empty();
         for (const auto& edit : edits)
-          for (const auto& [policy, summary] : edit.at("policies").items()) drag = drag && summary.contains(key);
-        if (drag) ratios[std::string("hipr_vs_") + other + "_" + key] = ratio(edits, "hipr", other, key);
+          for (const auto& [policy, summary] : edit.at("policies").items())
+            drag = drag && summary.contains(key);
+        if (drag)
+          ratios[std::string("hipr_vs_") + other + "_" + key] = ratio(edits, "hipr", other, key);
       }
     }
   // Attention-guided rendering: the focus region's error with the focus against without.
@@ -131,7 +137,8 @@ nlohmann::json BenchReport::summary() const {
     for (double h : kHorizons)
       if (focused) {
         const std::string key = auc_key(metric, h);
-        ratios[std::string(kFocusedHipr) + "_vs_hipr_" + key] = ratio(edits, kFocusedHipr, "hipr", key, true);
+        ratios[std::string(kFocusedHipr) + "_vs_hipr_" + key] =
+            ratio(edits, kFocusedHipr, "hipr", key, true);
       }
   return {{"scene", m_scene}, {"settings", m_settings}, {"edits", edits}, {"ratios", ratios}};
 }
@@ -142,8 +149,9 @@ void BenchReport::write_curves(const fs::path& path) const {
   for (size_t e = 0; e < m_edits.size(); ++e)
     for (const auto& [name, run] : m_edits[e].runs)
       for (const bench::CurvePoint& p : run.curve) {
-        std::snprintf(line, sizeof line, "%zu,%s,%u,%.6f,%.3f,%.8g,%.8g,%.8g,%.8g\n", e + 1, name.c_str(),
-                      p.step, p.work, p.wall_ms, p.relmse, p.flip, p.focus_relmse, p.focus_flip);
+        std::snprintf(line, sizeof line, "%zu,%s,%u,%.6f,%.3f,%.8g,%.8g,%.8g,%.8g\n", e + 1,
+                      name.c_str(), p.step, p.work, p.wall_ms, p.relmse, p.flip, p.focus_relmse,
+                      p.focus_flip);
         csv += line;
       }
   write_text_atomically(path, csv);

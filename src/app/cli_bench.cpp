@@ -1,17 +1,18 @@
 // `hipr bench SCENE EDITS.json -o DIR [--policies ...] [--ref-spp N] [--steps K]`: for each edit,
 // a converged reference of the edited scene (cached), then every policy from the same converged
 // pre-edit state at equal work per step, with the error of the displayed image after each step.
-// Writes DIR/curves.csv, DIR/summary.json, DIR/plot.png (docs/method.md#measuring-run-time-against-error)
-// and, per edit, the reference and what each policy shows after 0.25 and 1 work units. Focus
-// ops set the focus for the edits after them (hipr runs again with it, every run measures the
-// focus region); --cold-start first measures the scene rendered from nothing.
+// Writes DIR/curves.csv, DIR/summary.json, DIR/plot.png
+// (docs/method.md#measuring-run-time-against-error) and, per edit, the reference and what each
+// policy shows after 0.25 and 1 work units. Focus ops set the focus for the edits after them (hipr
+// runs again with it, every run measures the focus region); --cold-start first measures the scene
+// rendered from nothing.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "app/bench_report.h"
@@ -45,14 +46,14 @@ struct BenchOptions {
   fs::path output;
   std::vector<std::string> policies = {"hipr", "full", "scanline", "spiral", "random", "oracle"};
   uint32_t ref_spp = 1024;
-  uint32_t steps = 0;           // per edit and policy; 0 = until converged
+  uint32_t steps = 0;  // per edit and policy; 0 = until converged
   // Its policy is --policies'; tiles_per_step 0: a sixteenth of the frame; first_visit_spp 0: 2
   // (measured best with blend on the Cornell edits), at most --spp; display: hipr's and the
   // oracle's (difference by default), the others show tiles at once.
   ScheduleSettings schedule;
   fs::path ref_cache;
   bool no_ref_cache = false;
-  double drag = 0.0;  // > 0: the edits are one drag, this much work apart (full-frame passes)
+  double drag = 0.0;        // > 0: the edits are one drag, this much work apart (full-frame passes)
   bool cold_start = false;  // measure the render of the scene as loaded, from nothing, first
 };
 
@@ -82,9 +83,11 @@ std::vector<PlannedRun> planned_runs(const std::vector<Policy>& policies, const 
 }
 
 void log_run(const std::string& name, const bench::PolicyRun& run) {
-  const auto auc = [&](bench::Metric metric) { return std::to_string(error_auc(run.curve, metric, 1.0)); };
-  std::string line = "  " + name + ": relMSE AUC(1) " + auc(bench::Metric::RelMse) + ", FLIP AUC(1) " +
-                     auc(bench::Metric::Flip);
+  const auto auc = [&](bench::Metric metric) {
+    return std::to_string(error_auc(run.curve, metric, 1.0));
+  };
+  std::string line = "  " + name + ": relMSE AUC(1) " + auc(bench::Metric::RelMse) +
+                     ", FLIP AUC(1) " + auc(bench::Metric::Flip);
   if (!run.curve.empty() && run.curve.front().focus_relmse >= 0.0)
     line += ", focus region relMSE AUC(1) " + auc(bench::Metric::FocusRelMse) + ", FLIP AUC(1) " +
             auc(bench::Metric::FocusFlip);
@@ -99,17 +102,20 @@ std::string focus_line(const Scene& scene, const Focus& focus, const std::vector
 
 // The scene as loaded, rendered from nothing by every policy (and hipr with the focus the
 // script's first ops set): what a user sees after opening it, the focus region measured.
-void run_cold_start_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& renderer, const Scene& scene,
-                          const Focus& focus, const fs::path& cache, const std::vector<Policy>& policies,
-                          bench::PolicyRunOptions run_options, BenchReport& report) {
+void run_cold_start_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& renderer,
+                          const Scene& scene, const Focus& focus, const fs::path& cache,
+                          const std::vector<Policy>& policies, bench::PolicyRunOptions run_options,
+                          BenchReport& report) {
   const RenderSettings& settings = o.common.render;
   const bench::Reference reference = bench::converged_reference(
-      ctx, scene, bench::reference_key(ctx, scene, "", settings, o.ref_spp), settings, o.ref_spp, cache);
+      ctx, scene, bench::reference_key(ctx, scene, "", settings, o.ref_spp), settings, o.ref_spp,
+      cache);
   renderer.refresh_gbuffer();
-  run_options.focus_region =
-      focus.empty() ? std::vector<uint8_t>()
-                    : focus_pixels(focus, renderer.gbuffer_instances(), settings.width, settings.height);
-  const std::string focus_text = focus.empty() ? "" : ", " + focus_line(scene, focus, run_options.focus_region);
+  run_options.focus_region = focus.empty() ? std::vector<uint8_t>()
+                                           : focus_pixels(focus, renderer.gbuffer_instances(),
+                                                          settings.width, settings.height);
+  const std::string focus_text =
+      focus.empty() ? "" : ", " + focus_line(scene, focus, run_options.focus_region);
   log::info("cold start" + focus_text);
   BenchEdit& edit_report = report.add_edit("cold start", reference.image, 0, renderer.tile_count());
   for (const PlannedRun& planned : planned_runs(policies, focus)) {
@@ -139,8 +145,9 @@ std::vector<uint32_t> changed_tiles_and_warm_up(Renderer& renderer, const Render
 
 // The edits as one drag: every scene state and its reference first, then each policy from
 // the converged scene before the drag.
-void run_drag_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& renderer, const Scene& scene,
-                    const std::vector<Edit>& edits, const std::vector<std::string>& texts, const fs::path& cache,
+void run_drag_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& renderer,
+                    const Scene& scene, const std::vector<Edit>& edits,
+                    const std::vector<std::string>& texts, const fs::path& cache,
                     const std::vector<Policy>& policies, bench::PolicyRunOptions run_options,
                     const std::function<DisplayRule(Policy)>& display_of, BenchReport& report) {
   std::vector<Scene> states = {scene};
@@ -153,31 +160,37 @@ void run_drag_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& ren
     changes.push_back(diff_scenes(states[e], states.back()));
     state += texts[e];
     const bench::Reference reference = bench::converged_reference(
-        ctx, states.back(), bench::reference_key(ctx, states.back(), state, o.common.render, o.ref_spp), o.common.render,
-        o.ref_spp, cache);
+        ctx, states.back(),
+        bench::reference_key(ctx, states.back(), state, o.common.render, o.ref_spp),
+        o.common.render, o.ref_spp, cache);
     references.push_back(reference.image);
   }
   log::info("drag of " + std::to_string(edits.size()) + " edits: references ready");
   bench::converge(renderer, o.common.spp);  // the renderer holds the scene before the drag
   renderer.resolve_display_all(DisplayRule::Immediate);
   const RenderSnapshot start = renderer.snapshot();
-  const ChangeSet whole = diff_scenes(states.front(), states.back()), undo = diff_scenes(states.back(), states.front());
+  const ChangeSet whole = diff_scenes(states.front(), states.back()),
+                  undo = diff_scenes(states.back(), states.front());
   changed_tiles_and_warm_up(renderer, start, states.back(), whole);  // compiles what the drag needs
   char spacing[32];
   std::snprintf(spacing, sizeof spacing, "%g", o.drag);
-  BenchEdit& edit_report = report.add_edit("drag: " + std::to_string(edits.size()) + " edits " + spacing +
-                                               " passes apart, first " + describe(edits.front()),
-                                           references.back(), 0, renderer.tile_count());
+  BenchEdit& edit_report =
+      report.add_edit("drag: " + std::to_string(edits.size()) + " edits " + spacing +
+                          " passes apart, first " + describe(edits.front()),
+                      references.back(), 0, renderer.tile_count());
   for (Policy policy : policies) {
     renderer.update_scene(states.front(), undo);
     run_options.schedule.policy = policy;
     run_options.schedule.display = display_of(policy);
-    const bench::PolicyRun run = bench::run_drag(renderer, states, changes, start, references, o.drag, run_options);
+    const bench::PolicyRun run =
+        bench::run_drag(renderer, states, changes, start, references, o.drag, run_options);
     edit_report.add_run(policy_name(policy), run);
-    log::info("  " + policy_name(policy) + ": relMSE during the drag " +
-              std::to_string(bench::error_mean(run.curve, bench::Metric::RelMse, 0.0, run.drag_work)) +
-              ", over the work unit after it " +
-              std::to_string(bench::error_mean(run.curve, bench::Metric::RelMse, run.drag_work, run.drag_work + 1.0)));
+    log::info(
+        "  " + policy_name(policy) + ": relMSE during the drag " +
+        std::to_string(bench::error_mean(run.curve, bench::Metric::RelMse, 0.0, run.drag_work)) +
+        ", over the work unit after it " +
+        std::to_string(bench::error_mean(run.curve, bench::Metric::RelMse, run.drag_work,
+                                         run.drag_work + 1.0)));
   }
 }
 
@@ -213,14 +226,18 @@ int run_bench(BenchOptions& o) {
     Focus focus;          // and every focus op (a 17th disc is refused here too)
     for (const Edit& edit : edits) {
       apply_edit(probe, edit);
-      if (const auto* focus_edit = std::get_if<FocusEdit>(&edit)) focus = with_focus_edit(probe, focus, *focus_edit);
+      if (const auto* focus_edit = std::get_if<FocusEdit>(&edit))
+        focus = with_focus_edit(probe, focus, *focus_edit);
     }
     if (std::all_of(edits.begin(), edits.end(), is_focus) && !o.cold_start)
-      throw InputError(o.edits.string() +
-                       ": the edit script has only focus ops: nothing to measure without --cold-start");
+      throw InputError(
+          o.edits.string() +
+          ": the edit script has only focus ops: nothing to measure without --cold-start");
     if (o.drag && std::any_of(edits.begin(), edits.end(), is_focus))
-      throw InputError(o.edits.string() + ": --drag takes no focus ops (a drag measures edits only)");
-    if (o.drag && o.cold_start) throw InputError("--cold-start and --drag measure different things: use one");
+      throw InputError(o.edits.string() +
+                       ": --drag takes no focus ops (a drag measures edits only)");
+    if (o.drag && o.cold_start)
+      throw InputError("--cold-start and --drag measure different things: use one");
   }
   const std::vector<std::string> texts = edit_texts(o.edits);
   std::error_code ec;
@@ -238,7 +255,8 @@ int run_bench(BenchOptions& o) {
   Renderer renderer(ctx, scene, early);
   bench::PolicyRunOptions run_options;
   run_options.schedule = schedule;
-  if (schedule.tiles_per_step == 0) run_options.schedule.tiles_per_step = default_tiles_per_step(renderer.tile_count());
+  if (schedule.tiles_per_step == 0)
+    run_options.schedule.tiles_per_step = default_tiles_per_step(renderer.tile_count());
   run_options.target_spp = o.common.spp;
   run_options.max_steps = o.steps;
 
@@ -265,10 +283,12 @@ int run_bench(BenchOptions& o) {
                                    {"traversal", ctx.traversal_name()}};
   BenchReport report(o.common.scene.filename().string(), recorded, o.output);
   const auto display_of = [&](Policy policy) {
-    return policy == Policy::Hipr || policy == Policy::Oracle ? ordered_display : default_display_rule(policy);
+    return policy == Policy::Hipr || policy == Policy::Oracle ? ordered_display
+                                                              : default_display_rule(policy);
   };
   if (o.drag) {
-    run_drag_bench(o, ctx, renderer, scene, edits, texts, cache, policies, run_options, display_of, report);
+    run_drag_bench(o, ctx, renderer, scene, edits, texts, cache, policies, run_options, display_of,
+                   report);
     check_validation(ctx);
     report.write();
     return kExitOk;
@@ -282,7 +302,7 @@ int run_bench(BenchOptions& o) {
     run_cold_start_bench(o, ctx, renderer, scene, focus, cache, policies, run_options, report);
   }
   focus = {};
-  std::string state;  // the edits applied so far
+  std::string state;                           // the edits applied so far
   std::optional<ImageRGB> previous_reference;  // of the scene before the next edit
   for (size_t e = 0; e < edits.size(); ++e) {
     if (const auto* focus_edit = std::get_if<FocusEdit>(&edits[e])) {
@@ -293,9 +313,11 @@ int run_bench(BenchOptions& o) {
     const Scene before = scene;
     // What the edit really changed is judged between the references before and after it.
     if (!previous_reference)
-      previous_reference = bench::converged_reference(ctx, before, bench::reference_key(ctx, before, state, settings, o.ref_spp),
-                                                      settings, o.ref_spp, cache)
-                               .image;
+      previous_reference =
+          bench::converged_reference(ctx, before,
+                                     bench::reference_key(ctx, before, state, settings, o.ref_spp),
+                                     settings, o.ref_spp, cache)
+              .image;
     apply_edit(scene, edits[e]);
     state += texts[e];
     const ChangeSet changes = diff_scenes(before, scene);
@@ -304,8 +326,8 @@ int run_bench(BenchOptions& o) {
     log::info("edit " + std::to_string(e + 1) + " (" + name + "): reference at " +
               std::to_string(o.ref_spp) + " spp");
     const bench::Reference reference = bench::converged_reference(
-        ctx, scene, bench::reference_key(ctx, scene, state, settings, o.ref_spp), settings, o.ref_spp,
-        cache);
+        ctx, scene, bench::reference_key(ctx, scene, state, settings, o.ref_spp), settings,
+        o.ref_spp, cache);
     log::info(reference.from_cache
                   ? "  reference read from the cache"
                   : "  reference rendered in " + std::to_string(reference.render_seconds) + " s");
@@ -316,20 +338,22 @@ int run_bench(BenchOptions& o) {
     const std::vector<uint32_t> changed =
         changed_tiles_and_warm_up(renderer, start, scene, changes);
     // The focus region: where the focus is seen in the edited scene (the probe's G-buffer).
-    run_options.focus_region =
-        focus.empty() ? std::vector<uint8_t>()
-                      : focus_pixels(focus, renderer.gbuffer_instances(), settings.width, settings.height);
+    run_options.focus_region = focus.empty() ? std::vector<uint8_t>()
+                                             : focus_pixels(focus, renderer.gbuffer_instances(),
+                                                            settings.width, settings.height);
     if (!focus.empty()) log::info("  " + focus_line(scene, focus, run_options.focus_region));
     BenchEdit& edit_report =
         report.add_edit(name, reference.image, changed.size(), renderer.tile_count());
-    const std::vector<uint32_t> really_changed =
-        bench::reference_changed_tiles(*previous_reference, reference.image, renderer.tile_grid().tile_size);
+    const std::vector<uint32_t> really_changed = bench::reference_changed_tiles(
+        *previous_reference, reference.image, renderer.tile_grid().tile_size);
     edit_report.reference_changed_tiles = really_changed.size();
-    edit_report.active_and_changed_tiles = size_t(std::count_if(
-        really_changed.begin(), really_changed.end(),
-        [&](uint32_t t) { return std::binary_search(changed.begin(), changed.end(), t); }));
+    edit_report.active_and_changed_tiles =
+        size_t(std::count_if(really_changed.begin(), really_changed.end(), [&](uint32_t t) {
+          return std::binary_search(changed.begin(), changed.end(), t);
+        }));
     log::info("  active tiles " + std::to_string(changed.size()) + ", changed (references) " +
-              std::to_string(really_changed.size()) + ", both " + std::to_string(edit_report.active_and_changed_tiles));
+              std::to_string(really_changed.size()) + ", both " +
+              std::to_string(edit_report.active_and_changed_tiles));
     previous_reference = reference.image;
     for (const PlannedRun& planned : planned_runs(policies, focus)) {
       renderer.update_scene(before, undo);
@@ -370,11 +394,13 @@ Command add_bench_command(CLI::App& app) {
                   "Folder of cached references (default: beside the shader cache)");
   cmd->add_flag("--no-ref-cache", options->no_ref_cache,
                 "Render references without reading or writing the cache");
-  cmd->add_option("--drag", options->drag,
-                  "Apply the edits as one drag, this much work apart in full-frame passes (as a viewer applies "
-                  "one per frame), measuring against the scene as it is at each step");
+  cmd->add_option(
+      "--drag", options->drag,
+      "Apply the edits as one drag, this much work apart in full-frame passes (as a viewer applies "
+      "one per frame), measuring against the scene as it is at each step");
   cmd->add_flag("--cold-start", options->cold_start,
-                "First measure the scene as loaded rendered from nothing (with the focus of the script's first "
+                "First measure the scene as loaded rendered from nothing (with the focus of the "
+                "script's first "
                 "focus ops, if any)");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_bench(*options); }};

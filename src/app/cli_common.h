@@ -22,15 +22,18 @@ struct CommonOptions {
   uint32_t spp = 64;
   SceneLoadOptions load;
   bool validate = false;
-  bool uber_kernel = false;  // every kernel feature compiled in (RenderSettings::specialize_kernel off)
+  bool uber_kernel =
+      false;  // every kernel feature compiled in (RenderSettings::specialize_kernel off)
   bool trace_background_tiles = false;  // RenderSettings::skip_background_tiles off
   bool quiet = false;
   std::string device;
   std::string traversal = "auto";  // --traversal: auto, ray-query or software (vk::Traversal)
-  int light_groups = -1;  // --light-groups; -1: the command's default (RenderSettings' 8; render: 0)
+  int light_groups =
+      -1;  // --light-groups; -1: the command's default (RenderSettings' 8; render: 0)
 };
 
-// Adds --width --height --spp --seed --sampler --max-depth --tile --env --env-intensity --env-rotation
+// Adds --width --height --spp --seed --sampler --max-depth --tile --env --env-intensity
+// --env-rotation
 // --uber-kernel --trace-background-tiles --validate --device --traversal --quiet.
 void add_common_options(CLI::App& app, CommonOptions& options);
 

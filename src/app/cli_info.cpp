@@ -30,9 +30,12 @@ std::string joined(const std::vector<std::string>& items, const char* none) {
 
 const char* light_type_name(LightType type) {
   switch (type) {
-    case LightType::Point: return "point";
-    case LightType::Spot: return "spot";
-    case LightType::Directional: return "directional";
+    case LightType::Point:
+      return "point";
+    case LightType::Spot:
+      return "spot";
+    case LightType::Directional:
+      return "directional";
   }
   return "?";
 }
@@ -52,8 +55,7 @@ int run_info(const InfoOptions& o) {
       scene_triangles += p.indices.size() / 3;
       used_materials.insert(p.material);
       const MaterialParameters& m = scene.materials[p.material].params;
-      if (material_emits(m))
-        emissive_triangles += p.indices.size() / 3;
+      if (material_emits(m)) emissive_triangles += p.indices.size() / 3;
     }
   }
   const size_t punctual = scene.light_nodes().size();
@@ -66,9 +68,10 @@ int run_info(const InfoOptions& o) {
   std::printf("materials  %zu (%zu used)\n", scene.materials.size() - 1, used_materials.size());
   for (uint32_t index : used_materials) {
     const Material& m = scene.materials[index];
-    std::printf("  %-24s base_color %.3g %.3g %.3g  metalness %.3g  roughness %.3g%s%s\n", m.name.c_str(),
-                m.params.base_color.x, m.params.base_color.y, m.params.base_color.z, m.params.base_metalness,
-                m.params.specular_roughness, material_emits(m.params) ? "  emissive" : "",
+    std::printf("  %-24s base_color %.3g %.3g %.3g  metalness %.3g  roughness %.3g%s%s\n",
+                m.name.c_str(), m.params.base_color.x, m.params.base_color.y, m.params.base_color.z,
+                m.params.base_metalness, m.params.specular_roughness,
+                material_emits(m.params) ? "  emissive" : "",
                 (m.params.flags & abi::kMaterialDoubleSided) ? "  double-sided" : "");
   }
   std::printf("textures   %zu (on %zu images)\n", scene.textures.size(), scene.images.size());
@@ -76,16 +79,20 @@ int run_info(const InfoOptions& o) {
   std::printf("env        %s\n", environment_description(scene).c_str());
   for (uint32_t n : scene.light_nodes()) {
     const PunctualLight& l = scene.lights[size_t(scene.nodes[n].light)];
-    std::printf("  %-24s %s, intensity %g\n", scene.nodes[n].name.c_str(), light_type_name(l.type), l.intensity);
+    std::printf("  %-24s %s, intensity %g\n", scene.nodes[n].name.c_str(), light_type_name(l.type),
+                l.intensity);
   }
   // Emitters whose light edits the hipr policy relights at once (render/light_groups.h).
   const LightGroups groups = assign_light_groups(scene, RenderSettings{}.light_groups);
-  std::printf("groups     %s%s\n", joined(groups.names, "none").c_str(),
-              groups.pooled.empty() ? "" : ("; pooled, not relit: " + joined(groups.pooled, "")).c_str());
+  std::printf(
+      "groups     %s%s\n", joined(groups.names, "none").c_str(),
+      groups.pooled.empty() ? "" : ("; pooled, not relit: " + joined(groups.pooled, "")).c_str());
   const int camera = scene.camera_node();
-  std::printf("camera     %s\n", camera >= 0 ? scene.nodes[size_t(camera)].name.c_str() : "none (a default camera frames the scene)");
+  std::printf("camera     %s\n", camera >= 0 ? scene.nodes[size_t(camera)].name.c_str()
+                                             : "none (a default camera frames the scene)");
   std::string extensions;
-  for (const std::string& e : scene.extensions_used) extensions += (extensions.empty() ? "" : ", ") + e;
+  for (const std::string& e : scene.extensions_used)
+    extensions += (extensions.empty() ? "" : ", ") + e;
   std::printf("extensions %s\n", extensions.empty() ? "none" : extensions.c_str());
 
   // The kernel is compiled with the features the scene needs and nothing else (kernel_features.h).
@@ -100,18 +107,22 @@ int run_info(const InfoOptions& o) {
   // Rays nobody needs (trace_tiles.comp).
   const auto has = [&](const char* define) { return (features & kernel_feature_bit(define)) != 0; };
   std::vector<std::string> rays;
-  if (!has("HIPR_FEATURE_EMISSION") && !has("HIPR_FEATURE_PUNCTUAL_LIGHTS") && !has("HIPR_FEATURE_ENVIRONMENT"))
+  if (!has("HIPR_FEATURE_EMISSION") && !has("HIPR_FEATURE_PUNCTUAL_LIGHTS") &&
+      !has("HIPR_FEATURE_ENVIRONMENT"))
     rays.emplace_back("all of them (nothing emits, no light to sample: the image is black)");
   else if (!has("HIPR_FEATURE_EMISSION") && !has("HIPR_FEATURE_ENVIRONMENT"))
     rays.emplace_back("segments to the last vertex (nothing emits there)");
   const RenderSettings& r = o.render;
-  const std::vector<uint32_t> background = BackgroundTiles(scene).mask(scene, r.width, r.height, r.tile_size);
+  const std::vector<uint32_t> background =
+      BackgroundTiles(scene).mask(scene, r.width, r.height, r.tile_size);
   const size_t empty = size_t(std::count(background.begin(), background.end(), 1u));
   if (empty > 0)
-    rays.push_back("camera rays of " + std::to_string(empty) + " of " + std::to_string(background.size()) +
-                   " tiles (background only at " + std::to_string(r.width) + "x" + std::to_string(r.height) +
-                   ", tile " + std::to_string(r.tile_size) + ")");
-  std::printf("rays       %s\n", rays.empty() ? "every ray is needed" : ("skipped: " + joined(rays, "")).c_str());
+    rays.push_back("camera rays of " + std::to_string(empty) + " of " +
+                   std::to_string(background.size()) + " tiles (background only at " +
+                   std::to_string(r.width) + "x" + std::to_string(r.height) + ", tile " +
+                   std::to_string(r.tile_size) + ")");
+  std::printf("rays       %s\n",
+              rays.empty() ? "every ray is needed" : ("skipped: " + joined(rays, "")).c_str());
   return kExitOk;
 }
 
@@ -119,20 +130,25 @@ int run_info(const InfoOptions& o) {
 
 Command add_info_command(CLI::App& app) {
   auto options = std::make_shared<InfoOptions>();
-  CLI::App* cmd = app.add_subcommand("info", "Print what a scene contains and what the renderer will use");
+  CLI::App* cmd =
+      app.add_subcommand("info", "Print what a scene contains and what the renderer will use");
   cmd->add_option("scene", options->scene, "Scene file (.gltf or .glb)")->required();
   options->load.environment = kAutoEnvironment;
   cmd->add_option("--env", options->load.environment,
-                  "Environment light: auto (the built-in studio when the scene has no light), studio, sky (daylight "
+                  "Environment light: auto (the built-in studio when the scene has no light), "
+                  "studio, sky (daylight "
                   "with a sun), none, or an equirectangular .hdr/.exr")
       ->capture_default_str();
-  cmd->add_option("--sun-elevation", options->load.sky.sun_elevation_degrees, "--env sky: sun elevation, degrees");
-  cmd->add_option("--sun-azimuth", options->load.sky.sun_azimuth_degrees, "--env sky: sun azimuth, degrees");
+  cmd->add_option("--sun-elevation", options->load.sky.sun_elevation_degrees,
+                  "--env sky: sun elevation, degrees");
+  cmd->add_option("--sun-azimuth", options->load.sky.sun_azimuth_degrees,
+                  "--env sky: sun azimuth, degrees");
   cmd->add_option("--turbidity", options->load.sky.turbidity, "--env sky: haze, 1.7 to 10");
   cmd->add_option("--width", options->render.width, "Image width in pixels (for background tiles)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 16384u));
-  cmd->add_option("--height", options->render.height, "Image height in pixels (for background tiles)")
+  cmd->add_option("--height", options->render.height,
+                  "Image height in pixels (for background tiles)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 16384u));
   cmd->add_option("--tile", options->render.tile_size, "Tile size n (for background tiles)")

@@ -11,8 +11,8 @@
 #include "core/log.h"
 #include "core/timer.h"
 #include "image/builtin_environments.h"
-#include "render/gpu_scene.h"
 #include "image/image_io.h"
+#include "render/gpu_scene.h"
 
 namespace hipr::app {
 namespace {
@@ -31,7 +31,8 @@ int run_render(RenderOptions& o) {
   // an error exit must not leave some of the outputs written.
   const auto check_folder = [](const std::filesystem::path& file) {
     const auto folder = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-    if (!std::filesystem::is_directory(folder)) throw InputError("output folder does not exist: " + folder.string());
+    if (!std::filesystem::is_directory(folder))
+      throw InputError("output folder does not exist: " + folder.string());
   };
   for (const auto& output : o.outputs) {
     if (!is_supported_output(output))
@@ -52,7 +53,8 @@ int run_render(RenderOptions& o) {
   settings.difference_estimate = false;
   Renderer renderer(ctx, scene, settings);
   const double setup_seconds = setup_timer.seconds();
-  log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" + ctx.traversal_name() + " traversal, " +
+  log::info("rendering " + o.common.scene.filename().string() + " on " + ctx.device_name() + " (" +
+            ctx.traversal_name() + " traversal, " +
             std::to_string(renderer.scene_stats().triangle_count) + " triangles, " +
             std::to_string(renderer.scene_stats().light_count) + " lights, environment " +
             environment_description(scene) + ")");
@@ -118,9 +120,10 @@ int run_render(RenderOptions& o) {
     };
     write_text_atomically(o.stats_json, stats.dump(2) + "\n");
   }
-  log::info("wrote " + o.outputs.front().string() + (o.outputs.size() > 1 ? " (and more)" : "") + ": " + std::to_string(o.common.spp) + " spp in " +
-            std::to_string(render_seconds) + " s (" + std::to_string(samples / render_seconds / 1e6) +
-            " M samples/s, " + std::to_string(double(counters.rays) / render_seconds / 1e6) + " M rays/s)");
+  log::info("wrote " + o.outputs.front().string() + (o.outputs.size() > 1 ? " (and more)" : "") +
+            ": " + std::to_string(o.common.spp) + " spp in " + std::to_string(render_seconds) +
+            " s (" + std::to_string(samples / render_seconds / 1e6) + " M samples/s, " +
+            std::to_string(double(counters.rays) / render_seconds / 1e6) + " M rays/s)");
   return kExitOk;
 }
 
@@ -128,15 +131,18 @@ int run_render(RenderOptions& o) {
 
 Command add_render_command(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a glTF scene to an EXR (linear) or PNG (sRGB) image");
+  CLI::App* cmd =
+      app.add_subcommand("render", "Render a glTF scene to an EXR (linear) or PNG (sRGB) image");
   cmd->add_option("scene", options->common.scene, "Scene file (.gltf or .glb)")->required();
-  cmd->add_option("-o,--output", options->outputs, "Output image (.exr linear or .png sRGB); repeat for several")
+  cmd->add_option("-o,--output", options->outputs,
+                  "Output image (.exr linear or .png sRGB); repeat for several")
       ->required()
       ->expected(1)
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--stats-json", options->stats_json, "Write render statistics as JSON");
-  cmd->add_option("--exposure", options->exposure, "Exposure in stops for PNG output")->capture_default_str();
+  cmd->add_option("--exposure", options->exposure, "Exposure in stops for PNG output")
+      ->capture_default_str();
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_render(*options); }};
 }

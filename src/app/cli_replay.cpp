@@ -7,19 +7,19 @@
 #include <set>
 
 #include "app/cli_common.h"
-#include "app/schedule_flags.h"
 #include "app/commands.h"
+#include "app/schedule_flags.h"
 #include "core/error.h"
 #include "core/file_util.h"
 #include "core/log.h"
 #include "core/memory_usage.h"
-#include "vk/buffer.h"
 #include "core/timer.h"
 #include "hipr/edit_pipeline.h"
 #include "hipr/scene_writer.h"
 #include "hipr/scheduler.h"
 #include "image/debug_images.h"
 #include "image/image_io.h"
+#include "vk/buffer.h"
 
 namespace hipr::app {
 namespace {
@@ -52,9 +52,9 @@ struct ReplayOptions {
   fs::path edits;
   fs::path output;
   std::vector<uint32_t> dump_steps;
-  uint32_t steps = 0;  // per edit; 0 = until every pixel has --spp samples again
+  uint32_t steps = 0;         // per edit; 0 = until every pixel has --spp samples again
   ScheduleSettings schedule;  // tiles_per_step 0: default_tiles_per_step
-  fs::path save;  // empty: the edited scene is not saved
+  fs::path save;              // empty: the edited scene is not saved
 };
 
 std::string step_name(size_t edit, uint32_t step) {
@@ -69,11 +69,14 @@ void write_pair(const fs::path& dir, const std::string& stem, const ImageRGB& im
 void write_debug_images(const fs::path& dir, size_t edit, const Renderer& renderer) {
   const RenderSettings& s = renderer.settings();
   const std::string stem = "edit" + std::to_string(edit + 1);
-  write_image(dir / (stem + "_objects.png"), object_id_image(renderer.gbuffer_instances(), s.width, s.height));
+  write_image(dir / (stem + "_objects.png"),
+              object_id_image(renderer.gbuffer_instances(), s.width, s.height));
   const auto flags = renderer.tile_flags();
   write_image(dir / (stem + "_weights.png"),
-              tile_weight_image(renderer.tile_weights(), flags, renderer.tiles_x(), s.tile_size, s.width, s.height));
-  write_image(dir / (stem + "_tiles.png"), tile_mask_image(flags, renderer.tiles_x(), s.tile_size, s.width, s.height));
+              tile_weight_image(renderer.tile_weights(), flags, renderer.tiles_x(), s.tile_size,
+                                s.width, s.height));
+  write_image(dir / (stem + "_tiles.png"),
+              tile_mask_image(flags, renderer.tiles_x(), s.tile_size, s.width, s.height));
 }
 
 int run_replay(ReplayOptions& o) {
@@ -81,10 +84,12 @@ int run_replay(ReplayOptions& o) {
   log::set_quiet(o.common.quiet);
   const ScheduleSettings& schedule = o.schedule;
   const Policy policy = schedule.policy;
-  if (policy == Policy::Oracle) throw InputError("the oracle policy needs a reference image: use hipr bench");
+  if (policy == Policy::Oracle)
+    throw InputError("the oracle policy needs a reference image: use hipr bench");
   if (schedule.visit_spp < 1 || schedule.visit_spp > o.common.spp)
     throw InputError("--visit-spp must be between 1 and --spp");
-  if (schedule.first_visit_spp > o.common.spp) throw InputError("--first-visit-spp must be between 1 and --spp");
+  if (schedule.first_visit_spp > o.common.spp)
+    throw InputError("--first-visit-spp must be between 1 and --spp");
   Scene scene = load_scene(o.common.scene, o.common.load);
   const std::vector<Edit> edits = load_edit_script(o.edits);
   // Check every name before rendering or writing anything: a typo in edit 5 must not cost
@@ -94,7 +99,8 @@ int run_replay(ReplayOptions& o) {
   std::error_code ec;
   const bool had_output = fs::exists(o.output, ec);
   fs::create_directories(o.output, ec);
-  if (!fs::is_directory(o.output)) throw InputError("cannot create output folder " + o.output.string());
+  if (!fs::is_directory(o.output))
+    throw InputError("cannot create output folder " + o.output.string());
   // The edited scene is the same before the renders as after them: saved first (the output
   // folder may hold it), a problem with it (an unwritable path, what the writer cannot hold)
   // costs no render and leaves no folder behind.
@@ -111,11 +117,13 @@ int run_replay(ReplayOptions& o) {
   const vk::Context ctx(context_options(o.common));
   Renderer renderer(ctx, scene, o.common.render);
   const uint32_t tiles = renderer.tile_count();
-  const uint32_t per_step = schedule.tiles_per_step ? schedule.tiles_per_step : default_tiles_per_step(tiles);
+  const uint32_t per_step =
+      schedule.tiles_per_step ? schedule.tiles_per_step : default_tiles_per_step(tiles);
   Scheduler scheduler(renderer, policy, per_step, schedule.visit_spp);
   scheduler.configure(schedule, o.common.spp);
   // Converge the scene as loaded; the last 1-spp pass is timed: the unit of the overhead share.
-  for (uint32_t done = 0; done + 1 < o.common.spp; done += 16) renderer.add_samples_full_frame(std::min(16u, o.common.spp - 1 - done));
+  for (uint32_t done = 0; done + 1 < o.common.spp; done += 16)
+    renderer.add_samples_full_frame(std::min(16u, o.common.spp - 1 - done));
   const Timer pass_timer;
   renderer.add_samples_full_frame(1);
   const double pass_seconds = pass_timer.seconds();
@@ -123,7 +131,8 @@ int run_replay(ReplayOptions& o) {
   // Without --steps: until every pixel has --spp samples again (work counts samples since the
   // edit). The bound only guards against a schedule that would never get there.
   const uint32_t rounds = (o.common.spp + schedule.visit_spp - 1) / schedule.visit_spp;
-  const uint32_t max_steps = o.steps ? o.steps : 2 * (rounds + 1) * ((tiles + per_step - 1) / per_step) + 2;
+  const uint32_t max_steps =
+      o.steps ? o.steps : 2 * (rounds + 1) * ((tiles + per_step - 1) / per_step) + 2;
   const std::set<uint32_t> dumps(o.dump_steps.begin(), o.dump_steps.end());
   nlohmann::json summary = {{"scene", o.common.scene.string()},
                             {"policy", policy_name(policy)},
@@ -138,7 +147,8 @@ int run_replay(ReplayOptions& o) {
       pipeline.apply(edits[e]);
       const std::string focus = describe(scene, pipeline.focus());
       summary["edits"].push_back({{"edit", describe(edits[e])}, {"focus", focus}, {"steps", 0}});
-      log::info("edit " + std::to_string(e + 1) + " (" + describe(edits[e]) + "): the focus is " + focus);
+      log::info("edit " + std::to_string(e + 1) + " (" + describe(edits[e]) + "): the focus is " +
+                focus);
       continue;
     }
     const Timer timer;
@@ -148,7 +158,8 @@ int run_replay(ReplayOptions& o) {
     double first_step_seconds = 0.0;  // the edit until its first step is on the display
     bool debug_written = policy != Policy::Hipr || !changed;
     uint32_t steps = 0;
-    for (uint32_t s = 1; s <= max_steps && (o.steps || scheduler.work_since_edit() < double(o.common.spp)); ++s) {
+    for (uint32_t s = 1;
+         s <= max_steps && (o.steps || scheduler.work_since_edit() < double(o.common.spp)); ++s) {
       steps = s;
       scheduler.step();
       if (s == 1) {
@@ -161,22 +172,23 @@ int run_replay(ReplayOptions& o) {
       }
       if (dumps.count(s)) write_pair(o.output, step_name(e, s), scheduler.displayed_image());
     }
-    summary["edits"].push_back({{"edit", describe(edits[e])},
-                                {"steps", steps},
-                                {"work", scheduler.work_since_edit()},
-                                {"seconds", timer.seconds()},
-                                {"first_step_seconds", first_step_seconds},
-                                {"mean_step_seconds", mean_step_seconds(scheduler.edit_times())},
-                                {"work_after_first_step", work_after_first_step},
-                                {"overhead_seconds", scheduler.overhead_seconds()},
-                                {"parts", edit_times_json(scheduler.edit_times())},
-                                {"overhead_share_of_full_pass", scheduler.overhead_seconds() / pass_seconds},
-                                {"blas_builds", renderer.scene_stats().blas_builds},
-                                {"blas_build_seconds", renderer.scene_stats().blas_build_seconds},
-                                {"device_bytes", vk::device_bytes_in_use()},
-                                {"resident_bytes", resident_bytes()}});
-    log::info("edit " + std::to_string(e + 1) + " (" + describe(edits[e]) + "): " + std::to_string(steps) + " steps, " +
-              std::to_string(timer.seconds()) + " s");
+    summary["edits"].push_back(
+        {{"edit", describe(edits[e])},
+         {"steps", steps},
+         {"work", scheduler.work_since_edit()},
+         {"seconds", timer.seconds()},
+         {"first_step_seconds", first_step_seconds},
+         {"mean_step_seconds", mean_step_seconds(scheduler.edit_times())},
+         {"work_after_first_step", work_after_first_step},
+         {"overhead_seconds", scheduler.overhead_seconds()},
+         {"parts", edit_times_json(scheduler.edit_times())},
+         {"overhead_share_of_full_pass", scheduler.overhead_seconds() / pass_seconds},
+         {"blas_builds", renderer.scene_stats().blas_builds},
+         {"blas_build_seconds", renderer.scene_stats().blas_build_seconds},
+         {"device_bytes", vk::device_bytes_in_use()},
+         {"resident_bytes", resident_bytes()}});
+    log::info("edit " + std::to_string(e + 1) + " (" + describe(edits[e]) +
+              "): " + std::to_string(steps) + " steps, " + std::to_string(timer.seconds()) + " s");
   }
   check_validation(ctx);
   const ImageRGB final_image = scheduler.displayed_image();
@@ -191,15 +203,20 @@ int run_replay(ReplayOptions& o) {
 
 Command add_replay_command(CLI::App& app) {
   auto options = std::make_shared<ReplayOptions>();
-  CLI::App* cmd = app.add_subcommand("replay", "Apply an edit script and re-render with a scheduling policy");
+  CLI::App* cmd =
+      app.add_subcommand("replay", "Apply an edit script and re-render with a scheduling policy");
   cmd->add_option("scene", options->common.scene, "Scene file (.gltf or .glb)")->required();
   cmd->add_option("edits", options->edits, "Edit script (.json)")->required();
   cmd->add_option("-o,--output", options->output, "Output folder")->required();
-  cmd->add_option("--dump-steps", options->dump_steps, "Steps after which to write the displayed image")->delimiter(',');
-  cmd->add_option("--steps", options->steps, "Scheduling steps per edit (default: until converged)");
+  cmd->add_option("--dump-steps", options->dump_steps,
+                  "Steps after which to write the displayed image")
+      ->delimiter(',');
+  cmd->add_option("--steps", options->steps,
+                  "Scheduling steps per edit (default: until converged)");
   add_schedule_flags(*cmd, options->schedule);
   cmd->add_option("--save", options->save,
-                  "Also write the edited scene (after every edit) as glTF (.gltf or .glb); written before rendering");
+                  "Also write the edited scene (after every edit) as glTF (.gltf or .glb); written "
+                  "before rendering");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_replay(*options); }};
 }

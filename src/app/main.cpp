@@ -12,12 +12,9 @@ int main(int argc, char** argv) {
   CLI::App app{"hipr: a Vulkan path tracer that re-renders first what a scene edit changes"};
   app.require_subcommand(1);
   const hipr::app::Command commands[] = {
-      hipr::app::add_render_command(app),
-      hipr::app::add_info_command(app),
-      hipr::app::add_replay_command(app),
-      hipr::app::add_bench_command(app),
-      hipr::app::add_view_command(app),
-      hipr::app::add_compare_command(app),
+      hipr::app::add_render_command(app), hipr::app::add_info_command(app),
+      hipr::app::add_replay_command(app), hipr::app::add_bench_command(app),
+      hipr::app::add_view_command(app),   hipr::app::add_compare_command(app),
   };
 
   try {
@@ -27,7 +24,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "hipr: error: %s (see hipr --help)\n", hipr::log::printable_line(e.what()).c_str());
+    std::fprintf(stderr, "hipr: error: %s (see hipr --help)\n",
+                 hipr::log::printable_line(e.what()).c_str());
     return hipr::kExitBadInput;
   }
 

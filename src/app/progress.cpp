@@ -18,7 +18,8 @@ void ProgressBar::update(uint64_t done, double elapsed) {
   for (int i = 0; i < kWidth; ++i) bar[i] = i < filled ? '#' : '.';
   bar[kWidth] = '\0';
   const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-  std::fprintf(stderr, "\r[%s] %3d%%  %.1fs elapsed, %.1fs left ", bar, int(fraction * 100.0), elapsed, eta);
+  std::fprintf(stderr, "\r[%s] %3d%%  %.1fs elapsed, %.1fs left ", bar, int(fraction * 100.0),
+               elapsed, eta);
   std::fflush(stderr);
   m_drawn = true;
 }

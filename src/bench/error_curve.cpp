@@ -8,10 +8,14 @@ namespace hipr::bench {
 
 double metric_of(const CurvePoint& point, Metric metric) {
   switch (metric) {
-    case Metric::RelMse: return point.relmse;
-    case Metric::Flip: return point.flip;
-    case Metric::FocusRelMse: return point.focus_relmse;
-    case Metric::FocusFlip: return point.focus_flip;
+    case Metric::RelMse:
+      return point.relmse;
+    case Metric::Flip:
+      return point.flip;
+    case Metric::FocusRelMse:
+      return point.focus_relmse;
+    case Metric::FocusFlip:
+      return point.focus_flip;
   }
   return point.relmse;
 }

@@ -16,10 +16,11 @@ bool all_shown(const std::vector<uint32_t>& flags, const std::vector<uint32_t>& 
   return true;
 }
 
-CurvePoint measured(uint32_t step, double work, double wall_seconds, const ImageRGB& shown, const ImageRGB& reference,
-                    const PolicyRunOptions& options) {
+CurvePoint measured(uint32_t step, double work, double wall_seconds, const ImageRGB& shown,
+                    const ImageRGB& reference, const PolicyRunOptions& options) {
   if (options.focus_region.empty())
-    return {step, work, wall_seconds * 1e3, relmse(shown, reference), flip_mean(shown, reference, options.flip)};
+    return {step, work, wall_seconds * 1e3, relmse(shown, reference),
+            flip_mean(shown, reference, options.flip)};
   // One FLIP map for the frame's mean (summed as flip_mean sums) and the region's.
   const std::vector<float> flip = flip_error_map(shown, reference, options.flip);
   double sum = 0.0, region_sum = 0.0;
@@ -42,7 +43,8 @@ CurvePoint measured(uint32_t step, double work, double wall_seconds, const Image
 void record(PolicyRun& run, uint32_t step, double work, double wall_seconds, const ImageRGB& shown,
             const ImageRGB& reference, const PolicyRunOptions& options) {
   run.curve.push_back(measured(step, work, wall_seconds, shown, reference, options));
-  while (run.captures.size() < options.capture_work.size() && work >= options.capture_work[run.captures.size()])
+  while (run.captures.size() < options.capture_work.size() &&
+         work >= options.capture_work[run.captures.size()])
     run.captures.emplace_back(options.capture_work[run.captures.size()], shown);
 }
 
@@ -61,17 +63,18 @@ bool evaluated_at(uint32_t step, double work, bool last, const PolicyRunOptions&
 
 // A scheduler with every setting of the run (the oracle ranks against `reference`, which it
 // reads at every plan: a drag updates it in place).
-Scheduler make_scheduler(Renderer& renderer, const ImageRGB& reference, const PolicyRunOptions& options) {
+Scheduler make_scheduler(Renderer& renderer, const ImageRGB& reference,
+                         const PolicyRunOptions& options) {
   const ScheduleSettings& s = options.schedule;
-  Scheduler scheduler(renderer, make_bench_policy(s.policy, reference), std::max(s.tiles_per_step, 1u),
-                      std::max(s.visit_spp, 1u));
+  Scheduler scheduler(renderer, make_bench_policy(s.policy, reference),
+                      std::max(s.tiles_per_step, 1u), std::max(s.visit_spp, 1u));
   scheduler.configure(s, options.target_spp);
   return scheduler;
 }
 
 // The run's totals and the image it ends on; captures not reached take that image.
-void finish(PolicyRun& run, const Scheduler& scheduler, double overhead_seconds, double wall_seconds,
-            uint32_t non_finite_samples, const PolicyRunOptions& options) {
+void finish(PolicyRun& run, const Scheduler& scheduler, double overhead_seconds,
+            double wall_seconds, uint32_t non_finite_samples, const PolicyRunOptions& options) {
   run.overhead_seconds = overhead_seconds;
   run.wall_seconds = wall_seconds;
   run.non_finite_samples = non_finite_samples;
@@ -87,13 +90,15 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
                      const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options) {
   renderer.restore(start);
   Scheduler scheduler = make_scheduler(renderer, reference, options);
-  if (!options.focus.empty()) scheduler.set_focus(options.focus);  // what the user looked at before the edit
+  if (!options.focus.empty())
+    scheduler.set_focus(options.focus);  // what the user looked at before the edit
 
   PolicyRun run;
   const ImageRGB stale = scheduler.displayed_image();
   const auto evaluate = [&](uint32_t step, double wall_seconds) {
     ImageRGB shown = scheduler.displayed_image();
-    record(run, step, step == 0 ? 0.0 : scheduler.work_since_edit(), wall_seconds, shown, reference, options);
+    record(run, step, step == 0 ? 0.0 : scheduler.work_since_edit(), wall_seconds, shown, reference,
+           options);
     return shown;
   };
   double wall = 0.0;  // only scheduling and rendering: evaluation and read-backs are left out
@@ -111,11 +116,10 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
     const double work = timed_step(scheduler, wall);
     run.converged = work >= double(options.target_spp);
     const bool tracking = run.first_feedback_work < 0.0 || run.changed_tiles_shown_work < 0.0;
-    const bool evaluated = evaluated_at(step, work, run.converged || step == options.max_steps, options);
+    const bool evaluated =
+        evaluated_at(step, work, run.converged || step == options.max_steps, options);
     if (!evaluated && !tracking) continue;
-    const ImageRGB shown = evaluated
-                               ? evaluate(step, wall)
-                               : scheduler.displayed_image();
+    const ImageRGB shown = evaluated ? evaluate(step, wall) : scheduler.displayed_image();
     if (run.first_feedback_work < 0.0 && shown.rgb != stale.rgb) {
       run.first_feedback_work = work;
       run.first_feedback_ms = wall * 1e3;
@@ -126,18 +130,21 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
     }
     if (run.converged) break;
   }
-  finish(run, scheduler, scheduler.overhead_seconds(), wall, renderer.counters().non_finite_samples, options);
+  finish(run, scheduler, scheduler.overhead_seconds(), wall, renderer.counters().non_finite_samples,
+         options);
   return run;
 }
 
-PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const PolicyRunOptions& options) {
+PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference,
+                         const PolicyRunOptions& options) {
   renderer.reset();
   renderer.reset_counters();
   Scheduler scheduler = make_scheduler(renderer, reference, options);
   PolicyRun run;
   double wall = 0.0;
   const auto evaluate = [&](uint32_t step) {
-    record(run, step, scheduler.work_since_edit(), wall, scheduler.displayed_image(), reference, options);
+    record(run, step, scheduler.work_since_edit(), wall, scheduler.displayed_image(), reference,
+           options);
   };
   if (!options.focus.empty()) {
     const Timer timer;
@@ -148,16 +155,19 @@ PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const Po
   for (uint32_t step = 1; options.max_steps == 0 || step <= options.max_steps; ++step) {
     const double work = timed_step(scheduler, wall);
     run.converged = work >= double(options.target_spp);
-    if (evaluated_at(step, work, run.converged || step == options.max_steps, options)) evaluate(step);
+    if (evaluated_at(step, work, run.converged || step == options.max_steps, options))
+      evaluate(step);
     if (run.converged) break;
   }
-  finish(run, scheduler, scheduler.overhead_seconds(), wall, renderer.counters().non_finite_samples, options);
+  finish(run, scheduler, scheduler.overhead_seconds(), wall, renderer.counters().non_finite_samples,
+         options);
   return run;
 }
 
-PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const std::vector<ChangeSet>& changes,
-                   const RenderSnapshot& start, const std::vector<ImageRGB>& references,
-                   double work_per_edit, const PolicyRunOptions& options) {
+PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states,
+                   const std::vector<ChangeSet>& changes, const RenderSnapshot& start,
+                   const std::vector<ImageRGB>& references, double work_per_edit,
+                   const PolicyRunOptions& options) {
   if (changes.empty() || states.size() != changes.size() + 1 || references.size() != changes.size())
     throw InternalError("a drag needs a scene state and a reference after every edit");
   renderer.restore(start);
@@ -167,8 +177,9 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
   Scheduler scheduler = make_scheduler(renderer, reference, options);
 
   PolicyRun run;
-  double wall = 0.0, overhead = 0.0, work_before = 0.0;  // work_before: of the edits before the current one
-  uint32_t non_finite = 0;  // the counters restart at every edit
+  double wall = 0.0, overhead = 0.0,
+         work_before = 0.0;  // work_before: of the edits before the current one
+  uint32_t non_finite = 0;   // the counters restart at every edit
   uint32_t step = 0;
   const auto evaluate = [&](double work) {
     record(run, step, work, wall, scheduler.displayed_image(), reference, options);
@@ -190,7 +201,8 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
     if (last) run.drag_work = work_before;
     for (;;) {
       const double work = scheduler.work_since_edit();
-      if (last ? work >= double(options.target_spp) || (options.max_steps && step >= options.max_steps)
+      if (last ? work >= double(options.target_spp) ||
+                     (options.max_steps && step >= options.max_steps)
                : work >= work_per_edit)
         break;
       const Timer timer;
@@ -200,7 +212,8 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const s
       // Every step during the drag; after it, as run_policy thins its evaluations.
       const double since_drag = last ? scheduler.work_since_edit() : 0.0;
       const bool done = last && scheduler.work_since_edit() >= double(options.target_spp);
-      if (since_drag <= options.dense_until || done || step % std::max(options.sparse_every, 1u) == 0)
+      if (since_drag <= options.dense_until || done ||
+          step % std::max(options.sparse_every, 1u) == 0)
         evaluate(work_before + scheduler.work_since_edit());
     }
   }

@@ -16,10 +16,10 @@ namespace hipr::bench {
 struct PolicyRunOptions {
   // The scheduler's settings (a tiles_per_step of 0 counts as 1; first_visit_spp 0: visit_spp).
   ScheduleSettings schedule = {.tiles_per_step = 1, .first_visit_spp = 1};
-  uint32_t target_spp = 1;       // converged: every pixel has this many samples since the edit
-  uint32_t max_steps = 0;        // 0: until converged
-  double dense_until = 16.0;     // evaluate after every step until this much work, then sparser
-  uint32_t sparse_every = 8;     // steps between evaluations after that (0 counts as 1)
+  uint32_t target_spp = 1;    // converged: every pixel has this many samples since the edit
+  uint32_t max_steps = 0;     // 0: until converged
+  double dense_until = 16.0;  // evaluate after every step until this much work, then sparser
+  uint32_t sparse_every = 8;  // steps between evaluations after that (0 counts as 1)
   FlipOptions flip;
   // Keep the displayed image at these amounts of work (0: what the edit itself shows).
   std::vector<double> capture_work = {0.0, 0.25, 1.0};
@@ -57,7 +57,8 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
 // From nothing: the renderer's film and display cleared, the scene it holds (whose converged
 // render is `reference`) rendered by the policy's scheduler with no edit, the focus set first
 // when there is one. Work counts from the empty film.
-PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const PolicyRunOptions& options);
+PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference,
+                         const PolicyRunOptions& options);
 
 // A drag: the edits one after another, `work_per_edit` apart (steps run until the current
 // edit has that much work: a viewer applies one per frame, and a frame has a budget), then
@@ -65,8 +66,9 @@ PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference, const Po
 // `states[i + 1]` the scene after edit i (`changes[i]`), with its converged render
 // `references[i]`: every step is measured against the scene as it is at that step. Work counts
 // from the first edit. No feedback or changed-tile times (they belong to one edit).
-PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states, const std::vector<ChangeSet>& changes,
-                   const RenderSnapshot& start, const std::vector<ImageRGB>& references,
-                   double work_per_edit, const PolicyRunOptions& options);
+PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states,
+                   const std::vector<ChangeSet>& changes, const RenderSnapshot& start,
+                   const std::vector<ImageRGB>& references, double work_per_edit,
+                   const PolicyRunOptions& options);
 
 }  // namespace hipr::bench

@@ -23,7 +23,8 @@ constexpr uint32_t kReferenceSeedOffset = 0x68e31da5u;
 
 void converge(Renderer& renderer, uint32_t spp) {
   renderer.reset();
-  for (uint32_t done = 0; done < spp; done += 16) renderer.add_samples_full_frame(std::min(16u, spp - done));
+  for (uint32_t done = 0; done < spp; done += 16)
+    renderer.add_samples_full_frame(std::min(16u, spp - done));
 }
 
 std::string reference_key(const vk::Context& ctx, const Scene& scene, const std::string& state,
@@ -89,13 +90,15 @@ Reference converged_reference(const vk::Context& ctx, const Scene& scene, const 
   return reference;
 }
 
-std::vector<uint32_t> reference_changed_tiles(const ImageRGB& before, const ImageRGB& after, uint32_t tile_size) {
+std::vector<uint32_t> reference_changed_tiles(const ImageRGB& before, const ImageRGB& after,
+                                              uint32_t tile_size) {
   const std::vector<double> sums = relmse_tile_sums(before, after, tile_size);
   const uint32_t tiles_x = (after.width + tile_size - 1) / tile_size;
   std::vector<uint32_t> changed;
   for (uint32_t t = 0; t < sums.size(); ++t) {
     const uint32_t x0 = (t % tiles_x) * tile_size, y0 = (t / tiles_x) * tile_size;
-    const uint32_t pixels = (std::min(x0 + tile_size, after.width) - x0) * (std::min(y0 + tile_size, after.height) - y0);
+    const uint32_t pixels = (std::min(x0 + tile_size, after.width) - x0) *
+                            (std::min(y0 + tile_size, after.height) - y0);
     if (sums[t] > kChangedTileRelmse * 3.0 * pixels) changed.push_back(t);
   }
   return changed;

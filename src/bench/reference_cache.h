@@ -49,6 +49,7 @@ inline constexpr double kChangedTileRelmse = 0.005;
 
 // The tiles (ids, ascending) where the references before and after an edit differ by more than
 // kChangedTileRelmse: what the edit really changed, to judge stage 1's active set against.
-std::vector<uint32_t> reference_changed_tiles(const ImageRGB& before, const ImageRGB& after, uint32_t tile_size);
+std::vector<uint32_t> reference_changed_tiles(const ImageRGB& before, const ImageRGB& after,
+                                              uint32_t tile_size);
 
 }  // namespace hipr::bench

@@ -21,8 +21,9 @@ namespace hipr {
 
 class ActiveTilesPass {
  public:
-  ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
-                  const GBufferPass& gbuffers, const vk::Buffer& display, const vk::Buffer& tile_weights, uint32_t pixels);
+  ActiveTilesPass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles,
+                  const Film& film, const GBufferPass& gbuffers, const vk::Buffer& display,
+                  const vk::Buffer& tile_weights, uint32_t pixels);
 
   // Marks the GeometryRecords of the changed instances (the set E the kernels test) and the
   // focus's records and discs with their weights.
@@ -40,7 +41,8 @@ class ActiveTilesPass {
   // score, and tiles whose pixels barely moved are marked to go last. `moved`: the edit moved,
   // showed, hid or deformed geometry: the pixels that show a changed element lead (kTileLead and
   // the pixel-lead bits), besides those whose surface changed.
-  void record(VkCommandBuffer cmd, bool everything, bool reprojected = false, bool moved = false) const;
+  void record(VkCommandBuffer cmd, bool everything, bool reprojected = false,
+              bool moved = false) const;
 
   // uint per GeometryRecord: kRecordChanged = in E, above it the focus weight (stage 2's
   // occlusion test reads it too: a focus's shadows are discovered as an edit's are)

@@ -18,13 +18,15 @@ ChangeSet EditPipeline::apply(const Edit& edit) {
 }
 
 ChangeSet EditPipeline::apply(const std::function<void(Scene&)>& change) {
-  const std::vector<Instance> before = m_focus.empty() ? std::vector<Instance>{} : m_scene.instances();
+  const std::vector<Instance> before =
+      m_focus.empty() ? std::vector<Instance>{} : m_scene.instances();
   const ChangeSet changes = change_scene(m_scene, change);
   if (!m_focus.empty()) {  // a duplicate or delete renumbers the instances the seeds name
     m_focus = follow_instances(m_focus, before, m_scene.instances());
     m_scheduler.renumber_focus(m_focus);
   }
-  if (!changes.empty()) m_scheduler.on_edit(m_scene, changes);  // e.g. a slider released where it started
+  if (!changes.empty())
+    m_scheduler.on_edit(m_scene, changes);  // e.g. a slider released where it started
   return changes;
 }
 

@@ -24,7 +24,8 @@ FocusSeed focus_on_node(const Scene& scene, size_t node, float weight) {
   return seed;
 }
 
-Focus follow_instances(const Focus& focus, const std::vector<Instance>& before, const std::vector<Instance>& after) {
+Focus follow_instances(const Focus& focus, const std::vector<Instance>& before,
+                       const std::vector<Instance>& after) {
   std::vector<uint32_t> now_of_node;  // node -> its instance after, or UINT32_MAX
   for (uint32_t i = 0; i < after.size(); ++i) {
     if (after[i].node >= now_of_node.size()) now_of_node.resize(after[i].node + 1, UINT32_MAX);
@@ -35,7 +36,8 @@ Focus follow_instances(const Focus& focus, const std::vector<Instance>& before, 
     std::vector<uint32_t> instances;
     for (uint32_t i : seed.instances) {
       if (i >= before.size() || before[i].node >= now_of_node.size()) continue;
-      if (const uint32_t now = now_of_node[before[i].node]; now != UINT32_MAX) instances.push_back(now);
+      if (const uint32_t now = now_of_node[before[i].node]; now != UINT32_MAX)
+        instances.push_back(now);
     }
     seed.instances = std::move(instances);
   }
@@ -44,7 +46,8 @@ Focus follow_instances(const Focus& focus, const std::vector<Instance>& before, 
 
 void validate_focus_seed(const FocusSeed& seed, const std::string& where) {
   if (!std::isfinite(seed.weight) || seed.weight <= 0.0f || seed.weight > kMaxFocusWeight)
-    throw InputError(where + ": a focus weight must be in (0, " + std::to_string(int(kMaxFocusWeight)) + "]");
+    throw InputError(where + ": a focus weight must be in (0, " +
+                     std::to_string(int(kMaxFocusWeight)) + "]");
   if (seed.pixel) {
     if (!std::isfinite(seed.pixel->x) || !std::isfinite(seed.pixel->y))
       throw InputError(where + ": a focus pixel must be finite");
@@ -55,8 +58,8 @@ void validate_focus_seed(const FocusSeed& seed, const std::string& where) {
 
 Focus with_focus_edit(const Scene& scene, Focus focus, const FocusEdit& edit) {
   if (edit.clear) return {};
-  FocusSeed seed =
-      edit.node ? focus_on_node(scene, find_node(scene, *edit.node), edit.weight) : FocusSeed{.weight = edit.weight};
+  FocusSeed seed = edit.node ? focus_on_node(scene, find_node(scene, *edit.node), edit.weight)
+                             : FocusSeed{.weight = edit.weight};
   seed.pixel = edit.pixel;
   seed.radius = edit.radius;
   validate_focus_seed(seed, describe(Edit{edit}));
@@ -64,18 +67,20 @@ Focus with_focus_edit(const Scene& scene, Focus focus, const FocusEdit& edit) {
     const auto discs = std::count_if(focus.seeds.begin(), focus.seeds.end(),
                                      [](const FocusSeed& s) { return s.pixel.has_value(); });
     if (size_t(discs) >= kMaxFocusDiscs)
-      throw InputError(describe(Edit{edit}) + ": a focus holds at most " + std::to_string(kMaxFocusDiscs) + " discs");
+      throw InputError(describe(Edit{edit}) + ": a focus holds at most " +
+                       std::to_string(kMaxFocusDiscs) + " discs");
   }
   focus.seeds.push_back(std::move(seed));
   return focus;
 }
 
-std::vector<uint8_t> focus_pixels(const Focus& focus, const std::vector<uint32_t>& pixel_instances, uint32_t width,
-                                  uint32_t height) {
+std::vector<uint8_t> focus_pixels(const Focus& focus, const std::vector<uint32_t>& pixel_instances,
+                                  uint32_t width, uint32_t height) {
   std::vector<uint8_t> covered(size_t(width) * height, 0);
   for (const FocusSeed& seed : focus.seeds) {
     for (size_t p = 0; p < covered.size() && p < pixel_instances.size(); ++p)
-      if (std::find(seed.instances.begin(), seed.instances.end(), pixel_instances[p]) != seed.instances.end())
+      if (std::find(seed.instances.begin(), seed.instances.end(), pixel_instances[p]) !=
+          seed.instances.end())
         covered[p] = 1;
     if (!seed.pixel) continue;
     for (uint32_t y = 0; y < height; ++y)
@@ -107,8 +112,8 @@ std::string describe(const Scene& scene, const Focus& focus) {
     text += names;
     if (seed.pixel) {
       char disc[96];
-      std::snprintf(disc, sizeof disc, "%sdisc (%g, %g) r %g", names.empty() ? "" : ", ", seed.pixel->x,
-                    seed.pixel->y, seed.radius);
+      std::snprintf(disc, sizeof disc, "%sdisc (%g, %g) r %g", names.empty() ? "" : ", ",
+                    seed.pixel->x, seed.pixel->y, seed.radius);
       text += disc;
     }
     if (seed.weight != 1.0f) {

@@ -11,7 +11,8 @@ namespace hipr {
 void set_hipr_weights(const std::vector<float>& values, float* out, const std::string& what) {
   float sum = 0.0f;
   for (float v : values) {
-    if (!std::isfinite(v) || v < 0.0f) throw InputError(what + " weights must be finite and non-negative");
+    if (!std::isfinite(v) || v < 0.0f)
+      throw InputError(what + " weights must be finite and non-negative");
     sum += v;
   }
   if (!(sum > 0.0f)) throw InputError(what + " weights must not all be zero");

@@ -10,17 +10,19 @@ namespace hipr {
 
 HiprStages::HiprStages(RenderState& state)
     : m_state(state),
-      m_active(state.ctx, state.gpu, state.tiles, state.film, state.gbuffers, state.resolve.display, state.tiles.weights,
-               state.settings.width * state.settings.height),
-      m_reach(state.ctx, state.gpu, state.tiles, state.gbuffers, state.resolve.display, m_active.tile_change,
-              state.settings.width * state.settings.height, state.features),
+      m_active(state.ctx, state.gpu, state.tiles, state.film, state.gbuffers, state.resolve.display,
+               state.tiles.weights, state.settings.width * state.settings.height),
+      m_reach(state.ctx, state.gpu, state.tiles, state.gbuffers, state.resolve.display,
+              m_active.tile_change, state.settings.width * state.settings.height, state.features),
       m_reproject(state.ctx, state.gpu, state.gbuffers, state.resolve.display, state.settings.width,
                   state.settings.height),
-      m_discovery(state.ctx, state.gpu, state.tiles, state.film, state.resolve.display, state.settings, state.features,
+      m_discovery(state.ctx, state.gpu, state.tiles, state.film, state.resolve.display,
+                  state.settings, state.features,
                   {{abi::kTraceGBuffer, &state.gbuffers.current},
                    {abi::kTraceChangedRecords, &m_active.changed_records},
                    {abi::kTraceTileWeights, &state.tiles.weights}}),
-      m_schedule(state.ctx, state.gpu, state.tiles, state.tiles.weights, m_active.tile_change, m_active.tile_focus) {
+      m_schedule(state.ctx, state.gpu, state.tiles, state.tiles.weights, m_active.tile_change,
+                 m_active.tile_focus) {
   state.tiles.weights.clear();
   // The first edit's "before": the G-buffer the engine already rendered (its picking, a refresh),
   // which shows the scene as it was then, or else the scene as it is now.
@@ -40,7 +42,8 @@ HiprStages& hipr_stages(RenderState& state) {
 
 HiprStages& hipr_stages(ProgressiveRenderer& renderer) {
   RenderState* state = renderer.render_state();
-  if (!state) throw InputError("the hipr policy needs HiPR's stages: hipr's renderer, or make_hipr_policy");
+  if (!state)
+    throw InputError("the hipr policy needs HiPR's stages: hipr's renderer, or make_hipr_policy");
   return hipr_stages(*state);
 }
 
@@ -55,7 +58,8 @@ uint32_t HiprStages::stage1_visibility(const ChangeSet& changes) {
   // Changed punctual lights are followed to the surfaces they reach (light_reach.comp). A camera
   // edit alone reuses the image before it, reprojected (reproject_display.comp); its rejected
   // pixels score, the rest follow by distance.
-  const bool everything = changes.camera || changes.environment || !LightReachPass::can_follow(changes);
+  const bool everything =
+      changes.camera || changes.environment || !LightReachPass::can_follow(changes);
   m_reach.set_changed(everything ? ChangeSet{} : changes);
   return mark_tiles(changes, everything ? abi::kCarryEverything : abi::kCarryEdit, true,
                     m_reprojection && changes.camera_only() ? &changes.camera_before : nullptr,
@@ -72,7 +76,7 @@ uint32_t HiprStages::stage1_focus() {
 void HiprStages::set_focus(const Focus& focus) { m_focus = focus; }
 
 uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, bool render_gbuffer,
-                               const Camera* reproject_from, bool moved) {
+                                const Camera* reproject_from, bool moved) {
   if (m_active.set_changed(m_state.gpu, changes, m_focus)) m_discovery.rebind();
   m_state.ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     if (render_gbuffer) {
@@ -88,7 +92,8 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
     }
     // After a reprojection the screen shows the new view: a pixel showing a surface it does not
     // see (a rejected one) scores, as after any edit.
-    m_active.record(cmd, carry_mode == abi::kCarryEverything && !reproject_from, reproject_from != nullptr, moved);
+    m_active.record(cmd, carry_mode == abi::kCarryEverything && !reproject_from,
+                    reproject_from != nullptr, moved);
     vk::compute_to_compute_barrier(cmd);
     m_reach.record(cmd);
   });
@@ -109,7 +114,8 @@ uint32_t HiprStages::mark_tiles(const ChangeSet& changes, uint32_t carry_mode, b
 
 void HiprStages::stage2_discover(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
                                  std::optional<DisplayRule> then_resolve) {
-  m_state.trace_entries(m_discovery, offset, count, samples_per_pixel, abi::kTileActive, 0u, then_resolve);
+  m_state.trace_entries(m_discovery, offset, count, samples_per_pixel, abi::kTileActive, 0u,
+                        then_resolve);
 }
 
 void HiprStages::build_schedule() {
@@ -124,7 +130,9 @@ uint32_t HiprStages::discovered_tiles() const {
   // asked (an edit with a lead), not at every sort.
   const std::vector<uint32_t> flags = m_state.tiles.flags.download_all<uint32_t>();
   const std::vector<uint64_t> weights = m_state.tiles.weights.download_all<uint64_t>();
-  const auto discovered = [&](size_t t) { return (flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive); };
+  const auto discovered = [&](size_t t) {
+    return (flags[t] & abi::kTileDiscovered) && !(flags[t] & abi::kTileActive);
+  };
   uint64_t strongest = 0;
   for (size_t t = 0; t < flags.size(); ++t)
     if (discovered(t)) strongest = std::max(strongest, weights[t]);

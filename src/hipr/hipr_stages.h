@@ -59,8 +59,8 @@ class HiprStages final : public HiprStageRunner, public RenderExtension {
   ReprojectPass m_reproject;
   TracePass m_discovery;
   SchedulePass m_schedule;
-  Focus m_focus;          // marked by every stage 1
-  uint32_t m_seeded = 0;  // active tiles with a change or focus score at the last stage 1
+  Focus m_focus;              // marked by every stage 1
+  uint32_t m_seeded = 0;      // active tiles with a change or focus score at the last stage 1
   uint32_t m_lead_tiles = 0;  // of them, tiles with a pixel that leads after the edit
   bool m_reprojection = true;
 };

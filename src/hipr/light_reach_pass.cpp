@@ -10,8 +10,9 @@
 
 namespace hipr {
 
-LightReachPass::LightReachPass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles,
-                               const GBufferPass& gbuffers, const vk::Buffer& display, const vk::Buffer& tile_change,
+LightReachPass::LightReachPass(const vk::Context& ctx, const GpuScene& scene,
+                               const TileState& tiles, const GBufferPass& gbuffers,
+                               const vk::Buffer& display, const vk::Buffer& tile_change,
                                uint32_t pixels, uint32_t kernel_features)
     : m_ctx(ctx),
       m_scene(scene),
@@ -19,12 +20,14 @@ LightReachPass::LightReachPass(const vk::Context& ctx, const GpuScene& scene, co
       m_gbuffers(gbuffers),
       m_display(display),
       m_tile_change(tile_change),
-      m_lights(ctx, sizeof(abi::Light) * 2 * abi::kMaxReachLights, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-               vk::MemoryUse::Shared),
+      m_lights(ctx, sizeof(abi::Light) * 2 * abi::kMaxReachLights,
+               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Shared),
       m_pixels(pixels),
       m_features(kernel_features) {}
 
-bool LightReachPass::can_follow(const ChangeSet& changes) { return changes.lights.size() <= abi::kMaxReachLights; }
+bool LightReachPass::can_follow(const ChangeSet& changes) {
+  return changes.lights.size() <= abi::kMaxReachLights;
+}
 
 void LightReachPass::set_changed(const ChangeSet& changes) {
   m_light_count = uint32_t(std::min<size_t>(changes.lights.size(), abi::kMaxReachLights));
@@ -41,14 +44,14 @@ void LightReachPass::set_changed(const ChangeSet& changes) {
 
 void LightReachPass::make_pipeline() {
   if (m_reach) return;
-  m_reach = std::make_unique<vk::ComputePipeline>(m_ctx, "light_reach.comp", kernel_feature_defines(m_features),
-                                                  std::vector<vk::BufferBinding>{
-                                                      {abi::kReachGBuffer, &m_gbuffers.current},
-                                                      {abi::kReachLights, &m_lights},
-                                                      {abi::kReachDisplay, &m_display},
-                                                      {abi::kReachTileFlags, &m_tiles.flags},
-                                                      {abi::kReachTileChange, &m_tile_change}},
-                                                  uint32_t(sizeof(uint32_t)), &m_scene.descriptor_set());
+  m_reach = std::make_unique<vk::ComputePipeline>(
+      m_ctx, "light_reach.comp", kernel_feature_defines(m_features),
+      std::vector<vk::BufferBinding>{{abi::kReachGBuffer, &m_gbuffers.current},
+                                     {abi::kReachLights, &m_lights},
+                                     {abi::kReachDisplay, &m_display},
+                                     {abi::kReachTileFlags, &m_tiles.flags},
+                                     {abi::kReachTileChange, &m_tile_change}},
+      uint32_t(sizeof(uint32_t)), &m_scene.descriptor_set());
 }
 
 void LightReachPass::record_warm_up(VkCommandBuffer cmd) {

@@ -16,8 +16,9 @@ namespace hipr {
 
 class LightReachPass {
  public:
-  LightReachPass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const GBufferPass& gbuffers,
-                 const vk::Buffer& display, const vk::Buffer& tile_change, uint32_t pixels, uint32_t kernel_features);
+  LightReachPass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles,
+                 const GBufferPass& gbuffers, const vk::Buffer& display,
+                 const vk::Buffer& tile_change, uint32_t pixels, uint32_t kernel_features);
 
   // Whether stage 1 can follow every light the edit changed (at most abi::kMaxReachLights).
   static bool can_follow(const ChangeSet& changes);

@@ -25,18 +25,25 @@ Policy parse_policy(const std::string& name) {
 
 std::string policy_name(Policy policy) {
   switch (policy) {
-    case Policy::Hipr: return "hipr";
-    case Policy::Full: return "full";
-    case Policy::Scanline: return "scanline";
-    case Policy::Spiral: return "spiral";
-    case Policy::Random: return "random";
-    case Policy::Oracle: return "oracle";
+    case Policy::Hipr:
+      return "hipr";
+    case Policy::Full:
+      return "full";
+    case Policy::Scanline:
+      return "scanline";
+    case Policy::Spiral:
+      return "spiral";
+    case Policy::Random:
+      return "random";
+    case Policy::Oracle:
+      return "oracle";
   }
   return "?";
 }
 
 DisplayRule default_display_rule(Policy policy) {
-  return policy == Policy::Hipr || policy == Policy::Oracle ? DisplayRule::Difference : DisplayRule::Immediate;
+  return policy == Policy::Hipr || policy == Policy::Oracle ? DisplayRule::Difference
+                                                            : DisplayRule::Immediate;
 }
 
 std::vector<uint32_t> tile_order(Policy policy, uint32_t tiles_x, uint32_t tiles_y, uint32_t seed) {
@@ -52,7 +59,8 @@ std::vector<uint32_t> tile_order(Policy policy, uint32_t tiles_x, uint32_t tiles
       const double dx = double(t % tiles_x) - cx, dy = double(t / tiles_x) - cy;
       return std::make_pair(std::max(std::abs(dx), std::abs(dy)), std::atan2(dy, dx));
     };
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
   }
   return order;
 }
@@ -80,14 +88,23 @@ class HiprPolicy final : public SchedulingPolicy {
     stages.build_schedule();  // active tiles first, by change score: the order of stage 2
     return active;
   }
-  void render_leading(ProgressiveRenderer& renderer, uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
+  void render_leading(ProgressiveRenderer& renderer, uint32_t offset, uint32_t count,
+                      uint32_t samples_per_pixel,
                       std::optional<DisplayRule> then_resolve) override {
     stages_of(renderer).stage2_discover(offset, count, samples_per_pixel, then_resolve);
   }
-  void finish_leading(ProgressiveRenderer& renderer) override { stages_of(renderer).build_schedule(); }
-  uint32_t seeded_leading(ProgressiveRenderer& renderer) override { return stages_of(renderer).seeded_tiles(); }
-  uint32_t lead_tiles(ProgressiveRenderer& renderer) override { return stages_of(renderer).lead_tiles(); }
-  uint32_t discovered_entries(ProgressiveRenderer& renderer) override { return stages_of(renderer).discovered_tiles(); }
+  void finish_leading(ProgressiveRenderer& renderer) override {
+    stages_of(renderer).build_schedule();
+  }
+  uint32_t seeded_leading(ProgressiveRenderer& renderer) override {
+    return stages_of(renderer).seeded_tiles();
+  }
+  uint32_t lead_tiles(ProgressiveRenderer& renderer) override {
+    return stages_of(renderer).lead_tiles();
+  }
+  uint32_t discovered_entries(ProgressiveRenderer& renderer) override {
+    return stages_of(renderer).discovered_tiles();
+  }
   // The focus is a changed set for ordering only: stage 1 marks where it is seen (after what
   // an edit left unrendered), stage 2 discovers from there, stage 3 orders the rest outward.
   std::optional<uint32_t> refocus(ProgressiveRenderer& renderer, const Focus& focus) override {
@@ -142,12 +159,16 @@ std::unique_ptr<SchedulingPolicy> make_hipr_policy(HiprStageRunner& stages) {
 
 std::unique_ptr<SchedulingPolicy> make_policy(Policy policy) {
   switch (policy) {
-    case Policy::Hipr: return std::make_unique<HiprPolicy>();
-    case Policy::Full: return std::make_unique<FullPolicy>();
+    case Policy::Hipr:
+      return std::make_unique<HiprPolicy>();
+    case Policy::Full:
+      return std::make_unique<FullPolicy>();
     case Policy::Scanline:
     case Policy::Spiral:
-    case Policy::Random: return std::make_unique<BucketOrderPolicy>(policy);
-    case Policy::Oracle: break;
+    case Policy::Random:
+      return std::make_unique<BucketOrderPolicy>(policy);
+    case Policy::Oracle:
+      break;
   }
   throw InputError("the oracle policy needs a reference image: use hipr bench");
 }

@@ -8,14 +8,21 @@
 
 namespace hipr {
 
-ReprojectPass::ReprojectPass(const vk::Context& ctx, const GpuScene& scene, const GBufferPass& gbuffers,
-                             const vk::Buffer& display, uint32_t width, uint32_t height)
-    : m_ctx(ctx), m_scene(scene), m_gbuffers(gbuffers), m_display(display), m_width(width), m_height(height) {}
+ReprojectPass::ReprojectPass(const vk::Context& ctx, const GpuScene& scene,
+                             const GBufferPass& gbuffers, const vk::Buffer& display, uint32_t width,
+                             uint32_t height)
+    : m_ctx(ctx),
+      m_scene(scene),
+      m_gbuffers(gbuffers),
+      m_display(display),
+      m_width(width),
+      m_height(height) {}
 
 void ReprojectPass::prepare() {
   if (m_before) return;
-  m_before = std::make_unique<vk::Buffer>(m_ctx, m_display.size(),
-                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  m_before = std::make_unique<vk::Buffer>(
+      m_ctx, m_display.size(),
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   m_reproject = std::make_unique<vk::ComputePipeline>(
       m_ctx, "reproject_display.comp", vk::ShaderDefines{},
       std::vector<vk::BufferBinding>{{abi::kReprojectGBuffer, &m_gbuffers.current},

@@ -14,8 +14,8 @@ namespace hipr {
 
 class ReprojectPass {
  public:
-  ReprojectPass(const vk::Context& ctx, const GpuScene& scene, const GBufferPass& gbuffers, const vk::Buffer& display,
-                uint32_t width, uint32_t height);
+  ReprojectPass(const vk::Context& ctx, const GpuScene& scene, const GBufferPass& gbuffers,
+                const vk::Buffer& display, uint32_t width, uint32_t height);
 
   // Records the reprojection from `before` (the camera of the previous G-buffer) into the view
   // the current G-buffer was rendered from. Run after the capture and the new G-buffer, before

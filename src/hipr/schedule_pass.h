@@ -13,8 +13,9 @@ namespace hipr {
 
 class SchedulePass {
  public:
-  SchedulePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const vk::Buffer& tile_weights,
-               const vk::Buffer& tile_change, const vk::Buffer& tile_focus);
+  SchedulePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles,
+               const vk::Buffer& tile_weights, const vk::Buffer& tile_change,
+               const vk::Buffer& tile_focus);
 
   // Records the keys, the sort and the copy of the sorted tile ids into the schedule.
   void record(VkCommandBuffer cmd) const;

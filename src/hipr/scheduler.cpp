@@ -7,10 +7,12 @@
 
 namespace hipr {
 
-uint32_t default_tiles_per_step(uint32_t tile_count) { return std::max(1u, (tile_count + 15) / 16); }
+uint32_t default_tiles_per_step(uint32_t tile_count) {
+  return std::max(1u, (tile_count + 15) / 16);
+}
 
-Scheduler::Scheduler(ProgressiveRenderer& renderer, std::unique_ptr<SchedulingPolicy> policy, uint32_t tiles_per_step,
-                     uint32_t visit_spp)
+Scheduler::Scheduler(ProgressiveRenderer& renderer, std::unique_ptr<SchedulingPolicy> policy,
+                     uint32_t tiles_per_step, uint32_t visit_spp)
     : m_renderer(renderer),
       m_policy(std::move(policy)),
       m_tile_count(renderer.tile_grid().tile_count()),
@@ -63,7 +65,8 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   m_edited = true;
   m_cursor = 0;
   m_first_round = true;
-  m_round_target = m_policy->whole_passes() ? m_visit_spp : m_first_visit_spp;  // handed over by planned()
+  m_round_target =
+      m_policy->whole_passes() ? m_visit_spp : m_first_visit_spp;  // handed over by planned()
   // Planned while the pixels' owed bits still say which tiles earlier edits left unrendered
   // (HiPR keeps those ranked), then every pixel owes a restart. With no leading step (HiPR when
   // nothing visible changed) the schedule starts at once.
@@ -83,7 +86,8 @@ std::optional<DisplayRule> Scheduler::step_display_rule() const {
 
 void Scheduler::step() {
   const Timer step_timer;
-  if (m_edit_lead_at && !lead_pass_pending() && !leading_steps_pending() && m_cursor >= *m_edit_lead_at)
+  if (m_edit_lead_at && !lead_pass_pending() && !leading_steps_pending() &&
+      m_cursor >= *m_edit_lead_at)
     begin_edit_lead();
   const bool first_visit = m_first_round && m_edited && !m_policy->whole_passes();
   const uint32_t spp = first_visit ? m_first_visit_spp : m_visit_spp;
@@ -101,7 +105,8 @@ void Scheduler::step() {
     // first). After the last, the policy orders the rest (stage 3's sort, from the weights stage
     // 2 discovered); the leading entries stay first in it, so the schedule resumes after them.
     uint32_t count = std::min(m_tiles_per_step, m_leading - m_leading_cursor);
-    if (!m_lead_begun && m_lead_at > m_leading_cursor) count = std::min(count, m_lead_at - m_leading_cursor);
+    if (!m_lead_begun && m_lead_at > m_leading_cursor)
+      count = std::min(count, m_lead_at - m_leading_cursor);
     m_policy->render_leading(m_renderer, m_leading_cursor, count, spp, step_display_rule());
     m_times.leading_step_seconds += step_timer.seconds();
     m_times.leading_steps += 1;
@@ -113,9 +118,11 @@ void Scheduler::step() {
       m_times.sort_seconds += timer.seconds();
       m_cursor = m_leading;
       // The edit's lead comes once the tiles stage 2 discovered had their first visit too.
-      if (m_edit_plan && m_edit_lead > 0 && m_converged_spp > *m_round_target && m_policy->lead_tiles(m_renderer) > 0)
+      if (m_edit_plan && m_edit_lead > 0 && m_converged_spp > *m_round_target &&
+          m_policy->lead_tiles(m_renderer) > 0)
         m_edit_lead_at = m_leading + m_policy->discovered_entries(m_renderer);
-      if (!lead_pass_pending() && m_cursor == m_tile_count) end_round();  // every tile was a leading one
+      if (!lead_pass_pending() && m_cursor == m_tile_count)
+        end_round();  // every tile was a leading one
     }
     return;
   }
@@ -141,7 +148,8 @@ void Scheduler::set_round_target(uint32_t target) {
   // The focus runs ahead by whole visits, up to the converged count (never past it: the work
   // since the edit would then reach it before every pixel has).
   m_focus_target = 0;
-  if (m_focus_ahead && m_follows_focus && !m_focus.empty() && m_focus_lead > 0 && m_converged_spp > target)
+  if (m_focus_ahead && m_follows_focus && !m_focus.empty() && m_focus_lead > 0 &&
+      m_converged_spp > target)
     m_focus_target = std::min(target + m_focus_lead * m_visit_spp, m_converged_spp);
   m_renderer.set_sample_target(target, m_focus_target, m_edit_lead_target);
 }
@@ -218,6 +226,8 @@ void Scheduler::set_focus(const Focus& focus) {
   m_times.focus_seconds += timer.seconds();
 }
 
-double Scheduler::work_since_edit() const { return double(m_renderer.samples_since_reset()) / double(m_pixels); }
+double Scheduler::work_since_edit() const {
+  return double(m_renderer.samples_since_reset()) / double(m_pixels);
+}
 
 }  // namespace hipr

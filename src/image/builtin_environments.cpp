@@ -48,8 +48,8 @@ glm::vec3 studio_radiance(glm::vec3 direction) {
   const float t = 0.5f * (d.y + 1.0f);
   float radiance = 0.25f + 0.35f * t * t * (3.0f - 2.0f * t);
   radiance += soft_light(d, {-0.55f, 0.6f, 0.6f}, 1.5f, 30.0f);  // key: front, above, left
-  radiance += soft_light(d, {0.8f, 0.15f, 0.45f}, 0.6f, 35.0f);   // fill: right, low
-  radiance += soft_light(d, {0.1f, 0.45f, -0.9f}, 0.8f, 20.0f);   // rim: behind, above
+  radiance += soft_light(d, {0.8f, 0.15f, 0.45f}, 0.6f, 35.0f);  // fill: right, low
+  radiance += soft_light(d, {0.1f, 0.45f, -0.9f}, 0.8f, 20.0f);  // rim: behind, above
   return glm::vec3(radiance);
 }
 
@@ -76,18 +76,22 @@ struct Perez {
   double a, b, c, d, e;
   double operator()(double theta, double gamma) const {
     const double cos_gamma = std::cos(gamma);
-    return (1.0 + a * std::exp(b / std::cos(theta))) * (1.0 + c * std::exp(d * gamma) + e * cos_gamma * cos_gamma);
+    return (1.0 + a * std::exp(b / std::cos(theta))) *
+           (1.0 + c * std::exp(d * gamma) + e * cos_gamma * cos_gamma);
   }
 };
 
 Perez perez_Y(double t) {
-  return {0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771, -0.0670 * t + 0.3703};
+  return {0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771,
+          -0.0670 * t + 0.3703};
 }
 Perez perez_x(double t) {
-  return {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125, -0.0641 * t - 0.8989, -0.0033 * t + 0.0452};
+  return {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125, -0.0641 * t - 0.8989,
+          -0.0033 * t + 0.0452};
 }
 Perez perez_y(double t) {
-  return {-0.0167 * t - 0.2608, -0.0950 * t + 0.0092, -0.0079 * t + 0.2102, -0.0441 * t - 1.6537, -0.0109 * t + 0.0529};
+  return {-0.0167 * t - 0.2608, -0.0950 * t + 0.0092, -0.0079 * t + 0.2102, -0.0441 * t - 1.6537,
+          -0.0109 * t + 0.0529};
 }
 
 // Zenith chromaticity: T^2, T and 1 times a cubic in the sun's zenith angle.
@@ -108,14 +112,16 @@ constexpr double kZenithY[3][4] = {{0.00275, -0.00610, 0.00317, 0.0},
 
 // CIE XYZ -> linear Rec.709 (sRGB primaries, D65).
 glm::dvec3 xyz_to_rec709(glm::dvec3 xyz) {
-  return {3.2406 * xyz.x - 1.5372 * xyz.y - 0.4986 * xyz.z, -0.9689 * xyz.x + 1.8758 * xyz.y + 0.0415 * xyz.z,
+  return {3.2406 * xyz.x - 1.5372 * xyz.y - 0.4986 * xyz.z,
+          -0.9689 * xyz.x + 1.8758 * xyz.y + 0.0415 * xyz.z,
           0.0557 * xyz.x - 0.2040 * xyz.y + 1.0570 * xyz.z};
 }
 
 glm::dvec3 xyY_to_rec709(glm::dvec3 xyY) {
   if (xyY.y <= 0.0) return glm::dvec3(0.0);
   const double scale = xyY.z / xyY.y;
-  return glm::max(xyz_to_rec709({xyY.x * scale, xyY.z, (1.0 - xyY.x - xyY.y) * scale}), glm::dvec3(0.0));
+  return glm::max(xyz_to_rec709({xyY.x * scale, xyY.z, (1.0 - xyY.x - xyY.y) * scale}),
+                  glm::dvec3(0.0));
 }
 
 // The sun: 128,000 lux outside the atmosphere (taken as white); through the atmosphere,
@@ -126,7 +132,8 @@ constexpr double kSunIlluminance = 128000.0;
 
 glm::dvec3 sun_illuminance(const SkyParameters& sky) {
   const double elevation = std::max(double(sky.sun_elevation_degrees), 0.0);
-  const double air_mass = 1.0 / (std::sin(glm::radians(elevation)) + 0.50572 * std::pow(elevation + 6.07995, -1.6364));
+  const double air_mass =
+      1.0 / (std::sin(glm::radians(elevation)) + 0.50572 * std::pow(elevation + 6.07995, -1.6364));
   const double beta = 0.04608 * sky.turbidity - 0.04586;
   const glm::dvec3 wavelength_um(0.680, 0.550, 0.440);
   glm::dvec3 transmittance;
@@ -142,7 +149,8 @@ glm::dvec3 sun_illuminance(const SkyParameters& sky) {
 }  // namespace
 
 glm::vec3 sun_direction(const SkyParameters& sky) {
-  const float e = glm::radians(sky.sun_elevation_degrees), a = glm::radians(sky.sun_azimuth_degrees);
+  const float e = glm::radians(sky.sun_elevation_degrees),
+              a = glm::radians(sky.sun_azimuth_degrees);
   return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
 }
 
@@ -164,7 +172,8 @@ glm::dvec3 preetham_sky_xyY(glm::vec3 direction, const SkyParameters& sky) {
   const double theta_sun = std::acos(std::clamp(sun.y, 0.0, 1.0));
   const double gamma = std::acos(std::clamp(glm::dot(d, sun), -1.0, 1.0));
   const double chi = (4.0 / 9.0 - t / 120.0) * (3.14159265358979323846 - 2.0 * theta_sun);
-  const double zenith_Y = 1000.0 * ((4.0453 * t - 4.9710) * std::tan(chi) - 0.2155 * t + 2.4192);  // kcd/m^2 -> nits
+  const double zenith_Y =
+      1000.0 * ((4.0453 * t - 4.9710) * std::tan(chi) - 0.2155 * t + 2.4192);  // kcd/m^2 -> nits
   const Perez fY = perez_Y(t), fx = perez_x(t), fy = perez_y(t);
   return {zenith_chromaticity(kZenithX, t, theta_sun) * fx(theta, gamma) / fx(0.0, theta_sun),
           zenith_chromaticity(kZenithY, t, theta_sun) * fy(theta, gamma) / fy(0.0, theta_sun),
@@ -197,13 +206,15 @@ Environment make_sky_environment(const SkyParameters& sky, uint32_t width) {
     const float u = std::atan2(sun.x, -sun.z) / (2.0f * kPi) + 0.5f, v = std::acos(sun.y) / kPi;
     const uint32_t column = std::min(uint32_t(u * float(env.width)), env.width - 1);
     const uint32_t row = std::min(uint32_t(v * float(env.height)), env.height - 1);
-    env.texels[size_t(row) * env.width + column] += glm::vec3(sun_rgb / texel_solid_angle(env.width, env.height, row));
+    env.texels[size_t(row) * env.width + column] +=
+        glm::vec3(sun_rgb / texel_solid_angle(env.width, env.height, row));
     ground_irradiance += luminance(sun_rgb) * double(sun.y);
   }
   // Ground: grey, albedo 0.2, Lambertian under that irradiance.
   const glm::vec3 ground(float(0.2 * ground_irradiance / kPi));
   for (uint32_t row = env.height / 2; row < env.height; ++row)
-    for (uint32_t column = 0; column < env.width; ++column) env.texels[size_t(row) * env.width + column] = ground;
+    for (uint32_t column = 0; column < env.width; ++column)
+      env.texels[size_t(row) * env.width + column] = ground;
   return env;
 }
 
@@ -224,9 +235,9 @@ std::string environment_flags(const Scene& scene) {
   };
   std::string flags = "--env ";
   if (env.path == kSkyEnvironmentName)
-    flags += std::string(kSkyEnvironmentName) + " --sun-elevation " + number(env.sky.sun_elevation_degrees) +
-             " --sun-azimuth " + number(env.sky.sun_azimuth_degrees) + " --turbidity " +
-             number(env.sky.turbidity);
+    flags += std::string(kSkyEnvironmentName) + " --sun-elevation " +
+             number(env.sky.sun_elevation_degrees) + " --sun-azimuth " +
+             number(env.sky.sun_azimuth_degrees) + " --turbidity " + number(env.sky.turbidity);
   else if (env.path == kStudioEnvironmentName)
     flags += kStudioEnvironmentName;
   else
@@ -237,10 +248,12 @@ std::string environment_flags(const Scene& scene) {
 }
 
 bool is_environment_name(const std::filesystem::path& source) {
-  return source == kStudioEnvironmentName || source == kSkyEnvironmentName || source == kNoEnvironment;
+  return source == kStudioEnvironmentName || source == kSkyEnvironmentName ||
+         source == kNoEnvironment;
 }
 
-std::optional<Environment> make_environment(const std::filesystem::path& source, const SkyParameters& sky) {
+std::optional<Environment> make_environment(const std::filesystem::path& source,
+                                            const SkyParameters& sky) {
   if (source == kNoEnvironment) return std::nullopt;
   if (source == kStudioEnvironmentName) return make_studio_environment();
   if (source == kSkyEnvironmentName) return make_sky_environment(sky);
@@ -256,7 +269,8 @@ SceneLighting scene_lighting(const Scene& scene) {
       const MaterialParameters& m = scene.materials[p.material].params;
       for (int c = 0; c < 3; ++c) {
         const float emission = m.emission_color[c] * m.emission_luminance;
-        if (std::isfinite(emission)) lighting.brightest_emission = std::max(lighting.brightest_emission, emission);
+        if (std::isfinite(emission))
+          lighting.brightest_emission = std::max(lighting.brightest_emission, emission);
       }
     }
   }

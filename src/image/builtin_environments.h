@@ -57,7 +57,8 @@ bool is_environment_name(const std::filesystem::path& source);
 
 // The environment `source` names: "studio", "sky" (made with `sky`), "none" (nullopt) or an
 // equirectangular .hdr/.exr file (InputError when it cannot be read). Intensity 1, rotation 0.
-std::optional<Environment> make_environment(const std::filesystem::path& source, const SkyParameters& sky);
+std::optional<Environment> make_environment(const std::filesystem::path& source,
+                                            const SkyParameters& sky);
 
 // What the scene brings to light itself: punctual lights on nodes, and the brightest emissive
 // material of a visible instance (the largest channel of emission_color x emission_luminance,

@@ -12,20 +12,25 @@ namespace hipr {
 
 Environment load_environment(const std::filesystem::path& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError("environment map not found: " + path.string());
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError("environment map not found: " + path.string());
   auto input = OIIO::ImageInput::open(path.string());
-  if (!input) throw InputError("cannot read environment map " + path.string() + ": " + OIIO::geterror());
+  if (!input)
+    throw InputError("cannot read environment map " + path.string() + ": " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input->spec();
   // Up to 16384 x 8192 texels (the largest HDRIs offered), whatever the header claims.
-  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 || int64_t(spec.width) * spec.height > (int64_t(1) << 27))
+  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 ||
+      int64_t(spec.width) * spec.height > (int64_t(1) << 27))
     throw InputError("environment map " + path.string() + " has an unusable size");
   // A header may claim any size: no real file holds more than about a thousand texels per byte
   // (the best compression of a constant image), so a claim beyond that is refused before the
   // texels are allocated.
   const uintmax_t bytes = std::filesystem::file_size(path, ec);
-  if (ec || uintmax_t(spec.width) * uintmax_t(spec.height) > std::max<uintmax_t>(bytes, 4096) * 1024)
-    throw InputError("environment map " + path.string() + " claims more texels (" + std::to_string(spec.width) + "x" +
-                     std::to_string(spec.height) + ") than its " + std::to_string(bytes) + " bytes can hold");
+  if (ec ||
+      uintmax_t(spec.width) * uintmax_t(spec.height) > std::max<uintmax_t>(bytes, 4096) * 1024)
+    throw InputError("environment map " + path.string() + " claims more texels (" +
+                     std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                     ") than its " + std::to_string(bytes) + " bytes can hold");
   // Only the first three channels (RGB; one is grey) are read, straight into the texels: a header
   // naming many channels costs nothing more.
   const int channels = std::min(spec.nchannels, 3);
@@ -50,7 +55,9 @@ Environment load_environment(const std::filesystem::path& path) {
     }
     texel = c;
   }
-  if (repaired) log::warn(path.string() + ": " + std::to_string(repaired) + " negative or non-finite texel values set to 0");
+  if (repaired)
+    log::warn(path.string() + ": " + std::to_string(repaired) +
+              " negative or non-finite texel values set to 0");
   return env;
 }
 

@@ -1,6 +1,7 @@
 // Image error metrics for `hipr bench`.
 //
-// relMSE (docs/method.md#measuring-run-time-against-error): mean over pixels and channels of (x-y)^2 / (y^2 + 0.01), halved.
+// relMSE (docs/method.md#measuring-run-time-against-error): mean over pixels and channels of
+// (x-y)^2 / (y^2 + 0.01), halved.
 //
 // LDR-FLIP, implemented from the description in P. Andersson, J. Nilsson, T. Akenine-Moller,
 // M. Oskarsson, K. Astrom and M. D. Fairchild, "FLIP: A Difference Evaluator for Alternating
@@ -81,9 +82,11 @@ double relmse(const ImageRGB& test, const ImageRGB& reference) {
   return sum / double(values);
 }
 
-double relmse_masked(const ImageRGB& test, const ImageRGB& reference, const std::vector<uint8_t>& mask) {
+double relmse_masked(const ImageRGB& test, const ImageRGB& reference,
+                     const std::vector<uint8_t>& mask) {
   check_same_size(test, reference, "relmse_masked");
-  if (mask.size() * 3 != test.rgb.size()) throw InternalError("relmse_masked: the mask is not one entry per pixel");
+  if (mask.size() * 3 != test.rgb.size())
+    throw InternalError("relmse_masked: the mask is not one entry per pixel");
   double sum = 0.0;
   size_t pixels = 0;
   for (size_t p = 0; p < mask.size(); ++p)

@@ -8,16 +8,17 @@
 
 namespace hipr {
 
-// The relMSE of docs/method.md: mean over pixels and RGB channels of (x-y)^2 / (y^2 + 0.01), divided by 2.
-// x = test, y = reference, linear radiance. Throws InternalError when sizes differ (or an image's
-// rgb does not hold width * height * 3 values). An empty image has no error (0). A NaN or
-// infinite value makes the result non-finite, so a broken render never looks converged.
+// The relMSE of docs/method.md: mean over pixels and RGB channels of (x-y)^2 / (y^2 + 0.01),
+// divided by 2. x = test, y = reference, linear radiance. Throws InternalError when sizes differ
+// (or an image's rgb does not hold width * height * 3 values). An empty image has no error (0). A
+// NaN or infinite value makes the result non-finite, so a broken render never looks converged.
 double relmse(const ImageRGB& test, const ImageRGB& reference);
 
 // relmse() over the pixels whose `mask` entry is non-zero (row-major, one per pixel): the error
 // of a region (a focus, docs/method.md#focus). 0 when the mask selects no pixel; InternalError
 // when the sizes differ.
-double relmse_masked(const ImageRGB& test, const ImageRGB& reference, const std::vector<uint8_t>& mask);
+double relmse_masked(const ImageRGB& test, const ImageRGB& reference,
+                     const std::vector<uint8_t>& mask);
 
 // The same per-pixel terms, (x-y)^2 / (y^2 + 0.01) / 2 summed over RGB, summed over each
 // tile x tile block (row-major tile ids, tiles_x = ceil(width / tile)); partial tiles at the

@@ -11,7 +11,8 @@ namespace hipr {
 namespace {
 
 bool finite_pixel(const ImageRGB& image, size_t i) {
-  return std::isfinite(image.rgb[i * 3]) && std::isfinite(image.rgb[i * 3 + 1]) && std::isfinite(image.rgb[i * 3 + 2]);
+  return std::isfinite(image.rgb[i * 3]) && std::isfinite(image.rgb[i * 3 + 1]) &&
+         std::isfinite(image.rgb[i * 3 + 2]);
 }
 
 // A copy whose non-finite values are 0, so FLIP's filters do not spread them over neighbours
@@ -26,17 +27,22 @@ ImageRGB finite_copy(const ImageRGB& image) {
 }  // namespace
 
 CompareMetric parse_compare_metric(const std::string& name) {
-  for (CompareMetric m : {CompareMetric::Flip, CompareMetric::RelMse, CompareMetric::Rmse, CompareMetric::Max})
+  for (CompareMetric m :
+       {CompareMetric::Flip, CompareMetric::RelMse, CompareMetric::Rmse, CompareMetric::Max})
     if (compare_metric_name(m) == name) return m;
   throw InputError("unknown metric '" + name + "' (flip, relmse, rmse, max)");
 }
 
 std::string compare_metric_name(CompareMetric metric) {
   switch (metric) {
-    case CompareMetric::Flip: return "flip";
-    case CompareMetric::RelMse: return "relmse";
-    case CompareMetric::Rmse: return "rmse";
-    case CompareMetric::Max: return "max";
+    case CompareMetric::Flip:
+      return "flip";
+    case CompareMetric::RelMse:
+      return "relmse";
+    case CompareMetric::Rmse:
+      return "rmse";
+    case CompareMetric::Max:
+      return "max";
   }
   return "?";
 }
@@ -49,13 +55,15 @@ double nearest_rank_percentile(std::vector<float> values, double percentile) {
   return values[k];
 }
 
-ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric, double threshold,
-                               std::optional<double> percentile) {
+ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric,
+                               double threshold, std::optional<double> percentile) {
   if (a.width != b.width || a.height != b.height)
-    throw InputError("the images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
-                     " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
+    throw InputError("the images differ in size: " + std::to_string(a.width) + "x" +
+                     std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
+                     std::to_string(b.height));
   const size_t pixels = size_t(a.width) * a.height;
-  if (a.rgb.size() != pixels * 3 || b.rgb.size() != pixels * 3) throw InternalError("an image without 3 channels");
+  if (a.rgb.size() != pixels * 3 || b.rgb.size() != pixels * 3)
+    throw InternalError("an image without 3 channels");
   ImageComparison result;
   result.pixel_error.assign(pixels, 0.0f);
   double sum = 0.0, peak = 0.0;
@@ -67,9 +75,12 @@ ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetr
       double pixel = 0.0;
       for (size_t c = 0; c < 3; ++c) {
         const double x = a.rgb[i * 3 + c], y = b.rgb[i * 3 + c], d = x - y;
-        if (metric == CompareMetric::RelMse) pixel += d * d / (y * y + 0.01) / 2.0 / 3.0;
-        else if (metric == CompareMetric::Rmse) pixel += d * d / 3.0;
-        else pixel = std::max(pixel, std::abs(d));
+        if (metric == CompareMetric::RelMse)
+          pixel += d * d / (y * y + 0.01) / 2.0 / 3.0;
+        else if (metric == CompareMetric::Rmse)
+          pixel += d * d / 3.0;
+        else
+          pixel = std::max(pixel, std::abs(d));
       }
       sum += pixel;
       peak = std::max(peak, pixel);

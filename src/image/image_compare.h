@@ -26,19 +26,19 @@ struct PixelBox {
 };
 
 struct ImageComparison {
-  double value = 0.0;                 // the metric over the whole image (infinite with a non-finite pixel)
-  std::vector<float> pixel_error;     // per pixel, in the metric's units (infinite where non-finite)
-  uint64_t pixels_over = 0;           // pixels whose error exceeds the threshold
-  uint64_t nonfinite_pixels = 0;      // pixels with a NaN or infinite value in either image
-  std::optional<PixelBox> box;        // bounding box of the pixels over the threshold
+  double value = 0.0;  // the metric over the whole image (infinite with a non-finite pixel)
+  std::vector<float> pixel_error;  // per pixel, in the metric's units (infinite where non-finite)
+  uint64_t pixels_over = 0;        // pixels whose error exceeds the threshold
+  uint64_t nonfinite_pixels = 0;   // pixels with a NaN or infinite value in either image
+  std::optional<PixelBox> box;     // bounding box of the pixels over the threshold
   bool within(double threshold) const { return nonfinite_pixels == 0 && value <= threshold; }
 };
 
 // Throws InputError when the sizes differ. With `percentile` (in (0, 100]) the value is that
 // percentile of the per-pixel errors (nearest rank) instead of the metric over the whole image:
 // a mean lets a handful of wrong pixels pass, the 99.9th percentile does not.
-ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric, double threshold,
-                               std::optional<double> percentile = std::nullopt);
+ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric,
+                               double threshold, std::optional<double> percentile = std::nullopt);
 
 // The nearest-rank `percentile` (in (0, 100]) of `values`; 0 for none.
 double nearest_rank_percentile(std::vector<float> values, double percentile);

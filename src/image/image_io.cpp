@@ -14,7 +14,8 @@ namespace {
 
 std::string lower_extension(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   return ext;
 }
 
@@ -25,17 +26,21 @@ bool is_supported_output(const fs::path& path) {
   return ext == ".exr" || ext == ".png";
 }
 
-void write_image(const fs::path& path, const ImageRGB& image, const ImageMetadata& metadata, float exposure_ev) {
+void write_image(const fs::path& path, const ImageRGB& image, const ImageMetadata& metadata,
+                 float exposure_ev) {
   const std::string ext = lower_extension(path);
-  if (!is_supported_output(path)) throw InputError("unsupported output format '" + ext + "' (use .exr or .png)");
+  if (!is_supported_output(path))
+    throw InputError("unsupported output format '" + ext + "' (use .exr or .png)");
   const bool exr = ext == ".exr";
   write_atomically(path, [&](const fs::path& temp) {
     auto out = OIIO::ImageOutput::create(exr ? "openexr" : "png");
     if (!out) throw InternalError("OpenImageIO has no " + ext + " writer");
-    OIIO::ImageSpec spec(int(image.width), int(image.height), 3, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    OIIO::ImageSpec spec(int(image.width), int(image.height), 3,
+                         exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
     for (const auto& [key, value] : metadata) spec.attribute(key, value);
     if (exr) spec.attribute("compression", "zip");
-    if (!out->open(temp.string(), spec)) throw InputError("cannot write " + path.string() + ": " + out->geterror());
+    if (!out->open(temp.string(), spec))
+      throw InputError("cannot write " + path.string() + ": " + out->geterror());
     bool ok;
     if (exr) {
       ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
@@ -43,7 +48,8 @@ void write_image(const fs::path& path, const ImageRGB& image, const ImageMetadat
       const std::vector<uint8_t> srgb = tonemap_srgb8(image.rgb, exposure_ev);
       ok = out->write_image(OIIO::TypeDesc::UINT8, srgb.data());
     }
-    if (!out->close() || !ok) throw InputError("cannot write " + path.string() + ": " + out->geterror());
+    if (!out->close() || !ok)
+      throw InputError("cannot write " + path.string() + ": " + out->geterror());
   });
 }
 
@@ -77,7 +83,8 @@ ImageRGB read_image(const fs::path& path) {
   image.rgb.resize(size_t(spec.width) * size_t(spec.height) * 3);
   for (size_t i = 0; i < size_t(spec.width) * size_t(spec.height); ++i)
     for (size_t c = 0; c < 3; ++c)
-      image.rgb[i * 3 + c] = pixels[i * size_t(spec.nchannels) + std::min<size_t>(c, size_t(spec.nchannels) - 1)];
+      image.rgb[i * 3 + c] =
+          pixels[i * size_t(spec.nchannels) + std::min<size_t>(c, size_t(spec.nchannels) - 1)];
   return image;
 }
 

@@ -13,8 +13,8 @@ namespace hipr {
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
 // Throws InputError for an unsupported extension (only .exr and .png) or a failed write.
-void write_image(const std::filesystem::path& path, const ImageRGB& image, const ImageMetadata& metadata = {},
-                 float exposure_ev = 0.0f);
+void write_image(const std::filesystem::path& path, const ImageRGB& image,
+                 const ImageMetadata& metadata = {}, float exposure_ev = 0.0f);
 // Writes 8-bit pixels as they are (already sRGB-encoded: no tone mapping) to a PNG, atomically.
 // `channels`: 3 (RGB) or 4 (RGBA) bytes per pixel, rows top first.
 void write_png8(const std::filesystem::path& path, uint32_t width, uint32_t height,

@@ -13,7 +13,8 @@ float srgb_encode(float x) {
 std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& rgb, float exposure_ev) {
   const float scale = std::exp2(exposure_ev);
   std::vector<uint8_t> out(rgb.size());
-  for (size_t i = 0; i < rgb.size(); ++i) out[i] = uint8_t(std::lround(srgb_encode(rgb[i] * scale) * 255.0f));
+  for (size_t i = 0; i < rgb.size(); ++i)
+    out[i] = uint8_t(std::lround(srgb_encode(rgb[i] * scale) * 255.0f));
   return out;
 }
 

@@ -15,7 +15,9 @@ constexpr double kBoundsPadding = 1e-5;
 constexpr size_t kLeafTriangles = 8;
 constexpr size_t kMaxLeaves = 8192;
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 glm::dvec3 corner(const glm::dvec3& lo, const glm::dvec3& hi, int i) {
   return {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
@@ -53,7 +55,8 @@ Footprint footprint(const View& view, const glm::dvec3& lo, const glm::dvec3& hi
   // into its bounds may be hit in any direction.
   const double near = 1e-4 * reach;
   const double fx = 1.01 * view.tan_x, fy = 1.01 * view.tan_y;  // the whole image, with a margin
-  if (q_lo.z < near && q_lo.x <= near * fx && q_hi.x >= -near * fx && q_lo.y <= near * fy && q_hi.y >= -near * fy)
+  if (q_lo.z < near && q_lo.x <= near * fx && q_hi.x >= -near * fx && q_lo.y <= near * fy &&
+      q_hi.y >= -near * fy)
     return {Footprint::Everywhere};
   // Beyond the plane the box projects inside the rectangle of its corners there and of the
   // points where its edges cross the plane; nearer, it is outside the view (just checked).
@@ -80,20 +83,22 @@ Footprint footprint(const View& view, const glm::dvec3& lo, const glm::dvec3& hi
 }
 
 // The world box of an object box under `world`, padded by kBoundsPadding x `magnitude`.
-std::pair<glm::dvec3, glm::dvec3> world_box(const glm::dmat4& world, const glm::dvec3& lo, const glm::dvec3& hi,
-                                            double magnitude) {
+std::pair<glm::dvec3, glm::dvec3> world_box(const glm::dmat4& world, const glm::dvec3& lo,
+                                            const glm::dvec3& hi, double magnitude) {
   glm::dvec3 w_lo(HUGE_VAL), w_hi(-HUGE_VAL);
   for (int i = 0; i < 8; ++i) {
     const glm::dvec3 w(world * glm::dvec4(corner(lo, hi, i), 1.0));
     w_lo = glm::min(w_lo, w);
     w_hi = glm::max(w_hi, w);
   }
-  return {w_lo - glm::dvec3(kBoundsPadding * magnitude), w_hi + glm::dvec3(kBoundsPadding * magnitude)};
+  return {w_lo - glm::dvec3(kBoundsPadding * magnitude),
+          w_hi + glm::dvec3(kBoundsPadding * magnitude)};
 }
 
 }  // namespace
 
-uint32_t BackgroundTiles::build_tree(std::vector<Node>& nodes, size_t leaf_size, std::vector<Triangle>::iterator first,
+uint32_t BackgroundTiles::build_tree(std::vector<Node>& nodes, size_t leaf_size,
+                                     std::vector<Triangle>::iterator first,
                                      std::vector<Triangle>::iterator last) {
   const uint32_t index = uint32_t(nodes.size());
   nodes.emplace_back();
@@ -111,10 +116,12 @@ uint32_t BackgroundTiles::build_tree(std::vector<Node>& nodes, size_t leaf_size,
     c_hi = glm::max(c_hi, it->centre);
   }
   const glm::vec3 spread = c_hi - c_lo;
-  const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
+  const int axis =
+      spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
   const auto middle = first + (last - first) / 2;
-  std::nth_element(first, middle, last,
-                   [axis](const Triangle& a, const Triangle& b) { return a.centre[axis] < b.centre[axis]; });
+  std::nth_element(first, middle, last, [axis](const Triangle& a, const Triangle& b) {
+    return a.centre[axis] < b.centre[axis];
+  });
   const uint32_t left = build_tree(nodes, leaf_size, first, middle);
   const uint32_t right = build_tree(nodes, leaf_size, middle, last);
   nodes[index].box = {glm::min(nodes[left].box.first, nodes[right].box.first),
@@ -216,12 +223,14 @@ std::vector<uint32_t> BackgroundTiles::mask(const Scene& scene, uint32_t width, 
 
   for (const Instance& instance : scene.instances()) {
     if (!instance.visible) continue;
-    if (instance.mesh >= m_meshes.size()) return nothing_is_background();  // not bounded yet: anywhere
+    if (instance.mesh >= m_meshes.size())
+      return nothing_is_background();  // not bounded yet: anywhere
     const MeshTree& tree = m_meshes[instance.mesh];
     if (tree.unbounded) return nothing_is_background();
     if (tree.nodes.empty()) continue;
     const glm::dmat4 world(instance.world);
-    const auto [lo, hi] = world_box(world, glm::dvec3(tree.nodes[0].box.first), glm::dvec3(tree.nodes[0].box.second), 0.0);
+    const auto [lo, hi] = world_box(world, glm::dvec3(tree.nodes[0].box.first),
+                                    glm::dvec3(tree.nodes[0].box.second), 0.0);
     if (!finite(lo) || !finite(hi)) return nothing_is_background();
     const double magnitude = std::max({glm::length(hi - lo), glm::length(lo - view.origin),
                                        glm::length(hi - view.origin), glm::length(view.origin)});
@@ -230,7 +239,8 @@ std::vector<uint32_t> BackgroundTiles::mask(const Scene& scene, uint32_t width, 
     while (!stack.empty()) {
       const Node& node = tree.nodes[stack.back()];
       stack.pop_back();
-      const auto [b_lo, b_hi] = world_box(world, glm::dvec3(node.box.first), glm::dvec3(node.box.second), magnitude);
+      const auto [b_lo, b_hi] =
+          world_box(world, glm::dvec3(node.box.first), glm::dvec3(node.box.second), magnitude);
       const Footprint f = footprint(view, b_lo, b_hi);
       if (f.kind == Footprint::Everywhere) return nothing_is_background();
       if (f.kind == Footprint::Nowhere) continue;

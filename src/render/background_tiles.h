@@ -25,7 +25,8 @@ class BackgroundTiles {
 
   // One entry per tile, row-major (tiles of tile_size x tile_size pixels over width x height):
   // 1 where only background can be seen, for the scene's current camera and instances.
-  std::vector<uint32_t> mask(const Scene& scene, uint32_t width, uint32_t height, uint32_t tile_size) const;
+  std::vector<uint32_t> mask(const Scene& scene, uint32_t width, uint32_t height,
+                             uint32_t tile_size) const;
 
  private:
   using Box = std::pair<glm::vec3, glm::vec3>;  // min, max (of float vertices: exact in float)
@@ -47,7 +48,8 @@ class BackgroundTiles {
     glm::vec3 centre;
   };
   // Appends the subtree over triangles [first, last) (reordered) to `nodes`; returns its index.
-  static uint32_t build_tree(std::vector<Node>& nodes, size_t leaf_size, std::vector<Triangle>::iterator first,
+  static uint32_t build_tree(std::vector<Node>& nodes, size_t leaf_size,
+                             std::vector<Triangle>::iterator first,
                              std::vector<Triangle>::iterator last);
 
   static MeshTree build_mesh_tree(const Mesh& mesh);

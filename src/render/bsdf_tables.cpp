@@ -6,6 +6,8 @@
 
 namespace hipr {
 
-std::vector<float> bsdf_table_data() { return std::vector<float>(std::begin(kBsdfTables), std::end(kBsdfTables)); }
+std::vector<float> bsdf_table_data() {
+  return std::vector<float>(std::begin(kBsdfTables), std::end(kBsdfTables));
+}
 
 }  // namespace hipr

@@ -3,7 +3,8 @@
 
 namespace hipr {
 
-// The generated BSDF tables as the kernels read them (GpuScene binds them at abi::kSceneBsdfTables).
+// The generated BSDF tables as the kernels read them (GpuScene binds them at
+// abi::kSceneBsdfTables).
 std::vector<float> bsdf_table_data();
 
 }  // namespace hipr

@@ -33,7 +33,8 @@ struct Builder {
     if (count <= 1 || depth >= abi::kBvhMaxDepth) return make_leaf(bvh.nodes[index], begin, end);
 
     const glm::vec3 extent = centre_bounds.hi - centre_bounds.lo;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     uint32_t middle = begin;
     if (extent[axis] > 0.0f) {
       // Binned SAH along the widest axis of the centres.
@@ -78,18 +79,20 @@ struct Builder {
       if (count <= kBvhMaxLeafItems && (best_split < 0 || split_cost >= leaf_cost))
         return make_leaf(bvh.nodes[index], begin, end);
       if (best_split >= 0) {
-        middle = uint32_t(std::partition(bvh.order.begin() + begin, bvh.order.begin() + end,
-                                         [&](uint32_t item) { return bin_of(item) <= best_split; }) -
-                          bvh.order.begin());
+        middle =
+            uint32_t(std::partition(bvh.order.begin() + begin, bvh.order.begin() + end,
+                                    [&](uint32_t item) { return bin_of(item) <= best_split; }) -
+                     bvh.order.begin());
       }
     }
     if (middle == begin || middle == end) {
       // Centres that coincide (or one bin holding them all): halves by position in the order.
       if (count <= kBvhMaxLeafItems) return make_leaf(bvh.nodes[index], begin, end);
       middle = begin + count / 2;
-      std::nth_element(bvh.order.begin() + begin, bvh.order.begin() + middle, bvh.order.begin() + end,
-                       [&](uint32_t a, uint32_t b) {
-                         return centres[a][axis] < centres[b][axis] || (centres[a][axis] == centres[b][axis] && a < b);
+      std::nth_element(bvh.order.begin() + begin, bvh.order.begin() + middle,
+                       bvh.order.begin() + end, [&](uint32_t a, uint32_t b) {
+                         return centres[a][axis] < centres[b][axis] ||
+                                (centres[a][axis] == centres[b][axis] && a < b);
                        });
     }
     const uint32_t left_child = uint32_t(bvh.nodes.size());

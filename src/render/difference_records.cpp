@@ -13,7 +13,8 @@ struct DecodedDifference {
   bool changed = false;
 };
 
-DecodedDifference decode_difference(const abi::DifferenceRecord& record, const abi::DisplayTexel& texel) {
+DecodedDifference decode_difference(const abi::DifferenceRecord& record,
+                                    const abi::DisplayTexel& texel) {
   DecodedDifference d;
   for (uint32_t k = 0; k < 3; ++k) d.sum[int(k)] = record.values[abi::kDifferenceSum + k];
   d.valid = (texel.flags >> abi::kDifferenceValidShift) & abi::kDifferenceValidMask;
@@ -23,7 +24,8 @@ DecodedDifference decode_difference(const abi::DifferenceRecord& record, const a
 
 }  // namespace
 
-DifferenceEstimates difference_estimates(uint32_t width, uint32_t height, const std::vector<abi::PixelAccum>& accum,
+DifferenceEstimates difference_estimates(uint32_t width, uint32_t height,
+                                         const std::vector<abi::PixelAccum>& accum,
                                          const std::vector<abi::DifferenceRecord>& records,
                                          const std::vector<abi::DisplayTexel>& display) {
   DifferenceEstimates out;

@@ -22,7 +22,9 @@ DisplayPass::DisplayPass(const vk::Context& ctx, uint32_t width, uint32_t height
       m_overlay(storage(ctx, size_t(width) * height * 4)),
       // The output follows the window's size: bound when record() makes it.
       m_pipeline(ctx, "display.comp", {},
-                 {{abi::kDisplayTexels, &m_texels}, {abi::kDisplayOverlay, &m_overlay}, {abi::kDisplayOutput, nullptr}},
+                 {{abi::kDisplayTexels, &m_texels},
+                  {abi::kDisplayOverlay, &m_overlay},
+                  {abi::kDisplayOutput, nullptr}},
                  sizeof(abi::DisplayPush)) {
   m_texels.clear();
   m_overlay.clear();

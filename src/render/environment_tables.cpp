@@ -22,7 +22,8 @@ std::vector<float> build_environment_buffer(const Environment& env) {
   }
   if (!(total > 0.0)) {
     for (size_t y = 0; y < h; ++y)
-      for (size_t x = 0; x < w; ++x) weight[y * w + x] = std::sin((double(y) + 0.5) / double(h) * M_PI);
+      for (size_t x = 0; x < w; ++x)
+        weight[y * w + x] = std::sin((double(y) + 0.5) / double(h) * M_PI);
   }
 
   std::vector<double> row_sum(h, 0.0);
@@ -42,7 +43,8 @@ std::vector<float> build_environment_buffer(const Environment& env) {
     out.push_back(0.0f);
     for (size_t x = 0; x < w; ++x) {
       row_running += weight[y * w + x];
-      const float value = row_sum[y] > 0.0 ? float(row_running / row_sum[y]) : float(x + 1) / float(w);
+      const float value =
+          row_sum[y] > 0.0 ? float(row_running / row_sum[y]) : float(x + 1) / float(w);
       out.push_back(x + 1 == w ? 1.0f : value);
     }
   }

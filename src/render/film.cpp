@@ -9,30 +9,39 @@
 namespace hipr {
 namespace {
 
-vk::Buffer storage(const vk::Context& ctx, size_t bytes) { return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT); }
+vk::Buffer storage(const vk::Context& ctx, size_t bytes) {
+  return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
 
 }  // namespace
 
-uint32_t groups_for(uint32_t items) { return (items + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize; }
+uint32_t groups_for(uint32_t items) {
+  return (items + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize;
+}
 
-Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups, bool keep_difference,
-           const vk::DescriptorSet& scene, const vk::Buffer& tile_flags)
+Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups,
+           bool keep_difference, const vk::DescriptorSet& scene, const vk::Buffer& tile_flags)
     : accumulation(storage(ctx, size_t(width) * height * sizeof(abi::PixelAccum))),
       // Read after every step (the scheduler's work, convergence): mapped where the device allows.
-      stats(ctx, sizeof(abi::RenderStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Shared),
-      group_sums(storage(ctx, std::max<size_t>(size_t(width) * height * light_groups, 1) * sizeof(glm::vec3))),
-      difference(storage(ctx, (keep_difference ? size_t(width) * height : 1) * sizeof(abi::DifferenceRecord))),
+      stats(ctx, sizeof(abi::RenderStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+            vk::MemoryUse::Shared),
+      group_sums(storage(
+          ctx, std::max<size_t>(size_t(width) * height * light_groups, 1) * sizeof(glm::vec3))),
+      difference(storage(
+          ctx, (keep_difference ? size_t(width) * height : 1) * sizeof(abi::DifferenceRecord))),
       m_ctx(ctx),
       m_width(width),
       m_height(height),
       m_light_groups(light_groups),
       m_difference(keep_difference),
       m_mark_owed(ctx, "mark_owed.comp", {},
-                  {{abi::kOwedAccumulation, &accumulation}, {abi::kOwedTileFlags, &tile_flags}}, 0, &scene),
+                  {{abi::kOwedAccumulation, &accumulation}, {abi::kOwedTileFlags, &tile_flags}}, 0,
+                  &scene),
       // The kernel's 64-bit atomics land in device memory (mapped where the device allows), not
       // in host memory across the bus.
       m_total(ctx, sizeof(uint64_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Shared),
-      m_sum_samples(ctx, "sum_samples.comp", {}, {{abi::kSumAccumulation, &accumulation}, {abi::kSumTotal, &m_total}},
+      m_sum_samples(ctx, "sum_samples.comp", {},
+                    {{abi::kSumAccumulation, &accumulation}, {abi::kSumTotal, &m_total}},
                     sizeof(uint32_t)) {
   clear();
 }
@@ -42,10 +51,11 @@ void Film::record_mark_all_owed(VkCommandBuffer cmd) const {
 }
 
 ImageRGB Film::image() const {
-  return image_of(m_width, m_height, accumulation.download_all<abi::PixelAccum>(), [](const abi::PixelAccum& a) {
-    const uint32_t count = a.count & abi::kPixelCountMask;
-    return count ? a.sum * (1.0f / float(count)) : glm::vec3(0.0f);
-  });
+  return image_of(m_width, m_height, accumulation.download_all<abi::PixelAccum>(),
+                  [](const abi::PixelAccum& a) {
+                    const uint32_t count = a.count & abi::kPixelCountMask;
+                    return count ? a.sum * (1.0f / float(count)) : glm::vec3(0.0f);
+                  });
 }
 
 ImageRGB Film::group_image(uint32_t group) const {

@@ -2,24 +2,24 @@
 // The film: per-pixel accumulation (radiance sum, sum of squares, sample count and the owed
 // bit), each light group's share of the sum (render/light_groups.h), and the ray/sample counters
 // the trace kernels add to, and the difference records (the first samples kept for the
-// difference estimate, abi::DifferenceRecord). Owed pixels (mark_owed.comp) keep their old samples until their next
-// visit restarts them.
+// difference estimate, abi::DifferenceRecord). Owed pixels (mark_owed.comp) keep their old samples
+// until their next visit restarts them.
 #include <cstdint>
 #include <vector>
 
 #include "hipr/renderer.h"
+#include "shaders/shared/abi.h"
 #include "vk/buffer.h"
 #include "vk/compute_pipeline.h"
 #include "vk/context.h"
-#include "shaders/shared/abi.h"
 
 namespace hipr {
 
 class Film {
  public:
   // `scene`: the scene's descriptor set (the kernel reads the frame parameters from it).
-  Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups, bool keep_difference,
-       const vk::DescriptorSet& scene, const vk::Buffer& tile_flags);
+  Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups,
+       bool keep_difference, const vk::DescriptorSet& scene, const vk::Buffer& tile_flags);
 
   bool keeps_difference() const { return m_difference; }
 
@@ -56,7 +56,8 @@ uint32_t groups_for(uint32_t items);
 
 // The image whose pixel i is radiance_of(texels[i]) (a read-back of per-pixel GPU state).
 template <typename Texel, typename RadianceOf>
-ImageRGB image_of(uint32_t width, uint32_t height, const std::vector<Texel>& texels, RadianceOf radiance_of) {
+ImageRGB image_of(uint32_t width, uint32_t height, const std::vector<Texel>& texels,
+                  RadianceOf radiance_of) {
   ImageRGB image{width, height, std::vector<float>(texels.size() * 3)};
   for (size_t i = 0; i < texels.size(); ++i) {
     const glm::vec3 radiance = radiance_of(texels[i]);

@@ -18,7 +18,8 @@ abi::ViewFrame view_frame(const Camera& camera, float aspect) {
   return v;
 }
 
-abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, const RenderSettings& s) {
+abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu,
+                                   const RenderSettings& s) {
   const abi::ViewFrame view = view_frame(resolve_camera(scene), float(s.width) / float(s.height));
   abi::FrameParams f{};
   f.cameraPosition = view.position;
@@ -45,7 +46,8 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, cons
     f.environmentRotation = scene.environment->rotation;
   }
   set_discovery_parameters(f, s.hipr);
-  // Finite extents can still overflow a radius; unit scale then (the loader rejects non-finite data).
+  // Finite extents can still overflow a radius; unit scale then (the loader rejects non-finite
+  // data).
   const float offset_scale = 2.0f * gpu.info().scene_radius;
   f.rayOffsetScale = std::isfinite(offset_scale) ? offset_scale : 1.0f;
   return f;

@@ -10,7 +10,8 @@ namespace hipr {
 // The camera as the kernels see it (FrameParams' camera fields), for an image of this aspect.
 abi::ViewFrame view_frame(const Camera& camera, float aspect);
 
-abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu, const RenderSettings& settings);
+abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu,
+                                   const RenderSettings& settings);
 
 // Copies the discovery parameters into `frame` (the rest stays).
 void set_discovery_parameters(abi::FrameParams& frame, const HiprParameters& parameters);

@@ -5,9 +5,12 @@
 
 namespace hipr {
 
-GBufferPass::GBufferPass(const vk::Context& ctx, const GpuScene& scene, uint32_t width, uint32_t height)
-    : current(ctx, size_t(width) * height * sizeof(abi::GBufferTexel), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      previous(ctx, size_t(width) * height * sizeof(abi::GBufferTexel), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+GBufferPass::GBufferPass(const vk::Context& ctx, const GpuScene& scene, uint32_t width,
+                         uint32_t height)
+    : current(ctx, size_t(width) * height * sizeof(abi::GBufferTexel),
+              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      previous(ctx, size_t(width) * height * sizeof(abi::GBufferTexel),
+               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_ctx(ctx),
       m_scene(scene),
       m_width(width),
@@ -15,9 +18,10 @@ GBufferPass::GBufferPass(const vk::Context& ctx, const GpuScene& scene, uint32_t
 
 void GBufferPass::record(VkCommandBuffer cmd) {
   if (!m_visibility)
-    m_visibility = std::make_unique<vk::ComputePipeline>(m_ctx, "visibility.comp", vk::ShaderDefines{},
-                                                         std::vector<vk::BufferBinding>{{abi::kVisibilityGBuffer, &current}},
-                                                         0, &m_scene.descriptor_set());
+    m_visibility = std::make_unique<vk::ComputePipeline>(
+        m_ctx, "visibility.comp", vk::ShaderDefines{},
+        std::vector<vk::BufferBinding>{{abi::kVisibilityGBuffer, &current}}, 0,
+        &m_scene.descriptor_set());
   m_visibility->dispatch(cmd, nullptr, groups_for(m_width * m_height));
   m_current = true;
 }

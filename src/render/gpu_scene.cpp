@@ -21,12 +21,15 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
   build_blases(scene);
   upload_environment(scene);
   bsdf_tables = vk::make_storage_buffer(ctx, bsdf_table_data());
-  frame_buffer = vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1), 0, vk::MemoryUse::Shared);
+  frame_buffer =
+      vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1), 0, vk::MemoryUse::Shared);
   std::vector<vk::BindingSlot> slots;
-  if (!ctx.software_traversal()) slots.push_back({abi::kSceneTlas, vk::BindingKind::AccelerationStructure});
+  if (!ctx.software_traversal())
+    slots.push_back({abi::kSceneTlas, vk::BindingKind::AccelerationStructure});
   for (uint32_t b = abi::kScenePositions; b <= abi::kSceneFrame; ++b) slots.push_back({b});
   if (ctx.software_traversal())
-    for (uint32_t b = abi::kSceneBlasNodes; b <= abi::kSceneTlasInstances; ++b) slots.push_back({b});
+    for (uint32_t b = abi::kSceneBlasNodes; b <= abi::kSceneTlasInstances; ++b)
+      slots.push_back({b});
   m_set = std::make_unique<vk::DescriptorSet>(ctx, slots);
   update_instances(scene);  // gives the instances their records: in a fresh upload, in order
 }
@@ -35,7 +38,8 @@ void GpuScene::upload_material_groups(const Scene& scene) {
   // Materials an edit brought in emit into no group (light_groups.h). Never empty: a buffer of
   // no bytes cannot be bound.
   std::vector<uint32_t> table(std::max<size_t>(scene.materials.size(), 1), kNoLightGroup);
-  for (size_t m = 0; m < std::min(table.size(), m_groups.material.size()); ++m) table[m] = m_groups.material[m];
+  for (size_t m = 0; m < std::min(table.size(), m_groups.material.size()); ++m)
+    table[m] = m_groups.material[m];
   if (vk::write_storage_buffer(m_ctx, material_groups, table)) ++m_layout_generation;
 }
 
@@ -69,7 +73,8 @@ void GpuScene::assign_records(const Scene& scene, const std::vector<Instance>& i
   std::unordered_map<uint32_t, Slot> kept;
   for (const Instance& instance : instances) {
     const auto it = m_slots.find(instance.node);
-    if (it != m_slots.end() && it->second.mesh == instance.mesh && it->second.count == m_ranges[instance.mesh].size()) {
+    if (it != m_slots.end() && it->second.mesh == instance.mesh &&
+        it->second.count == m_ranges[instance.mesh].size()) {
       kept.emplace(instance.node, it->second);
       m_slots.erase(it);
     }
@@ -86,8 +91,10 @@ void GpuScene::assign_records(const Scene& scene, const std::vector<Instance>& i
   std::sort(m_free.begin(), m_free.end());
   std::vector<std::pair<uint32_t, uint32_t>> merged;
   for (const auto& range : m_free) {
-    if (!merged.empty() && merged.back().first + merged.back().second == range.first) merged.back().second += range.second;
-    else merged.push_back(range);
+    if (!merged.empty() && merged.back().first + merged.back().second == range.first)
+      merged.back().second += range.second;
+    else
+      merged.push_back(range);
   }
   m_free = std::move(merged);
   m_slots = std::move(kept);
@@ -99,21 +106,25 @@ void GpuScene::assign_records(const Scene& scene, const std::vector<Instance>& i
     const Instance& instance = instances[i];
     const uint32_t count = uint32_t(m_ranges[instance.mesh].size());
     auto it = m_slots.find(instance.node);
-    if (it == m_slots.end()) it = m_slots.emplace(instance.node, Slot{allocate_records(count), count, instance.mesh}).first;
+    if (it == m_slots.end())
+      it =
+          m_slots.emplace(instance.node, Slot{allocate_records(count), count, instance.mesh}).first;
     m_record_base[i] = it->second.base;
     const Mesh& mesh = scene.meshes[instance.mesh];
     for (uint32_t p = 0; p < count; ++p) {
       const PrimitiveRange& range = m_ranges[instance.mesh][p];
       const uint32_t r = it->second.base + p;
-      m_records[r] = {mesh.primitives[p].material, range.first_index, range.vertex_offset, abi::kInvalidIndex, identity++};
+      m_records[r] = {mesh.primitives[p].material, range.first_index, range.vertex_offset,
+                      abi::kInvalidIndex, identity++};
       m_record_instance[r] = uint32_t(i);
       m_record_node[r] = instance.node;
     }
   }
   if (!geometries || m_records.size() != capacity) {
     // Never empty: a buffer of no bytes cannot be bound.
-    geometries = vk::make_storage_buffer(m_ctx, m_records.empty() ? std::vector<abi::GeometryRecord>(1) : m_records, 0,
-                                         vk::MemoryUse::Shared);
+    geometries = vk::make_storage_buffer(
+        m_ctx, m_records.empty() ? std::vector<abi::GeometryRecord>(1) : m_records, 0,
+        vk::MemoryUse::Shared);
     ++m_layout_generation;
   }
 }
@@ -134,10 +145,12 @@ void GpuScene::bind_set() {
     m_set->bind_acceleration_structure(abi::kSceneTlas, m_tlas.structure.handle());
   }
   const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
-      {abi::kScenePositions, &positions},   {abi::kSceneNormals, &normals},       {abi::kSceneTangents, &tangents},
-      {abi::kSceneUvs, &uvs},               {abi::kSceneIndices, &indices},       {abi::kSceneGeometries, &geometries},
-      {abi::kSceneMaterials, &materials},   {abi::kSceneTextures, &textures},     {abi::kSceneTexels, &texels},
-      {abi::kSceneLights, &lights},         {abi::kSceneLightCdf, &light_cdf},    {abi::kSceneEnvironment, &environment},
+      {abi::kScenePositions, &positions},    {abi::kSceneNormals, &normals},
+      {abi::kSceneTangents, &tangents},      {abi::kSceneUvs, &uvs},
+      {abi::kSceneIndices, &indices},        {abi::kSceneGeometries, &geometries},
+      {abi::kSceneMaterials, &materials},    {abi::kSceneTextures, &textures},
+      {abi::kSceneTexels, &texels},          {abi::kSceneLights, &lights},
+      {abi::kSceneLightCdf, &light_cdf},     {abi::kSceneEnvironment, &environment},
       {abi::kSceneBsdfTables, &bsdf_tables}, {abi::kSceneFrame, &frame_buffer},
   };
   for (const auto& [binding, buffer] : buffers) m_set->bind_buffer(binding, *buffer);
@@ -152,7 +165,8 @@ void GpuScene::upload_geometry(const Scene& scene) {
   m_ranges.assign(scene.meshes.size(), {});
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     for (const MeshPrimitive& p : scene.meshes[m].primitives) {
-      if (all_positions.size() + p.positions.size() > UINT32_MAX || all_indices.size() + p.indices.size() > UINT32_MAX)
+      if (all_positions.size() + p.positions.size() > UINT32_MAX ||
+          all_indices.size() + p.indices.size() > UINT32_MAX)
         throw InputError("scene is too large (more than 4G vertices or indices)");
       m_ranges[m].push_back({uint32_t(all_indices.size()), uint32_t(all_positions.size()),
                              uint32_t(p.indices.size() / 3), uint32_t(p.positions.size())});
@@ -166,7 +180,9 @@ void GpuScene::upload_geometry(const Scene& scene) {
   }
   // Acceleration-structure builds read positions and indices (ray queries only).
   const VkBufferUsageFlags build_input =
-      m_ctx.software_traversal() ? 0 : VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR;
+      m_ctx.software_traversal()
+          ? 0
+          : VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR;
   positions = vk::make_storage_buffer(m_ctx, all_positions, build_input);
   normals = vk::make_storage_buffer(m_ctx, all_normals);
   tangents = vk::make_storage_buffer(m_ctx, all_tangents);
@@ -189,13 +205,16 @@ bool GpuScene::build_blases(const Scene& scene) {
   const Timer timer;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     std::vector<bool> opaque;
-    for (const MeshPrimitive& p : scene.meshes[m].primitives) opaque.push_back(material_is_opaque(scene.materials[p.material].params));
+    for (const MeshPrimitive& p : scene.meshes[m].primitives)
+      opaque.push_back(material_is_opaque(scene.materials[p.material].params));
     m_info.cutout_geometries += size_t(std::count(opaque.begin(), opaque.end(), false));
     if (m_ranges[m].empty()) {
       m_has_blas[m] = false;
       continue;
     }
-    if (m_has_blas[m] && opaque == m_blas_opaque[m] && m_blas_revision[m] == scene.meshes[m].revision) continue;
+    if (m_has_blas[m] && opaque == m_blas_opaque[m] &&
+        m_blas_revision[m] == scene.meshes[m].revision)
+      continue;
     rebuilt = true;
     if (m_ctx.software_traversal()) {
       m_software.set_mesh(m, scene.meshes[m], opaque);
@@ -203,9 +222,10 @@ bool GpuScene::build_blases(const Scene& scene) {
       std::vector<vk::TriangleGeometry> geometry;
       for (size_t p = 0; p < m_ranges[m].size(); ++p) {
         const PrimitiveRange& r = m_ranges[m][p];
-        geometry.push_back({positions.address() + VkDeviceAddress(r.vertex_offset) * sizeof(glm::vec3), r.vertex_count,
-                            indices.address() + VkDeviceAddress(r.first_index) * sizeof(uint32_t), r.triangle_count,
-                            opaque[p]});
+        geometry.push_back(
+            {positions.address() + VkDeviceAddress(r.vertex_offset) * sizeof(glm::vec3),
+             r.vertex_count, indices.address() + VkDeviceAddress(r.first_index) * sizeof(uint32_t),
+             r.triangle_count, opaque[p]});
       }
       m_blas[m] = vk::build_blas(m_ctx, geometry);
     }
@@ -227,7 +247,8 @@ void GpuScene::upload_textures(const Scene& scene) {
   while (kept < std::min(m_image_revision.size(), scene.images.size()) &&
          m_image_revision[kept] == scene.images[kept].revision)
     ++kept;
-  const size_t kept_texels = kept == 0 ? 0 : m_image_offset[kept - 1] + scene.images[kept - 1].rgba8.size() / 4;
+  const size_t kept_texels =
+      kept == 0 ? 0 : m_image_offset[kept - 1] + scene.images[kept - 1].rgba8.size() / 4;
   m_image_offset.resize(kept);
   m_image_revision.resize(kept);
   std::vector<uint32_t> added;  // the texels of the images after the kept ones
@@ -240,21 +261,24 @@ void GpuScene::upload_textures(const Scene& scene) {
     std::memcpy(added.data() + start, image.rgba8.data(), image.rgba8.size() / 4 * 4);
   }
   if (!texels || !added.empty()) {
-    vk::Buffer grown(m_ctx, VkDeviceSize(kept_texels + added.size()) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    vk::Buffer grown(m_ctx, VkDeviceSize(kept_texels + added.size()) * sizeof(uint32_t),
+                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     if (kept_texels > 0)
       m_ctx.submit_and_wait([&](VkCommandBuffer cmd) {
         const VkBufferCopy region{0, 0, VkDeviceSize(kept_texels) * sizeof(uint32_t)};
         vkCmdCopyBuffer(cmd, texels.handle(), grown.handle(), 1, &region);
       });
     if (!added.empty())
-      grown.upload(added.data(), added.size() * sizeof(uint32_t), VkDeviceSize(kept_texels) * sizeof(uint32_t));
+      grown.upload(added.data(), added.size() * sizeof(uint32_t),
+                   VkDeviceSize(kept_texels) * sizeof(uint32_t));
     texels = std::move(grown);
   }
   std::vector<abi::TextureInfo> infos;
   for (const Texture& t : scene.textures) {
     if (t.image >= scene.images.size()) throw InternalError("texture references a missing image");
     const Image& image = scene.images[t.image];
-    infos.push_back({m_image_offset[t.image], image.width, image.height, t.flags, t.uv_transform_u, t.uv_transform_v});
+    infos.push_back({m_image_offset[t.image], image.width, image.height, t.flags, t.uv_transform_u,
+                     t.uv_transform_v});
   }
   textures = vk::make_storage_buffer(m_ctx, infos);
 }
@@ -293,11 +317,12 @@ void GpuScene::update_instances(const Scene& scene) {
     // hardware's notion of front faces consistent for mirroring transforms.
     const bool mirrored = glm::determinant(glm::mat3(instance.world)) < 0.0f;
     if (!m_ctx.software_traversal())
-      tlas_instances.push_back({affine_rows(instance.world), m_record_base[i], m_blas[instance.mesh].address(),
-                                !mirrored, instance.visible});
+      tlas_instances.push_back({affine_rows(instance.world), m_record_base[i],
+                                m_blas[instance.mesh].address(), !mirrored, instance.visible});
     if (!instance.visible) continue;
     m_info.instance_count += 1;
-    for (const PrimitiveRange& r : m_ranges[instance.mesh]) m_info.triangle_count += r.triangle_count;
+    for (const PrimitiveRange& r : m_ranges[instance.mesh])
+      m_info.triangle_count += r.triangle_count;
   }
   // An empty TLAS is valid and makes every ray miss.
   if (m_ctx.software_traversal())
@@ -309,8 +334,9 @@ void GpuScene::update_instances(const Scene& scene) {
 
 void GpuScene::upload_environment(const Scene& scene) {
   m_environment_mean = scene.environment ? environment_mean_luminance(*scene.environment) : 0.0f;
-  environment = vk::make_storage_buffer(m_ctx, scene.environment ? build_environment_buffer(*scene.environment)
-                                                                 : std::vector<float>{});
+  environment = vk::make_storage_buffer(m_ctx, scene.environment
+                                                   ? build_environment_buffer(*scene.environment)
+                                                   : std::vector<float>{});
 }
 
 void GpuScene::update_environment(const Scene& scene) {
@@ -321,7 +347,8 @@ void GpuScene::update_environment(const Scene& scene) {
 void GpuScene::update_lights(const Scene& scene) {
   m_lights = build_light_tables(scene, scene.instances(), m_record_base, uint32_t(m_records.size()),
                                 m_info.scene_radius, m_environment_mean, m_groups);
-  for (size_t r = 0; r < m_records.size(); ++r) m_records[r].lightOffset = m_lights.record_light_offset[r];
+  for (size_t r = 0; r < m_records.size(); ++r)
+    m_records[r].lightOffset = m_lights.record_light_offset[r];
   geometries.upload(m_records.data(), m_records.size() * sizeof(abi::GeometryRecord));
   m_info.light_count = m_lights.lights.size();
   vk::write_storage_buffer(m_ctx, lights, m_lights.lights);

@@ -1,9 +1,9 @@
 #pragma once
 // The scene as the kernels see it: shared vertex/index buffers, one BLAS per mesh, a TLAS of
-// instances (or, without ray queries, hipr's own two-level BVH), material/texture/light tables, the environment, the BSDF tables and the frame
-// parameters, all in one descriptor set (set 1 of every kernel that reads the scene:
-// shaders/shared/bindings/scene.h). Edits update only what they touch (geometry, materials,
-// instances + lights, or lights alone) and the set follows.
+// instances (or, without ray queries, hipr's own two-level BVH), material/texture/light tables, the
+// environment, the BSDF tables and the frame parameters, all in one descriptor set (set 1 of every
+// kernel that reads the scene: shaders/shared/bindings/scene.h). Edits update only what they touch
+// (geometry, materials, instances + lights, or lights alone) and the set follows.
 //
 // Records (one per instance and primitive) keep their index while their instance stays in the
 // scene: the G-buffers and the display name surfaces by record, and must go on meaning the same
@@ -74,7 +74,9 @@ class GpuScene {
   uint32_t record_count() const { return uint32_t(m_records.size()); }
   // Whether a record's material is view-dependent (material_is_view_dependent), as of the last
   // material update.
-  bool record_view_dependent(uint32_t record) const { return m_material_view_dependent[m_records[record].materialIndex] != 0; }
+  bool record_view_dependent(uint32_t record) const {
+    return m_material_view_dependent[m_records[record].materialIndex] != 0;
+  }
 
   vk::Buffer positions, normals, tangents, uvs, indices;
   vk::Buffer geometries, materials, textures, texels;
@@ -119,21 +121,22 @@ class GpuScene {
   SceneStats m_info;
   LightTables m_lights;
   LightGroups m_groups;
-  float m_environment_mean = 0.0f;  // environment_mean_luminance of the map uploaded last (light power)
+  float m_environment_mean =
+      0.0f;  // environment_mean_luminance of the map uploaded last (light power)
   std::vector<std::vector<PrimitiveRange>> m_ranges;  // per mesh, per primitive
   std::vector<vk::AccelerationStructure> m_blas;      // one per mesh (empty meshes: none)
   std::vector<bool> m_has_blas;
-  std::vector<std::vector<bool>> m_blas_opaque;       // per mesh, per primitive, as built
-  std::vector<uint64_t> m_blas_revision;              // per mesh: Mesh::revision as built
-  std::vector<uint32_t> m_image_offset;    // per image: its first texel in `texels`
+  std::vector<std::vector<bool>> m_blas_opaque;  // per mesh, per primitive, as built
+  std::vector<uint64_t> m_blas_revision;         // per mesh: Mesh::revision as built
+  std::vector<uint32_t> m_image_offset;          // per image: its first texel in `texels`
   std::vector<uint64_t> m_image_revision;  // per image: Image::revision of what `texels` holds
   uint64_t m_layout_generation = 0, m_records_generation = 0;
-  std::unordered_map<uint32_t, Slot> m_slots;             // per node with an instance
-  std::vector<std::pair<uint32_t, uint32_t>> m_free;      // free records: (base, count)
+  std::unordered_map<uint32_t, Slot> m_slots;         // per node with an instance
+  std::vector<std::pair<uint32_t, uint32_t>> m_free;  // free records: (base, count)
   std::vector<abi::GeometryRecord> m_records;
-  std::vector<uint32_t> m_record_base;      // per instance
-  std::vector<uint32_t> m_record_instance;  // per record
-  std::vector<uint32_t> m_record_node;      // per record
+  std::vector<uint32_t> m_record_base;             // per instance
+  std::vector<uint32_t> m_record_instance;         // per record
+  std::vector<uint32_t> m_record_node;             // per record
   std::vector<uint8_t> m_material_view_dependent;  // per material
   vk::Tlas m_tlas;
   SoftwareBvh m_software;  // instead of m_blas and m_tlas on a device without ray queries

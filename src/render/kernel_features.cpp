@@ -11,9 +11,10 @@ using M = MaterialParameters;
 bool has_texture(const M& m) {
   for (uint32_t texture :
        {m.base_color_texture, m.metallic_roughness_texture, m.normal_texture, m.emission_texture,
-        m.transmission_texture, m.clearcoat_texture, m.clearcoat_roughness_texture, m.clearcoat_normal_texture,
-        m.sheen_color_texture, m.sheen_roughness_texture, m.specular_texture, m.specular_color_texture,
-        m.iridescence_texture, m.iridescence_thickness_texture, m.anisotropy_texture})
+        m.transmission_texture, m.clearcoat_texture, m.clearcoat_roughness_texture,
+        m.clearcoat_normal_texture, m.sheen_color_texture, m.sheen_roughness_texture,
+        m.specular_texture, m.specular_color_texture, m.iridescence_texture,
+        m.iridescence_thickness_texture, m.anisotropy_texture})
     if (texture != abi::kInvalidIndex) return true;
   return false;
 }
@@ -31,40 +32,44 @@ bool is_emissive(const M& m) {
 
 const std::vector<KernelFeature>& kernel_feature_table() {
   static const std::vector<KernelFeature> table = {
-      // Fully metal has no dielectric specular, unless a metallic-roughness texture lowers the metalness.
+      // Fully metal has no dielectric specular, unless a metallic-roughness texture lowers the
+      // metalness.
       {1u << 0, "HIPR_FEATURE_SPECULAR", "specular",
        [](const M& m) {
          return m.specular_weight > 0.0f &&
                 (m.base_metalness < 1.0f || m.metallic_roughness_texture != abi::kInvalidIndex);
        },
        nullptr, true},
-      {1u << 1, "HIPR_FEATURE_METAL", "metal", [](const M& m) { return m.base_metalness > 0.0f; }, nullptr, true},
+      {1u << 1, "HIPR_FEATURE_METAL", "metal", [](const M& m) { return m.base_metalness > 0.0f; },
+       nullptr, true},
       {1u << 2, "HIPR_FEATURE_TRANSMISSION", "transmission",
        [](const M& m) { return m.transmission_weight > 0.0f; }, nullptr, true},
-      {1u << 3, "HIPR_FEATURE_SUBSURFACE", "subsurface", [](const M& m) { return m.subsurface_weight > 0.0f; },
+      {1u << 3, "HIPR_FEATURE_SUBSURFACE", "subsurface",
+       [](const M& m) { return m.subsurface_weight > 0.0f; }, nullptr, true},
+      {1u << 4, "HIPR_FEATURE_COAT", "coat", [](const M& m) { return m.coat_weight > 0.0f; },
        nullptr, true},
-      {1u << 4, "HIPR_FEATURE_COAT", "coat", [](const M& m) { return m.coat_weight > 0.0f; }, nullptr, true},
-      {1u << 5, "HIPR_FEATURE_FUZZ", "fuzz", [](const M& m) { return m.fuzz_weight > 0.0f; }, nullptr, true},
-      {1u << 6, "HIPR_FEATURE_THIN_FILM", "thin film", [](const M& m) { return m.thin_film_weight > 0.0f; },
+      {1u << 5, "HIPR_FEATURE_FUZZ", "fuzz", [](const M& m) { return m.fuzz_weight > 0.0f; },
        nullptr, true},
+      {1u << 6, "HIPR_FEATURE_THIN_FILM", "thin film",
+       [](const M& m) { return m.thin_film_weight > 0.0f; }, nullptr, true},
       {1u << 7, "HIPR_FEATURE_DIFFUSE_ROUGHNESS", "diffuse roughness",
        [](const M& m) { return m.base_diffuse_roughness > 0.0f; }, nullptr, true},
-      {1u << 8, "HIPR_FEATURE_ANISOTROPY", "anisotropy", [](const M& m) { return m.specular_anisotropy > 0.0f; },
-       nullptr, true},
+      {1u << 8, "HIPR_FEATURE_ANISOTROPY", "anisotropy",
+       [](const M& m) { return m.specular_anisotropy > 0.0f; }, nullptr, true},
       {1u << 9, "HIPR_FEATURE_TEXTURES", "textures", has_texture, nullptr, false},
       {1u << 10, "HIPR_FEATURE_NORMAL_MAP", "normal maps",
        [](const M& m) {
-         return m.normal_texture != abi::kInvalidIndex || m.clearcoat_normal_texture != abi::kInvalidIndex;
+         return m.normal_texture != abi::kInvalidIndex ||
+                m.clearcoat_normal_texture != abi::kInvalidIndex;
        },
        nullptr, false},
       {1u << 11, "HIPR_FEATURE_EMISSION", "emissive triangles", is_emissive, nullptr, false},
       {1u << 12, "HIPR_FEATURE_PUNCTUAL_LIGHTS", "punctual lights", nullptr,
-       [](const Scene& s) { return !s.light_nodes().empty(); },
-       false},
+       [](const Scene& s) { return !s.light_nodes().empty(); }, false},
       {1u << 13, "HIPR_FEATURE_ENVIRONMENT", "environment", nullptr,
        [](const Scene& s) { return s.environment.has_value(); }, false},
-      {1u << 14, "HIPR_FEATURE_CUTOUT", "opacity cutout", [](const M& m) { return !material_is_opaque(m); },
-       nullptr, false},
+      {1u << 14, "HIPR_FEATURE_CUTOUT", "opacity cutout",
+       [](const M& m) { return !material_is_opaque(m); }, nullptr, false},
       {1u << 15, "HIPR_FEATURE_VOLUME", "volume absorption",
        [](const M& m) {
          return m.transmission_weight > 0.0f && m.transmission_depth > 0.0f &&
@@ -105,7 +110,8 @@ uint32_t kernel_feature_bit(const std::string& define) {
 
 vk::ShaderDefines kernel_feature_defines(uint32_t features) {
   vk::ShaderDefines defines;
-  for (const KernelFeature& f : kernel_feature_table()) defines.emplace_back(f.define, (features & f.bit) ? "1" : "0");
+  for (const KernelFeature& f : kernel_feature_table())
+    defines.emplace_back(f.define, (features & f.bit) ? "1" : "0");
   return defines;
 }
 

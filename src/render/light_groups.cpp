@@ -21,7 +21,8 @@ LightGroups assign_light_groups(const Scene& scene, uint32_t budget) {
   };
   if (scene.environment) add(groups.environment, "environment");
   for (uint32_t n : scene.light_nodes())
-    add(groups.node[n], "light " + (scene.nodes[n].name.empty() ? "#" + std::to_string(n) : scene.nodes[n].name));
+    add(groups.node[n],
+        "light " + (scene.nodes[n].name.empty() ? "#" + std::to_string(n) : scene.nodes[n].name));
   // Emissive materials that some instance (shown or hidden) uses.
   std::vector<bool> used(scene.materials.size(), false);
   for (const Instance& instance : scene.instances())
@@ -29,7 +30,8 @@ LightGroups assign_light_groups(const Scene& scene, uint32_t budget) {
   for (size_t m = 0; m < scene.materials.size(); ++m)
     if (used[m] && material_emits(scene.materials[m].params))
       add(groups.material[m],
-          "emission " + (scene.materials[m].name.empty() ? "#" + std::to_string(m) : scene.materials[m].name));
+          "emission " + (scene.materials[m].name.empty() ? "#" + std::to_string(m)
+                                                         : scene.materials[m].name));
   // A scene without an environment may get one by an edit (the viewer's Environment panel): a
   // group left over is kept for it, so that its intensity is relit too.
   if (!scene.environment && groups.count < budget) {
@@ -39,12 +41,13 @@ LightGroups assign_light_groups(const Scene& scene, uint32_t budget) {
   return groups;
 }
 
-std::optional<std::vector<glm::vec3>> LightGroups::factors(const std::vector<EmitterScale>& scales) const {
+std::optional<std::vector<glm::vec3>> LightGroups::factors(
+    const std::vector<EmitterScale>& scales) const {
   std::vector<glm::vec3> result(count, glm::vec3(1.0f));
   for (const EmitterScale& s : scales) {
     const uint32_t group = s.kind == EmitterScale::Kind::Environment     ? environment
                            : s.kind == EmitterScale::Kind::PunctualLight ? of_node(s.index)
-                                                                          : of_material(s.index);
+                                                                         : of_material(s.index);
     if (group == kNoLightGroup) return std::nullopt;
     result[group] *= s.factor;
   }

@@ -22,10 +22,10 @@ inline constexpr uint32_t kNoLightGroup = 0xffffffffu;
 struct LightGroups {
   uint32_t count = 0;
   uint32_t environment = kNoLightGroup;  // group of the environment
-  std::vector<uint32_t> node;      // per node: group of its punctual light
-  std::vector<uint32_t> material;  // per material: group of its emission
-  std::vector<std::string> names;  // per group: "environment", "light lamp", "emission light"
-  std::vector<std::string> pooled; // emitters over the budget, named alike
+  std::vector<uint32_t> node;            // per node: group of its punctual light
+  std::vector<uint32_t> material;        // per material: group of its emission
+  std::vector<std::string> names;        // per group: "environment", "light lamp", "emission light"
+  std::vector<std::string> pooled;       // emitters over the budget, named alike
 
   uint32_t of_node(size_t n) const { return n < node.size() ? node[n] : kNoLightGroup; }
   uint32_t of_material(size_t m) const { return m < material.size() ? material[m] : kNoLightGroup; }

@@ -10,7 +10,9 @@ constexpr float kPi = 3.14159265358979f;
 
 float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
-glm::vec3 emission_of(const MaterialParameters& m) { return m.emission_color * m.emission_luminance; }
+glm::vec3 emission_of(const MaterialParameters& m) {
+  return m.emission_color * m.emission_luminance;
+}
 
 glm::vec3 light_direction(const glm::mat4& world) {
   // KHR_lights_punctual: lights shine down their local -Z.
@@ -41,20 +43,25 @@ abi::Light punctual_light(const PunctualLight& src, const glm::mat4& world) {
   light.range = src.range;
   light.group = abi::kInvalidIndex;
   switch (src.type) {
-    case LightType::Point: light.type = abi::kLightPoint; break;
+    case LightType::Point:
+      light.type = abi::kLightPoint;
+      break;
     case LightType::Spot:
       light.type = abi::kLightSpot;
       light.spotCosOuter = std::cos(src.outer_cone);
       light.spotCosInner = std::cos(src.inner_cone);
       break;
-    case LightType::Directional: light.type = abi::kLightDirectional; break;
+    case LightType::Directional:
+      light.type = abi::kLightDirectional;
+      break;
   }
   return light;
 }
 
 LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& instances,
                                const std::vector<uint32_t>& record_base, uint32_t record_count,
-                               float scene_radius, float environment_mean, const LightGroups& groups) {
+                               float scene_radius, float environment_mean,
+                               const LightGroups& groups) {
   LightTables t;
   t.record_light_offset.assign(record_count, abi::kInvalidIndex);
   std::vector<double> power;
@@ -73,9 +80,12 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
       // light index = offset + primitive holds on the GPU.
       t.record_light_offset[record_base[i] + p] = uint32_t(t.lights.size());
       for (size_t tri = 0; tri < prim.indices.size() / 3; ++tri) {
-        const glm::vec3 a = glm::vec3(instance.world * glm::vec4(prim.positions[prim.indices[3 * tri]], 1.0f));
-        const glm::vec3 b = glm::vec3(instance.world * glm::vec4(prim.positions[prim.indices[3 * tri + 1]], 1.0f));
-        const glm::vec3 c = glm::vec3(instance.world * glm::vec4(prim.positions[prim.indices[3 * tri + 2]], 1.0f));
+        const glm::vec3 a =
+            glm::vec3(instance.world * glm::vec4(prim.positions[prim.indices[3 * tri]], 1.0f));
+        const glm::vec3 b =
+            glm::vec3(instance.world * glm::vec4(prim.positions[prim.indices[3 * tri + 1]], 1.0f));
+        const glm::vec3 c =
+            glm::vec3(instance.world * glm::vec4(prim.positions[prim.indices[3 * tri + 2]], 1.0f));
         abi::Light light{};
         light.type = abi::kLightTriangle;
         light.geometryRecord = record_base[i] + uint32_t(p);
@@ -99,9 +109,15 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
     light.group = groups.of_node(n);
     const double lum = luminance(light.intensity);
     switch (light.type) {
-      case abi::kLightPoint: power.push_back(4.0 * kPi * lum); break;
-      case abi::kLightSpot: power.push_back(2.0 * kPi * (1.0 - light.spotCosOuter) * lum); break;
-      default: power.push_back(lum * kPi * scene_radius * scene_radius); break;  // directional
+      case abi::kLightPoint:
+        power.push_back(4.0 * kPi * lum);
+        break;
+      case abi::kLightSpot:
+        power.push_back(2.0 * kPi * (1.0 - light.spotCosOuter) * lum);
+        break;
+      default:
+        power.push_back(lum * kPi * scene_radius * scene_radius);
+        break;  // directional
     }
     t.lights.push_back(light);
   }

@@ -11,7 +11,7 @@ namespace hipr {
 
 struct LightTables {
   std::vector<abi::Light> lights;
-  std::vector<float> cdf;                 // lights.size() + 1 entries, cdf[0] = 0, last = 1
+  std::vector<float> cdf;                     // lights.size() + 1 entries, cdf[0] = 0, last = 1
   std::vector<uint32_t> record_light_offset;  // per GeometryRecord: first Light, or kInvalidIndex
   uint32_t environment_index = abi::kInvalidIndex;
 };
@@ -23,7 +23,8 @@ struct LightTables {
 // every texel, and the tables are built again at every edit that moves or changes a light.
 LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& instances,
                                const std::vector<uint32_t>& record_base, uint32_t record_count,
-                               float scene_radius, float environment_mean, const LightGroups& groups = {});
+                               float scene_radius, float environment_mean,
+                               const LightGroups& groups = {});
 
 // A punctual light as the kernels see it, placed by its node's world transform (no group).
 abi::Light punctual_light(const PunctualLight& light, const glm::mat4& world);

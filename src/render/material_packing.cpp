@@ -5,7 +5,8 @@ namespace hipr {
 
 // The public flags and texture sentinel are the kernels' own values.
 static_assert(kNoTexture == abi::kInvalidIndex);
-static_assert(kMaterialDoubleSided == abi::kMaterialDoubleSided && kMaterialThinWalled == abi::kMaterialThinWalled &&
+static_assert(kMaterialDoubleSided == abi::kMaterialDoubleSided &&
+              kMaterialThinWalled == abi::kMaterialThinWalled &&
               kMaterialIgnoreTextureAlpha == abi::kMaterialIgnoreTextureAlpha);
 static_assert(kTextureSrgb == abi::kTextureSrgb && kTextureNearest == abi::kTextureNearest &&
               kTextureClampU == abi::kTextureClampU && kTextureClampV == abi::kTextureClampV &&

@@ -9,10 +9,11 @@ MaterialProbe::MaterialProbe(const vk::Context& ctx, const Scene& scene)
     : m_ctx(ctx),
       m_scene(ctx, scene),
       m_output(ctx, sizeof(abi::MaterialInputsProbe), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      m_probe(ctx, "material_probe.comp", {}, {{abi::kProbeOutput, &m_output}}, sizeof(abi::ProbePush),
-              &m_scene.descriptor_set()) {}
+      m_probe(ctx, "material_probe.comp", {}, {{abi::kProbeOutput, &m_output}},
+              sizeof(abi::ProbePush), &m_scene.descriptor_set()) {}
 
-abi::MaterialInputsProbe MaterialProbe::at(uint32_t record, uint32_t primitive, glm::vec2 barycentrics) const {
+abi::MaterialInputsProbe MaterialProbe::at(uint32_t record, uint32_t primitive,
+                                           glm::vec2 barycentrics) const {
   if (record >= m_scene.record_count()) throw InternalError("probe of a missing geometry record");
   const abi::ProbePush push{record, primitive, barycentrics};
   m_ctx.submit_and_wait([&](VkCommandBuffer cmd) { m_probe.dispatch(cmd, &push, 1); });

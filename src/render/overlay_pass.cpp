@@ -30,8 +30,9 @@ std::vector<uint32_t> id_channel_bytes() {
 
 }  // namespace
 
-OverlayPass::OverlayPass(const vk::Context& ctx, const GpuScene& scene, const OverlaySources& sources, uint32_t width,
-                         uint32_t height, uint32_t tile_size, uint32_t tiles_x, uint32_t tile_count)
+OverlayPass::OverlayPass(const vk::Context& ctx, const GpuScene& scene,
+                         const OverlaySources& sources, uint32_t width, uint32_t height,
+                         uint32_t tile_size, uint32_t tiles_x, uint32_t tile_count)
     : m_ctx(ctx),
       m_width(width),
       m_height(height),
@@ -64,17 +65,20 @@ void OverlayPass::update_records(const GpuScene& scene) {
 
 void OverlayPass::render(uint32_t mode, uint32_t selected_node, const vk::Buffer& output) {
   m_pipeline.bind_buffer(abi::kOverlayOutput, output);
-  abi::OverlayPush push{mode, selected_node, 0u, m_width, m_height, m_tile_size, m_tiles_x, m_tile_count};
+  abi::OverlayPush push{mode,     selected_node, 0u,        m_width,
+                        m_height, m_tile_size,   m_tiles_x, m_tile_count};
   m_ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     vk::compute_to_compute_barrier(cmd);  // the weights, flags and G-buffer of earlier work
-    if (mode == abi::kOverlayWeights) {  // the largest weight first: the heat map's scale
+    if (mode == abi::kOverlayWeights) {   // the largest weight first: the heat map's scale
       vkCmdFillBuffer(cmd, m_max_weight.handle(), 0, VK_WHOLE_SIZE, 0);
       vk::transfer_to_compute_barrier(cmd);
-      m_pipeline.dispatch(cmd, &push, (m_tile_count + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize);
+      m_pipeline.dispatch(cmd, &push,
+                          (m_tile_count + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize);
       vk::compute_to_compute_barrier(cmd);
     }
     push.pass = 1u;
-    m_pipeline.dispatch(cmd, &push, (m_width * m_height + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize);
+    m_pipeline.dispatch(cmd, &push,
+                        (m_width * m_height + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize);
   });
 }
 

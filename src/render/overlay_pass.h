@@ -21,8 +21,9 @@ struct OverlaySources {
 
 class OverlayPass {
  public:
-  OverlayPass(const vk::Context& ctx, const GpuScene& scene, const OverlaySources& sources, uint32_t width,
-              uint32_t height, uint32_t tile_size, uint32_t tiles_x, uint32_t tile_count);
+  OverlayPass(const vk::Context& ctx, const GpuScene& scene, const OverlaySources& sources,
+              uint32_t width, uint32_t height, uint32_t tile_size, uint32_t tiles_x,
+              uint32_t tile_count);
 
   // Writes the overlay (`mode`: abi::kOverlay*; `selected_node` outlined on top, kInvalidIndex:
   // none) into `output` (uint RGBA8 per pixel), submits and waits.

@@ -18,10 +18,14 @@ RadixSorter::RadixSorter(const vk::Context& ctx, uint32_t capacity)
       m_capacity(capacity),
       m_keys_alt(storage(ctx, size_t(capacity) * 4)),
       m_values_alt(storage(ctx, size_t(capacity) * 4)),
-      m_histogram(storage(ctx, size_t(abi::kSortRadix) * ((capacity + abi::kSortBlock - 1) / abi::kSortBlock) * 4)),
-      m_histogram_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "0"}}, bindings(), sizeof(abi::SortPush)),
-      m_scan_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "1"}}, bindings(), sizeof(abi::SortPush)),
-      m_scatter_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "2"}}, bindings(), sizeof(abi::SortPush)) {}
+      m_histogram(storage(
+          ctx, size_t(abi::kSortRadix) * ((capacity + abi::kSortBlock - 1) / abi::kSortBlock) * 4)),
+      m_histogram_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "0"}}, bindings(),
+                       sizeof(abi::SortPush)),
+      m_scan_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "1"}}, bindings(),
+                  sizeof(abi::SortPush)),
+      m_scatter_pass(ctx, "radix_sort.comp", {{"HIPR_SORT_STAGE", "2"}}, bindings(),
+                     sizeof(abi::SortPush)) {}
 
 std::vector<vk::BufferBinding> RadixSorter::bindings() const {
   return {{abi::kSortKeys, &keys},

@@ -7,9 +7,10 @@
 
 namespace hipr {
 
-RelightPass::RelightPass(const vk::Context& ctx, const Film& film, const ResolvePass& resolve, uint32_t light_groups,
-                         uint32_t width, uint32_t height)
-    : stale_groups(ctx, std::max<size_t>(size_t(width) * height * light_groups, 1) * sizeof(glm::vec3),
+RelightPass::RelightPass(const vk::Context& ctx, const Film& film, const ResolvePass& resolve,
+                         uint32_t light_groups, uint32_t width, uint32_t height)
+    : stale_groups(ctx,
+                   std::max<size_t>(size_t(width) * height * light_groups, 1) * sizeof(glm::vec3),
                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_groups(light_groups),
       m_pixels(width * height),
@@ -23,7 +24,8 @@ RelightPass::RelightPass(const vk::Context& ctx, const Film& film, const Resolve
 }
 
 void RelightPass::record(VkCommandBuffer cmd, const std::vector<glm::vec3>& factors) const {
-  if (factors.size() != m_groups) throw InternalError("relight: one factor per light group expected");
+  if (factors.size() != m_groups)
+    throw InternalError("relight: one factor per light group expected");
   abi::RelightPush push{};
   for (size_t g = 0; g < factors.size(); ++g) push.factors[g] = factors[g];
   push.pixelCount = m_pixels;

@@ -7,16 +7,16 @@
 
 #include <glm/glm.hpp>
 
-#include "render/resolve_pass.h"
 #include "render/film.h"
+#include "render/resolve_pass.h"
 #include "vk/compute_pipeline.h"
 
 namespace hipr {
 
 class RelightPass {
  public:
-  RelightPass(const vk::Context& ctx, const Film& film, const ResolvePass& resolve, uint32_t light_groups,
-              uint32_t width, uint32_t height);
+  RelightPass(const vk::Context& ctx, const Film& film, const ResolvePass& resolve,
+              uint32_t light_groups, uint32_t width, uint32_t height);
 
   // Records the relight: group g's share of each pixel's estimate scaled by factors[g] (one per
   // group). Run after the stale capture, before the pixels are marked owed.

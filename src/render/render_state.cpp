@@ -18,7 +18,8 @@ RenderState::RenderState(const vk::Context& c, const Scene& scene, const RenderS
       gpu(c, scene, s.light_groups),
       tiles(c, s),
       features(s.specialize_kernel ? hipr::kernel_features(scene) : all_kernel_features()),
-      film(c, s.width, s.height, gpu.light_groups().count, s.difference_estimate, gpu.descriptor_set(), tiles.flags),
+      film(c, s.width, s.height, gpu.light_groups().count, s.difference_estimate,
+           gpu.descriptor_set(), tiles.flags),
       // The display pass reads the G-buffer from the start (which surface a pixel shows), so
       // the G-buffers exist even in renders that never run HiPR's stages.
       gbuffers(c, gpu, s.width, s.height),
@@ -30,11 +31,13 @@ RenderState::~RenderState() = default;
 
 void RenderState::warm_up_trace() {
   if (!settings.compile_kernels_early) return;
-  ctx.submit_and_wait([&](VkCommandBuffer cmd) { trace.record(cmd, no_tile_push(trace, tiles.count())); });
+  ctx.submit_and_wait(
+      [&](VkCommandBuffer cmd) { trace.record(cmd, no_tile_push(trace, tiles.count())); });
 }
 
-void RenderState::trace_entries(const TracePass& pass, uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
-                                uint32_t require, uint32_t skip, std::optional<DisplayRule> then_resolve) const {
+void RenderState::trace_entries(const TracePass& pass, uint32_t offset, uint32_t count,
+                                uint32_t samples_per_pixel, uint32_t require, uint32_t skip,
+                                std::optional<DisplayRule> then_resolve) const {
   if (offset >= tiles.count() || count == 0) return;
   count = std::min(count, tiles.count() - offset);
   abi::TracePush push = pass.push(offset, count, samples_per_pixel);

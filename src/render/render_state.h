@@ -52,8 +52,9 @@ class RenderState {
   // Traces schedule entries [offset, offset + count) of the tiles whose flags pass
   // require/skip, with `pass` (the engine's trace, or a method's own trace pass), toward the
   // scheduler's round targets; resolves them when asked, in the same submission.
-  void trace_entries(const TracePass& pass, uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
-                     uint32_t require, uint32_t skip, std::optional<DisplayRule> then_resolve) const;
+  void trace_entries(const TracePass& pass, uint32_t offset, uint32_t count,
+                     uint32_t samples_per_pixel, uint32_t require, uint32_t skip,
+                     std::optional<DisplayRule> then_resolve) const;
 
   // The G-buffer exists from the start but is rendered on first need: a render that never asks
   // which surface a pixel shows never compiles the visibility kernel.

@@ -15,7 +15,9 @@
 
 namespace hipr {
 
-const char* sampler_name(Sampler sampler) { return sampler == Sampler::Random ? "random" : "sobol"; }
+const char* sampler_name(Sampler sampler) {
+  return sampler == Sampler::Random ? "random" : "sobol";
+}
 
 std::optional<Sampler> parse_sampler(std::string_view name) {
   if (name == "sobol") return Sampler::Sobol;
@@ -35,7 +37,8 @@ std::vector<uint8_t> bytes_of(const vk::Buffer& buffer) {
 }  // namespace
 
 struct Renderer::Impl : RenderState {
-  Impl(const vk::Context& c, const Scene& scene, const RenderSettings& s) : RenderState(c, scene, s), background(scene) {
+  Impl(const vk::Context& c, const Scene& scene, const RenderSettings& s)
+      : RenderState(c, scene, s), background(scene) {
     layout_seen = gpu.layout_generation();
     records_seen = gpu.records_generation();
     update_background(scene);
@@ -71,9 +74,10 @@ struct Renderer::Impl : RenderState {
 
   // Which tiles' camera rays cannot hit anything, for the scene's camera and instances.
   void update_background(const Scene& scene) {
-    tiles.set_background(settings.skip_background_tiles
-                             ? background.mask(scene, settings.width, settings.height, settings.tile_size)
-                             : std::vector<uint32_t>(tiles.count(), 0u));
+    tiles.set_background(
+        settings.skip_background_tiles
+            ? background.mask(scene, settings.width, settings.height, settings.tile_size)
+            : std::vector<uint32_t>(tiles.count(), 0u));
   }
 
   BackgroundTiles background;
@@ -83,9 +87,11 @@ struct Renderer::Impl : RenderState {
 };
 
 Renderer::Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
-  if (settings.width == 0 || settings.height == 0 || settings.width > 16384 || settings.height > 16384)
+  if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
+      settings.height > 16384)
     throw InputError("image size must be between 1x1 and 16384x16384");
-  if (settings.tile_size < 1 || settings.tile_size > 256) throw InputError("tile size must be between 1 and 256");
+  if (settings.tile_size < 1 || settings.tile_size > 256)
+    throw InputError("tile size must be between 1 and 256");
   m = std::make_unique<Impl>(ctx, scene, settings);
 }
 
@@ -111,7 +117,9 @@ void Renderer::add_samples(std::span<const uint32_t> tiles, uint32_t samples_per
   m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->trace.record(cmd, push); });
 }
 
-void Renderer::add_samples_full_frame(uint32_t samples_per_pixel) { add_samples(m->tiles.all(), samples_per_pixel); }
+void Renderer::add_samples_full_frame(uint32_t samples_per_pixel) {
+  add_samples(m->tiles.all(), samples_per_pixel);
+}
 
 void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
   m->gpu.reset_build_stats();
@@ -123,8 +131,10 @@ void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
   }
   m->ensure_features(scene);  // materials, lights, imports: anything may bring in a feature
   if (changes.environment_map) m->gpu.update_environment(scene);  // its light entry follows below
-  if (changes.transforms && !changes.geometry) m->gpu.update_instances(scene);  // includes the light tables
-  else if (changes.light_tables && !changes.geometry) m->gpu.update_lights(scene);
+  if (changes.transforms && !changes.geometry)
+    m->gpu.update_instances(scene);  // includes the light tables
+  else if (changes.light_tables && !changes.geometry)
+    m->gpu.update_lights(scene);
   if (changes.transforms || changes.geometry || changes.camera) m->update_background(scene);
   m->rebind_if_replaced();
   if (!changes.empty()) m->gbuffers.set_stale();
@@ -133,12 +143,14 @@ void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
 
 void Renderer::set_schedule(std::span<const uint32_t> order) { m->tiles.set_schedule(order); }
 
-void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel, bool skip_active,
-                               std::optional<DisplayRule> then_resolve) {
-  m->trace_entries(m->trace, offset, count, samples_per_pixel, 0u, skip_active ? abi::kTileActive : 0u, then_resolve);
+void Renderer::render_schedule(uint32_t offset, uint32_t count, uint32_t samples_per_pixel,
+                               bool skip_active, std::optional<DisplayRule> then_resolve) {
+  m->trace_entries(m->trace, offset, count, samples_per_pixel, 0u,
+                   skip_active ? abi::kTileActive : 0u, then_resolve);
 }
 
-void Renderer::render_lead(uint32_t offset, uint32_t count, std::optional<DisplayRule> then_resolve) {
+void Renderer::render_lead(uint32_t offset, uint32_t count,
+                           std::optional<DisplayRule> then_resolve) {
   if (m->sample_target.focus == 0 && m->sample_target.lead == 0) return;
   m->trace_entries(m->trace, offset, count, 1, abi::kTileLead, 0u, then_resolve);
 }
@@ -183,11 +195,14 @@ bool Renderer::relight(const std::vector<EmitterScale>& scales) {
 }
 
 void Renderer::resolve_display_all(DisplayRule rule) {
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->resolve.record(cmd, {abi::kInvalidIndex, tile_count()}, rule); });
+  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    m->resolve.record(cmd, {abi::kInvalidIndex, tile_count()}, rule);
+  });
 }
 
 void Renderer::capture_stale_display() {
-  m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->resolve.record_capture_stale(cmd, tile_count()); });
+  m->ctx.submit_and_wait(
+      [&](VkCommandBuffer cmd) { m->resolve.record_capture_stale(cmd, tile_count()); });
 }
 
 ImageRGB Renderer::displayed_image() const { return m->resolve.displayed_image(); }
@@ -198,21 +213,25 @@ RenderSnapshot Renderer::snapshot() const {
   std::vector<uint8_t> groups = bytes_of<glm::vec3>(m->film.group_sums);
   const std::vector<uint8_t> stale_groups = bytes_of<glm::vec3>(m->relight.stale_groups);
   groups.insert(groups.end(), stale_groups.begin(), stale_groups.end());
-  return {bytes_of<abi::PixelAccum>(m->film.accumulation), bytes_of<abi::DisplayTexel>(m->resolve.display),
-          std::move(groups), bytes_of<abi::DifferenceRecord>(m->film.difference),
+  return {bytes_of<abi::PixelAccum>(m->film.accumulation),
+          bytes_of<abi::DisplayTexel>(m->resolve.display), std::move(groups),
+          bytes_of<abi::DifferenceRecord>(m->film.difference),
           bytes_of<abi::TileJudgement>(m->resolve.judgements)};
 }
 
 void Renderer::restore(const RenderSnapshot& snapshot) {
   const size_t film_groups = m->film.group_sums.size();
-  if (snapshot.accumulation.size() != m->film.accumulation.size() || snapshot.display.size() != m->resolve.display.size() ||
+  if (snapshot.accumulation.size() != m->film.accumulation.size() ||
+      snapshot.display.size() != m->resolve.display.size() ||
       snapshot.light_groups.size() != film_groups + m->relight.stale_groups.size() ||
-      snapshot.difference.size() != m->film.difference.size() || snapshot.judgements.size() != m->resolve.judgements.size())
+      snapshot.difference.size() != m->film.difference.size() ||
+      snapshot.judgements.size() != m->resolve.judgements.size())
     throw InternalError("a snapshot of another image size");
   m->film.accumulation.upload(snapshot.accumulation.data(), snapshot.accumulation.size());
   m->resolve.display.upload(snapshot.display.data(), snapshot.display.size());
   m->film.group_sums.upload(snapshot.light_groups.data(), film_groups);
-  m->relight.stale_groups.upload(snapshot.light_groups.data() + film_groups, m->relight.stale_groups.size());
+  m->relight.stale_groups.upload(snapshot.light_groups.data() + film_groups,
+                                 m->relight.stale_groups.size());
   m->film.difference.upload(snapshot.difference.data(), snapshot.difference.size());
   m->resolve.judgements.upload(snapshot.judgements.data(), snapshot.judgements.size());
 }
@@ -242,19 +261,24 @@ Renderer::PixelHit Renderer::gbuffer_at(uint32_t x, uint32_t y) const {
   return {m->gpu.record_instance()[hit.record], hit.depth};
 }
 
-void Renderer::render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output) {
+void Renderer::render_overlay(DebugOverlay overlay, uint32_t selected_node,
+                              const vk::Buffer& output) {
   if (!m->overlays) {
     const OverlaySources sources{m->gbuffers.current, m->tiles.weights, m->tiles.flags,
                                  m->film.accumulation};
-    m->overlays = std::make_unique<OverlayPass>(m->ctx, m->gpu, sources, m->settings.width, m->settings.height,
-                                                m->settings.tile_size, tiles_x(), tile_count());
+    m->overlays = std::make_unique<OverlayPass>(m->ctx, m->gpu, sources, m->settings.width,
+                                                m->settings.height, m->settings.tile_size,
+                                                tiles_x(), tile_count());
   }
-  static constexpr uint32_t kModes[] = {abi::kOverlayNone, abi::kOverlayIds, abi::kOverlayWeights, abi::kOverlayOwed};
-  m->overlays->render(kModes[size_t(overlay)], selected_node == UINT32_MAX ? abi::kInvalidIndex : selected_node,
-                      output);
+  static constexpr uint32_t kModes[] = {abi::kOverlayNone, abi::kOverlayIds, abi::kOverlayWeights,
+                                        abi::kOverlayOwed};
+  m->overlays->render(kModes[size_t(overlay)],
+                      selected_node == UINT32_MAX ? abi::kInvalidIndex : selected_node, output);
 }
 
-std::vector<uint32_t> Renderer::tile_flags() const { return m->tiles.flags.download_all<uint32_t>(); }
+std::vector<uint32_t> Renderer::tile_flags() const {
+  return m->tiles.flags.download_all<uint32_t>();
+}
 
 std::vector<double> Renderer::tile_weights() const {
   const auto fixed = m->tiles.weights.download_all<uint64_t>();
@@ -263,7 +287,9 @@ std::vector<double> Renderer::tile_weights() const {
   return out;
 }
 
-std::vector<uint32_t> Renderer::schedule() const { return m->tiles.schedule.download_all<uint32_t>(); }
+std::vector<uint32_t> Renderer::schedule() const {
+  return m->tiles.schedule.download_all<uint32_t>();
+}
 
 std::vector<std::string> Renderer::light_group_names() const { return m->gpu.light_groups().names; }
 std::vector<std::string> Renderer::pooled_emitters() const { return m->gpu.light_groups().pooled; }

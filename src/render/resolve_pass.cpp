@@ -12,10 +12,14 @@ constexpr float kSwitchThreshold = 2.0f;
 // The kernel's rule (abi::kDisplay*). Without difference records the difference rule is blend.
 uint32_t kernel_rule(DisplayRule rule, bool difference) {
   switch (rule) {
-    case DisplayRule::Immediate: return abi::kDisplayImmediate;
-    case DisplayRule::Switch: return abi::kDisplaySwitch;
-    case DisplayRule::Blend: return abi::kDisplayBlend;
-    case DisplayRule::Difference: return difference ? abi::kDisplayDifference : abi::kDisplayBlend;
+    case DisplayRule::Immediate:
+      return abi::kDisplayImmediate;
+    case DisplayRule::Switch:
+      return abi::kDisplaySwitch;
+    case DisplayRule::Blend:
+      return abi::kDisplayBlend;
+    case DisplayRule::Difference:
+      return difference ? abi::kDisplayDifference : abi::kDisplayBlend;
   }
   return abi::kDisplayBlend;
 }
@@ -23,34 +27,40 @@ uint32_t kernel_rule(DisplayRule rule, bool difference) {
 // How many tiles around a judged tile hold pixels whose window reaches into it: show_display.comp
 // shows them again with it. Immediate shows each pixel by itself.
 uint32_t show_reach(uint32_t kernel_rule, uint32_t tile_size) {
-  return kernel_rule == abi::kDisplayImmediate ? 0u : (abi::kDisplayWindowRadius + tile_size - 1u) / tile_size;
+  return kernel_rule == abi::kDisplayImmediate
+             ? 0u
+             : (abi::kDisplayWindowRadius + tile_size - 1u) / tile_size;
 }
 
 }  // namespace
 
-ResolvePass::ResolvePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
-                         const GBufferPass& gbuffers, uint32_t width, uint32_t height)
-    : display(ctx, size_t(width) * height * sizeof(abi::DisplayTexel), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      judgements(ctx, size_t(tiles.count()) * sizeof(abi::TileJudgement), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+ResolvePass::ResolvePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles,
+                         const Film& film, const GBufferPass& gbuffers, uint32_t width,
+                         uint32_t height)
+    : display(ctx, size_t(width) * height * sizeof(abi::DisplayTexel),
+              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      judgements(ctx, size_t(tiles.count()) * sizeof(abi::TileJudgement),
+                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       m_gbuffers(gbuffers),
       m_width(width),
       m_height(height),
       m_difference(film.keeps_difference()),
       m_tile_count(tiles.count()),
       m_tile_size(tiles.tile_size()),
-      m_judge(ctx, "resolve_display.comp", {}, bindings(tiles, film, gbuffers), sizeof(abi::ResolvePush),
-              &scene.descriptor_set()),
-      m_show(ctx, "show_display.comp", {}, bindings(tiles, film, gbuffers), sizeof(abi::ResolvePush),
-             &scene.descriptor_set()) {
+      m_judge(ctx, "resolve_display.comp", {}, bindings(tiles, film, gbuffers),
+              sizeof(abi::ResolvePush), &scene.descriptor_set()),
+      m_show(ctx, "show_display.comp", {}, bindings(tiles, film, gbuffers),
+             sizeof(abi::ResolvePush), &scene.descriptor_set()) {
   clear();
 }
 
 std::vector<vk::BufferBinding> ResolvePass::bindings(const TileState& tiles, const Film& film,
-                                                    const GBufferPass& gbuffers) const {
-  return {{abi::kResolveTileList, &tiles.schedule},   {abi::kResolveAccumulation, &film.accumulation},
-          {abi::kResolveTileFlags, &tiles.flags},     {abi::kResolveDisplay, &display},
-          {abi::kResolveGBuffer, &gbuffers.current},  {abi::kResolveDifference, &film.difference},
-          {abi::kResolveJudgements, &judgements}};
+                                                     const GBufferPass& gbuffers) const {
+  return {
+      {abi::kResolveTileList, &tiles.schedule},  {abi::kResolveAccumulation, &film.accumulation},
+      {abi::kResolveTileFlags, &tiles.flags},    {abi::kResolveDisplay, &display},
+      {abi::kResolveGBuffer, &gbuffers.current}, {abi::kResolveDifference, &film.difference},
+      {abi::kResolveJudgements, &judgements}};
 }
 
 void ResolvePass::clear() {

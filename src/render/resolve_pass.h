@@ -11,15 +11,15 @@
 #include "render/film.h"
 #include "render/gbuffer_pass.h"
 #include "render/tile_state.h"
-#include "vk/compute_pipeline.h"
 #include "shaders/shared/abi.h"
+#include "vk/compute_pipeline.h"
 
 namespace hipr {
 
 class ResolvePass {
  public:
-  ResolvePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
-              const GBufferPass& gbuffers, uint32_t width, uint32_t height);
+  ResolvePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles,
+              const Film& film, const GBufferPass& gbuffers, uint32_t width, uint32_t height);
 
   // Which tiles a resolve covers: schedule entries [offset, offset + count) with all of
   // `require_flags` and none of `skip_flags`; offset abi::kInvalidIndex: tile ids 0 .. count - 1.
@@ -39,15 +39,17 @@ class ResolvePass {
   // Black everywhere, depicting no known surface; no tile judged.
   void clear();
 
-  vk::Buffer display;     // DisplayTexel per pixel
-  vk::Buffer judgements;  // TileJudgement per tile: its gate and regression weight, for showing its pixels
+  vk::Buffer display;  // DisplayTexel per pixel
+  vk::Buffer
+      judgements;  // TileJudgement per tile: its gate and regression weight, for showing its pixels
 
  private:
   void record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t rule) const;
   // A number for the next recorded resolve (ResolvePush::epoch), never 0.
   uint32_t next_epoch() const;
   // Both kernels' set 0 (shaders/shared/bindings/resolve.h).
-  std::vector<vk::BufferBinding> bindings(const TileState& tiles, const Film& film, const GBufferPass& gbuffers) const;
+  std::vector<vk::BufferBinding> bindings(const TileState& tiles, const Film& film,
+                                          const GBufferPass& gbuffers) const;
 
   const GBufferPass& m_gbuffers;
   uint32_t m_width, m_height;
@@ -55,8 +57,8 @@ class ResolvePass {
   uint32_t m_tile_count;
   uint32_t m_tile_size;
   mutable uint32_t m_epoch = 0;  // the last resolve's number
-  vk::ComputePipeline m_judge;  // resolve_display.comp
-  vk::ComputePipeline m_show;   // show_display.comp
+  vk::ComputePipeline m_judge;   // resolve_display.comp
+  vk::ComputePipeline m_show;    // show_display.comp
 };
 
 }  // namespace hipr

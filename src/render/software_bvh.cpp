@@ -24,7 +24,8 @@ Box transformed(const Box& box, const glm::mat4& m) {
 }  // namespace
 
 std::array<float, 12> affine_rows(const glm::mat4& m) {
-  return {m[0][0], m[1][0], m[2][0], m[3][0], m[0][1], m[1][1], m[2][1], m[3][1], m[0][2], m[1][2], m[2][2], m[3][2]};
+  return {m[0][0], m[1][0], m[2][0], m[3][0], m[0][1], m[1][1],
+          m[2][1], m[3][1], m[0][2], m[1][2], m[2][2], m[3][2]};
 }
 
 void SoftwareBvh::set_mesh(size_t mesh_index, const Mesh& mesh, const std::vector<bool>& opaque) {

@@ -7,7 +7,8 @@
 namespace hipr {
 namespace {
 
-vk::Buffer tile_buffer(const vk::Context& ctx, uint32_t tiles, vk::MemoryUse use = vk::MemoryUse::Device) {
+vk::Buffer tile_buffer(const vk::Context& ctx, uint32_t tiles,
+                       vk::MemoryUse use = vk::MemoryUse::Device) {
   return vk::Buffer(ctx, size_t(tiles) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, use);
 }
 
@@ -19,9 +20,10 @@ TileState::TileState(const vk::Context& ctx, const RenderSettings& s)
       m_tiles_y((s.height + s.tile_size - 1) / s.tile_size) {
   schedule = tile_buffer(ctx, count(), vk::MemoryUse::Shared);  // written at every step
   flags = tile_buffer(ctx, count());
-  background = tile_buffer(ctx, count(), vk::MemoryUse::Shared);  // written at edits that move things
-  pixel_lead =
-      vk::Buffer(ctx, (size_t(s.width) * s.height + 31) / 32 * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  background =
+      tile_buffer(ctx, count(), vk::MemoryUse::Shared);  // written at edits that move things
+  pixel_lead = vk::Buffer(ctx, (size_t(s.width) * s.height + 31) / 32 * sizeof(uint32_t),
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   weights = vk::Buffer(ctx, size_t(count()) * sizeof(uint64_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   flags.clear();
   pixel_lead.clear();

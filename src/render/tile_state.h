@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "hipr/renderer.h"
+#include "shaders/shared/abi.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
-#include "shaders/shared/abi.h"
 
 namespace hipr {
 
@@ -23,7 +23,9 @@ class TileState {
   // Every tile id in id order.
   const std::vector<uint32_t>& all() const { return m_all; }
   // The tile a pixel belongs to.
-  uint32_t tile_of(uint32_t x, uint32_t y) const { return (y / m_tile_size) * m_tiles_x + x / m_tile_size; }
+  uint32_t tile_of(uint32_t x, uint32_t y) const {
+    return (y / m_tile_size) * m_tiles_x + x / m_tile_size;
+  }
 
   // Replaces the schedule; `order` lists every tile once.
   void set_schedule(std::span<const uint32_t> order);

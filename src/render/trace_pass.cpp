@@ -16,9 +16,9 @@ uint32_t scatter_stride(uint32_t count) {
   return stride;
 }
 
-TracePass::TracePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
-                     const vk::Buffer& display, const RenderSettings& settings, uint32_t features,
-                     std::vector<vk::BufferBinding> discovery)
+TracePass::TracePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles,
+                     const Film& film, const vk::Buffer& display, const RenderSettings& settings,
+                     uint32_t features, std::vector<vk::BufferBinding> discovery)
     : m_ctx(ctx),
       m_scene(scene),
       m_settings(settings),
@@ -45,8 +45,9 @@ void TracePass::compile() {
   defines.emplace_back("HIPR_DISCOVERY", m_discovery ? "1" : "0");
   defines.emplace_back("HIPR_LIGHT_GROUPS", std::to_string(m_scene.light_groups().count));
   defines.emplace_back("HIPR_DIFFERENCE", m_difference ? "1" : "0");
-  m_pipeline = std::make_unique<vk::ComputePipeline>(m_ctx, "trace_tiles.comp", defines, m_bindings,
-                                                     sizeof(abi::TracePush), &m_scene.descriptor_set());
+  m_pipeline =
+      std::make_unique<vk::ComputePipeline>(m_ctx, "trace_tiles.comp", defines, m_bindings,
+                                            sizeof(abi::TracePush), &m_scene.descriptor_set());
 }
 
 void TracePass::set_features(uint32_t features) {
@@ -64,7 +65,8 @@ abi::TracePush TracePass::push(uint32_t offset, uint32_t count, uint32_t samples
   abi::TracePush push{};
   push.listOffset = offset;
   push.tileCount = count;
-  push.groupsPerTile = (m_settings.tile_size * m_settings.tile_size + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize;
+  push.groupsPerTile =
+      (m_settings.tile_size * m_settings.tile_size + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize;
   const uint64_t groups = uint64_t(count) * push.groupsPerTile;
   if (groups > UINT32_MAX) throw InputError("too many tiles in one dispatch");
   push.tileStride = scatter_stride(uint32_t(groups));

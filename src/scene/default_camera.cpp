@@ -38,10 +38,13 @@ Camera framing_camera(const Scene& scene) {
 }
 
 // (Not value_or: that would frame the scene, reading every vertex, on every call.)
-Camera default_view(const Scene& scene) { return scene.default_camera ? *scene.default_camera : framing_camera(scene); }
+Camera default_view(const Scene& scene) {
+  return scene.default_camera ? *scene.default_camera : framing_camera(scene);
+}
 
 void fix_default_camera(Scene& scene) {
-  if (!scene.default_camera && scene.camera_node() < 0) scene.default_camera = framing_camera(scene);
+  if (!scene.default_camera && scene.camera_node() < 0)
+    scene.default_camera = framing_camera(scene);
 }
 
 Camera resolve_camera(const Scene& scene) {

@@ -26,19 +26,22 @@ class EditReader {
   [[noreturn]] void fail(const std::string& why) const { throw InputError(m_where + ": " + why); }
 
   std::string string(const char* key) const {
-    if (!m_edit.contains(key) || !m_edit[key].is_string()) fail(std::string("needs a string \"") + key + "\"");
+    if (!m_edit.contains(key) || !m_edit[key].is_string())
+      fail(std::string("needs a string \"") + key + "\"");
     return m_edit[key];
   }
 
   std::vector<float> numbers(const json& value, const std::string& key) const {
     std::vector<float> out;
-    if (value.is_number()) out.push_back(value.get<float>());
+    if (value.is_number())
+      out.push_back(value.get<float>());
     else if (value.is_array())
       for (const json& v : value) {
         if (!v.is_number()) fail("\"" + key + "\" must hold numbers");
         out.push_back(v.get<float>());
       }
-    else fail("\"" + key + "\" must be a number or an array of numbers");
+    else
+      fail("\"" + key + "\" must be a number or an array of numbers");
     for (float v : out)
       if (!std::isfinite(v)) fail("\"" + key + "\" holds a non-finite number");
     return out;
@@ -88,14 +91,15 @@ MaterialEdit read_material(const EditReader& r, bool emission_only) {
     const MaterialParameter* parameter = find_material_parameter(key);
     if (!parameter) r.fail("unknown material parameter \"" + key + "\"");
     if (emission_only && key != "emission_luminance" && key != "emission_color")
-      r.fail("an emission edit sets only emission_luminance and emission_color, not \"" + key + "\"");
+      r.fail("an emission edit sets only emission_luminance and emission_color, not \"" + key +
+             "\"");
     const auto values = r.numbers(value, key);
     if (int(values.size()) != parameter->components)
       r.fail("\"" + key + "\" needs " + std::to_string(parameter->components) + " number(s)");
     for (float v : values)
       if (v < parameter->min || v > parameter->max)
-        r.fail("\"" + key + "\" = " + std::to_string(v) + " is outside [" + std::to_string(parameter->min) + ", " +
-               std::to_string(parameter->max) + "]");
+        r.fail("\"" + key + "\" = " + std::to_string(v) + " is outside [" +
+               std::to_string(parameter->min) + ", " + std::to_string(parameter->max) + "]");
     edit.set.push_back({key, values});
   }
   return edit;
@@ -120,7 +124,8 @@ FocusEdit read_focus(const EditReader& r) {
     focus.pixel = glm::vec2(v[0], v[1]);
     if (!e.contains("radius")) r.fail("a focus pixel needs a \"radius\" in pixels");
     const auto radius = r.numbers(e["radius"], "radius");
-    if (radius.size() != 1 || radius[0] <= 0.0f) r.fail("\"radius\" must be one positive number (pixels)");
+    if (radius.size() != 1 || radius[0] <= 0.0f)
+      r.fail("\"radius\" must be one positive number (pixels)");
     focus.radius = radius[0];
   } else if (e.contains("radius")) {
     r.fail("\"radius\" goes with \"pixel\"");
@@ -137,13 +142,15 @@ FocusEdit read_focus(const EditReader& r) {
 
 // A file an edit script names: relative to the script's folder, which it may not leave (neither
 // by ".." nor by a link), as a scene's own files may not leave the scene's.
-std::filesystem::path script_file(const EditReader& r, const std::filesystem::path& base, const std::string& name) {
+std::filesystem::path script_file(const EditReader& r, const std::filesystem::path& base,
+                                  const std::string& name) {
   namespace fs = std::filesystem;
   const fs::path relative(name);
   if (name.empty() || relative.is_absolute() || relative.has_root_name())
     r.fail("\"" + name + "\" must be a path relative to the script's folder");
   const fs::path normal = relative.lexically_normal();
-  if (!normal.empty() && *normal.begin() == "..") r.fail("\"" + name + "\" leaves the script's folder");
+  if (!normal.empty() && *normal.begin() == "..")
+    r.fail("\"" + name + "\" leaves the script's folder");
   const fs::path path = base / relative;
   std::error_code folder_error, target_error;
   const fs::path folder = fs::weakly_canonical(base.empty() ? fs::path(".") : base, folder_error);
@@ -160,7 +167,8 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
   if (op == "transform") {
     r.only_keys({"op", "node", "translate", "matrix"});
     TransformEdit e{r.string("node"), r.vec3("translate"), r.matrix()};
-    if (e.translate.has_value() == e.matrix.has_value()) r.fail("a transform needs exactly one of \"translate\", \"matrix\"");
+    if (e.translate.has_value() == e.matrix.has_value())
+      r.fail("a transform needs exactly one of \"translate\", \"matrix\"");
     return e;
   }
   if (op == "material" || op == "emission") {
@@ -173,23 +181,30 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
     e.node = r.string("node");
     for (const auto& [key, value] : r.set_object().items()) {
       const auto v = r.numbers(value, key);
-      if (key == "intensity" && v.size() == 1 && v[0] >= 0) e.intensity = v[0];
-      else if (key == "color" && v.size() == 3 && v[0] >= 0 && v[1] >= 0 && v[2] >= 0) e.color = glm::vec3(v[0], v[1], v[2]);
-      else if (key == "range" && v.size() == 1 && v[0] >= 0) e.range = v[0];
-      else if (key != "intensity" && key != "color" && key != "range") r.fail("unknown light parameter \"" + key + "\"");
-      else r.fail("invalid value for light parameter \"" + key + "\"");
+      if (key == "intensity" && v.size() == 1 && v[0] >= 0)
+        e.intensity = v[0];
+      else if (key == "color" && v.size() == 3 && v[0] >= 0 && v[1] >= 0 && v[2] >= 0)
+        e.color = glm::vec3(v[0], v[1], v[2]);
+      else if (key == "range" && v.size() == 1 && v[0] >= 0)
+        e.range = v[0];
+      else if (key != "intensity" && key != "color" && key != "range")
+        r.fail("unknown light parameter \"" + key + "\"");
+      else
+        r.fail("invalid value for light parameter \"" + key + "\"");
     }
     return e;
   }
   if (op == "visibility") {
     r.only_keys({"op", "node", "visible"});
-    if (!r.edit().contains("visible") || !r.edit()["visible"].is_boolean()) r.fail("needs a boolean \"visible\"");
+    if (!r.edit().contains("visible") || !r.edit()["visible"].is_boolean())
+      r.fail("needs a boolean \"visible\"");
     return VisibilityEdit{r.string("node"), r.edit()["visible"].get<bool>()};
   }
   if (op == "camera") {
     r.only_keys({"op", "translate", "matrix"});
     CameraEdit e{r.vec3("translate"), r.matrix()};
-    if (e.translate.has_value() == e.matrix.has_value()) r.fail("a camera edit needs exactly one of \"translate\", \"matrix\"");
+    if (e.translate.has_value() == e.matrix.has_value())
+      r.fail("a camera edit needs exactly one of \"translate\", \"matrix\"");
     return e;
   }
   if (op == "environment") {
@@ -199,7 +214,8 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
       const std::string source = r.string("source");
       if (source.empty()) r.fail("\"source\" is empty (studio, sky, none or a file)");
       // A file, like an import, stays inside the script's folder: a script cannot read the machine.
-      e.source = is_environment_name(source) ? std::filesystem::path(source) : script_file(r, base, source);
+      e.source = is_environment_name(source) ? std::filesystem::path(source)
+                                             : script_file(r, base, source);
     } else if (!r.edit().contains("set")) {
       r.fail("needs \"source\" or \"set\"");
     }
@@ -207,15 +223,21 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
       for (const auto& [key, value] : r.set_object().items()) {
         const auto v = r.numbers(value, key);
         const bool one = v.size() == 1;
-        if (key == "intensity" && one && v[0] >= 0) e.intensity = v[0];
-        else if (key == "rotation" && one) e.rotation = glm::radians(v[0]);  // as --env-rotation
-        else if (key == "sun_elevation" && one && v[0] >= 0 && v[0] <= 90) e.sun_elevation_degrees = v[0];
-        else if (key == "sun_azimuth" && one) e.sun_azimuth_degrees = v[0];
-        else if (key == "turbidity" && one && v[0] >= kMinTurbidity && v[0] <= kMaxTurbidity) e.turbidity = v[0];
-        else if (key != "intensity" && key != "rotation" && key != "sun_elevation" && key != "sun_azimuth" &&
-                 key != "turbidity")
+        if (key == "intensity" && one && v[0] >= 0)
+          e.intensity = v[0];
+        else if (key == "rotation" && one)
+          e.rotation = glm::radians(v[0]);  // as --env-rotation
+        else if (key == "sun_elevation" && one && v[0] >= 0 && v[0] <= 90)
+          e.sun_elevation_degrees = v[0];
+        else if (key == "sun_azimuth" && one)
+          e.sun_azimuth_degrees = v[0];
+        else if (key == "turbidity" && one && v[0] >= kMinTurbidity && v[0] <= kMaxTurbidity)
+          e.turbidity = v[0];
+        else if (key != "intensity" && key != "rotation" && key != "sun_elevation" &&
+                 key != "sun_azimuth" && key != "turbidity")
           r.fail("unknown environment parameter \"" + key + "\"");
-        else r.fail("invalid value for environment parameter \"" + key + "\"");
+        else
+          r.fail("invalid value for environment parameter \"" + key + "\"");
       }
     }
     if (e.sets_sun() && e.source && *e.source != kSkyEnvironmentName)
@@ -234,7 +256,8 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
   }
   if (op == "import") {
     r.only_keys({"op", "file", "as", "translate"});
-    return ImportEdit{script_file(r, base, r.string("file")), r.edit().contains("as") ? r.string("as") : "",
+    return ImportEdit{script_file(r, base, r.string("file")),
+                      r.edit().contains("as") ? r.string("as") : "",
                       r.vec3("translate").value_or(glm::vec3(0.0f))};
   }
   if (op == "deform") {
@@ -244,7 +267,8 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
     return DeformEdit{r.string("node"), *matrix, nullptr};
   }
   r.fail("unknown op \"" + op +
-         "\" (transform, material, light, emission, visibility, camera, environment, focus, duplicate, delete, "
+         "\" (transform, material, light, emission, visibility, camera, environment, focus, "
+         "duplicate, delete, "
          "import, deform)");
 }
 
@@ -264,7 +288,8 @@ std::vector<Edit> parse_edit_script(const std::string& text, const std::string& 
     throw InputError(name + ": an edit script is an object with an array \"edits\"");
   std::vector<Edit> edits;
   for (size_t i = 0; i < doc["edits"].size(); ++i)
-    edits.push_back(read_edit(EditReader(doc["edits"][i], name + ": edit " + std::to_string(i)), base));
+    edits.push_back(
+        read_edit(EditReader(doc["edits"][i], name + ": edit " + std::to_string(i)), base));
   return edits;
 }
 

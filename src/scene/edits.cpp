@@ -32,14 +32,17 @@ size_t find_by_name(const Items& items, const std::string& name, NameOf name_of,
   throw InputError(std::string("no ") + kind + " named '" + name + "' in the scene");
 }
 
-
 size_t find_material(const Scene& scene, const std::string& name) {
-  return find_by_name(scene.materials, name, [](const Material& m) { return m.name; }, "material");
+  return find_by_name(
+      scene.materials, name, [](const Material& m) { return m.name; }, "material");
 }
 
-void move_node(glm::mat4& local, const std::optional<glm::vec3>& translate, const std::optional<glm::mat4>& matrix) {
-  if (matrix) local = *matrix;
-  else local[3] += glm::vec4(*translate, 0.0f);
+void move_node(glm::mat4& local, const std::optional<glm::vec3>& translate,
+               const std::optional<glm::mat4>& matrix) {
+  if (matrix)
+    local = *matrix;
+  else
+    local[3] += glm::vec4(*translate, 0.0f);
 }
 
 // What apply_edit refuses of an environment edit (but a file that cannot be read): without a
@@ -47,7 +50,8 @@ void move_node(glm::mat4& local, const std::optional<glm::vec3>& translate, cons
 void check_environment_edit(const Scene& scene, const EnvironmentEdit& e) {
   if (e.restore) return;
   if (!e.source && !scene.environment)
-    throw InputError("the scene has no environment to edit (switch one on with \"source\", or --env)");
+    throw InputError(
+        "the scene has no environment to edit (switch one on with \"source\", or --env)");
   const std::filesystem::path target = e.source ? *e.source : scene.environment->path;
   if (e.sets_sun() && target != kSkyEnvironmentName)
     throw InputError("the sun's parameters need the sky environment (\"source\": \"sky\")");
@@ -56,7 +60,8 @@ void check_environment_edit(const Scene& scene, const EnvironmentEdit& e) {
 // The sky an edit asks for: its values over the current sky's (the defaults when there is none).
 SkyParameters edited_sky(const Scene& scene, const EnvironmentEdit& e) {
   SkyParameters sky;
-  if (scene.environment && scene.environment->path == kSkyEnvironmentName) sky = scene.environment->sky;
+  if (scene.environment && scene.environment->path == kSkyEnvironmentName)
+    sky = scene.environment->sky;
   if (e.sun_elevation_degrees) sky.sun_elevation_degrees = *e.sun_elevation_degrees;
   if (e.sun_azimuth_degrees) sky.sun_azimuth_degrees = *e.sun_azimuth_degrees;
   if (e.turbidity) sky.turbidity = *e.turbidity;
@@ -67,7 +72,9 @@ SkyParameters edited_sky(const Scene& scene, const EnvironmentEdit& e) {
 struct Applier {
   Scene& scene;
 
-  void operator()(const TransformEdit& e) const { move_node(scene.nodes[find_node(scene, e.node)].local, e.translate, e.matrix); }
+  void operator()(const TransformEdit& e) const {
+    move_node(scene.nodes[find_node(scene, e.node)].local, e.translate, e.matrix);
+  }
 
   void operator()(const MaterialEdit& e) const {
     MaterialParameters& block = scene.materials[find_material(scene, e.material)].params;
@@ -80,12 +87,14 @@ struct Applier {
         throw InputError("invalid material parameter '" + p.key + "'");
       for (const float v : p.values)
         if (!(v >= parameter->min && v <= parameter->max))
-          throw InputError("material parameter '" + p.key + "' = " + std::to_string(v) + " is outside [" +
-                           std::to_string(parameter->min) + ", " + std::to_string(parameter->max) + "]");
+          throw InputError("material parameter '" + p.key + "' = " + std::to_string(v) +
+                           " is outside [" + std::to_string(parameter->min) + ", " +
+                           std::to_string(parameter->max) + "]");
     }
     for (const ParameterValue& p : e.set) {
       const MaterialParameter* parameter = find_material_parameter(p.key);
-      std::memcpy(reinterpret_cast<char*>(&block) + parameter->offset, p.values.data(), p.values.size() * sizeof(float));
+      std::memcpy(reinterpret_cast<char*>(&block) + parameter->offset, p.values.data(),
+                  p.values.size() * sizeof(float));
     }
   }
 
@@ -98,7 +107,9 @@ struct Applier {
     if (e.range) light.range = *e.range;
   }
 
-  void operator()(const VisibilityEdit& e) const { scene.nodes[find_node(scene, e.node)].visible = e.visible; }
+  void operator()(const VisibilityEdit& e) const {
+    scene.nodes[find_node(scene, e.node)].visible = e.visible;
+  }
 
   void operator()(const CameraEdit& e) const {
     // No camera in the file: materialize the default one so the edit has something to move.
@@ -112,7 +123,8 @@ struct Applier {
       check_environment_edit(scene, e);
       const SkyParameters sky = edited_sky(scene, e);
       if (e.source || (e.sets_sun() && sky != scene.environment->sky)) {
-        std::optional<Environment> next = make_environment(e.source.value_or(kSkyEnvironmentName), sky);
+        std::optional<Environment> next =
+            make_environment(e.source.value_or(kSkyEnvironmentName), sky);
         if (next && scene.environment) {  // a switch keeps how bright and turned
           next->intensity = scene.environment->intensity;
           next->rotation = scene.environment->rotation;
@@ -187,7 +199,8 @@ struct Inverter {
       inverse.restore = std::make_shared<const std::optional<Environment>>(scene.environment);
       return inverse;
     }
-    return EnvironmentEdit{.intensity = scene.environment->intensity, .rotation = scene.environment->rotation};
+    return EnvironmentEdit{.intensity = scene.environment->intensity,
+                           .rotation = scene.environment->rotation};
   }
 
   Edit operator()(const FocusEdit& e) const {
@@ -208,7 +221,8 @@ struct Inverter {
   Edit operator()(const DeformEdit& e) const {
     check_deform(scene, e);
     const Node& node = scene.nodes[find_node(scene, e.node)];
-    return DeformEdit{e.node, glm::mat4(1.0f), std::make_shared<const Mesh>(scene.meshes[size_t(node.mesh)])};
+    return DeformEdit{e.node, glm::mat4(1.0f),
+                      std::make_shared<const Mesh>(scene.meshes[size_t(node.mesh)])};
   }
   Edit operator()(const StructureEdit&) const { return structure_undo(scene); }
 };
@@ -216,7 +230,8 @@ struct Inverter {
 }  // namespace
 
 size_t find_node(const Scene& scene, const std::string& name) {
-  const size_t node = find_by_name(scene.nodes, name, [](const Node& n) { return n.name; }, "node");
+  const size_t node = find_by_name(
+      scene.nodes, name, [](const Node& n) { return n.name; }, "node");
   const std::vector<bool> in_scene = scene.reachable_nodes();
   if (in_scene[node]) return node;
   // A deleted node of that name (or one the file keeps out of its scene): look for a live one.
@@ -240,7 +255,8 @@ void apply_edit(Scene& scene, const Edit& edit) {
   }
   // Applied, then checked (scene/scene_limits.h): a move or camera that leaves the range the
   // renderer computes in is refused, and the scene is put back exactly as it was.
-  const Edit revert = std::holds_alternative<DeformEdit>(edit) ? inverse_edit(scene, edit) : Edit(structure_undo(scene));
+  const Edit revert = std::holds_alternative<DeformEdit>(edit) ? inverse_edit(scene, edit)
+                                                               : Edit(structure_undo(scene));
   std::visit(Applier{scene}, edit);
   try {
     check_scene_limits(scene, "edit " + describe(edit), geometry);
@@ -255,15 +271,21 @@ std::string describe(const Edit& edit) {
     std::string operator()(const TransformEdit& e) const { return "transform " + e.node; }
     std::string operator()(const MaterialEdit& e) const { return "material " + e.material; }
     std::string operator()(const LightEdit& e) const { return "light " + e.node; }
-    std::string operator()(const VisibilityEdit& e) const { return std::string(e.visible ? "show " : "hide ") + e.node; }
+    std::string operator()(const VisibilityEdit& e) const {
+      return std::string(e.visible ? "show " : "hide ") + e.node;
+    }
     std::string operator()(const CameraEdit&) const { return "camera"; }
     std::string operator()(const EnvironmentEdit& e) const {
       if (e.source) return "environment " + e.source->filename().string();
       return e.sets_sun() ? "environment sun" : "environment";
     }
-    std::string operator()(const DuplicateEdit& e) const { return "duplicate " + e.node + (e.as.empty() ? "" : " as " + e.as); }
+    std::string operator()(const DuplicateEdit& e) const {
+      return "duplicate " + e.node + (e.as.empty() ? "" : " as " + e.as);
+    }
     std::string operator()(const DeleteEdit& e) const { return "delete " + e.node; }
-    std::string operator()(const ImportEdit& e) const { return "import " + e.file.filename().string(); }
+    std::string operator()(const ImportEdit& e) const {
+      return "import " + e.file.filename().string();
+    }
     std::string operator()(const DeformEdit& e) const { return "deform " + e.node; }
     std::string operator()(const StructureEdit&) const { return "restore nodes"; }
     std::string operator()(const FocusEdit& e) const {
@@ -272,7 +294,8 @@ std::string describe(const Edit& edit) {
       if (e.node) text += " " + *e.node;
       if (e.pixel) {
         char disc[96];
-        std::snprintf(disc, sizeof disc, " pixel (%g, %g) radius %g", e.pixel->x, e.pixel->y, e.radius);
+        std::snprintf(disc, sizeof disc, " pixel (%g, %g) radius %g", e.pixel->x, e.pixel->y,
+                      e.radius);
         text += disc;
       }
       return text;

@@ -16,7 +16,8 @@
 namespace hipr {
 namespace {
 
-bool name_in_scene(const Scene& scene, const std::vector<bool>& reachable, const std::string& name) {
+bool name_in_scene(const Scene& scene, const std::vector<bool>& reachable,
+                   const std::string& name) {
   for (size_t n = 0; n < scene.nodes.size(); ++n)
     if (reachable[n] && scene.nodes[n].name == name) return true;
   return false;
@@ -28,8 +29,10 @@ bool name_in_scene(const Scene& scene, const std::vector<bool>& reachable, const
 std::string new_node_name(const Scene& scene, const std::string& wanted, std::string base) {
   const std::vector<bool> reachable = scene.reachable_nodes();
   if (!wanted.empty()) {
-    if (wanted[0] == '#') throw InputError("a new node's name may not start with '#' ('" + wanted + "')");
-    if (name_in_scene(scene, reachable, wanted)) throw InputError("a node named '" + wanted + "' is in the scene already");
+    if (wanted[0] == '#')
+      throw InputError("a new node's name may not start with '#' ('" + wanted + "')");
+    if (name_in_scene(scene, reachable, wanted))
+      throw InputError("a node named '" + wanted + "' is in the scene already");
     return wanted;
   }
   if (base.empty()) base = "node";
@@ -83,15 +86,20 @@ void drop_detached_tail(Scene& scene) {
   }
   while (scene.lights.size() > scene.loaded_light_count) {
     const int last = int(scene.lights.size() - 1);
-    if (std::any_of(scene.nodes.begin(), scene.nodes.end(), [&](const Node& n) { return n.light == last; })) break;
+    if (std::any_of(scene.nodes.begin(), scene.nodes.end(),
+                    [&](const Node& n) { return n.light == last; }))
+      break;
     scene.lights.pop_back();
   }
 }
 
 // Appends `other` (a loaded file) to `scene` under a new root node; returns that node.
-uint32_t append_scene(Scene& scene, Scene&& other, const std::string& name, const glm::vec3& translate) {
-  const uint32_t image_base = uint32_t(scene.images.size()), texture_base = uint32_t(scene.textures.size());
-  const uint32_t material_base = uint32_t(scene.materials.size()), mesh_base = uint32_t(scene.meshes.size());
+uint32_t append_scene(Scene& scene, Scene&& other, const std::string& name,
+                      const glm::vec3& translate) {
+  const uint32_t image_base = uint32_t(scene.images.size()),
+                 texture_base = uint32_t(scene.textures.size());
+  const uint32_t material_base = uint32_t(scene.materials.size()),
+                 mesh_base = uint32_t(scene.meshes.size());
   const int light_base = int(scene.lights.size());
   for (Image& image : other.images) scene.images.push_back(std::move(image));
   for (Texture texture : other.textures) {
@@ -109,7 +117,8 @@ uint32_t append_scene(Scene& scene, Scene&& other, const std::string& name, cons
   }
   for (PunctualLight& light : other.lights) scene.lights.push_back(std::move(light));
   for (const std::string& extension : other.extensions_used)
-    if (std::find(scene.extensions_used.begin(), scene.extensions_used.end(), extension) == scene.extensions_used.end())
+    if (std::find(scene.extensions_used.begin(), scene.extensions_used.end(), extension) ==
+        scene.extensions_used.end())
       scene.extensions_used.push_back(extension);
 
   Node root;
@@ -143,7 +152,8 @@ void check_affine(const glm::mat4& m) {
   if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f)
     throw InputError("a deform matrix must be affine (its last row 0 0 0 1)");
   const float det = glm::determinant(glm::mat3(m));
-  if (!std::isfinite(det) || std::abs(det) < 1e-12f) throw InputError("a deform matrix must be invertible");
+  if (!std::isfinite(det) || std::abs(det) < 1e-12f)
+    throw InputError("a deform matrix must be invertible");
 }
 
 glm::vec3 unit_or(const glm::vec3& v, const glm::vec3& fallback) {
@@ -164,7 +174,8 @@ void deform_mesh(Mesh& mesh, const glm::mat4& m) {
     }
     // A mirror turns the triangles inside out: swap two corners so they still face their normals.
     if (mirrors)
-      for (size_t i = 0; i + 2 < p.indices.size(); i += 3) std::swap(p.indices[i + 1], p.indices[i + 2]);
+      for (size_t i = 0; i + 2 < p.indices.size(); i += 3)
+        std::swap(p.indices[i + 1], p.indices[i + 2]);
   }
 }
 
@@ -252,8 +263,8 @@ StructureEdit structure_undo(const Scene& scene) {
 
 void apply_structure(Scene& scene, const StructureEdit& edit) {
   const SceneStructure& s = *edit.restore;
-  if (s.meshes > scene.meshes.size() || s.materials > scene.materials.size() || s.textures > scene.textures.size() ||
-      s.images > scene.images.size())
+  if (s.meshes > scene.meshes.size() || s.materials > scene.materials.size() ||
+      s.textures > scene.textures.size() || s.images > scene.images.size())
     throw InternalError("a structure to restore that has more than the scene");
   scene.nodes = s.nodes;
   scene.root_nodes = s.root_nodes;

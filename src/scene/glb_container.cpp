@@ -24,13 +24,17 @@ bool looks_like_glb(const std::vector<unsigned char>& bytes) {
 }
 
 void check_glb_container(const std::vector<unsigned char>& bytes, const std::string& name) {
-  const auto fail = [&](const std::string& why) { throw InputError(name + ": invalid GLB: " + why); };
+  const auto fail = [&](const std::string& why) {
+    throw InputError(name + ": invalid GLB: " + why);
+  };
   if (bytes.size() < 12) fail("file is shorter than the 12-byte header");
   if (read_u32(bytes, 0) != kMagic) fail("magic is not 'glTF'");
-  if (read_u32(bytes, 4) != 2) fail("container version " + std::to_string(read_u32(bytes, 4)) + " (expected 2)");
+  if (read_u32(bytes, 4) != 2)
+    fail("container version " + std::to_string(read_u32(bytes, 4)) + " (expected 2)");
   const uint64_t total = read_u32(bytes, 8);
   if (total != bytes.size())
-    fail("header length " + std::to_string(total) + " != file size " + std::to_string(bytes.size()));
+    fail("header length " + std::to_string(total) + " != file size " +
+         std::to_string(bytes.size()));
 
   uint64_t offset = 12;
   int chunk = 0;
@@ -38,7 +42,9 @@ void check_glb_container(const std::vector<unsigned char>& bytes, const std::str
     if (offset + 8 > total) fail("chunk " + std::to_string(chunk) + " header runs past the end");
     const uint64_t length = read_u32(bytes, size_t(offset));
     const uint32_t type = read_u32(bytes, size_t(offset + 4));
-    if (offset + 8 + length > total) fail("chunk " + std::to_string(chunk) + " length " + std::to_string(length) + " runs past the end of the file");
+    if (offset + 8 + length > total)
+      fail("chunk " + std::to_string(chunk) + " length " + std::to_string(length) +
+           " runs past the end of the file");
     if (chunk == 0 && type != kChunkJson) fail("first chunk is not JSON");
     if (chunk == 1 && type != kChunkBin) fail("second chunk is not BIN");
     offset += 8 + length;

@@ -30,7 +30,8 @@ void check_scene_elements(const tinygltf::Model& model, const std::string& name)
 std::vector<float> read_floats(const tinygltf::Model& model, int accessor, int components,
                                const std::string& what);
 
-std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor, const std::string& what);
+std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor,
+                                   const std::string& what);
 
 // Checks every bufferView and accessor in the file, used or not (a file with broken data is
 // refused as a whole, as the glTF validator does). Throws InputError naming the first problem.

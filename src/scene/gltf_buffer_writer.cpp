@@ -6,7 +6,8 @@ namespace hipr::gltf {
 
 size_t BufferWriter::buffer_index() {
   if (m_buffer == SIZE_MAX) {
-    m_buffer = append_to(m_doc, "buffers", Json::object());  // filled by finish(), once the bytes are known
+    m_buffer = append_to(m_doc, "buffers",
+                         Json::object());  // filled by finish(), once the bytes are known
   }
   return m_buffer;
 }
@@ -23,8 +24,9 @@ size_t BufferWriter::add_view(const void* bytes, size_t size, int target) {
 
 void BufferWriter::finish() {
   if (m_buffer == SIZE_MAX) return;
-  m_doc["buffers"][m_buffer] = {{"byteLength", m_bytes.size()},
-                                {"uri", "data:application/octet-stream;base64," + base64_encode(m_bytes)}};
+  m_doc["buffers"][m_buffer] = {
+      {"byteLength", m_bytes.size()},
+      {"uri", "data:application/octet-stream;base64," + base64_encode(m_bytes)}};
 }
 
 }  // namespace hipr::gltf

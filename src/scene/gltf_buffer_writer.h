@@ -19,7 +19,8 @@ class BufferWriter {
   size_t add_view(const void* bytes, size_t size, int target);
   // A view and an accessor over `values` (float or uint32 components). Returns the accessor.
   template <typename T>
-  size_t add_accessor(const std::vector<T>& values, int component_type, const char* type, int target) {
+  size_t add_accessor(const std::vector<T>& values, int component_type, const char* type,
+                      int target) {
     const size_t view = add_view(values.data(), values.size() * sizeof(T), target);
     Json accessor = {{"bufferView", view},
                      {"componentType", component_type},

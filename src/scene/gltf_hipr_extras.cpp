@@ -12,7 +12,8 @@ namespace {
 
 // The `count` numbers of `value` (a number when count is 1, else an array of `count`), each
 // finite and inside [lo, hi]; InputError naming `what` otherwise.
-std::vector<float> numbers(const tinygltf::Value& value, int count, float lo, float hi, const std::string& what) {
+std::vector<float> numbers(const tinygltf::Value& value, int count, float lo, float hi,
+                           const std::string& what) {
   std::vector<float> out;
   if (count == 1 && value.IsNumber()) {
     out.push_back(float(value.GetNumberAsDouble()));
@@ -23,16 +24,18 @@ std::vector<float> numbers(const tinygltf::Value& value, int count, float lo, fl
     }
   }
   if (out.size() != size_t(count))
-    throw InputError(what +
-                     (count == 1 ? " must be a number" : " must be an array of " + std::to_string(count) + " numbers"));
+    throw InputError(what + (count == 1
+                                 ? " must be a number"
+                                 : " must be an array of " + std::to_string(count) + " numbers"));
   for (float v : out)
     if (!std::isfinite(v) || v < lo || v > hi)
-      throw InputError(what + " holds " + std::to_string(v) + ", outside [" + std::to_string(lo) + ", " +
-                       std::to_string(hi) + "]");
+      throw InputError(what + " holds " + std::to_string(v) + ", outside [" + std::to_string(lo) +
+                       ", " + std::to_string(hi) + "]");
   return out;
 }
 
-const tinygltf::Value* member(const tinygltf::Value& extras, const char* key, const std::string& what) {
+const tinygltf::Value* member(const tinygltf::Value& extras, const char* key,
+                              const std::string& what) {
   if (!extras.IsObject() || !extras.Has(key)) return nullptr;
   const tinygltf::Value& value = extras.Get(key);
   if (!value.IsObject()) throw InputError(what + ": extras." + key + " is not an object");
@@ -41,8 +44,8 @@ const tinygltf::Value* member(const tinygltf::Value& extras, const char* key, co
 
 }  // namespace
 
-void apply_openpbr_extras(const tinygltf::Value& extras, const char* key, MaterialParameters& params,
-                          const std::string& what) {
+void apply_openpbr_extras(const tinygltf::Value& extras, const char* key,
+                          MaterialParameters& params, const std::string& what) {
   const tinygltf::Value* overrides = member(extras, key, what);
   if (!overrides) return;
   for (const std::string& name : overrides->Keys()) {
@@ -51,11 +54,13 @@ void apply_openpbr_extras(const tinygltf::Value& extras, const char* key, Materi
     if (!parameter) throw InputError(where + " is not an OpenPBR parameter hipr knows");
     const std::vector<float> v =
         numbers(overrides->Get(name), parameter->components, parameter->min, parameter->max, where);
-    std::memcpy(reinterpret_cast<char*>(&params) + parameter->offset, v.data(), v.size() * sizeof(float));
+    std::memcpy(reinterpret_cast<char*>(&params) + parameter->offset, v.data(),
+                v.size() * sizeof(float));
   }
 }
 
-void apply_light_extras(const tinygltf::Value& extras, PunctualLight& light, const std::string& what) {
+void apply_light_extras(const tinygltf::Value& extras, PunctualLight& light,
+                        const std::string& what) {
   const tinygltf::Value* overrides = member(extras, kLightExtras, what);
   if (!overrides) return;
   constexpr float kMax = std::numeric_limits<float>::max();

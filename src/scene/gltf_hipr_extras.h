@@ -24,10 +24,11 @@ inline constexpr const char* kLightExtras = "hipr_light";
 
 // Applies extras[key] (when `extras` is an object holding `key`) to `params`; `what` names the
 // owner in error messages.
-void apply_openpbr_extras(const tinygltf::Value& extras, const char* key, MaterialParameters& params,
-                          const std::string& what);
+void apply_openpbr_extras(const tinygltf::Value& extras, const char* key,
+                          MaterialParameters& params, const std::string& what);
 
 // Applies extras.hipr_light (when present) to `light`.
-void apply_light_extras(const tinygltf::Value& extras, PunctualLight& light, const std::string& what);
+void apply_light_extras(const tinygltf::Value& extras, PunctualLight& light,
+                        const std::string& what);
 
 }  // namespace hipr::gltf

@@ -20,7 +20,8 @@ std::vector<double> json_numbers(const Json& object, const char* key) {
 
 double json_number(float value) {
   // JSON has no infinity or NaN (nlohmann would write null); edits never make them, the API might.
-  if (!std::isfinite(value)) throw InputError("cannot save a non-finite number (" + std::to_string(value) + ")");
+  if (!std::isfinite(value))
+    throw InputError("cannot save a non-finite number (" + std::to_string(value) + ")");
   // The loader parses a double and rounds it to float: find the shortest text for which that
   // gives `value` back (9 significant digits always do).
   char text[32];
@@ -32,7 +33,8 @@ double json_number(float value) {
   return double(value);
 }
 
-bool loads_as(const Json& object, const char* key, const std::vector<float>& values, const std::vector<float>& absent) {
+bool loads_as(const Json& object, const char* key, const std::vector<float>& values,
+              const std::vector<float>& absent) {
   if (!object.is_object() || !object.contains(key)) return absent == values;
   const Json& v = object[key];
   if (values.size() == 1) return v.is_number() && float(v.get<double>()) == values[0];
@@ -43,8 +45,8 @@ bool loads_as(const Json& object, const char* key, const std::vector<float>& val
   return true;
 }
 
-void put_numbers(Json& object, const char* key, const std::vector<float>& wanted, const std::vector<float>& written,
-                 const std::vector<float>& absent) {
+void put_numbers(Json& object, const char* key, const std::vector<float>& wanted,
+                 const std::vector<float>& written, const std::vector<float>& absent) {
   if (loads_as(object, key, wanted, absent) || loads_as(object, key, written, absent)) return;
   if (written.size() == 1) {
     object[key] = json_number(written[0]);
@@ -67,18 +69,21 @@ size_t append_to(Json& object, const char* key, Json value) {
 }
 
 size_t array_length(const Json& object, const char* key) {
-  return object.is_object() && object.contains(key) && object[key].is_array() ? object[key].size() : 0;
+  return object.is_object() && object.contains(key) && object[key].is_array() ? object[key].size()
+                                                                              : 0;
 }
 
 void erase_extra(Json& owner, const char* key) {
-  if (!owner.contains("extras") || !owner["extras"].is_object() || !owner["extras"].contains(key)) return;
+  if (!owner.contains("extras") || !owner["extras"].is_object() || !owner["extras"].contains(key))
+    return;
   owner["extras"].erase(key);
   if (owner["extras"].empty()) owner.erase("extras");
 }
 
 void set_extra(Json& owner, const char* key, Json value, const std::string& what) {
   if (owner.contains("extras") && !owner["extras"].is_object())
-    throw InputError(what + " has extras that are not a JSON object; cannot store extras." + key + " there");
+    throw InputError(what + " has extras that are not a JSON object; cannot store extras." + key +
+                     " there");
   owner["extras"][key] = std::move(value);
 }
 

@@ -23,14 +23,15 @@ double json_number(float value);
 // key already loads as `wanted` or as `written`, or is absent and `absent` (what the loader
 // assumes then) equals `wanted` or `written`. `written` differs from `wanted` where glTF's
 // valid range is narrower than hipr's (the exact value then goes to extras).
-void put_numbers(Json& object, const char* key, const std::vector<float>& wanted, const std::vector<float>& written,
-                 const std::vector<float>& absent);
+void put_numbers(Json& object, const char* key, const std::vector<float>& wanted,
+                 const std::vector<float>& written, const std::vector<float>& absent);
 inline void put_number(Json& object, const char* key, float wanted, float written, float absent) {
   put_numbers(object, key, {wanted}, {written}, {absent});
 }
 
 // Whether object[key] loads as `values` (absent: `absent` does).
-bool loads_as(const Json& object, const char* key, const std::vector<float>& values, const std::vector<float>& absent);
+bool loads_as(const Json& object, const char* key, const std::vector<float>& values,
+              const std::vector<float>& absent);
 
 // Runs `edit` on a copy of parent[key] (an empty object when absent) and stores the result
 // unless it stayed empty and was absent, so nothing appears where nothing was written.

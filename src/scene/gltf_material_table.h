@@ -11,10 +11,10 @@ namespace hipr::gltf {
 struct FactorRow {
   const char* extension;
   const char* key;
-  size_t field;       // offsetof(MaterialParameters, ...): float, or vec3 when components == 3
+  size_t field;  // offsetof(MaterialParameters, ...): float, or vec3 when components == 3
   int components;
-  glm::vec3 fallback; // glTF's default when the extension is present but the key is not
-  float lo, hi;       // valid range; values outside are clamped
+  glm::vec3 fallback;  // glTF's default when the extension is present but the key is not
+  float lo, hi;        // valid range; values outside are clamped
 };
 
 // A textureInfo of a material extension that lands in one MaterialParameters texture slot.

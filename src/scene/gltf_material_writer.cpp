@@ -20,8 +20,8 @@
 #include "core/error.h"
 #include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_material_table.h"
-#include "scene/gltf_texture_writer.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_texture_writer.h"
 #include "scene/material_parameters.h"
 #include "shaders/shared/abi.h"
 
@@ -48,7 +48,9 @@ std::vector<float> fallback(const FactorRow& row) {
 }
 
 // glTF's schema is narrower than the loader's clamp here (hipr reads any specular weight).
-float gltf_max(const FactorRow& row) { return std::strcmp(row.key, "specularFactor") == 0 ? 1.0f : row.hi; }
+float gltf_max(const FactorRow& row) {
+  return std::strcmp(row.key, "specularFactor") == 0 ? 1.0f : row.hi;
+}
 
 // The weight whose non-zero value makes an extension worth adding, for those that bring a lobe
 // (and change how other parameters map: a clearcoat sets coat_ior 1.5, a sheen fuzz_weight 1).
@@ -72,12 +74,14 @@ std::vector<std::string> row_extensions() {
 }
 
 bool has_extension(const Json& m, const std::string& extension) {
-  return m.contains("extensions") && m["extensions"].is_object() && m["extensions"].contains(extension);
+  return m.contains("extensions") && m["extensions"].is_object() &&
+         m["extensions"].contains(extension);
 }
 
 void write_core(Json& m, const M& t) {
-  const std::string mode =
-      m.contains("alphaMode") && m["alphaMode"].is_string() ? m["alphaMode"].get<std::string>() : "OPAQUE";
+  const std::string mode = m.contains("alphaMode") && m["alphaMode"].is_string()
+                               ? m["alphaMode"].get<std::string>()
+                               : "OPAQUE";
   edit_object(m, "pbrMetallicRoughness", [&](Json& pbr) {
     // Alpha is geometry_opacity for MASK and BLEND; OPAQUE ignores it, so it stays as it was.
     const std::vector<double> current = json_numbers(pbr, "baseColorFactor");
@@ -85,9 +89,12 @@ void write_core(Json& m, const M& t) {
                         : current.size() == 4               ? float(current[3])
                                                             : 1.0f;
     const std::vector<float> wanted = {t.base_color.x, t.base_color.y, t.base_color.z, alpha};
-    put_numbers(pbr, "baseColorFactor", wanted, clamped(wanted, 0.0f, 1.0f), {1.0f, 1.0f, 1.0f, 1.0f});
-    put_number(pbr, "metallicFactor", t.base_metalness, std::clamp(t.base_metalness, 0.0f, 1.0f), 1.0f);
-    put_number(pbr, "roughnessFactor", t.specular_roughness, std::clamp(t.specular_roughness, 0.0f, 1.0f), 1.0f);
+    put_numbers(pbr, "baseColorFactor", wanted, clamped(wanted, 0.0f, 1.0f),
+                {1.0f, 1.0f, 1.0f, 1.0f});
+    put_number(pbr, "metallicFactor", t.base_metalness, std::clamp(t.base_metalness, 0.0f, 1.0f),
+               1.0f);
+    put_number(pbr, "roughnessFactor", t.specular_roughness,
+               std::clamp(t.specular_roughness, 0.0f, 1.0f), 1.0f);
   });
 }
 
@@ -96,9 +103,10 @@ void write_core(Json& m, const M& t) {
 void write_emission(Json& m, const M& t) {
   const std::vector<float> color = {t.emission_color.x, t.emission_color.y, t.emission_color.z};
   const bool has_strength = has_extension(m, kEmissiveStrength);
-  const bool strength_loads =
-      has_strength ? loads_as(m["extensions"][kEmissiveStrength], "emissiveStrength", {t.emission_luminance}, {1.0f})
-                   : t.emission_luminance == 1.0f;
+  const bool strength_loads = has_strength
+                                  ? loads_as(m["extensions"][kEmissiveStrength], "emissiveStrength",
+                                             {t.emission_luminance}, {1.0f})
+                                  : t.emission_luminance == 1.0f;
   if (loads_as(m, "emissiveFactor", color, {0.0f, 0.0f, 0.0f}) && strength_loads) return;
   const float peak = std::max({color[0], color[1], color[2], 1.0f});
   const std::vector<float> factor = {color[0] / peak, color[1] / peak, color[2] / peak};
@@ -120,14 +128,16 @@ void write_extension_rows(Json& m, const M& t) {
     if (!needed && gate(extension)) {
       needed = values(t, *gate(extension), 1)[0] != 0.0f;
     } else if (!needed) {
-      for (const FactorRow* row : rows) needed = needed || values(t, row->field, row->components) != fallback(*row);
+      for (const FactorRow* row : rows)
+        needed = needed || values(t, row->field, row->components) != fallback(*row);
     }
     if (!needed) continue;
     edit_object(m, "extensions", [&](Json& extensions) {
       edit_object(extensions, extension.c_str(), [&](Json& ext) {
         for (const FactorRow* row : rows) {
           const std::vector<float> wanted = values(t, row->field, row->components);
-          put_numbers(ext, row->key, wanted, clamped(wanted, row->lo, gltf_max(*row)), fallback(*row));
+          put_numbers(ext, row->key, wanted, clamped(wanted, row->lo, gltf_max(*row)),
+                      fallback(*row));
         }
       });
     });
@@ -140,9 +150,11 @@ void write_volume(Json& m, const M& t) {
   if (!has_extension(m, kVolume)) return;
   Json& volume = m["extensions"][kVolume];
   const bool thick = volume.is_object() && volume.contains("thicknessFactor") &&
-                     volume["thicknessFactor"].is_number() && volume["thicknessFactor"].get<double>() > 0.0;
+                     volume["thicknessFactor"].is_number() &&
+                     volume["thicknessFactor"].get<double>() > 0.0;
   if (!thick) return;
-  const std::vector<float> color = {t.transmission_color.x, t.transmission_color.y, t.transmission_color.z};
+  const std::vector<float> color = {t.transmission_color.x, t.transmission_color.y,
+                                    t.transmission_color.z};
   constexpr float kInf = std::numeric_limits<float>::infinity();
   if (t.transmission_depth > 0.0f) {
     put_number(volume, "attenuationDistance", t.transmission_depth, t.transmission_depth, kInf);
@@ -162,8 +174,9 @@ Json openpbr_extras(const M& mapped, const M& target, const std::string& what) {
     if (values(mapped, p.offset, p.components) == want) continue;
     for (float v : want)
       if (!(v >= p.min && v <= p.max))
-        throw InputError(what + ": cannot save " + p.name + " = " + std::to_string(v) + ", outside [" +
-                         std::to_string(p.min) + ", " + std::to_string(p.max) + "]");
+        throw InputError(what + ": cannot save " + p.name + " = " + std::to_string(v) +
+                         ", outside [" + std::to_string(p.min) + ", " + std::to_string(p.max) +
+                         "]");
     if (p.components == 1) {
       extras[p.name] = json_number(want[0]);
     } else {
@@ -184,7 +197,8 @@ void check_unchanged(const M& mapped, const M& target, const std::string& what) 
   if (mapped.alpha_cutoff != target.alpha_cutoff) fail("alpha cutoff");
   if (mapped.normal_scale != target.normal_scale) fail("normal scale");
   if (mapped.coat_normal_scale != target.coat_normal_scale) fail("coat normal scale");
-  if (mapped.thin_film_thickness_min != target.thin_film_thickness_min) fail("thin-film minimum thickness");
+  if (mapped.thin_film_thickness_min != target.thin_film_thickness_min)
+    fail("thin-film minimum thickness");
 }
 
 // What the loader maps each material to, through tinygltf as for a real load.
@@ -198,7 +212,8 @@ std::vector<M> map_with_loader(const Json& materials, const std::string& name) {
     throw InternalError(name + ": rewritten materials do not parse: " + err);
   std::vector<M> out;
   for (size_t i = 0; i < model.materials.size(); ++i)
-    out.push_back(map_material_factors(model.materials[i], name + ": material " + std::to_string(i)));
+    out.push_back(
+        map_material_factors(model.materials[i], name + ": material " + std::to_string(i)));
   return out;
 }
 
@@ -232,7 +247,8 @@ void write_texture_references(Json& m, const M& params, TextureWriter& textures)
   }
 }
 
-std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials, TextureWriter& textures) {
+std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials,
+                                          TextureWriter& textures) {
   const size_t count = array_length(doc, "materials");
   if (materials.size() <= count + 1) return materials;
   std::vector<Material> ordered(materials.begin(), materials.begin() + std::ptrdiff_t(count));
@@ -247,7 +263,8 @@ std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>
       stub["alphaMode"] = "BLEND";
     }
     if (params.flags & abi::kMaterialDoubleSided) stub["doubleSided"] = true;
-    if (!(params.flags & abi::kMaterialThinWalled)) stub["extensions"][kVolume]["thicknessFactor"] = 1.0;
+    if (!(params.flags & abi::kMaterialThinWalled))
+      stub["extensions"][kVolume]["thicknessFactor"] = 1.0;
     write_texture_references(stub, params, textures);
     append_to(doc, "materials", std::move(stub));  // after the textures added their keys
     ordered.push_back(materials[i]);
@@ -259,8 +276,9 @@ std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>
 void write_materials(Json& doc, const std::vector<Material>& materials, const std::string& name) {
   const size_t count = array_length(doc, "materials");
   if (materials.size() != count + 1)
-    throw InputError(name + ": the scene has " + std::to_string(materials.size()) + " materials but its file " +
-                     std::to_string(count) + " (+1 default): the file changed since it was loaded");
+    throw InputError(name + ": the scene has " + std::to_string(materials.size()) +
+                     " materials but its file " + std::to_string(count) +
+                     " (+1 default): the file changed since it was loaded");
   for (size_t i = 0; i < count; ++i) {
     Json& m = doc["materials"][i];
     const M& t = materials[i].params;
@@ -273,14 +291,16 @@ void write_materials(Json& doc, const std::vector<Material>& materials, const st
   if (count > 0) {
     const std::vector<M> mapped = map_with_loader(doc["materials"], name);
     for (size_t i = 0; i < count; ++i) {
-      const std::string what = name + ": material " + std::to_string(i) + " ('" + materials[i].name + "')";
+      const std::string what =
+          name + ": material " + std::to_string(i) + " ('" + materials[i].name + "')";
       check_unchanged(mapped[i], materials[i].params, what);
       Json extras = openpbr_extras(mapped[i], materials[i].params, what);
       if (!extras.empty()) set_extra(doc["materials"][i], kOpenPbrExtras, std::move(extras), what);
     }
   }
   erase_extra(doc, kDefaultMaterialExtras);
-  Json extras = openpbr_extras(default_gltf_material_params(), materials.back().params, name + ": the default material");
+  Json extras = openpbr_extras(default_gltf_material_params(), materials.back().params,
+                               name + ": the default material");
   if (!extras.empty()) set_extra(doc, kDefaultMaterialExtras, std::move(extras), name);
 }
 

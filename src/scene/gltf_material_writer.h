@@ -21,7 +21,8 @@ void write_materials(Json& doc, const std::vector<Material>& materials, const st
 // does not write (name, alphaMode and cutoff, doubleSided, a volume's thickness, the texture
 // references, written through `textures`). Returns the scene's materials in the order
 // write_materials then wants: the file's, the appended ones, glTF's default.
-std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials, TextureWriter& textures);
+std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>& materials,
+                                          TextureWriter& textures);
 
 // The glTF extensions write_materials may add to a material (for extensionsUsed).
 std::vector<std::string> material_extensions_written();

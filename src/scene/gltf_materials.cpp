@@ -65,7 +65,9 @@ void apply_texture_rows(const tinygltf::Material& m, MaterialParameters& p, Text
 // alphaMode: OPAQUE ignores alpha; MASK thresholds it; BLEND becomes stochastic coverage.
 void apply_alpha_mode(const tinygltf::Material& m, MaterialParameters& p, const std::string& what) {
   const auto& factor = m.pbrMetallicRoughness.baseColorFactor;
-  const float alpha = factor.size() >= 4 && std::isfinite(factor[3]) ? std::clamp(float(factor[3]), 0.0f, 1.0f) : 1.0f;
+  const float alpha = factor.size() >= 4 && std::isfinite(factor[3])
+                          ? std::clamp(float(factor[3]), 0.0f, 1.0f)
+                          : 1.0f;
   p.alpha_cutoff = -1.0f;
   if (m.alphaMode == "MASK") {
     p.geometry_opacity = alpha;
@@ -76,14 +78,16 @@ void apply_alpha_mode(const tinygltf::Material& m, MaterialParameters& p, const 
     p.geometry_opacity = 1.0f;
     p.flags |= abi::kMaterialIgnoreTextureAlpha;
   } else {
-    throw InputError(what + " has unknown alphaMode '" + m.alphaMode + "' (expected OPAQUE, MASK or BLEND)");
+    throw InputError(what + " has unknown alphaMode '" + m.alphaMode +
+                     "' (expected OPAQUE, MASK or BLEND)");
   }
 }
 
 // The rules of gltf_material_table.cpp that are more than a copy.
 void apply_extension_rules(const tinygltf::Material& m, MaterialParameters& p) {
   const tinygltf::Value* volume = extension(m, "KHR_materials_volume");
-  const bool thick = volume && volume->Has("thicknessFactor") && volume->Get("thicknessFactor").IsNumber() &&
+  const bool thick = volume && volume->Has("thicknessFactor") &&
+                     volume->Get("thicknessFactor").IsNumber() &&
                      volume->Get("thicknessFactor").GetNumberAsDouble() > 0.0;
   if (!thick) {
     p.flags |= abi::kMaterialThinWalled;
@@ -148,7 +152,8 @@ Material convert_material(const tinygltf::Material& m, size_t index, TextureTabl
   p = map_material_factors(m, what);
   const auto& pbr = m.pbrMetallicRoughness;
   p.base_color_texture = textures.get(texture_reference(pbr.baseColorTexture), true, what);
-  p.metallic_roughness_texture = textures.get(texture_reference(pbr.metallicRoughnessTexture), false, what);
+  p.metallic_roughness_texture =
+      textures.get(texture_reference(pbr.metallicRoughnessTexture), false, what);
   p.normal_texture = textures.get(texture_reference(m.normalTexture), false, what);
   p.emission_texture = textures.get(texture_reference(m.emissiveTexture), true, what);
   apply_texture_rows(m, p, textures, what);

@@ -14,7 +14,8 @@ Material convert_material(const tinygltf::Material& material, size_t index, Text
 
 // What a material's numbers alone map to: core factors, alpha mode, extension rows and rules,
 // no textures (every slot kInvalidIndex) and no extras. `what` names it in error messages.
-MaterialParameters map_material_factors(const tinygltf::Material& material, const std::string& what);
+MaterialParameters map_material_factors(const tinygltf::Material& material,
+                                        const std::string& what);
 
 // glTF's default material (for primitives without one) as OpenPBR parameters.
 MaterialParameters default_gltf_material_params();

@@ -35,30 +35,37 @@ Json primitive_json(Json& doc, BufferWriter& out, const MeshPrimitive& p, size_t
     attributes["TEXCOORD_0"] = out.add_accessor(p.uvs, kFloat, "VEC2", kArrayBuffer);
   if (p.uvs1.size() == p.positions.size() && any_nonzero(p.uvs1))
     attributes["TEXCOORD_1"] = out.add_accessor(p.uvs1, kFloat, "VEC2", kArrayBuffer);
-  Json primitive = {{"attributes", std::move(attributes)},
-                    {"indices", out.add_accessor(p.indices, kUnsignedInt, "SCALAR", kElementArrayBuffer)}};
+  Json primitive = {
+      {"attributes", std::move(attributes)},
+      {"indices", out.add_accessor(p.indices, kUnsignedInt, "SCALAR", kElementArrayBuffer)}};
   // The scene's materials: the file's, glTF's default (a primitive without one), then imported
   // ones, which write_new_materials appends to the file's.
-  if (p.material < file_materials) primitive["material"] = p.material;
-  else if (p.material > file_materials) primitive["material"] = p.material - 1;
+  if (p.material < file_materials)
+    primitive["material"] = p.material;
+  else if (p.material > file_materials)
+    primitive["material"] = p.material - 1;
   return primitive;
 }
 
 }  // namespace
 
 void write_meshes(Json& doc, const Scene& scene, BufferWriter& out, const std::string& name) {
-  const size_t file_meshes = array_length(doc, "meshes"), file_materials = array_length(doc, "materials");
+  const size_t file_meshes = array_length(doc, "meshes"),
+               file_materials = array_length(doc, "materials");
   if (scene.loaded_mesh_revisions.size() != file_meshes || scene.meshes.size() < file_meshes)
-    throw InputError(name + ": the scene has other meshes than its file: the file changed since it was loaded");
+    throw InputError(
+        name + ": the scene has other meshes than its file: the file changed since it was loaded");
   std::vector<size_t> deformed;
   for (size_t m = 0; m < file_meshes; ++m)
-    if (scene.meshes[m].revision != scene.loaded_mesh_revisions[m] && !scene.meshes[m].primitives.empty())
+    if (scene.meshes[m].revision != scene.loaded_mesh_revisions[m] &&
+        !scene.meshes[m].primitives.empty())
       deformed.push_back(m);
   if (deformed.empty() && scene.meshes.size() == file_meshes) return;
 
   const auto primitives_of = [&](const Mesh& mesh) {
     Json primitives = Json::array();
-    for (const MeshPrimitive& p : mesh.primitives) primitives.push_back(primitive_json(doc, out, p, file_materials));
+    for (const MeshPrimitive& p : mesh.primitives)
+      primitives.push_back(primitive_json(doc, out, p, file_materials));
     return primitives;
   };
   for (size_t m : deformed) {
@@ -71,7 +78,8 @@ void write_meshes(Json& doc, const Scene& scene, BufferWriter& out, const std::s
   for (size_t m = file_meshes; m < scene.meshes.size(); ++m) {
     Json mesh = {{"name", scene.meshes[m].name}, {"primitives", primitives_of(scene.meshes[m])}};
     if (scene.meshes[m].primitives.empty())  // glTF wants a primitive: one triangle of nothing
-      mesh["primitives"] = primitives_of(Mesh{"", {MeshPrimitive{{glm::vec3(0.0f)}, {}, {}, {}, {}, {0, 0, 0}, 0}}, 0});
+      mesh["primitives"] = primitives_of(
+          Mesh{"", {MeshPrimitive{{glm::vec3(0.0f)}, {}, {}, {}, {}, {0, 0, 0}, 0}}, 0});
     append_to(doc, "meshes", std::move(mesh));
   }
 }

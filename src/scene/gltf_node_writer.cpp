@@ -27,7 +27,9 @@ Json numbers(const float* v, int count) {
 bool animated(const Json& doc, size_t node) {
   if (!doc.contains("animations") || !doc["animations"].is_array()) return false;
   for (const Json& animation : doc["animations"]) {
-    if (!animation.is_object() || !animation.contains("channels") || !animation["channels"].is_array()) continue;
+    if (!animation.is_object() || !animation.contains("channels") ||
+        !animation["channels"].is_array())
+      continue;
     for (const Json& channel : animation["channels"])
       if (channel.is_object() && channel.contains("target") && channel["target"].is_object() &&
           channel["target"].contains("node") && channel["target"]["node"].is_number_integer() &&
@@ -61,7 +63,8 @@ void write_trs(Json& node, const glm::mat4& m) {
   node["scale"] = numbers(glm::value_ptr(scale), 3);
 }
 
-void write_transform(Json& node, const glm::mat4& loaded, const glm::mat4& wanted, bool is_animated) {
+void write_transform(Json& node, const glm::mat4& loaded, const glm::mat4& wanted,
+                     bool is_animated) {
   if (node.contains("matrix") && !is_animated) {
     write_matrix(node, wanted);
     return;
@@ -80,7 +83,8 @@ void write_transform(Json& node, const glm::mat4& loaded, const glm::mat4& wante
 
 void write_visibility(Json& node, bool visible) {
   const bool loads_hidden = node.contains("extensions") && node["extensions"].is_object() &&
-                            node["extensions"].contains(kVisibility) && node["extensions"][kVisibility].is_object() &&
+                            node["extensions"].contains(kVisibility) &&
+                            node["extensions"][kVisibility].is_object() &&
                             node["extensions"][kVisibility].value("visible", true) == false;
   if (loads_hidden == !visible) return;
   edit_object(node, "extensions", [&](Json& extensions) {
@@ -99,11 +103,12 @@ Json new_camera(const Camera& camera) {
 
 // A perspective camera's field of view and near plane, should the scene's differ.
 void write_camera(Json& json, const Camera& camera) {
-  if (!json.is_object() || json.value("type", "") != "perspective") return;  // orthographic: loaded as a fixed fov
+  if (!json.is_object() || json.value("type", "") != "perspective")
+    return;  // orthographic: loaded as a fixed fov
   edit_object(json, "perspective", [&](Json& p) {
     put_number(p, "yfov", camera.yfov, camera.yfov, camera.yfov);
-    const bool near_loads =
-        p.contains("znear") && p["znear"].is_number() && float(std::max(p["znear"].get<double>(), 0.0)) == camera.znear;
+    const bool near_loads = p.contains("znear") && p["znear"].is_number() &&
+                            float(std::max(p["znear"].get<double>(), 0.0)) == camera.znear;
     if (!near_loads) p["znear"] = json_number(camera.znear);
   });
 }
@@ -112,7 +117,8 @@ void write_camera(Json& json, const Camera& camera) {
 // node is a root then). A pointer into `doc`: adding a key to `doc` moves it.
 Json* default_scene(Json& doc) {
   if (!doc.contains("scenes") || !doc["scenes"].is_array() || doc["scenes"].empty()) return nullptr;
-  const size_t index = doc.contains("scene") && doc["scene"].is_number_integer() ? doc["scene"].get<size_t>() : 0;
+  const size_t index =
+      doc.contains("scene") && doc["scene"].is_number_integer() ? doc["scene"].get<size_t>() : 0;
   return index < doc["scenes"].size() ? &doc["scenes"][index] : nullptr;
 }
 
@@ -133,10 +139,12 @@ void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
   const size_t node_count = array_length(doc, "nodes"), camera_count = array_length(doc, "cameras");
   if (scene.nodes.size() < node_count || scene.cameras.size() < camera_count)
     throw InputError(name +
-                     ": the scene has fewer nodes or cameras than its file: the file changed since it was loaded");
+                     ": the scene has fewer nodes or cameras than its file: the file changed since "
+                     "it was loaded");
 
   for (size_t i = 0; i < camera_count; ++i) write_camera(doc["cameras"][i], scene.cameras[i]);
-  for (size_t i = camera_count; i < scene.cameras.size(); ++i) doc["cameras"].push_back(new_camera(scene.cameras[i]));
+  for (size_t i = camera_count; i < scene.cameras.size(); ++i)
+    doc["cameras"].push_back(new_camera(scene.cameras[i]));
 
   Json* roots = default_scene(doc);
   const auto unlist = [](Json& owner, const char* key, size_t node) {
@@ -150,14 +158,18 @@ void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
   for (size_t i = 0; i < node_count; ++i) {
     Json& node = doc["nodes"][i];
     const glm::mat4 loaded = loaded_transform(node);
-    if (loaded != scene.nodes[i].local) write_transform(node, loaded, scene.nodes[i].local, animated(doc, i));
+    if (loaded != scene.nodes[i].local)
+      write_transform(node, loaded, scene.nodes[i].local, animated(doc, i));
     write_visibility(node, scene.nodes[i].visible);
     // A deleted node: its parent (or the scene) no longer lists it; it stays in the file, unused.
     const int parent = scene.nodes[i].parent;
-    const std::vector<uint32_t>& siblings = parent >= 0 ? scene.children[size_t(parent)] : scene.root_nodes;
+    const std::vector<uint32_t>& siblings =
+        parent >= 0 ? scene.children[size_t(parent)] : scene.root_nodes;
     if (std::find(siblings.begin(), siblings.end(), uint32_t(i)) != siblings.end()) continue;
-    if (parent >= 0) unlist(doc["nodes"][size_t(parent)], "children", i);
-    else if (roots) unlist(*roots, "nodes", i);
+    if (parent >= 0)
+      unlist(doc["nodes"][size_t(parent)], "children", i);
+    else if (roots)
+      unlist(*roots, "nodes", i);
   }
   // Nodes edits appended, but those no longer in the scene: numbered after the file's.
   std::vector<size_t> written(scene.nodes.size(), SIZE_MAX);
@@ -169,8 +181,10 @@ void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
     if (!reachable[i]) continue;
     doc["nodes"].push_back(new_node(scene.nodes[i]));
     const int parent = scene.nodes[i].parent;
-    if (parent >= 0) doc["nodes"][written[size_t(parent)]]["children"].push_back(written[i]);
-    else if (roots) (*roots)["nodes"].push_back(written[i]);
+    if (parent >= 0)
+      doc["nodes"][written[size_t(parent)]]["children"].push_back(written[i]);
+    else if (roots)
+      (*roots)["nodes"].push_back(written[i]);
   }
   // No camera node: the view the scene was seen from becomes one, so the file reopens as it was
   // seen (framed around the edited objects, it would not). Where the edits left the framing as
@@ -178,14 +192,16 @@ void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
   if (scene.camera_node() >= 0) return;
   const Camera camera = default_view(scene);
   const Camera framed = framing_camera(scene);
-  if (camera.camera_to_world != framed.camera_to_world || camera.yfov != framed.yfov || camera.znear != framed.znear) {
+  if (camera.camera_to_world != framed.camera_to_world || camera.yfov != framed.yfov ||
+      camera.znear != framed.znear) {
     Node node;
     node.name = "default_camera";
     node.local = camera.camera_to_world;
     node.camera = int(array_length(doc, "cameras"));
     doc["cameras"].push_back(new_camera(camera));
     doc["nodes"].push_back(new_node(node));
-    if (Json* scene_roots = default_scene(doc)) (*scene_roots)["nodes"].push_back(doc["nodes"].size() - 1);
+    if (Json* scene_roots = default_scene(doc))
+      (*scene_roots)["nodes"].push_back(doc["nodes"].size() - 1);
   }
 }
 

@@ -18,7 +18,8 @@ namespace {
 void write_file(const fs::path& path, const std::vector<unsigned char>& bytes) {
   write_atomically(path, [&](const fs::path& temp) {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError("cannot write " + path.string() + ": cannot create a file in its folder");
+    if (!out)
+      throw InputError("cannot write " + path.string() + ": cannot create a file in its folder");
     out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
     out.close();
     if (!out) throw InputError("cannot write " + path.string() + " (disk full?)");
@@ -36,19 +37,22 @@ fs::path resolved(const fs::path& path) {
 }
 
 void append_u32(std::vector<unsigned char>& out, uint32_t v) {
-  const auto* b = reinterpret_cast<const unsigned char*>(&v);  // glTF is little-endian, as our platforms
+  const auto* b =
+      reinterpret_cast<const unsigned char*>(&v);  // glTF is little-endian, as our platforms
   out.insert(out.end(), b, b + 4);
 }
 
 // The image's media type: declared, from its data: URI, or from its first bytes.
-std::string image_mime(const Json& image, const std::string& uri, const std::vector<unsigned char>& b) {
+std::string image_mime(const Json& image, const std::string& uri,
+                       const std::vector<unsigned char>& b) {
   if (image.contains("mimeType") && image["mimeType"].is_string()) return image["mimeType"];
   if (is_data_uri(uri)) {
     const std::string type = uri.substr(5, uri.find_first_of(";,") - 5);
     if (type.rfind("image/", 0) == 0) return type;
   }
   const auto starts = [&](std::initializer_list<unsigned char> magic, size_t at = 0) {
-    return b.size() >= at + magic.size() && std::equal(magic.begin(), magic.end(), b.begin() + std::ptrdiff_t(at));
+    return b.size() >= at + magic.size() &&
+           std::equal(magic.begin(), magic.end(), b.begin() + std::ptrdiff_t(at));
   };
   if (starts({0x89, 'P', 'N', 'G'})) return "image/png";
   if (starts({0xFF, 0xD8, 0xFF})) return "image/jpeg";
@@ -74,16 +78,19 @@ std::string uri_of(const std::string& name) {
   return out;
 }
 
-bool has_array(const Json& doc, const char* key) { return doc.contains(key) && doc[key].is_array(); }
+bool has_array(const Json& doc, const char* key) {
+  return doc.contains(key) && doc[key].is_array();
+}
 
 // Fails with a clear line if `path` is one of the source's side files.
-void refuse_source_file(const SourceDocument& source, const fs::path& path, bool allow_source_itself) {
+void refuse_source_file(const SourceDocument& source, const fs::path& path,
+                        bool allow_source_itself) {
   const fs::path target = resolved(path);
   const fs::path self = resolved(source.path);
   for (const fs::path& file : source_files(source)) {
     if (file != target || (allow_source_itself && file == self)) continue;
-    throw InputError("refusing to overwrite " + path.string() + ": it is a file of the scene being saved (" +
-                     source.name + ")");
+    throw InputError("refusing to overwrite " + path.string() +
+                     ": it is a file of the scene being saved (" + source.name + ")");
   }
 }
 
@@ -126,7 +133,8 @@ void write_glb(const SourceDocument& source, Json doc, const fs::path& path) {
       const Json& buffer = doc["buffers"][i];
       if (!buffer.contains("uri") || !buffer["uri"].is_string())
         throw InputError(source.name + ": buffer " + std::to_string(i) + " has no uri");
-      std::vector<unsigned char> bytes = read_uri(source, buffer["uri"], "buffer " + std::to_string(i));
+      std::vector<unsigned char> bytes =
+          read_uri(source, buffer["uri"], "buffer " + std::to_string(i));
       if (buffer.contains("byteLength") && buffer["byteLength"].is_number_unsigned() &&
           buffer["byteLength"].get<size_t>() <= bytes.size())
         bytes.resize(buffer["byteLength"].get<size_t>());
@@ -137,7 +145,8 @@ void write_glb(const SourceDocument& source, Json doc, const fs::path& path) {
     }
     if (doc["buffers"].size() > 1 && has_array(doc, "bufferViews"))
       for (Json& view : doc["bufferViews"]) {
-        if (!view.is_object() || !view.contains("buffer") || !view["buffer"].is_number_unsigned()) continue;
+        if (!view.is_object() || !view.contains("buffer") || !view["buffer"].is_number_unsigned())
+          continue;
         const size_t buffer = view["buffer"].get<size_t>();
         if (buffer == 0 || buffer >= base.size()) continue;
         view["buffer"] = 0;
@@ -172,7 +181,8 @@ void write_glb(const SourceDocument& source, Json doc, const fs::path& path) {
       bin.resize((bin.size() + 3) / 4 * 4, 0);
       const size_t offset = bin.size();
       bin.insert(bin.end(), bytes.begin(), bytes.end());
-      doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes.size()}});
+      doc["bufferViews"].push_back(
+          {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes.size()}});
       image.erase("uri");
       image["bufferView"] = doc["bufferViews"].size() - 1;
       image["mimeType"] = mime;
@@ -186,7 +196,8 @@ void write_glb(const SourceDocument& source, Json doc, const fs::path& path) {
   bin.resize((bin.size() + 3) / 4 * 4, 0);
   std::vector<unsigned char> out;
   const size_t total = 12 + 8 + json.size() + (has_bin ? 8 + bin.size() : 0);
-  if (total > 0xFFFFFFFFull) throw InputError(path.string() + ": the scene is too large for a .glb (over 4 GiB)");
+  if (total > 0xFFFFFFFFull)
+    throw InputError(path.string() + ": the scene is too large for a .glb (over 4 GiB)");
   out.reserve(total);
   append_u32(out, 0x46546C67);  // "glTF"
   append_u32(out, 2);
@@ -217,7 +228,9 @@ void write_gltf(const SourceDocument& source, Json doc, const fs::path& path) {
     for (const SideFile& side : side_files(doc)) {
       const fs::path relative = uri_path(side.uri, source.name + ": " + side.what);
       const fs::path target = folder / relative;
-      if (std::any_of(files.begin(), files.end(), [&](const Pending& p) { return p.path == target; })) continue;
+      if (std::any_of(files.begin(), files.end(),
+                      [&](const Pending& p) { return p.path == target; }))
+        continue;
       try {
         files.push_back({target, read_uri(source, side.uri, side.what), false});
       } catch (const InputError& e) {
@@ -226,11 +239,13 @@ void write_gltf(const SourceDocument& source, Json doc, const fs::path& path) {
       }
     }
   }
-  if (source.glb && has_array(doc, "buffers") && !doc["buffers"].empty() && !doc["buffers"][0].contains("uri")) {
+  if (source.glb && has_array(doc, "buffers") && !doc["buffers"].empty() &&
+      !doc["buffers"][0].contains("uri")) {
     const std::string name = path.stem().string() + ".bin";
     std::vector<unsigned char> bytes = source.bin;
     const Json& length = doc["buffers"][0]["byteLength"];
-    if (length.is_number_unsigned() && length.get<size_t>() <= bytes.size()) bytes.resize(length.get<size_t>());
+    if (length.is_number_unsigned() && length.get<size_t>() <= bytes.size())
+      bytes.resize(length.get<size_t>());
     doc["buffers"][0]["uri"] = uri_of(name);
     files.push_back({folder / name, std::move(bytes), true});
   }
@@ -244,9 +259,9 @@ void write_gltf(const SourceDocument& source, Json doc, const fs::path& path) {
     std::error_code ec;
     if (!file.replaces_freely && fs::exists(file.path, ec)) {
       if (read_file_bytes(file.path) == file.bytes) continue;  // already there (an earlier save)
-      throw InputError(
-          "cannot save " + path.filename().string() + ": " + file.path.string() +
-          " already exists with other content (another scene's file?); save into another folder or as .glb");
+      throw InputError("cannot save " + path.filename().string() + ": " + file.path.string() +
+                       " already exists with other content (another scene's file?); save into "
+                       "another folder or as .glb");
     }
     to_write.push_back(&file);
   }

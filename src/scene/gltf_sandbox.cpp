@@ -28,17 +28,21 @@ void check_uri(const std::string& uri, const std::string& what) {
   if (uri.rfind("data:", 0) == 0) return;
   const std::string path = decode_uri(uri);
   const auto refuse = [&](const std::string& why) {
-    throw InputError(what + " URI '" + uri + "' " + why + " (only files inside the scene folder are read)");
+    throw InputError(what + " URI '" + uri + "' " + why +
+                     " (only files inside the scene folder are read)");
   };
   if (path.empty()) refuse("is empty");
   if (path.find('\0') != std::string::npos) refuse("contains a NUL byte");
-  if (path[0] == '/' || path[0] == '\\' || (path.size() > 1 && path[1] == ':')) refuse("is an absolute path");
+  if (path[0] == '/' || path[0] == '\\' || (path.size() > 1 && path[1] == ':'))
+    refuse("is an absolute path");
   const size_t colon = path.find(':');
   if (colon != std::string::npos && path.find('/') > colon) refuse("has a URI scheme");
   int depth = 0;
   for (const auto& part : fs::path(path)) {
-    if (part == "..") --depth;
-    else if (part != "." && !part.empty()) ++depth;
+    if (part == "..")
+      --depth;
+    else if (part != "." && !part.empty())
+      ++depth;
     if (depth < 0) refuse("leaves the scene folder");
   }
 }
@@ -53,7 +57,8 @@ bool Sandbox::inside(const fs::path& path) const {
   std::error_code ec;
   const fs::path resolved = fs::weakly_canonical(path, ec);  // follows symlinks
   if (ec) return false;
-  const auto [root_end, ignored] = std::mismatch(m_root.begin(), m_root.end(), resolved.begin(), resolved.end());
+  const auto [root_end, ignored] =
+      std::mismatch(m_root.begin(), m_root.end(), resolved.begin(), resolved.end());
   return root_end == m_root.end();
 }
 

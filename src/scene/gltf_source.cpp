@@ -51,7 +51,8 @@ SourceDocument read_source(const fs::path& path) {
   } catch (const Json::exception&) {
     throw InputError(source.name + ": cannot save from it: its JSON no longer parses");
   }
-  if (!source.json.is_object()) throw InputError(source.name + ": cannot save from it: not a glTF document");
+  if (!source.json.is_object())
+    throw InputError(source.name + ": cannot save from it: not a glTF document");
   return source;
 }
 
@@ -62,11 +63,13 @@ fs::path uri_path(const std::string& uri, const std::string& what) {
   return fs::path(decode_uri(uri)).lexically_normal();
 }
 
-std::vector<unsigned char> read_uri(const SourceDocument& source, const std::string& uri, const std::string& what) {
+std::vector<unsigned char> read_uri(const SourceDocument& source, const std::string& uri,
+                                    const std::string& what) {
   if (is_data_uri(uri)) {
     const size_t comma = uri.find(',');
     const std::string header = uri.substr(0, comma);
-    if (comma == std::string::npos || header.size() < 7 || header.compare(header.size() - 7, 7, ";base64") != 0)
+    if (comma == std::string::npos || header.size() < 7 ||
+        header.compare(header.size() - 7, 7, ";base64") != 0)
       throw InputError(source.name + ": " + what + " has a data: URI that is not base64");
     const auto bytes = base64_decode(uri.substr(comma + 1));
     if (!bytes) throw InputError(source.name + ": " + what + " has invalid base64 data");
@@ -75,7 +78,8 @@ std::vector<unsigned char> read_uri(const SourceDocument& source, const std::str
   Sandbox sandbox(source.folder);
   std::vector<unsigned char> bytes;
   std::string err;
-  if (!sandbox.read(&bytes, &err, (source.folder / uri_path(uri, source.name + ": " + what)).string())) {
+  if (!sandbox.read(&bytes, &err,
+                    (source.folder / uri_path(uri, source.name + ": " + what)).string())) {
     while (!err.empty() && err.back() == '\n') err.pop_back();
     throw InputError(source.name + ": " + what + ": " + err);
   }
@@ -91,7 +95,8 @@ std::vector<SideFile> side_files(const Json& doc) {
       if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) continue;
       const std::string uri = item["uri"];
       if (!is_data_uri(uri))
-        out.push_back({uri, std::string(kind).substr(0, std::strlen(kind) - 1) + " " + std::to_string(i)});
+        out.push_back(
+            {uri, std::string(kind).substr(0, std::strlen(kind) - 1) + " " + std::to_string(i)});
     }
   }
   return out;

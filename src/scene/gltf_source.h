@@ -25,7 +25,8 @@ bool is_data_uri(const std::string& uri);
 
 // The bytes `uri` names: a decoded data: URI, or a file inside the source folder. `what` names
 // the referencing object ("image 2") in the InputError thrown when it cannot be read.
-std::vector<unsigned char> read_uri(const SourceDocument& source, const std::string& uri, const std::string& what);
+std::vector<unsigned char> read_uri(const SourceDocument& source, const std::string& uri,
+                                    const std::string& what);
 
 // The file inside the source folder a non-data URI names, relative to the folder (decoded).
 std::filesystem::path uri_path(const std::string& uri, const std::string& what);

@@ -23,9 +23,10 @@ std::vector<unsigned char> png_of(const Image& image) {
     const auto* bytes = static_cast<const unsigned char*>(data);
     out->insert(out->end(), bytes, bytes + size);
   };
-  if (image.width == 0 || image.height == 0 || image.rgba8.size() != size_t(image.width) * image.height * 4 ||
-      !stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 4, image.rgba8.data(),
-                              int(image.width * 4)))
+  if (image.width == 0 || image.height == 0 ||
+      image.rgba8.size() != size_t(image.width) * image.height * 4 ||
+      !stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 4,
+                              image.rgba8.data(), int(image.width * 4)))
     throw InputError("cannot encode image '" + image.name + "' as PNG");
   return png;
 }
@@ -36,13 +37,15 @@ size_t TextureWriter::image(uint32_t index) {
   if (const auto it = m_images.find(index); it != m_images.end()) return it->second;
   const Image& source = m_scene.images.at(index);
   const std::vector<unsigned char> png = png_of(source);
-  Json image = {{"name", source.name}, {"bufferView", m_out.add_view(png.data(), png.size(), 0)},
+  Json image = {{"name", source.name},
+                {"bufferView", m_out.add_view(png.data(), png.size(), 0)},
                 {"mimeType", "image/png"}};
   return m_images[index] = append_to(m_doc, "images", std::move(image));
 }
 
 size_t TextureWriter::sampler(uint32_t flags) {
-  const uint32_t key = flags & (kTextureNearest | kTextureClampU | kTextureClampV | kTextureMirrorU | kTextureMirrorV);
+  const uint32_t key = flags & (kTextureNearest | kTextureClampU | kTextureClampV |
+                                kTextureMirrorU | kTextureMirrorV);
   if (const auto it = m_samplers.find(key); it != m_samplers.end()) return it->second;
   Json sampler = {{"magFilter", (key & kTextureNearest) ? kNearest : kLinear},
                   {"wrapS", wrap(key, kTextureClampU, kTextureMirrorU)},

@@ -14,7 +14,8 @@ namespace hipr::gltf {
 
 class TextureWriter {
  public:
-  TextureWriter(Json& doc, const Scene& scene, BufferWriter& out) : m_doc(doc), m_scene(scene), m_out(out) {}
+  TextureWriter(Json& doc, const Scene& scene, BufferWriter& out)
+      : m_doc(doc), m_scene(scene), m_out(out) {}
 
   // The textureInfo object for Scene::textures[texture], writing what it needs on first use.
   Json texture_info(uint32_t texture);
@@ -28,7 +29,8 @@ class TextureWriter {
   Json& m_doc;
   const Scene& m_scene;
   BufferWriter& m_out;
-  std::map<uint32_t, size_t> m_images, m_samplers, m_textures;  // scene index or flags -> glTF index
+  std::map<uint32_t, size_t> m_images, m_samplers,
+      m_textures;  // scene index or flags -> glTF index
   bool m_uses_transform = false;
 };
 

@@ -18,7 +18,8 @@ Image fallback_image(const std::string& name) {
   for (uint32_t y = 0; y < 8; ++y)
     for (uint32_t x = 0; x < 8; ++x) {
       const bool magenta = ((x / 2) + (y / 2)) % 2 == 0;
-      t.rgba8.insert(t.rgba8.end(), {uint8_t(magenta ? 255 : 0), 0, uint8_t(magenta ? 255 : 0), 255});
+      t.rgba8.insert(t.rgba8.end(),
+                     {uint8_t(magenta ? 255 : 0), 0, uint8_t(magenta ? 255 : 0), 255});
     }
   return t;
 }
@@ -33,8 +34,8 @@ bool to_rgba8(const tinygltf::Image& image, std::vector<uint8_t>& out) {
   const size_t pixels = size_t(image.width) * size_t(image.height);
   const int comps = image.component;
   const int bytes = image.bits / 8;
-  if (image.width <= 0 || image.height <= 0 || comps < 1 || comps > 4 || (bytes != 1 && bytes != 2) ||
-      image.image.size() < pixels * size_t(comps) * size_t(bytes))
+  if (image.width <= 0 || image.height <= 0 || comps < 1 || comps > 4 ||
+      (bytes != 1 && bytes != 2) || image.image.size() < pixels * size_t(comps) * size_t(bytes))
     return false;
   out.resize(pixels * 4);
   for (size_t i = 0; i < pixels; ++i) {
@@ -44,8 +45,11 @@ bool to_rgba8(const tinygltf::Image& image, std::vector<uint8_t>& out) {
       // 16-bit PNG data is stored little-endian by stb; keep the high byte.
       c[k] = bytes == 1 ? image.image[at] : image.image[at + 1];
     }
-    if (comps == 1) c[1] = c[2] = c[0];                    // grey
-    if (comps == 2) { c[3] = c[1]; c[1] = c[2] = c[0]; }   // grey + alpha
+    if (comps == 1) c[1] = c[2] = c[0];  // grey
+    if (comps == 2) {
+      c[3] = c[1];
+      c[1] = c[2] = c[0];
+    }  // grey + alpha
     std::copy(c, c + 4, out.begin() + std::ptrdiff_t(i * 4));
   }
   return true;
@@ -58,7 +62,8 @@ float number(const tinygltf::Value& object, const char* key, float fallback) {
 }
 
 glm::vec2 pair(const tinygltf::Value& object, const char* key, glm::vec2 fallback) {
-  if (!object.Has(key) || !object.Get(key).IsArray() || object.Get(key).ArrayLen() != 2) return fallback;
+  if (!object.Has(key) || !object.Get(key).IsArray() || object.Get(key).ArrayLen() != 2)
+    return fallback;
   const tinygltf::Value& v = object.Get(key);
   const glm::vec2 p{float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble())};
   return std::isfinite(p.x) && std::isfinite(p.y) ? p : fallback;
@@ -69,7 +74,8 @@ TextureReference core_reference(const Info& info) {
   TextureReference r;
   r.index = info.index;
   r.texcoord = info.texCoord;
-  if (const auto it = info.extensions.find("KHR_texture_transform"); it != info.extensions.end()) r.transform = &it->second;
+  if (const auto it = info.extensions.find("KHR_texture_transform"); it != info.extensions.end())
+    r.transform = &it->second;
   return r;
 }
 
@@ -87,25 +93,32 @@ void apply_transform(const tinygltf::Value& t, Texture& out, int& texcoord) {
 
 }  // namespace
 
-TextureReference texture_reference(const tinygltf::TextureInfo& info) { return core_reference(info); }
-TextureReference texture_reference(const tinygltf::NormalTextureInfo& info) { return core_reference(info); }
+TextureReference texture_reference(const tinygltf::TextureInfo& info) {
+  return core_reference(info);
+}
+TextureReference texture_reference(const tinygltf::NormalTextureInfo& info) {
+  return core_reference(info);
+}
 
 TextureReference texture_reference(const tinygltf::Value& extension, const char* key) {
   TextureReference r;
   if (!extension.Has(key) || !extension.Get(key).IsObject()) return r;
   const tinygltf::Value& info = extension.Get(key);
   if (info.Has("index") && info.Get("index").IsInt()) r.index = info.Get("index").GetNumberAsInt();
-  if (info.Has("texCoord") && info.Get("texCoord").IsInt()) r.texcoord = info.Get("texCoord").GetNumberAsInt();
+  if (info.Has("texCoord") && info.Get("texCoord").IsInt())
+    r.texcoord = info.Get("texCoord").GetNumberAsInt();
   if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform"))
     r.transform = &info.Get("extensions").Get("KHR_texture_transform");
   return r;
 }
 
-uint32_t TextureTable::image_for(const tinygltf::Texture& source, int texture, const std::string& what) {
+uint32_t TextureTable::image_for(const tinygltf::Texture& source, int texture,
+                                 const std::string& what) {
   // A broken or missing image gets its own fallback per texture, so the warning names it once.
   const bool has_image = source.source >= 0 && size_t(source.source) < m_model.images.size();
   if (source.source >= 0 && !has_image)
-    throw InputError(what + ": texture " + std::to_string(texture) + " references missing image " + std::to_string(source.source));
+    throw InputError(what + ": texture " + std::to_string(texture) + " references missing image " +
+                     std::to_string(source.source));
   const int key = has_image ? source.source : -1 - texture;
   if (const auto it = m_images.find(key); it != m_images.end()) return it->second;
 
@@ -118,11 +131,14 @@ uint32_t TextureTable::image_for(const tinygltf::Texture& source, int texture, c
     image.width = uint32_t(std::max(decoded.width, 0));
     image.height = uint32_t(std::max(decoded.height, 0));
     if (!ok) {
-      const std::string where = decoded.uri.empty() ? std::to_string(source.source) : "'" + decoded.uri + "'";
-      log::warn(what + ": texture image " + where + " could not be read; rendering a magenta checkerboard instead");
+      const std::string where =
+          decoded.uri.empty() ? std::to_string(source.source) : "'" + decoded.uri + "'";
+      log::warn(what + ": texture image " + where +
+                " could not be read; rendering a magenta checkerboard instead");
     }
   } else {
-    log::warn(what + ": texture " + std::to_string(texture) + " has no image; rendering a magenta checkerboard instead");
+    log::warn(what + ": texture " + std::to_string(texture) +
+              " has no image; rendering a magenta checkerboard instead");
   }
   if (!ok) {
     image = fallback_image(image.name);
@@ -146,7 +162,8 @@ uint32_t TextureTable::get(const TextureReference& reference, bool srgb, const s
   t.flags = srgb ? abi::kTextureSrgb : 0u;
   if (source.sampler >= 0) {
     if (size_t(source.sampler) >= m_model.samplers.size())
-      throw InputError(what + ": texture " + std::to_string(texture) + " references missing sampler");
+      throw InputError(what + ": texture " + std::to_string(texture) +
+                       " references missing sampler");
     const tinygltf::Sampler& s = m_model.samplers[size_t(source.sampler)];
     t.flags |= wrap_flags(s.wrapS, abi::kTextureClampU, abi::kTextureMirrorU);
     t.flags |= wrap_flags(s.wrapT, abi::kTextureClampV, abi::kTextureMirrorV);
@@ -154,17 +171,19 @@ uint32_t TextureTable::get(const TextureReference& reference, bool srgb, const s
   }
   int texcoord = reference.texcoord;
   if (reference.transform) apply_transform(*reference.transform, t, texcoord);
-  if (texcoord == 1) t.flags |= abi::kTextureUv1;
+  if (texcoord == 1)
+    t.flags |= abi::kTextureUv1;
   else if (texcoord != 0)
-    log::warn(what + ": texture " + std::to_string(texture) + " reads TEXCOORD_" + std::to_string(texcoord) +
+    log::warn(what + ": texture " + std::to_string(texture) + " reads TEXCOORD_" +
+              std::to_string(texcoord) +
               "; only TEXCOORD_0 and TEXCOORD_1 are loaded, TEXCOORD_0 is used");
   t.image = image_for(source, texture, what);
   if (m_fallbacks.count(t.image)) t.flags |= abi::kTextureNearest;  // crisp checker squares
 
   for (size_t i = 0; i < m_scene.textures.size(); ++i) {
     const Texture& other = m_scene.textures[i];
-    if (other.image == t.image && other.flags == t.flags && other.uv_transform_u == t.uv_transform_u &&
-        other.uv_transform_v == t.uv_transform_v)
+    if (other.image == t.image && other.flags == t.flags &&
+        other.uv_transform_u == t.uv_transform_u && other.uv_transform_v == t.uv_transform_v)
       return uint32_t(i);
   }
   m_scene.textures.push_back(std::move(t));

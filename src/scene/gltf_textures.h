@@ -35,8 +35,9 @@ class TextureTable {
 
   const tinygltf::Model& m_model;
   Scene& m_scene;
-  std::map<int, uint32_t> m_images;  // glTF image index (-1 - texture for a fallback) -> Scene::images
-  std::set<uint32_t> m_fallbacks;    // Scene::images that are the magenta checker
+  std::map<int, uint32_t>
+      m_images;  // glTF image index (-1 - texture for a fallback) -> Scene::images
+  std::set<uint32_t> m_fallbacks;  // Scene::images that are the magenta checker
 };
 
 }  // namespace hipr::gltf

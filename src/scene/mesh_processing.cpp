@@ -82,8 +82,10 @@ std::vector<uint32_t> triangulate(const std::vector<uint32_t>& indices, int mode
   std::vector<uint32_t> out;
   for (size_t i = 2; i < indices.size(); ++i) {
     if (mode == 5) {  // strip: alternate winding so every triangle keeps the front face
-      if (i % 2 == 0) out.insert(out.end(), {indices[i - 2], indices[i - 1], indices[i]});
-      else out.insert(out.end(), {indices[i - 1], indices[i - 2], indices[i]});
+      if (i % 2 == 0)
+        out.insert(out.end(), {indices[i - 2], indices[i - 1], indices[i]});
+      else
+        out.insert(out.end(), {indices[i - 1], indices[i - 2], indices[i]});
     } else {  // fan
       out.insert(out.end(), {indices[0], indices[i - 1], indices[i]});
     }
@@ -96,12 +98,17 @@ void complete_primitive(MeshPrimitive& p, const std::string& what) {
   p.indices.resize(p.indices.size() / 3 * 3);
   for (uint32_t i : p.indices) {
     if (i >= vertices)
-      throw InputError(what + ": index " + std::to_string(i) + " >= vertex count " + std::to_string(vertices));
+      throw InputError(what + ": index " + std::to_string(i) + " >= vertex count " +
+                       std::to_string(vertices));
   }
-  if (!p.uvs.empty() && p.uvs.size() != vertices) throw InputError(what + ": TEXCOORD_0 count differs from POSITION");
-  if (!p.uvs1.empty() && p.uvs1.size() != vertices) throw InputError(what + ": TEXCOORD_1 count differs from POSITION");
-  if (!p.normals.empty() && p.normals.size() != vertices) throw InputError(what + ": NORMAL count differs from POSITION");
-  if (!p.tangents.empty() && p.tangents.size() != vertices) throw InputError(what + ": TANGENT count differs from POSITION");
+  if (!p.uvs.empty() && p.uvs.size() != vertices)
+    throw InputError(what + ": TEXCOORD_0 count differs from POSITION");
+  if (!p.uvs1.empty() && p.uvs1.size() != vertices)
+    throw InputError(what + ": TEXCOORD_1 count differs from POSITION");
+  if (!p.normals.empty() && p.normals.size() != vertices)
+    throw InputError(what + ": NORMAL count differs from POSITION");
+  if (!p.tangents.empty() && p.tangents.size() != vertices)
+    throw InputError(what + ": TANGENT count differs from POSITION");
 
   if (p.normals.empty()) make_flat(p);
   if (p.uvs.empty()) p.uvs.assign(p.positions.size(), glm::vec2(0));
@@ -111,12 +118,15 @@ void complete_primitive(MeshPrimitive& p, const std::string& what) {
   std::vector<glm::vec3> fallback(p.positions.size(), glm::vec3(0));
   for (size_t t = 0; t < p.indices.size() / 3; ++t) {
     const glm::vec3 n = face_normal(p, t);
-    for (int k = 0; k < 3; ++k) fallback[p.indices[3 * t + size_t(k)]] += usable(n) ? n : glm::vec3(0);
+    for (int k = 0; k < 3; ++k)
+      fallback[p.indices[3 * t + size_t(k)]] += usable(n) ? n : glm::vec3(0);
   }
   for (size_t i = 0; i < p.normals.size(); ++i) {
     glm::vec3& n = p.normals[i];
-    if (usable(n)) n = glm::normalize(n);
-    else n = usable(fallback[i]) ? glm::normalize(fallback[i]) : glm::vec3(0, 1, 0);
+    if (usable(n))
+      n = glm::normalize(n);
+    else
+      n = usable(fallback[i]) ? glm::normalize(fallback[i]) : glm::vec3(0, 1, 0);
   }
 
   bool tangents_ok = !p.tangents.empty();

@@ -45,11 +45,21 @@ MaterialParameters default_material_params() {
 }
 
 std::vector<uint32_t*> texture_slots(MaterialParameters& m) {
-  return {&m.base_color_texture,          &m.metallic_roughness_texture,    &m.normal_texture,
-          &m.emission_texture,            &m.transmission_texture,          &m.clearcoat_texture,
-          &m.clearcoat_roughness_texture, &m.clearcoat_normal_texture,      &m.sheen_color_texture,
-          &m.sheen_roughness_texture,     &m.specular_texture,              &m.specular_color_texture,
-          &m.iridescence_texture,         &m.iridescence_thickness_texture, &m.anisotropy_texture};
+  return {&m.base_color_texture,
+          &m.metallic_roughness_texture,
+          &m.normal_texture,
+          &m.emission_texture,
+          &m.transmission_texture,
+          &m.clearcoat_texture,
+          &m.clearcoat_roughness_texture,
+          &m.clearcoat_normal_texture,
+          &m.sheen_color_texture,
+          &m.sheen_roughness_texture,
+          &m.specular_texture,
+          &m.specular_color_texture,
+          &m.iridescence_texture,
+          &m.iridescence_thickness_texture,
+          &m.anisotropy_texture};
 }
 
 uint64_t image_revision(const Image& image) {
@@ -80,7 +90,8 @@ uint64_t mesh_revision(const Mesh& mesh) {
 bool material_is_opaque(const MaterialParameters& m) {
   // A MASK material is tested even at full opacity: its texture alpha may cut it out.
   if (m.alpha_cutoff >= 0.0f) return false;
-  const bool texture_alpha = m.base_color_texture != abi::kInvalidIndex && !(m.flags & abi::kMaterialIgnoreTextureAlpha);
+  const bool texture_alpha =
+      m.base_color_texture != abi::kInvalidIndex && !(m.flags & abi::kMaterialIgnoreTextureAlpha);
   return m.geometry_opacity >= 1.0f && !texture_alpha;
 }
 
@@ -89,14 +100,16 @@ bool material_is_view_dependent(const MaterialParameters& m) {
   // surface moves with the eye; a dielectric's (4 % at normal incidence) needs to be smoother to
   // stand out than a metal's. Texture factors multiply these parameters, so they bound them.
   constexpr float kGlossyMetal = 0.4f, kGlossyDielectric = 0.2f, kGlossyCoat = 0.3f;
-  const bool metal = m.base_metalness >= 0.5f && m.specular_weight > 0.0f && m.specular_roughness < kGlossyMetal;
+  const bool metal =
+      m.base_metalness >= 0.5f && m.specular_weight > 0.0f && m.specular_roughness < kGlossyMetal;
   const bool dielectric = m.specular_weight > 0.0f && m.specular_roughness < kGlossyDielectric;
   const bool coat = m.coat_weight > 0.0f && m.coat_roughness < kGlossyCoat;
   return m.transmission_weight > 0.0f || metal || dielectric || coat;
 }
 
 bool material_emits(const MaterialParameters& m) {
-  return m.emission_luminance > 0.0f && glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f)));
+  return m.emission_luminance > 0.0f &&
+         glm::any(glm::greaterThan(m.emission_color, glm::vec3(0.0f)));
 }
 
 glm::mat4 Scene::world_transform(uint32_t node) const {
@@ -115,7 +128,8 @@ std::vector<Instance> Scene::instances() const {
     bool parent_visible;
   };
   std::vector<Entry> stack;
-  for (auto it = root_nodes.rbegin(); it != root_nodes.rend(); ++it) stack.push_back({*it, glm::mat4(1.0f), true});
+  for (auto it = root_nodes.rbegin(); it != root_nodes.rend(); ++it)
+    stack.push_back({*it, glm::mat4(1.0f), true});
   while (!stack.empty()) {
     const Entry entry = stack.back();
     stack.pop_back();

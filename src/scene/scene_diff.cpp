@@ -11,11 +11,13 @@
 namespace hipr {
 namespace {
 
-bool same_bytes(const MaterialParameters& a, const MaterialParameters& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bytes(const MaterialParameters& a, const MaterialParameters& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 bool same_light(const PunctualLight& a, const PunctualLight& b) {
-  return a.type == b.type && a.color == b.color && a.intensity == b.intensity && a.range == b.range &&
-         a.inner_cone == b.inner_cone && a.outer_cone == b.outer_cone;
+  return a.type == b.type && a.color == b.color && a.intensity == b.intensity &&
+         a.range == b.range && a.inner_cone == b.inner_cone && a.outer_cone == b.outer_cone;
 }
 
 // Per channel after / before, where that is a finite number (a channel that stays 0 scales by 1);
@@ -23,7 +25,9 @@ bool same_light(const PunctualLight& a, const PunctualLight& b) {
 std::optional<glm::vec3> channel_factor(glm::vec3 before, glm::vec3 after) {
   glm::vec3 factor(1.0f);
   for (int c = 0; c < 3; ++c) {
-    if (!std::isfinite(before[c]) || !std::isfinite(after[c]) || before[c] < 0.0f || after[c] < 0.0f) return std::nullopt;
+    if (!std::isfinite(before[c]) || !std::isfinite(after[c]) || before[c] < 0.0f ||
+        after[c] < 0.0f)
+      return std::nullopt;
     if (before[c] == 0.0f) {
       if (after[c] != 0.0f) return std::nullopt;
       continue;
@@ -35,7 +39,8 @@ std::optional<glm::vec3> channel_factor(glm::vec3 before, glm::vec3 after) {
 }
 
 // The material's emission scaled and nothing else changed.
-std::optional<glm::vec3> emission_factor(const MaterialParameters& before, const MaterialParameters& after) {
+std::optional<glm::vec3> emission_factor(const MaterialParameters& before,
+                                         const MaterialParameters& after) {
   MaterialParameters rest = after;
   rest.emission_color = before.emission_color;
   rest.emission_luminance = before.emission_luminance;
@@ -92,10 +97,14 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     if (same_bytes(before.materials[m].params, after.materials[m].params)) continue;
     material_changed[m] = true;
     changes.materials = true;
-    if (material_emits(before.materials[m].params) || material_emits(after.materials[m].params)) changes.light_tables = true;
-    const std::optional<glm::vec3> factor = emission_factor(before.materials[m].params, after.materials[m].params);
-    if (factor) scales.push_back({EmitterScale::Kind::Material, uint32_t(m), *factor});
-    else linear = false;
+    if (material_emits(before.materials[m].params) || material_emits(after.materials[m].params))
+      changes.light_tables = true;
+    const std::optional<glm::vec3> factor =
+        emission_factor(before.materials[m].params, after.materials[m].params);
+    if (factor)
+      scales.push_back({EmitterScale::Kind::Material, uint32_t(m), *factor});
+    else
+      linear = false;
   }
 
   changes.geometry = before.meshes.size() != after.meshes.size();
@@ -111,14 +120,17 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     // Another mesh (or the same index holding other vertices) is a new instance.
     const bool same_mesh = old >= 0 && old_instances[size_t(old)].mesh == b.mesh &&
                            before.meshes[b.mesh].revision == after.meshes[b.mesh].revision;
-    bool changed = !same_mesh || old_instances[size_t(old)].world != b.world || old_instances[size_t(old)].visible != b.visible;
+    bool changed = !same_mesh || old_instances[size_t(old)].world != b.world ||
+                   old_instances[size_t(old)].visible != b.visible;
     if (changed) {
       linear = false;
       changes.transforms = true;
-      if (emits_any(after, b.mesh) || (old >= 0 && emits_any(before, old_instances[size_t(old)].mesh)))
+      if (emits_any(after, b.mesh) ||
+          (old >= 0 && emits_any(before, old_instances[size_t(old)].mesh)))
         changes.light_tables = true;
     }
-    for (const MeshPrimitive& p : after.meshes[b.mesh].primitives) changed = changed || material_changed[p.material];
+    for (const MeshPrimitive& p : after.meshes[b.mesh].primitives)
+      changed = changed || material_changed[p.material];
     if (changed) changes.instances.push_back(uint32_t(i));
   }
   for (const Instance& a : old_instances) {
@@ -135,7 +147,9 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
   const auto placed = [](const Scene& scene, uint32_t n) {
     return PlacedLight{scene.lights[size_t(scene.nodes[n].light)], scene.world_transform(n)};
   };
-  const auto had_light = [&](uint32_t n) { return std::binary_search(old_lights.begin(), old_lights.end(), n); };
+  const auto had_light = [&](uint32_t n) {
+    return std::binary_search(old_lights.begin(), old_lights.end(), n);
+  };
   for (uint32_t n : new_lights) {
     const PlacedLight now = placed(after, n);
     if (!had_light(n)) {
@@ -149,9 +163,12 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     if (moved || !same_light(was.light, now.light)) {
       changes.lights.push_back({n, was, now});
       changes.light_tables = true;
-      const std::optional<glm::vec3> factor = moved ? std::nullopt : light_factor(was.light, now.light);
-      if (factor) scales.push_back({EmitterScale::Kind::PunctualLight, n, *factor});
-      else linear = false;
+      const std::optional<glm::vec3> factor =
+          moved ? std::nullopt : light_factor(was.light, now.light);
+      if (factor)
+        scales.push_back({EmitterScale::Kind::PunctualLight, n, *factor});
+      else
+        linear = false;
     }
   }
   for (uint32_t n : old_lights) {
@@ -164,7 +181,8 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
 
   const Camera old_camera = resolve_camera(before);
   const Camera new_camera = resolve_camera(after);
-  changes.camera = old_camera.camera_to_world != new_camera.camera_to_world || old_camera.yfov != new_camera.yfov;
+  changes.camera = old_camera.camera_to_world != new_camera.camera_to_world ||
+                   old_camera.yfov != new_camera.yfov;
   if (changes.camera) changes.camera_before = old_camera;
   if (changes.camera) linear = false;
 
@@ -172,10 +190,11 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
   const std::optional<Environment>& b = after.environment;
   // Maps are told apart by what made them (the snapshot keeps no texels): a file, the studio, or
   // the sky with its sun.
-  changes.environment_map = a.has_value() != b.has_value() ||
-                            (a && (a->path != b->path || a->sky != b->sky || a->width != b->width ||
-                                   a->height != b->height));
-  if (changes.environment_map || (a && (a->intensity != b->intensity || a->rotation != b->rotation))) {
+  changes.environment_map =
+      a.has_value() != b.has_value() || (a && (a->path != b->path || a->sky != b->sky ||
+                                               a->width != b->width || a->height != b->height));
+  if (changes.environment_map ||
+      (a && (a->intensity != b->intensity || a->rotation != b->rotation))) {
     changes.environment = true;
     // The light-selection CDF weighs the environment by its mean radiance x intensity.
     changes.light_tables = true;
@@ -183,8 +202,10 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
         changes.environment_map || a->rotation != b->rotation
             ? std::nullopt
             : channel_factor(glm::vec3(a->intensity), glm::vec3(b->intensity));
-    if (factor) scales.push_back({EmitterScale::Kind::Environment, 0, *factor});
-    else linear = false;
+    if (factor)
+      scales.push_back({EmitterScale::Kind::Environment, 0, *factor});
+    else
+      linear = false;
   }
   if (linear) changes.emitter_scales = std::move(scales);
   return changes;

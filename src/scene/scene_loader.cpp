@@ -1,9 +1,9 @@
 // glTF 2.0 -> Scene. Order of defence: container and JSON checks first (our code), then
 // tinygltf parses with sandboxed file access, then every index and accessor is validated as it
 // is converted. Anything wrong with the input is an InputError naming the object at fault.
-#include <nlohmann/json.hpp>
 #include <stb_image.h>
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +20,7 @@
 #include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_node_transform.h"
+#include "scene/gltf_precheck.h"
 #include "scene/gltf_sandbox.h"
 #include "scene/mesh_processing.h"
 #include "scene/scene_limits.h"
@@ -27,85 +28,14 @@
 namespace hipr {
 namespace fs = std::filesystem;
 
-const std::vector<std::string>& supported_gltf_extensions() {
-  static const std::vector<std::string> list = {
-      "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_materials_specular",
-      "KHR_materials_ior",         "KHR_materials_transmission",      "KHR_materials_volume",
-      "KHR_materials_clearcoat",   "KHR_materials_sheen",             "KHR_materials_iridescence",
-      "KHR_materials_anisotropy",  "KHR_materials_diffuse_transmission", "KHR_texture_transform",
-      "KHR_node_visibility",
-  };
-  return list;
-}
-
 namespace {
-
-// One warning per optional extension the renderer does not implement (the file still renders).
-void warn_unsupported_extensions(const std::vector<std::string>& used, const std::string& name) {
-  const auto& supported = supported_gltf_extensions();
-  for (const std::string& ext : used) {
-    if (std::find(supported.begin(), supported.end(), ext) != supported.end()) continue;
-    if (ext == "KHR_materials_dispersion")
-      log::warn(name + ": KHR_materials_dispersion is not supported; rendered without dispersion");
-    else if (ext == "KHR_materials_variants")
-      log::warn(name + ": KHR_materials_variants is not supported; the default materials are used");
-    else
-      log::warn(name + ": glTF extension " + ext + " is not supported; ignored");
-  }
-}
-
-}  // namespace
-
-namespace {
-
-// The JSON chunk of a .glb, or the whole .gltf file.
-std::string json_text(const std::vector<unsigned char>& bytes, bool glb) {
-  if (!glb) return std::string(bytes.begin(), bytes.end());
-  uint32_t length;
-  std::memcpy(&length, bytes.data() + 12, 4);
-  return std::string(bytes.begin() + 20, bytes.begin() + 20 + std::ptrdiff_t(length));
-}
-
-// Checks made on the raw JSON before tinygltf sees it.
-void precheck_json(const std::string& text, const std::string& name) {
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    std::string why = e.what();
-    if (const size_t at = why.find("] "); at != std::string::npos) why = why.substr(at + 2);
-    throw InputError(name + ": invalid JSON: " + why);
-  }
-  if (!doc.is_object()) throw InputError(name + ": invalid glTF: top level is not a JSON object");
-  if (!doc.contains("asset") || !doc["asset"].is_object() || !doc["asset"].contains("version") ||
-      !doc["asset"]["version"].is_string())
-    throw InputError(name + ": invalid glTF: required 'asset.version' is missing");
-  const std::string version = doc["asset"]["version"];
-  if (version.rfind("2.", 0) != 0)
-    throw InputError(name + ": unsupported glTF version " + version + " (only 2.x is supported)");
-  if (doc.contains("extensionsRequired") && doc["extensionsRequired"].is_array()) {
-    for (const auto& ext : doc["extensionsRequired"]) {
-      if (!ext.is_string()) throw InputError(name + ": invalid glTF: extensionsRequired holds a non-string");
-      const auto& supported = supported_gltf_extensions();
-      if (std::find(supported.begin(), supported.end(), ext.get<std::string>()) == supported.end())
-        throw InputError(name + ": requires unsupported glTF extension " + ext.get<std::string>());
-    }
-  }
-  for (const char* kind : {"buffers", "images"}) {
-    if (!doc.contains(kind) || !doc[kind].is_array()) continue;
-    for (size_t i = 0; i < doc[kind].size(); ++i) {
-      const auto& item = doc[kind][i];
-      if (item.is_object() && item.contains("uri") && item["uri"].is_string())
-        gltf::check_uri(item["uri"], name + ": " + std::string(kind).substr(0, std::strlen(kind) - 1) + " " + std::to_string(i));
-    }
-  }
-}
 
 // Decodes images with stb, but a broken image becomes a warning and a fallback texture, not a
 // failed load. So does one whose size (read from its header first) is beyond the limits, or
 // would take the scene's images beyond theirs (`user`: the pixels decoded so far).
-bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
-                          int width, int height, const unsigned char* bytes, int size, void* user) {
+bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* err,
+                          std::string* warn, int width, int height, const unsigned char* bytes,
+                          int size, void* user) {
   (void)err;
   const auto refuse = [&](const std::string& why) {
     if (warn) *warn += "image " + std::to_string(index) + " " + why + "\n";
@@ -115,27 +45,32 @@ bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* 
   size_t& decoded = *static_cast<size_t*>(user);
   int w = 0, h = 0, channels = 0;
   if (stbi_info_from_memory(bytes, size, &w, &h, &channels)) {
-    if (w > gltf::kMaxImageSide || h > gltf::kMaxImageSide || size_t(w) * size_t(h) > gltf::kMaxImagePixels)
-      return refuse("is " + std::to_string(w) + "x" + std::to_string(h) + ", beyond hipr's limit (" +
-                    std::to_string(gltf::kMaxImageSide) + " a side, " + std::to_string(gltf::kMaxImagePixels) +
-                    " pixels): not decoded");
+    if (w > gltf::kMaxImageSide || h > gltf::kMaxImageSide ||
+        size_t(w) * size_t(h) > gltf::kMaxImagePixels)
+      return refuse("is " + std::to_string(w) + "x" + std::to_string(h) +
+                    ", beyond hipr's limit (" + std::to_string(gltf::kMaxImageSide) + " a side, " +
+                    std::to_string(gltf::kMaxImagePixels) + " pixels): not decoded");
     if (decoded + size_t(w) * size_t(h) > gltf::kMaxScenePixels)
-      return refuse("would take the scene's images beyond " + std::to_string(gltf::kMaxScenePixels) +
-                    " pixels: not decoded");
+      return refuse("would take the scene's images beyond " +
+                    std::to_string(gltf::kMaxScenePixels) + " pixels: not decoded");
     decoded += size_t(w) * size_t(h);
   }
   std::string local_err;
   // (tinygltf reads its own options from the last argument: none.)
-  if (tinygltf::LoadImageData(image, index, &local_err, warn, width, height, bytes, size, nullptr)) return true;
+  if (tinygltf::LoadImageData(image, index, &local_err, warn, width, height, bytes, size, nullptr))
+    return true;
   return refuse("could not be decoded: " + local_err);
 }
 
 glm::mat4 node_transform(const tinygltf::Node& node, const std::string& what) {
   if (!node.matrix.empty() && node.matrix.size() != 16)
-    throw InputError(what + " has a matrix of " + std::to_string(node.matrix.size()) + " numbers (expected 16)");
-  const glm::mat4 m = gltf::local_transform(node.matrix, node.translation, node.rotation, node.scale);
+    throw InputError(what + " has a matrix of " + std::to_string(node.matrix.size()) +
+                     " numbers (expected 16)");
+  const glm::mat4 m =
+      gltf::local_transform(node.matrix, node.translation, node.rotation, node.scale);
   for (int i = 0; i < 16; ++i)
-    if (!std::isfinite(glm::value_ptr(m)[i])) throw InputError(what + " has a non-finite transform");
+    if (!std::isfinite(glm::value_ptr(m)[i]))
+      throw InputError(what + " has a non-finite transform");
   return m;
 }
 
@@ -151,22 +86,25 @@ class Converter {
     convert_lights();
     convert_nodes();
     for (const std::string& ext : m_model.extensionsUsed) m_scene.extensions_used.push_back(ext);
-    warn_unsupported_extensions(m_model.extensionsUsed, m_name);
+    gltf::warn_unsupported_extensions(m_model.extensionsUsed, m_name);
   }
 
  private:
   std::string object(const char* kind, size_t index, const std::string& label) const {
-    return m_name + ": " + kind + " " + std::to_string(index) + (label.empty() ? "" : " ('" + label + "')");
+    return m_name + ": " + kind + " " + std::to_string(index) +
+           (label.empty() ? "" : " ('" + label + "')");
   }
 
   void convert_materials() {
     for (size_t i = 0; i < m_model.materials.size(); ++i)
-      m_scene.materials.push_back(gltf::convert_material(m_model.materials[i], i, m_textures, m_name));
+      m_scene.materials.push_back(
+          gltf::convert_material(m_model.materials[i], i, m_textures, m_name));
     // glTF's default material, for primitives without one (edited and saved: document extras).
     Material fallback;
     fallback.name = "default";
     fallback.params = gltf::default_gltf_material_params();
-    gltf::apply_openpbr_extras(m_model.extras, gltf::kDefaultMaterialExtras, fallback.params, m_name);
+    gltf::apply_openpbr_extras(m_model.extras, gltf::kDefaultMaterialExtras, fallback.params,
+                               m_name);
     m_default_material = uint32_t(m_scene.materials.size());
     m_scene.materials.push_back(fallback);
   }
@@ -177,17 +115,21 @@ class Converter {
       Mesh mesh;
       mesh.name = source.name.empty() ? "mesh " + std::to_string(mi) : source.name;
       for (size_t pi = 0; pi < source.primitives.size(); ++pi) {
-        const std::string what = object("mesh", mi, source.name) + " primitive " + std::to_string(pi);
-        if (auto primitive = convert_primitive(source.primitives[pi], what)) mesh.primitives.push_back(std::move(*primitive));
+        const std::string what =
+            object("mesh", mi, source.name) + " primitive " + std::to_string(pi);
+        if (auto primitive = convert_primitive(source.primitives[pi], what))
+          mesh.primitives.push_back(std::move(*primitive));
       }
       mesh.revision = mesh_revision(mesh);
       m_scene.meshes.push_back(std::move(mesh));
     }
   }
 
-  std::optional<MeshPrimitive> convert_primitive(const tinygltf::Primitive& source, const std::string& what) {
+  std::optional<MeshPrimitive> convert_primitive(const tinygltf::Primitive& source,
+                                                 const std::string& what) {
     const int mode = source.mode < 0 ? TINYGLTF_MODE_TRIANGLES : source.mode;
-    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        mode != TINYGLTF_MODE_TRIANGLE_FAN) {
       log::warn(what + " draws points or lines; skipped");
       return std::nullopt;
     }
@@ -204,11 +146,20 @@ class Converter {
 
     MeshPrimitive p;
     p.material = source.material < 0 ? m_default_material : uint32_t(source.material);
-    p.positions = gltf::to_vec3(gltf::read_floats(m_model, attribute("POSITION"), 3, what + " POSITION"));
-    if (attribute("NORMAL") >= 0) p.normals = gltf::to_vec3(gltf::read_floats(m_model, attribute("NORMAL"), 3, what + " NORMAL"));
-    if (attribute("TANGENT") >= 0) p.tangents = gltf::to_vec4(gltf::read_floats(m_model, attribute("TANGENT"), 4, what + " TANGENT"));
-    if (attribute("TEXCOORD_0") >= 0) p.uvs = gltf::to_vec2(gltf::read_floats(m_model, attribute("TEXCOORD_0"), 2, what + " TEXCOORD_0"));
-    if (attribute("TEXCOORD_1") >= 0) p.uvs1 = gltf::to_vec2(gltf::read_floats(m_model, attribute("TEXCOORD_1"), 2, what + " TEXCOORD_1"));
+    p.positions =
+        gltf::to_vec3(gltf::read_floats(m_model, attribute("POSITION"), 3, what + " POSITION"));
+    if (attribute("NORMAL") >= 0)
+      p.normals =
+          gltf::to_vec3(gltf::read_floats(m_model, attribute("NORMAL"), 3, what + " NORMAL"));
+    if (attribute("TANGENT") >= 0)
+      p.tangents =
+          gltf::to_vec4(gltf::read_floats(m_model, attribute("TANGENT"), 4, what + " TANGENT"));
+    if (attribute("TEXCOORD_0") >= 0)
+      p.uvs = gltf::to_vec2(
+          gltf::read_floats(m_model, attribute("TEXCOORD_0"), 2, what + " TEXCOORD_0"));
+    if (attribute("TEXCOORD_1") >= 0)
+      p.uvs1 = gltf::to_vec2(
+          gltf::read_floats(m_model, attribute("TEXCOORD_1"), 2, what + " TEXCOORD_1"));
     if (source.indices >= 0) {
       p.indices = gltf::read_indices(m_model, source.indices, what + " indices");
     } else {
@@ -232,7 +183,8 @@ class Converter {
         camera.yfov = float(yfov);
         camera.znear = float(std::max(source.perspective.znear, 0.0));
       } else {
-        log::warn(object("camera", i, source.name) + " is orthographic; rendered as a 45-degree perspective camera");
+        log::warn(object("camera", i, source.name) +
+                  " is orthographic; rendered as a 45-degree perspective camera");
         camera.yfov = 0.785398f;
       }
       m_scene.cameras.push_back(camera);
@@ -244,19 +196,27 @@ class Converter {
       const tinygltf::Light& source = m_model.lights[i];
       PunctualLight light;
       light.name = source.name.empty() ? "light " + std::to_string(i) : source.name;
-      if (source.color.size() >= 3) light.color = glm::max(glm::vec3(source.color[0], source.color[1], source.color[2]), glm::vec3(0));
+      if (source.color.size() >= 3)
+        light.color =
+            glm::max(glm::vec3(source.color[0], source.color[1], source.color[2]), glm::vec3(0));
       light.intensity = float(source.intensity);
       light.range = float(source.range);
       if (!std::isfinite(light.range) || light.range < 0.0f)
         throw InputError(object("light", i, source.name) + " has a negative or non-finite range");
-      if (source.type == "point") light.type = LightType::Point;
-      else if (source.type == "spot") light.type = LightType::Spot;
-      else if (source.type == "directional") light.type = LightType::Directional;
-      else throw InputError(object("light", i, source.name) + " has unknown type '" + source.type + "'");
+      if (source.type == "point")
+        light.type = LightType::Point;
+      else if (source.type == "spot")
+        light.type = LightType::Spot;
+      else if (source.type == "directional")
+        light.type = LightType::Directional;
+      else
+        throw InputError(object("light", i, source.name) + " has unknown type '" + source.type +
+                         "'");
       light.inner_cone = float(source.spot.innerConeAngle);
       light.outer_cone = float(source.spot.outerConeAngle);
       gltf::apply_light_extras(source.extras, light, object("light", i, source.name));
-      if (!std::isfinite(light.intensity) || light.intensity < 0 || !std::isfinite(light.color.x + light.color.y + light.color.z))
+      if (!std::isfinite(light.intensity) || light.intensity < 0 ||
+          !std::isfinite(light.color.x + light.color.y + light.color.z))
         throw InputError(object("light", i, source.name) + " has an invalid intensity or colour");
       m_scene.lights.push_back(light);
     }
@@ -275,16 +235,19 @@ class Converter {
       node.mesh = checked(source.mesh, m_model.meshes.size(), what, "mesh");
       node.camera = checked(source.camera, m_model.cameras.size(), what, "camera");
       node.visible = visibility(source, what);
-      if (const auto it = source.extensions.find("KHR_lights_punctual"); it != source.extensions.end() && it->second.Has("light")) {
+      if (const auto it = source.extensions.find("KHR_lights_punctual");
+          it != source.extensions.end() && it->second.Has("light")) {
         const tinygltf::Value& light = it->second.Get("light");
         if (!light.IsInt()) throw InputError(what + ": KHR_lights_punctual.light is not an index");
         node.light = checked(light.GetNumberAsInt(), m_model.lights.size(), what, "light");
       }
       for (int child : source.children) {
         const int c = required(child, count, what, "child node");
-        if (size_t(c) == i) throw InputError(what + " is its own child (cycle in the node hierarchy)");
+        if (size_t(c) == i)
+          throw InputError(what + " is its own child (cycle in the node hierarchy)");
         if (m_scene.nodes[size_t(c)].parent >= 0)
-          throw InputError(what + ": node " + std::to_string(c) + " has more than one parent (node hierarchy must be a tree)");
+          throw InputError(what + ": node " + std::to_string(c) +
+                           " has more than one parent (node hierarchy must be a tree)");
         m_scene.nodes[size_t(c)].parent = int(i);
         m_scene.children[i].push_back(uint32_t(c));
       }
@@ -293,17 +256,22 @@ class Converter {
     for (size_t i = 0; i < count; ++i) {
       size_t steps = 0;
       for (int p = m_scene.nodes[i].parent; p >= 0; p = m_scene.nodes[size_t(p)].parent)
-        if (++steps > count) throw InputError(object("node", i, m_model.nodes[i].name) + " is part of a cycle in the node hierarchy");
+        if (++steps > count)
+          throw InputError(object("node", i, m_model.nodes[i].name) +
+                           " is part of a cycle in the node hierarchy");
     }
     const int scene = m_model.defaultScene >= 0 ? m_model.defaultScene : 0;
     if (!m_model.scenes.empty()) {
-      if (size_t(scene) >= m_model.scenes.size()) throw InputError(m_name + ": default scene " + std::to_string(scene) + " does not exist");
+      if (size_t(scene) >= m_model.scenes.size())
+        throw InputError(m_name + ": default scene " + std::to_string(scene) + " does not exist");
       const std::string what = m_name + ": scene " + std::to_string(scene);
       for (int root : m_model.scenes[size_t(scene)].nodes) {
         const int r = required(root, count, what, "node");
         if (m_scene.nodes[size_t(r)].parent >= 0)
-          throw InputError(what + ": root node " + std::to_string(r) + " is also a child of another node");
-        if (std::find(m_scene.root_nodes.begin(), m_scene.root_nodes.end(), uint32_t(r)) != m_scene.root_nodes.end())
+          throw InputError(what + ": root node " + std::to_string(r) +
+                           " is also a child of another node");
+        if (std::find(m_scene.root_nodes.begin(), m_scene.root_nodes.end(), uint32_t(r)) !=
+            m_scene.root_nodes.end())
           throw InputError(what + " lists node " + std::to_string(r) + " twice");
         m_scene.root_nodes.push_back(uint32_t(r));
       }
@@ -321,7 +289,8 @@ class Converter {
     if (!it->second.IsObject()) throw InputError(what + ": KHR_node_visibility is not an object");
     if (!it->second.Has("visible")) return true;
     const tinygltf::Value& visible = it->second.Get("visible");
-    if (!visible.IsBool()) throw InputError(what + ": KHR_node_visibility.visible is not a boolean");
+    if (!visible.IsBool())
+      throw InputError(what + ": KHR_node_visibility.visible is not a boolean");
     return visible.Get<bool>();
   }
 
@@ -349,9 +318,11 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   const std::string name = path.filename().string();
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError("scene file not found: " + path.string());
-  if (!fs::is_regular_file(path, ec)) throw InputError("scene path is not a file: " + path.string());
+  if (!fs::is_regular_file(path, ec))
+    throw InputError("scene path is not a file: " + path.string());
   std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   if (extension != ".gltf" && extension != ".glb")
     throw InputError(path.string() + ": unsupported scene format (expected .gltf or .glb)");
 
@@ -359,19 +330,25 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   if (bytes.empty()) throw InputError(name + ": invalid glTF: file is empty");
   const bool glb = extension == ".glb" || gltf::looks_like_glb(bytes);
   if (glb) gltf::check_glb_container(bytes, name);
-  precheck_json(json_text(bytes, glb), name);
+  gltf::precheck_json(gltf::json_text(bytes, glb), name);
 
   const fs::path folder = fs::absolute(path).parent_path();
   gltf::Sandbox sandbox(folder);
   sandbox.hasher().add(bytes.data(), bytes.size());
   tinygltf::FsCallbacks callbacks;
   callbacks.user_data = &sandbox;
-  callbacks.FileExists = [](const std::string& file, void* user) { return static_cast<gltf::Sandbox*>(user)->exists(file); };
-  callbacks.ExpandFilePath = [](const std::string& file, void*) { return file; };  // never shell-expand
-  callbacks.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& file, void* user) {
+  callbacks.FileExists = [](const std::string& file, void* user) {
+    return static_cast<gltf::Sandbox*>(user)->exists(file);
+  };
+  callbacks.ExpandFilePath = [](const std::string& file, void*) {
+    return file;
+  };  // never shell-expand
+  callbacks.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err,
+                               const std::string& file, void* user) {
     return static_cast<gltf::Sandbox*>(user)->read(out, err, file);
   };
-  callbacks.WriteWholeFile = [](std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  callbacks.WriteWholeFile = [](std::string* err, const std::string&,
+                                const std::vector<unsigned char>&, void*) {
     if (err) *err = "writing is disabled while loading";
     return false;
   };
@@ -383,8 +360,10 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   tinygltf::Model model;
   std::string err, warn;
   const std::string base = folder.string();
-  const bool ok = glb ? parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base)
-                      : parser.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+  const bool ok = glb ? parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                                    unsigned(bytes.size()), base)
+                      : parser.LoadASCIIFromString(&model, &err, &warn,
+                                                   reinterpret_cast<const char*>(bytes.data()),
                                                    unsigned(bytes.size()), base);
   const auto first_line = [](std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
@@ -394,7 +373,8 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   if (!ok) throw InputError(name + ": " + (err.empty() ? "invalid glTF" : first_line(err)));
   for (size_t start = 0; start < warn.size();) {
     const size_t end = warn.find('\n', start);
-    const std::string line = warn.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    const std::string line =
+        warn.substr(start, end == std::string::npos ? std::string::npos : end - start);
     if (!line.empty()) log::warn(name + ": " + line);
     if (end == std::string::npos) break;
     start = end + 1;
@@ -411,11 +391,13 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   fix_default_camera(scene);  // the view as loaded: edits move objects, not it
   const std::string choice = options.environment.string();
   const SceneLighting lighting = scene_lighting(scene);
-  if (choice == kStudioEnvironmentName || (choice == kAutoEnvironment && !lighting.lights_itself())) {
+  if (choice == kStudioEnvironmentName ||
+      (choice == kAutoEnvironment && !lighting.lights_itself())) {
     scene.environment = make_studio_environment();
     if (choice == kAutoEnvironment)
-      log::info(name + (lighting.emits() ? " brings no light (its emission is 1 nit at most, a glow)"
-                                         : " brings no light") +
+      log::info(name +
+                (lighting.emits() ? " brings no light (its emission is 1 nit at most, a glow)"
+                                  : " brings no light") +
                 ": lit by the built-in studio environment (--env none for none)");
   } else if (!choice.empty() && choice != kAutoEnvironment) {
     scene.environment = make_environment(options.environment, options.sky);
@@ -423,11 +405,14 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   if (scene.environment) {
     scene.environment->intensity = options.environment_intensity;
     scene.environment->rotation = glm::radians(options.environment_rotation_degrees);
-    sandbox.hasher().add(scene.environment->texels.data(), scene.environment->texels.size() * sizeof(glm::vec3));
+    sandbox.hasher().add(scene.environment->texels.data(),
+                         scene.environment->texels.size() * sizeof(glm::vec3));
   } else if (choice == kNoEnvironment && !lighting.emits()) {
     // (Only when asked for by name: the library's default, empty, is silent.)
-    log::warn(name + ": nothing in the scene emits light and there is no environment: the image will be black "
-              "(--env studio lights it)");
+    log::warn(
+        name +
+        ": nothing in the scene emits light and there is no environment: the image will be black "
+        "(--env studio lights it)");
   }
   check_scene_limits(scene, name);  // before anything derives boxes, powers or a view from it
   scene.content_hash = sandbox.hasher().hex();

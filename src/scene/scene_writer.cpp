@@ -41,7 +41,8 @@ void declare_extension(gltf::Json& doc, const std::string& extension) {
 // Lists in extensionsUsed the extensions the writer gave materials or nodes.
 void declare_extensions(gltf::Json& doc) {
   std::vector<std::pair<const char*, std::string>> written;
-  for (const std::string& e : gltf::material_extensions_written()) written.push_back({"materials", e});
+  for (const std::string& e : gltf::material_extensions_written())
+    written.push_back({"materials", e});
   written.push_back({"nodes", "KHR_node_visibility"});
   written.push_back({"nodes", "KHR_lights_punctual"});  // an imported lamp in a scene without one
   for (const auto& [kind, extension] : written) {
@@ -59,16 +60,20 @@ void save_scene(const Scene& scene, const fs::path& path) {
     throw InputError(path.string() + ": cannot save as this format (expected .gltf or .glb)");
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::error_code ec;
-  if (!fs::is_directory(folder, ec)) throw InputError("cannot save " + path.string() + ": folder does not exist");
-  if (fs::is_directory(path, ec)) throw InputError("cannot save " + path.string() + ": it is a folder");
+  if (!fs::is_directory(folder, ec))
+    throw InputError("cannot save " + path.string() + ": folder does not exist");
+  if (fs::is_directory(path, ec))
+    throw InputError("cannot save " + path.string() + ": it is a folder");
 
   const gltf::SourceDocument source = gltf::read_source(scene.source);
   gltf::Json doc = source.json;
   try {
     gltf::BufferWriter buffer(doc);  // for what is written anew: meshes, imported images
-    gltf::write_meshes(doc, scene, buffer, source.name);  // before the imported materials are appended
+    gltf::write_meshes(doc, scene, buffer,
+                       source.name);  // before the imported materials are appended
     gltf::TextureWriter textures(doc, scene, buffer);
-    const std::vector<Material> materials = gltf::write_new_materials(doc, scene.materials, textures);
+    const std::vector<Material> materials =
+        gltf::write_new_materials(doc, scene.materials, textures);
     gltf::write_nodes(doc, scene, source.name);
     gltf::write_lights(doc, scene.lights, source.name);
     gltf::write_materials(doc, materials, source.name);

@@ -27,7 +27,8 @@ AccelerationStructure& AccelerationStructure::operator=(AccelerationStructure&& 
 }
 
 void AccelerationStructure::release() {
-  if (m_ctx && m_handle) m_ctx->fn().destroyAccelerationStructure(m_ctx->device(), m_handle, nullptr);
+  if (m_ctx && m_handle)
+    m_ctx->fn().destroyAccelerationStructure(m_ctx->device(), m_handle, nullptr);
   m_handle = VK_NULL_HANDLE;
 }
 
@@ -35,8 +36,8 @@ void AccelerationStructure::release() {
 // `scratch`, made anew only when short.
 void build_acceleration_structure(const Context& ctx, VkAccelerationStructureTypeKHR type,
                                   const std::vector<VkAccelerationStructureGeometryKHR>& geometries,
-                                  const std::vector<uint32_t>& primitive_counts, AccelerationStructure& target,
-                                  Buffer& scratch) {
+                                  const std::vector<uint32_t>& primitive_counts,
+                                  AccelerationStructure& target, Buffer& scratch) {
   // `geometries` stays alive until the build has executed: lavapipe reads it at record time.
   VkAccelerationStructureBuildGeometryInfoKHR build{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
@@ -46,20 +47,25 @@ void build_acceleration_structure(const Context& ctx, VkAccelerationStructureTyp
   build.geometryCount = uint32_t(geometries.size());
   build.pGeometries = geometries.data();
 
-  VkAccelerationStructureBuildSizesInfoKHR sizes{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
-  ctx.fn().getAccelerationStructureBuildSizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+  VkAccelerationStructureBuildSizesInfoKHR sizes{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+  ctx.fn().getAccelerationStructureBuildSizes(ctx.device(),
+                                              VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                               &build, primitive_counts.data(), &sizes);
 
   if (!target.m_handle || target.m_size < sizes.accelerationStructureSize) {
     target.release();
     target.m_ctx = &ctx;
-    target.m_storage = Buffer(ctx, sizes.accelerationStructureSize, VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR);
+    target.m_storage = Buffer(ctx, sizes.accelerationStructureSize,
+                              VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR);
     target.m_size = sizes.accelerationStructureSize;
-    VkAccelerationStructureCreateInfoKHR create{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+    VkAccelerationStructureCreateInfoKHR create{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
     create.buffer = target.m_storage.handle();
     create.size = sizes.accelerationStructureSize;
     create.type = type;
-    VK_CHECK(ctx.fn().createAccelerationStructure(ctx.device(), &create, nullptr, &target.m_handle));
+    VK_CHECK(
+        ctx.fn().createAccelerationStructure(ctx.device(), &create, nullptr, &target.m_handle));
     VkAccelerationStructureDeviceAddressInfoKHR address{
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
     address.accelerationStructure = target.m_handle;
@@ -80,11 +86,13 @@ void build_acceleration_structure(const Context& ctx, VkAccelerationStructureTyp
   });
 }
 
-AccelerationStructure build_blas(const Context& ctx, const std::vector<TriangleGeometry>& geometries) {
+AccelerationStructure build_blas(const Context& ctx,
+                                 const std::vector<TriangleGeometry>& geometries) {
   std::vector<VkAccelerationStructureGeometryKHR> vk_geometries;
   std::vector<uint32_t> counts;
   for (const TriangleGeometry& g : geometries) {
-    VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+    VkAccelerationStructureGeometryKHR geometry{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
     geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
     // Non-opaque geometry stops ray queries at candidates, where the shader's alpha test
     // decides (shaders/common/cutout.glsl).
@@ -102,8 +110,8 @@ AccelerationStructure build_blas(const Context& ctx, const std::vector<TriangleG
   }
   AccelerationStructure blas;
   Buffer scratch;
-  build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, vk_geometries, counts, blas,
-                               scratch);
+  build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, vk_geometries,
+                               counts, blas, scratch);
   return blas;
 }
 
@@ -113,20 +121,24 @@ void build_tlas(const Context& ctx, const std::vector<TlasInstance>& instances, 
     const TlasInstance& in = instances[i];
     VkAccelerationStructureInstanceKHR& out = records[i];
     std::memcpy(out.transform.matrix, in.object_to_world.data(), sizeof(out.transform.matrix));
-    if (in.custom_index >= (1u << 24)) throw InputError("scene has too many primitives for one TLAS");
+    if (in.custom_index >= (1u << 24))
+      throw InputError("scene has too many primitives for one TLAS");
     out.instanceCustomIndex = in.custom_index;
     out.mask = in.visible ? 0xff : 0x00;
     out.instanceShaderBindingTableRecordOffset = 0;
     // Vulkan's default front face is clockwise in its ray space; glTF fronts are counter-clockwise.
-    out.flags = in.front_face_ccw ? VK_GEOMETRY_INSTANCE_TRIANGLE_FRONT_COUNTERCLOCKWISE_BIT_KHR : 0;
+    out.flags =
+        in.front_face_ccw ? VK_GEOMETRY_INSTANCE_TRIANGLE_FRONT_COUNTERCLOCKWISE_BIT_KHR : 0;
     out.accelerationStructureReference = in.blas;
   }
-  write_storage_buffer(ctx, tlas.instances, records, VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR);
+  write_storage_buffer(ctx, tlas.instances, records,
+                       VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR);
 
   std::vector<VkAccelerationStructureGeometryKHR> geometry(1);
   geometry[0] = {VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
   geometry[0].geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-  geometry[0].geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  geometry[0].geometry.instances.sType =
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
   geometry[0].geometry.instances.arrayOfPointers = VK_FALSE;
   geometry[0].geometry.instances.data.deviceAddress = tlas.instances.address();
   build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, geometry,

@@ -25,12 +25,14 @@ class AccelerationStructure {
  private:
   friend void build_acceleration_structure(const Context&, VkAccelerationStructureTypeKHR,
                                            const std::vector<VkAccelerationStructureGeometryKHR>&,
-                                           const std::vector<uint32_t>&, AccelerationStructure&, Buffer&);
+                                           const std::vector<uint32_t>&, AccelerationStructure&,
+                                           Buffer&);
   void release();
 
   const Context* m_ctx = nullptr;
   Buffer m_storage;
-  VkDeviceSize m_size = 0;  // what the structure was created for: a build that needs no more reuses it
+  VkDeviceSize m_size =
+      0;  // what the structure was created for: a build that needs no more reuses it
   VkAccelerationStructureKHR m_handle = VK_NULL_HANDLE;
   VkDeviceAddress m_address = 0;
 };
@@ -40,13 +42,14 @@ class AccelerationStructure {
 struct TriangleGeometry {
   VkDeviceAddress positions;  // address of the first vertex (vec3, tightly packed)
   uint32_t vertex_count;
-  VkDeviceAddress indices;    // address of the first index (uint32)
+  VkDeviceAddress indices;  // address of the first index (uint32)
   uint32_t triangle_count;
   // Opaque geometry never reaches the shader's candidate loop (no alpha test): the fast path.
   bool opaque = true;
 };
 
-AccelerationStructure build_blas(const Context& ctx, const std::vector<TriangleGeometry>& geometries);
+AccelerationStructure build_blas(const Context& ctx,
+                                 const std::vector<TriangleGeometry>& geometries);
 
 struct TlasInstance {
   std::array<float, 12> object_to_world;  // row-major 3x4

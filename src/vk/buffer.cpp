@@ -11,7 +11,7 @@
 namespace hipr::vk {
 namespace {
 
-std::atomic<uint64_t> g_transferred{0};  // host_transfer_bytes()
+std::atomic<uint64_t> g_transferred{0};   // host_transfer_bytes()
 std::atomic<uint64_t> g_device_bytes{0};  // device_bytes_in_use()
 std::atomic<uint64_t> g_allocations{0};   // buffer_allocations()
 
@@ -51,10 +51,12 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
   vkGetBufferMemoryRequirements(ctx.device(), m_buffer, &req);
   const VkMemoryPropertyFlags host =
       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  const uint32_t device_type = find_memory_type(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+  const uint32_t device_type =
+      find_memory_type(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
   uint32_t type = device_type;
   if (use == MemoryUse::Readback)
-    type = find_memory_type(ctx, req.memoryTypeBits, host | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, host);
+    type =
+        find_memory_type(ctx, req.memoryTypeBits, host | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, host);
   else if (use == MemoryUse::Shared)
     type = find_memory_type(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | host,
                             VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
@@ -80,7 +82,8 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
     g_allocations.fetch_add(1, std::memory_order_relaxed);
     VK_CHECK(vkBindBufferMemory(ctx.device(), m_buffer, m_memory, 0));
     // Staged device memory: device buffers are reached through copies, as on a discrete GPU.
-    const bool map = is_host_visible(ctx, type) && !(use == MemoryUse::Device && ctx.staged_device_memory());
+    const bool map =
+        is_host_visible(ctx, type) && !(use == MemoryUse::Device && ctx.staged_device_memory());
     if (map) VK_CHECK(vkMapMemory(ctx.device(), m_memory, 0, VK_WHOLE_SIZE, 0, &m_mapped));
   } catch (...) {
     release();

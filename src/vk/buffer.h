@@ -83,9 +83,12 @@ uint64_t buffer_allocations();
 // difference of two.
 struct DeviceCounts {
   uint64_t transfer_bytes = 0, allocations = 0, submissions = 0;
-  static DeviceCounts now() { return {host_transfer_bytes(), buffer_allocations(), queue_submissions()}; }
+  static DeviceCounts now() {
+    return {host_transfer_bytes(), buffer_allocations(), queue_submissions()};
+  }
   DeviceCounts operator-(const DeviceCounts& o) const {
-    return {transfer_bytes - o.transfer_bytes, allocations - o.allocations, submissions - o.submissions};
+    return {transfer_bytes - o.transfer_bytes, allocations - o.allocations,
+            submissions - o.submissions};
   }
   DeviceCounts& operator+=(const DeviceCounts& o) {
     transfer_bytes += o.transfer_bytes, allocations += o.allocations, submissions += o.submissions;
@@ -99,7 +102,8 @@ Buffer make_storage_buffer(const Context& ctx, const std::vector<T>& values,
                            VkBufferUsageFlags extra_usage = 0, MemoryUse use = MemoryUse::Device) {
   Buffer buffer(ctx, values.size() * sizeof(T),
                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT | extra_usage, use);
+                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT | extra_usage,
+                use);
   if (!values.empty()) buffer.upload(values.data(), values.size() * sizeof(T));
   return buffer;
 }
@@ -113,7 +117,8 @@ bool write_storage_buffer(const Context& ctx, Buffer& buffer, const std::vector<
                           VkBufferUsageFlags extra_usage = 0, MemoryUse use = MemoryUse::Shared) {
   const VkDeviceSize bytes = values.size() * sizeof(T);
   const bool replaced = !buffer || buffer.size() < bytes;
-  if (replaced) buffer = Buffer(ctx, bytes + bytes / 2, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extra_usage, use);
+  if (replaced)
+    buffer = Buffer(ctx, bytes + bytes / 2, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extra_usage, use);
   if (bytes) buffer.upload(values.data(), bytes);
   return replaced;
 }

@@ -11,9 +11,9 @@ const char* result_name(VkResult result);
 
 }  // namespace hipr::vk
 
-#define VK_CHECK(expression)                                                   \
-  do {                                                                         \
-    const VkResult vk_check_result_ = (expression);                            \
-    if (vk_check_result_ != VK_SUCCESS)                                        \
+#define VK_CHECK(expression)                                                         \
+  do {                                                                               \
+    const VkResult vk_check_result_ = (expression);                                  \
+    if (vk_check_result_ != VK_SUCCESS)                                              \
       ::hipr::vk::throw_vk_error(vk_check_result_, #expression, __FILE__, __LINE__); \
   } while (0)

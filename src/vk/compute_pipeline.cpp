@@ -19,9 +19,10 @@ void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags src_stage, VkAcces
 
 }  // namespace
 
-ComputePipeline::ComputePipeline(const Context& ctx, const std::string& entry, const ShaderDefines& defines,
-                                 const std::vector<BufferBinding>& bindings, uint32_t push_constant_size,
-                                 const DescriptorSet* shared)
+ComputePipeline::ComputePipeline(const Context& ctx, const std::string& entry,
+                                 const ShaderDefines& defines,
+                                 const std::vector<BufferBinding>& bindings,
+                                 uint32_t push_constant_size, const DescriptorSet* shared)
     : m_ctx(ctx), m_own(ctx, bindings), m_shared(shared), m_push_size(push_constant_size) {
   const VkDevice device = ctx.device();
   // Every kernel learns the device's traversal; only those that trace (traversal.glsl) read it.
@@ -50,7 +51,8 @@ ComputePipeline::ComputePipeline(const Context& ctx, const std::string& entry, c
   pipeline_info.stage.module = module;
   pipeline_info.stage.pName = "main";
   pipeline_info.layout = m_layout;
-  const VkResult result = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &m_pipeline);
+  const VkResult result =
+      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &m_pipeline);
   vkDestroyShaderModule(device, module, nullptr);
   VK_CHECK(result);
 }
@@ -61,10 +63,12 @@ ComputePipeline::~ComputePipeline() {
   if (m_layout) vkDestroyPipelineLayout(device, m_layout, nullptr);
 }
 
-void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, uint32_t groups) const {
+void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants,
+                               uint32_t groups) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline);
   const VkDescriptorSet sets[2] = {m_own.handle(), m_shared ? m_shared->handle() : VK_NULL_HANDLE};
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout, 0, m_shared ? 2 : 1, sets, 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout, 0, m_shared ? 2 : 1, sets,
+                          0, nullptr);
   if (m_push_size)
     vkCmdPushConstants(cmd, m_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, m_push_size, push_constants);
   if (groups == 0) return;
@@ -72,24 +76,27 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, 
   const uint32_t width = std::min(groups, m_ctx.max_dispatch_width());
   const uint32_t rows = (groups - 1) / width + 1;
   if (rows > m_ctx.max_dispatch_height())
-    throw InputError("a dispatch of " + std::to_string(groups) + " workgroups is more than " + m_ctx.device_name() +
-                     " can run: use a smaller image or larger tiles");
+    throw InputError("a dispatch of " + std::to_string(groups) + " workgroups is more than " +
+                     m_ctx.device_name() + " can run: use a smaller image or larger tiles");
   vkCmdDispatch(cmd, width, rows, 1);
 }
 
 void compute_to_compute_barrier(VkCommandBuffer cmd) {
-  memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+  memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 void transfer_to_compute_barrier(VkCommandBuffer cmd) {
-  memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT,
-                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                 VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT,
+                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 void compute_to_transfer_barrier(VkCommandBuffer cmd) {
-  memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                 VK_ACCESS_TRANSFER_READ_BIT);
+  memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
 }
 
 }  // namespace hipr::vk

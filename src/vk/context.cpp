@@ -46,8 +46,9 @@ bool requested_staged_memory(bool option) {
 }
 
 bool has_extension(const std::vector<VkExtensionProperties>& list, const char* name) {
-  return std::any_of(list.begin(), list.end(),
-                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+  return std::any_of(list.begin(), list.end(), [&](const VkExtensionProperties& e) {
+    return std::strcmp(e.extensionName, name) == 0;
+  });
 }
 
 std::vector<VkExtensionProperties> device_extensions(VkPhysicalDevice device) {
@@ -60,10 +61,12 @@ std::vector<VkExtensionProperties> device_extensions(VkPhysicalDevice device) {
 
 // Everything the kernels use, checked before the device is chosen.
 struct FeatureChain {
-  VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
   VkPhysicalDeviceAccelerationStructureFeaturesKHR accel{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR, &rayQuery};
-  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &accel};
+  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                       &accel};
   VkPhysicalDeviceFeatures2 core{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12};
 
   FeatureChain() = default;
@@ -101,11 +104,16 @@ int pick_queue_family(VkPhysicalDevice device, VkSurfaceKHR surface) {
 
 int device_rank(const VkPhysicalDeviceProperties& props) {
   switch (props.deviceType) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
-    default: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 3;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return 1;
+    default:
+      return 0;
   }
 }
 
@@ -181,18 +189,20 @@ void Context::create_instance(const ContextOptions& options) {
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
   for (const std::string& name : options.instance_extensions) extensions.push_back(name.c_str());
-  VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  VkDebugUtilsMessengerCreateInfoEXT messenger{
+      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   if (options.validation) {
     uint32_t count = 0;
     VK_CHECK(vkEnumerateInstanceLayerProperties(&count, nullptr));
     std::vector<VkLayerProperties> available(count);
     VK_CHECK(vkEnumerateInstanceLayerProperties(&count, available.data()));
-    const bool found = std::any_of(available.begin(), available.end(), [](const VkLayerProperties& l) {
-      return std::strcmp(l.layerName, kValidationLayer) == 0;
-    });
+    const bool found = std::any_of(
+        available.begin(), available.end(),
+        [](const VkLayerProperties& l) { return std::strcmp(l.layerName, kValidationLayer) == 0; });
     if (!found)
-      throw InternalError("validation requested but VK_LAYER_KHRONOS_validation is not installed "
-                          "(package vulkan-validationlayers)");
+      throw InternalError(
+          "validation requested but VK_LAYER_KHRONOS_validation is not installed "
+          "(package vulkan-validationlayers)");
     layers.push_back(kValidationLayer);
     if (std::none_of(extensions.begin(), extensions.end(), [](const char* e) {
           return std::strcmp(e, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0;
@@ -216,7 +226,8 @@ void Context::create_instance(const ContextOptions& options) {
   if (options.validation) info.pNext = &messenger;  // also catches instance creation problems
   const VkResult result = vkCreateInstance(&info, nullptr, &m_instance);
   if (result == VK_ERROR_INCOMPATIBLE_DRIVER || result == VK_ERROR_INITIALIZATION_FAILED)
-    throw InternalError("no Vulkan driver found (install mesa-vulkan-drivers: tools/setup-deps.sh)");
+    throw InternalError(
+        "no Vulkan driver found (install mesa-vulkan-drivers: tools/setup-deps.sh)");
   VK_CHECK(result);
 
   if (options.validation) {
@@ -239,7 +250,8 @@ void Context::pick_physical_device(const ContextOptions& options, Traversal trav
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(device, &props);
     const std::string name = props.deviceName;
-    if (!options.preferred_device.empty() && name.find(options.preferred_device) == std::string::npos) {
+    if (!options.preferred_device.empty() &&
+        name.find(options.preferred_device) == std::string::npos) {
       unnamed += (unnamed.empty() ? "" : ", ") + name;
       continue;
     }
@@ -250,9 +262,11 @@ void Context::pick_physical_device(const ContextOptions& options, Traversal trav
         std::all_of(std::begin(kRayQueryExtensions), std::end(kRayQueryExtensions),
                     [&](const char* ext) { return has_extension(extensions, ext); }) &&
         features.supports_ray_queries();
-    const bool usable = props.apiVersion >= VK_API_VERSION_1_2 && features.supports_kernels() &&
-                        (!m_surface || has_extension(extensions, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) &&
-                        (ray_queries || traversal != Traversal::RayQuery) && pick_queue_family(device, m_surface) >= 0;
+    const bool usable =
+        props.apiVersion >= VK_API_VERSION_1_2 && features.supports_kernels() &&
+        (!m_surface || has_extension(extensions, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) &&
+        (ray_queries || traversal != Traversal::RayQuery) &&
+        pick_queue_family(device, m_surface) >= 0;
     if (!usable) {
       rejected += (rejected.empty() ? "" : ", ") + name;
       continue;
@@ -269,14 +283,16 @@ void Context::pick_physical_device(const ContextOptions& options, Traversal trav
     }
   }
   if (!m_physical && rejected.empty() && !options.preferred_device.empty())
-    throw InternalError("no Vulkan device's name contains '" + options.preferred_device + "' (found: " +
-                        (unnamed.empty() ? std::string("none") : unnamed) + ")");
+    throw InternalError("no Vulkan device's name contains '" + options.preferred_device +
+                        "' (found: " + (unnamed.empty() ? std::string("none") : unnamed) + ")");
   if (!m_physical) {
-    std::string message = traversal == Traversal::RayQuery
-                              ? "no Vulkan device supports acceleration structures + ray queries"
-                              : "no Vulkan 1.2 device has buffer device addresses, scalar layouts and 64-bit atomics";
+    std::string message =
+        traversal == Traversal::RayQuery
+            ? "no Vulkan device supports acceleration structures + ray queries"
+            : "no Vulkan 1.2 device has buffer device addresses, scalar layouts and 64-bit atomics";
     if (m_surface) message += " and presents to the window";
-    if (!options.preferred_device.empty()) message += " matching '" + options.preferred_device + "'";
+    if (!options.preferred_device.empty())
+      message += " matching '" + options.preferred_device + "'";
     if (!rejected.empty()) message += " (rejected: " + rejected + ")";
     message += "; install Mesa >= 23 lavapipe from bookworm-backports (tools/setup-deps.sh)";
     throw InternalError(message);
@@ -288,9 +304,11 @@ void Context::pick_physical_device(const ContextOptions& options, Traversal trav
                                      m_software_traversal ? nullptr : &accel_props};
   vkGetPhysicalDeviceProperties2(m_physical, &props2);
   m_min_storage_alignment = uint32_t(props2.properties.limits.minStorageBufferOffsetAlignment);
-  if (!m_software_traversal) m_min_scratch_alignment = accel_props.minAccelerationStructureScratchOffsetAlignment;
+  if (!m_software_traversal)
+    m_min_scratch_alignment = accel_props.minAccelerationStructureScratchOffsetAlignment;
   const auto& groups = props2.properties.limits.maxComputeWorkGroupCount;
-  m_max_dispatch[0] = options.dispatch_width_limit ? std::min(options.dispatch_width_limit, groups[0]) : groups[0];
+  m_max_dispatch[0] =
+      options.dispatch_width_limit ? std::min(options.dispatch_width_limit, groups[0]) : groups[0];
   m_max_dispatch[1] = groups[1];
 }
 
@@ -322,7 +340,8 @@ void Context::create_device() {
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
   std::vector<const char*> extensions;
-  if (!m_software_traversal) extensions.assign(std::begin(kRayQueryExtensions), std::end(kRayQueryExtensions));
+  if (!m_software_traversal)
+    extensions.assign(std::begin(kRayQueryExtensions), std::end(kRayQueryExtensions));
   if (m_surface) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   info.enabledExtensionCount = uint32_t(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
@@ -330,7 +349,8 @@ void Context::create_device() {
   vkGetDeviceQueue(m_device, m_queue_family, 0, &m_queue);
 
   auto load = [&](auto& pointer, const char* name) {
-    pointer = reinterpret_cast<std::remove_reference_t<decltype(pointer)>>(vkGetDeviceProcAddr(m_device, name));
+    pointer = reinterpret_cast<std::remove_reference_t<decltype(pointer)>>(
+        vkGetDeviceProcAddr(m_device, name));
     if (!pointer) throw InternalError(std::string("Vulkan function missing: ") + name);
   };
   if (!m_software_traversal) {
@@ -372,8 +392,8 @@ void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record
   VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   to_host.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
   to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr,
-                       0, nullptr);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                       &to_host, 0, nullptr, 0, nullptr);
   VK_CHECK(vkEndCommandBuffer(cmd));
 
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};

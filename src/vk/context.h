@@ -19,7 +19,7 @@ namespace hipr::vk {
 enum class Traversal { Automatic, RayQuery, Software };
 
 struct ContextOptions {
-  bool validation = false;  // enable VK_LAYER_KHRONOS_validation and count its errors
+  bool validation = false;       // enable VK_LAYER_KHRONOS_validation and count its errors
   std::string preferred_device;  // substring of the device name; empty = best available
   Traversal traversal = Traversal::Automatic;
   // Presentation (the viewer). The window system's instance extensions, and a function that

@@ -18,12 +18,14 @@ std::vector<BindingSlot> buffer_slots(const std::vector<BufferBinding>& buffers)
 
 }  // namespace
 
-DescriptorSet::DescriptorSet(const Context& ctx, const std::vector<BindingSlot>& slots) : m_ctx(ctx) {
+DescriptorSet::DescriptorSet(const Context& ctx, const std::vector<BindingSlot>& slots)
+    : m_ctx(ctx) {
   const VkDevice device = ctx.device();
   std::vector<VkDescriptorSetLayoutBinding> layout_bindings;
   uint32_t buffer_count = 0, tlas_count = 0;
   for (const BindingSlot& slot : slots) {
-    layout_bindings.push_back({slot.binding, descriptor_type(slot.kind), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+    layout_bindings.push_back(
+        {slot.binding, descriptor_type(slot.kind), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
     (slot.kind == BindingKind::AccelerationStructure ? tlas_count : buffer_count)++;
   }
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};

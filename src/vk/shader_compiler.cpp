@@ -29,7 +29,8 @@ constexpr const char* kCompilerConfig = "glslang-vk1.2-spv1.5-O-nocontraction-v2
 const std::map<std::string, std::string_view>& shader_sources() {
   static const auto sources = [] {
     std::map<std::string, std::string_view> map;
-    for (const EmbeddedShaderFile& file : embedded_shader_files()) map.emplace(file.path, file.text);
+    for (const EmbeddedShaderFile& file : embedded_shader_files())
+      map.emplace(file.path, file.text);
     return map;
   }();
   return sources;
@@ -47,7 +48,8 @@ class EmbeddedIncluder : public glslang::TShader::Includer {
  public:
   IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
     const fs::path from = fs::path(includer).parent_path();
-    for (const fs::path& candidate : {(from / header).lexically_normal(), fs::path(header).lexically_normal()}) {
+    for (const fs::path& candidate :
+         {(from / header).lexically_normal(), fs::path(header).lexically_normal()}) {
       const auto& sources = shader_sources();
       const auto it = sources.find(candidate.generic_string());
       if (it != sources.end())
@@ -129,7 +131,8 @@ std::vector<uint32_t> compile(const std::string& entry, const std::string& pream
 
   glslang::TProgram program;
   program.addShader(&shader);
-  if (!program.link(messages)) throw InternalError("shader " + entry + " does not link:\n" + program.getInfoLog());
+  if (!program.link(messages))
+    throw InternalError("shader " + entry + " does not link:\n" + program.getInfoLog());
 
   std::vector<uint32_t> spirv;
   glslang::SpvOptions options;
@@ -144,9 +147,12 @@ std::vector<uint32_t> compile(const std::string& entry, const std::string& pream
 }  // namespace
 
 fs::path shader_cache_dir() {
-  if (const char* dir = std::getenv("HIPR_CACHE_DIR"); dir && *dir) return fs::path(dir) / "shaders";
-  if (const char* dir = std::getenv("XDG_CACHE_HOME"); dir && *dir) return fs::path(dir) / "hipr" / "shaders";
-  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "hipr" / "shaders";
+  if (const char* dir = std::getenv("HIPR_CACHE_DIR"); dir && *dir)
+    return fs::path(dir) / "shaders";
+  if (const char* dir = std::getenv("XDG_CACHE_HOME"); dir && *dir)
+    return fs::path(dir) / "hipr" / "shaders";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return fs::path(home) / ".cache" / "hipr" / "shaders";
   return {};
 }
 

@@ -33,8 +33,8 @@ bool is_contractible(uint32_t opcode) {
 }
 
 bool is_annotation(uint32_t opcode) {
-  return opcode == 71 || opcode == 72 || opcode == 73 || opcode == 74 || opcode == 75 || opcode == 332 ||
-         opcode == 5632 || opcode == 5633;
+  return opcode == 71 || opcode == 72 || opcode == 73 || opcode == 74 || opcode == 75 ||
+         opcode == 332 || opcode == 5632 || opcode == 5633;
 }
 
 }  // namespace
@@ -47,10 +47,13 @@ uint32_t forbid_contraction(std::vector<uint32_t>& spirv) {
   for (size_t at = kHeaderWords; at < spirv.size();) {
     const uint32_t opcode = spirv[at] & 0xffffu;
     const uint32_t words = spirv[at] >> 16;
-    if (words == 0 || at + words > spirv.size()) throw InternalError("malformed SPIR-V instruction");
+    if (words == 0 || at + words > spirv.size())
+      throw InternalError("malformed SPIR-V instruction");
     if (is_annotation(opcode)) after_annotations = at + words;
-    if (opcode == kOpDecorate && words >= 3 && spirv[at + 2] == kDecorationNoContraction) decorated.insert(spirv[at + 1]);
-    if (is_contractible(opcode) && words >= 3) targets.push_back(spirv[at + 2]);  // result type, result id, ...
+    if (opcode == kOpDecorate && words >= 3 && spirv[at + 2] == kDecorationNoContraction)
+      decorated.insert(spirv[at + 1]);
+    if (is_contractible(opcode) && words >= 3)
+      targets.push_back(spirv[at + 2]);  // result type, result id, ...
     at += words;
   }
   if (after_annotations == 0) throw InternalError("SPIR-V module without annotations");
@@ -59,7 +62,8 @@ uint32_t forbid_contraction(std::vector<uint32_t>& spirv) {
     if (decorated.count(id)) continue;
     decorations.insert(decorations.end(), {(3u << 16) | kOpDecorate, id, kDecorationNoContraction});
   }
-  spirv.insert(spirv.begin() + std::ptrdiff_t(after_annotations), decorations.begin(), decorations.end());
+  spirv.insert(spirv.begin() + std::ptrdiff_t(after_annotations), decorations.begin(),
+               decorations.end());
   return uint32_t(decorations.size() / 3);
 }
 

@@ -55,9 +55,12 @@ Swapchain::~Swapchain() {
 
 std::string Swapchain::description() const {
   switch (m_present_mode) {
-    case VK_PRESENT_MODE_MAILBOX_KHR: return "window, mailbox presentation";
-    case VK_PRESENT_MODE_IMMEDIATE_KHR: return "window, immediate presentation";
-    default: return "window, FIFO presentation (vsync)";
+    case VK_PRESENT_MODE_MAILBOX_KHR:
+      return "window, mailbox presentation";
+    case VK_PRESENT_MODE_IMMEDIATE_KHR:
+      return "window, immediate presentation";
+    default:
+      return "window, FIFO presentation (vsync)";
   }
 }
 

@@ -34,7 +34,6 @@ void apply_size(const std::string& size, RenderSettings& render) {
   render.height = uint32_t(std::stoul(match[2]));
 }
 
-
 int run_view(ViewCommandOptions& o) {
   viewer::ViewerOptions& v = o.viewer;
   apply_size(o.size, v.common.render);
@@ -99,11 +98,13 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("scene", v.common.scene, "Scene file (.gltf or .glb)")->required();
   cmd->add_option("--script", options->script,
                   "Edit script (.json) applied as if typed, one edit every --script-every frames");
-  cmd->add_option("--script-every", v.script_every,
-                  "Frames between script edits (edit k at frame (k+1) x N, or --script-start + k x N)")
+  cmd->add_option(
+         "--script-every", v.script_every,
+         "Frames between script edits (edit k at frame (k+1) x N, or --script-start + k x N)")
       ->capture_default_str();
-  cmd->add_option("--script-start", v.script_start,
-                  "Frame of the first script edit (default: --script-every), e.g. after the scene converged");
+  cmd->add_option(
+      "--script-start", v.script_start,
+      "Frame of the first script edit (default: --script-every), e.g. after the scene converged");
   cmd->add_option("--screenshot", v.screenshot,
                   "At exit, write what the window shows (.png) or the displayed radiance (.exr)");
   cmd->add_option("--exit-after-frames", v.exit_after_frames,
@@ -112,27 +113,31 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--overlay", options->overlay, "Initial overlay: none, ids, weights, owed")
       ->capture_default_str();
   add_schedule_flags(*cmd, v.schedule);
-  cmd->add_option("--frame-budget-ms", v.frame_budget_ms,
-                  "Time spent on scheduling steps per frame; 0 adapts it to the device, aiming at 60 fps "
-                  "(at least one step a frame)")
+  cmd->add_option(
+         "--frame-budget-ms", v.frame_budget_ms,
+         "Time spent on scheduling steps per frame; 0 adapts it to the device, aiming at 60 fps "
+         "(at least one step a frame)")
       ->capture_default_str();
   cmd->add_option("--steps-per-frame", v.steps_per_frame,
                   "Exactly N scheduling steps per frame instead of a time budget");
   cmd->add_option("--exposure", v.exposure_ev, "Display exposure in stops")->capture_default_str();
   cmd->add_flag("--no-ui", options->no_ui,
                 "No panels or status line: the window shows the render alone");
-  cmd->add_flag("--headless", v.headless,
-                "No window: frames are drawn off screen as fast as the device allows (GPU servers, CI); "
-                "needs --exit-after-frames");
+  cmd->add_flag(
+      "--headless", v.headless,
+      "No window: frames are drawn off screen as fast as the device allows (GPU servers, CI); "
+      "needs --exit-after-frames");
   cmd->add_option("--stats-json", v.stats_json,
                   "At exit, write fps and per-edit feedback latency (JSON)");
-  cmd->add_option("--frames-dir", v.frames_dir,
-                  "Write every frame's displayed image to this folder (frame_NNNNN.exr, and frames.json: "
-                  "the script edits each shows and its time without the read-back)");
+  cmd->add_option(
+      "--frames-dir", v.frames_dir,
+      "Write every frame's displayed image to this folder (frame_NNNNN.exr, and frames.json: "
+      "the script edits each shows and its time without the read-back)");
   cmd->add_option("--save", v.save, "At exit, save the edited scene as glTF (.gltf or .glb)");
   cmd->add_option("--select", options->select, "Node selected at start (glTF name or #index)");
-  cmd->add_flag_function("--no-focus", [&v](int64_t) { v.focus_selection = false; },
-                         "hipr does not start from the selected object (the HiPR panel's \"focus: selection\")");
+  cmd->add_flag_function(
+      "--no-focus", [&v](int64_t) { v.focus_selection = false; },
+      "hipr does not start from the selected object (the HiPR panel's \"focus: selection\")");
   add_common_options(*cmd, v.common);
   return {cmd, [options] { return run_view(*options); }};
 }

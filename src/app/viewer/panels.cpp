@@ -36,10 +36,12 @@ struct ScheduleWidgets {
   }
   void operator()(const ScheduleSettingInfo& info, std::optional<DisplayRule>& rule) const {
     const std::string label =
-        rule ? display_rule_name(*rule) : "default (" + display_rule_name(default_display_rule(policy)) + ")";
+        rule ? display_rule_name(*rule)
+             : "default (" + display_rule_name(default_display_rule(policy)) + ")";
     if (ImGui::BeginCombo(info.name, label.c_str())) {
       if (ImGui::Selectable("default", !rule)) rule.reset();
-      for (DisplayRule r : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend, DisplayRule::Difference})
+      for (DisplayRule r : {DisplayRule::Immediate, DisplayRule::Switch, DisplayRule::Blend,
+                            DisplayRule::Difference})
         if (ImGui::Selectable(display_rule_name(r).c_str(), rule == r)) rule = r;
       ImGui::EndCombo();
     }
@@ -52,7 +54,8 @@ struct ScheduleWidgets {
   void operator()(const ScheduleSettingInfo& info, uint32_t& value) const {
     if (!info.live) return;
     int v = int(value);
-    if (ImGui::SliderInt(info.name, &v, int(info.min), int(info.max))) value = uint32_t(std::max(v, int(info.min)));
+    if (ImGui::SliderInt(info.name, &v, int(info.min), int(info.max)))
+      value = uint32_t(std::max(v, int(info.min)));
     tooltip(info);
   }
 };
@@ -140,17 +143,20 @@ void hipr_section(Session& session, ViewerState& state) {
   if (edited != settings.schedule) state.request_schedule = edited;
   ImGui::Checkbox("focus: selection", &state.focus_selection);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("hipr renders where the selected object is seen first, then where its light goes");
+    ImGui::SetTooltip(
+        "hipr renders where the selected object is seen first, then where its light goes");
   ImGui::SameLine();
   ImGui::Checkbox("cursor", &state.focus_cursor);
-  if (state.focus_cursor) ImGui::SliderFloat("focus radius (px)", &state.focus_radius, 4.0f, 256.0f, "%.0f");
+  if (state.focus_cursor)
+    ImGui::SliderFloat("focus radius (px)", &state.focus_radius, 4.0f, 256.0f, "%.0f");
   ImGui::InputInt("n (tile px)", &state.tile_size_input);
   state.tile_size_input = std::clamp(state.tile_size_input, 1, 256);
   ImGui::SameLine();
   if (ImGui::Button("Apply")) state.request_tile_size = uint32_t(state.tile_size_input);
   if (ImGui::BeginCombo("sampler", sampler_name(settings.render.sampler))) {
     for (Sampler s : {Sampler::Sobol, Sampler::Random})
-      if (ImGui::Selectable(sampler_name(s), s == settings.render.sampler)) state.request_sampler = s;
+      if (ImGui::Selectable(sampler_name(s), s == settings.render.sampler))
+        state.request_sampler = s;
     ImGui::EndCombo();
   }
   ImGui::TextDisabled("n and the sampler restart the image;");
@@ -182,7 +188,8 @@ void hipr_section(Session& session, ViewerState& state) {
       settings.schedule.tiles_per_step ? settings.schedule.tiles_per_step
                                        : viewer_tiles_per_step(session.renderer().tile_count()),
       settings.schedule.visit_spp,
-      settings.schedule.first_visit_spp ? settings.schedule.first_visit_spp : default_first_visit_spp(settings),
+      settings.schedule.first_visit_spp ? settings.schedule.first_visit_spp
+                                        : default_first_visit_spp(settings),
       settings.spp);
 }
 
@@ -195,12 +202,14 @@ void display_section(ViewerState& state) {
   ImGui::SliderFloat("exposure (EV)", &state.exposure_ev, -20.0f, 20.0f, "%.1f");
   ImGui::Checkbox("status line", &state.show_status);
   bool adapt = state.frame_budget_ms <= 0.0;
-  if (ImGui::Checkbox("adapt render time (60 fps)", &adapt)) state.frame_budget_ms = adapt ? 0.0 : 30.0;
+  if (ImGui::Checkbox("adapt render time (60 fps)", &adapt))
+    state.frame_budget_ms = adapt ? 0.0 : 30.0;
   if (adapt) {
     ImGui::Text("render %.1f ms/frame", state.adaptive_budget_ms);
   } else {
     float budget = float(state.frame_budget_ms);
-    if (ImGui::SliderFloat("render ms/frame", &budget, 2.0f, 250.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
+    if (ImGui::SliderFloat("render ms/frame", &budget, 2.0f, 250.0f, "%.0f",
+                           ImGuiSliderFlags_Logarithmic))
       state.frame_budget_ms = budget;
   }
 }
@@ -260,7 +269,8 @@ void draw_status_line(const Session& session, const ViewerState& state, float x,
   if (!records.empty() && records.back().latency_seconds >= 0.0)
     add("latency %.0f ms", records.back().latency_seconds * 1e3);
   if (!session.focus().empty() && session.settings().schedule.policy == Policy::Hipr)
-    add("focus: %zu seed%s", session.focus().seeds.size(), session.focus().seeds.size() == 1 ? "" : "s");
+    add("focus: %zu seed%s", session.focus().seeds.size(),
+        session.focus().seeds.size() == 1 ? "" : "s");
   if (session.converged()) add("converged");
   // Items flow onto as many lines as the view's width needs (the view can be as narrow as
   // the render).

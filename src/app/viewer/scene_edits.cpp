@@ -57,9 +57,11 @@ void duplicate_selection(Session& session, ViewerState& state) {
   if (!node) return;
   const Scene& scene = session.scene();
   const int parent = scene.nodes[*node].parent;
-  const glm::mat4 parent_world = parent >= 0 ? scene.world_transform(uint32_t(parent)) : glm::mat4(1.0f);
+  const glm::mat4 parent_world =
+      parent >= 0 ? scene.world_transform(uint32_t(parent)) : glm::mat4(1.0f);
   const glm::vec3 right = glm::vec3(resolve_camera(scene).camera_to_world[0]);
-  const glm::vec3 offset = glm::vec3(glm::inverse(parent_world) * glm::vec4(0.1f * session.radius() * right, 0.0f));
+  const glm::vec3 offset =
+      glm::vec3(glm::inverse(parent_world) * glm::vec4(0.1f * session.radius() * right, 0.0f));
   const size_t first_new = scene.nodes.size();
   if (!try_edit(session, state, DuplicateEdit{node_reference(scene, *node), "", offset})) return;
   // The copy is the first node the edit appended (its subtree follows it).
@@ -73,7 +75,8 @@ void duplicate_selection(Session& session, ViewerState& state) {
 void delete_selection(Session& session, ViewerState& state) {
   const std::optional<uint32_t> node = selected_node(session, state);
   if (!node) return;
-  if (try_edit(session, state, DeleteEdit{node_reference(session.scene(), *node)})) state.selected_node = -1;
+  if (try_edit(session, state, DeleteEdit{node_reference(session.scene(), *node)}))
+    state.selected_node = -1;
 }
 
 }  // namespace hipr::viewer

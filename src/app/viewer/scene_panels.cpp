@@ -203,13 +203,17 @@ namespace {
 
 // The sky's sun and haze; each slider re-makes the sky (a drag is one undo step).
 void sun_controls(Session& session, ViewerState& state, const SkyParameters& sky) {
-  float elevation = sky.sun_elevation_degrees, azimuth = sky.sun_azimuth_degrees, turbidity = sky.turbidity;
-  if (ImGui::SliderFloat("sun elevation", &elevation, 0.0f, 90.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp))
+  float elevation = sky.sun_elevation_degrees, azimuth = sky.sun_azimuth_degrees,
+        turbidity = sky.turbidity;
+  if (ImGui::SliderFloat("sun elevation", &elevation, 0.0f, 90.0f, "%.1f deg",
+                         ImGuiSliderFlags_AlwaysClamp))
     ui_edit(session, state, EnvironmentEdit{.sun_elevation_degrees = elevation});
-  if (ImGui::SliderFloat("sun azimuth", &azimuth, -180.0f, 180.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp))
+  if (ImGui::SliderFloat("sun azimuth", &azimuth, -180.0f, 180.0f, "%.1f deg",
+                         ImGuiSliderFlags_AlwaysClamp))
     ui_edit(session, state, EnvironmentEdit{.sun_azimuth_degrees = azimuth});
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: behind the default camera, 90: toward +X");
-  if (ImGui::SliderFloat("turbidity", &turbidity, kMinTurbidity, kMaxTurbidity, "%.2f", ImGuiSliderFlags_AlwaysClamp))
+  if (ImGui::SliderFloat("turbidity", &turbidity, kMinTurbidity, kMaxTurbidity, "%.2f",
+                         ImGuiSliderFlags_AlwaysClamp))
     ui_edit(session, state, EnvironmentEdit{.turbidity = turbidity});
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("haze: 2 clear, 6 hazy, 10 murky");
 }
@@ -221,7 +225,8 @@ void environment_section(Session& session, ViewerState& state) {
   const Scene& scene = session.scene();
   const std::optional<Environment>& env = scene.environment;
   const std::string current = env ? env->path.string() : std::string(kNoEnvironment);
-  if (!is_environment_name(current)) state.environment_file = current;  // offered again after switching away
+  if (!is_environment_name(current))
+    state.environment_file = current;  // offered again after switching away
   ImGui::TextWrapped("%s", environment_description(scene).c_str());
 
   // What lights the scene from afar: an undoable edit, HiPR re-renders.
@@ -241,7 +246,8 @@ void environment_section(Session& session, ViewerState& state) {
   if (ImGui::InputText("file##env", path, sizeof path)) state.environment_input = path;
   ImGui::SameLine();
   if (ImGui::Button("use") && !state.environment_input.empty())
-    ui_edit(session, state, EnvironmentEdit{.source = std::filesystem::path(state.environment_input)});
+    ui_edit(session, state,
+            EnvironmentEdit{.source = std::filesystem::path(state.environment_input)});
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("an equirectangular .hdr or .exr");
 
   if (!env) {

@@ -33,15 +33,18 @@ std::unique_ptr<Scheduler> Session::make_scheduler(Renderer& renderer) const {
   // tool (hipr bench), not something a viewer can have before the user edits.
   if (s.policy == Policy::Oracle)
     throw InputError("the oracle policy needs a reference image: use hipr bench");
-  const uint32_t per_step = s.tiles_per_step ? s.tiles_per_step : viewer_tiles_per_step(renderer.tile_count());
+  const uint32_t per_step =
+      s.tiles_per_step ? s.tiles_per_step : viewer_tiles_per_step(renderer.tile_count());
   auto scheduler = std::make_unique<Scheduler>(renderer, s.policy, per_step, s.visit_spp);
-  scheduler->configure(resolved_schedule(), m_settings.spp);  // rendering pauses at spp: the focus never passes it
+  scheduler->configure(resolved_schedule(),
+                       m_settings.spp);  // rendering pauses at spp: the focus never passes it
   return scheduler;
 }
 
 void Session::rebuild() {
   // The new renderer is complete before the old one goes: a failure leaves the session as it was.
-  // Kernels compile as they are made (a longer start) rather than at the first edit (a frozen window).
+  // Kernels compile as they are made (a longer start) rather than at the first edit (a frozen
+  // window).
   RenderSettings render = m_settings.render;
   render.compile_kernels_early = true;
   auto renderer = std::make_unique<Renderer>(m_ctx, m_scene, render);
@@ -63,9 +66,11 @@ void Session::rebuild() {
 
 void Session::changed(const std::function<void(Scene&)>& change, const std::string& what) {
   const Timer started;  // the latency includes on_edit itself (GPU update, stage 1)
-  const std::vector<Instance> before = m_script_focus.empty() ? std::vector<Instance>{} : m_scene.instances();
+  const std::vector<Instance> before =
+      m_script_focus.empty() ? std::vector<Instance>{} : m_scene.instances();
   // The pipeline renumbers the scheduler's focus for the edit's plan when instances come or go.
-  if (EditPipeline(m_scene, *m_scheduler, m_scheduler->focus()).apply(change).empty()) return;  // e.g. a slider released where it started
+  if (EditPipeline(m_scene, *m_scheduler, m_scheduler->focus()).apply(change).empty())
+    return;                       // e.g. a slider released where it started
   if (!m_script_focus.empty()) {  // a duplicate or delete renumbers the instances the seeds name
     m_script_focus = follow_instances(m_script_focus, before, m_scene.instances());
     update_focus();
@@ -149,20 +154,25 @@ const ImageRGB& Session::displayed() {
   return m_displayed;
 }
 
-bool Session::edit_shown_unpresented() const { return edit_awaits_first_step() && m_scheduler->relit(); }
+bool Session::edit_shown_unpresented() const {
+  return edit_awaits_first_step() && m_scheduler->relit();
+}
 
 void Session::on_presented() {
   // The first step after an edit resolves the tiles it rendered to the display (HiPR: the most
   // changed ones): the frame presented after it is the first to show the change; a relit edit
   // shows at once. Judged without reading the image back, so presenting costs no host transfer.
-  if (!m_awaiting_change || m_records.empty() || (edit_awaits_first_step() && !m_scheduler->relit())) return;
+  if (!m_awaiting_change || m_records.empty() ||
+      (edit_awaits_first_step() && !m_scheduler->relit()))
+    return;
   m_records.back().latency_seconds = m_since_edit.seconds();
   m_records.back().work_at_first_change = m_scheduler->work_since_edit();
   m_records.back().steps_at_first_change = m_steps_since_edit;
   m_awaiting_change = false;
 }
 
-void Session::render_overlay(Renderer::DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output) {
+void Session::render_overlay(Renderer::DebugOverlay overlay, uint32_t selected_node,
+                             const vk::Buffer& output) {
   if (overlay == Renderer::DebugOverlay::Ids || selected_node != UINT32_MAX) ensure_gbuffer();
   m_renderer->render_overlay(overlay, selected_node, output);
 }

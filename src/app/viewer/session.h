@@ -30,8 +30,8 @@ struct SessionSettings {
 // How one change reached the screen: the feedback latency of the measurements.
 struct EditRecord {
   std::string what;
-  double latency_seconds = -1.0;      // edit -> first frame presented after a step; -1: none yet
-  double work_at_first_change = 0.0;  // in full-frame 1-spp passes
+  double latency_seconds = -1.0;       // edit -> first frame presented after a step; -1: none yet
+  double work_at_first_change = 0.0;   // in full-frame 1-spp passes
   uint32_t steps_at_first_change = 0;  // scheduling steps rendered before that frame
 };
 
@@ -101,7 +101,8 @@ class Session {
 
   // Makes an overlay on the device into `output` (Renderer::render_overlay), the G-buffer
   // brought up to date first where ids or an outline need it.
-  void render_overlay(Renderer::DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output);
+  void render_overlay(Renderer::DebugOverlay overlay, uint32_t selected_node,
+                      const vk::Buffer& output);
   // The G-buffer of the scene as it is now: instance per pixel, and one pixel's hit.
   const std::vector<uint32_t>& instance_ids();
   Renderer::PixelHit pick(uint32_t x, uint32_t y);

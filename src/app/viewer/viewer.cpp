@@ -47,11 +47,13 @@ vk::ContextOptions presenting_context_options(const app::CommonOptions& common,
 }
 
 std::unique_ptr<vk::Presenter> make_presenter(const vk::Context& ctx, const Window& window) {
-  if (window.headless()) return std::make_unique<vk::OffscreenPresenter>(ctx, window.framebuffer_size());
+  if (window.headless())
+    return std::make_unique<vk::OffscreenPresenter>(ctx, window.framebuffer_size());
   return std::make_unique<vk::Swapchain>(ctx, window.framebuffer_size());
 }
 
-Window make_window(const ViewerOptions& options, const std::string& title, uint32_t width, uint32_t height) {
+Window make_window(const ViewerOptions& options, const std::string& title, uint32_t width,
+                   uint32_t height) {
   if (options.headless) return Window(Window::Headless{}, width, height);
   return Window(title, width, height);
 }
@@ -61,8 +63,8 @@ Window make_window(const ViewerOptions& options, const std::string& title, uint3
 Viewer::Viewer(const ViewerOptions& options, Scene scene)
     : m_started(),
       m_options(options),
-      m_window(make_window(options, "hipr view - " + scene.source.filename().string(), window_width(options),
-                           window_height(options))),
+      m_window(make_window(options, "hipr view - " + scene.source.filename().string(),
+                           window_width(options), window_height(options))),
       m_ctx(presenting_context_options(options.common, m_window)),
       m_presenter(make_presenter(m_ctx, m_window)),
       m_ui_pass(m_ctx, kFrameFormat),
@@ -142,7 +144,7 @@ void Viewer::show_message_frame(const std::string& text) {
   view.output_width = m_frame.extent().width;
   view.output_height = m_frame.extent().height;
   view.x = int(view.output_width);  // no image yet: the background everywhere
-  draw_and_present(*frame, view);  // an out-of-date swapchain is rebuilt by the next present()
+  draw_and_present(*frame, view);   // an out-of-date swapchain is rebuilt by the next present()
 }
 
 // Records the display pass and the UI on top into the frame image, then presents it. False when
@@ -158,8 +160,11 @@ bool Viewer::draw_and_present(const vk::PresentFrame& frame, const DisplayView& 
 
 void Viewer::run_script(uint32_t frame) {
   const auto& script = m_options.script;
-  const uint64_t first = m_options.script_start > 0 ? m_options.script_start : m_options.script_every;
-  if (m_script_next >= script.size() || frame != first + m_script_next * uint64_t(m_options.script_every)) return;
+  const uint64_t first =
+      m_options.script_start > 0 ? m_options.script_start : m_options.script_every;
+  if (m_script_next >= script.size() ||
+      frame != first + m_script_next * uint64_t(m_options.script_every))
+    return;
   // As if typed: the same path as a panel edit (undoable, one on_edit).
   try {
     m_session->edit(script[m_script_next]);
@@ -184,10 +189,13 @@ void Viewer::draw_ui(const ViewLayout& layout, const std::vector<KeyPress>& keys
 void Viewer::handle_requests() {
   if (m_state.request_open && m_state.open_confirmed) open_scene();
   if (m_state.request_save) save_scene_file();
-  take_setting_request(m_state.request_schedule, "scheduling",
-                       [&](const ScheduleSettings& schedule) { m_session->set_schedule(schedule); });
-  take_setting_request(m_state.request_tile_size, "tile size", [&](uint32_t n) { m_session->set_tile_size(n); });
-  take_setting_request(m_state.request_sampler, "sampler", [&](Sampler s) { m_session->set_sampler(s); });
+  take_setting_request(
+      m_state.request_schedule, "scheduling",
+      [&](const ScheduleSettings& schedule) { m_session->set_schedule(schedule); });
+  take_setting_request(m_state.request_tile_size, "tile size",
+                       [&](uint32_t n) { m_session->set_tile_size(n); });
+  take_setting_request(m_state.request_sampler, "sampler",
+                       [&](Sampler s) { m_session->set_sampler(s); });
 }
 
 template <class T, class Apply>
@@ -222,7 +230,8 @@ void Viewer::render_steps() {
     // up to the fixed default, so it keeps at least half of each frame (render() runs one step
     // whatever the budget).
     constexpr double kFrameMs = 1000.0 / 60.0, kSlowDeviceMs = 30.0;
-    m_state.adaptive_budget_ms = std::max(kFrameMs - m_frame_overhead_ms, std::min(m_frame_overhead_ms, kSlowDeviceMs));
+    m_state.adaptive_budget_ms =
+        std::max(kFrameMs - m_frame_overhead_ms, std::min(m_frame_overhead_ms, kSlowDeviceMs));
     m_state.steps_last_frame = m_session->render(m_state.adaptive_budget_ms * 1e-3);
   }
   m_render_ms = timer.seconds() * 1e3;
@@ -237,10 +246,11 @@ void Viewer::update_overlay() {
   if (!m_overlay_on) return;
   // Made on the GPU from the renderer's own buffers into the display pass's overlay: showing an
   // overlay while re-rendering reads nothing back (image/debug_images.cpp's colours).
-  static constexpr Renderer::DebugOverlay kinds[] = {Renderer::DebugOverlay::None, Renderer::DebugOverlay::Ids,
-                                                     Renderer::DebugOverlay::TileWeights,
-                                                     Renderer::DebugOverlay::OwedTiles};
-  const uint32_t selected = m_state.selected_node >= 0 ? uint32_t(m_state.selected_node) : UINT32_MAX;
+  static constexpr Renderer::DebugOverlay kinds[] = {
+      Renderer::DebugOverlay::None, Renderer::DebugOverlay::Ids,
+      Renderer::DebugOverlay::TileWeights, Renderer::DebugOverlay::OwedTiles};
+  const uint32_t selected =
+      m_state.selected_node >= 0 ? uint32_t(m_state.selected_node) : UINT32_MAX;
   m_session->render_overlay(kinds[size_t(m_state.overlay)], selected, m_display.overlay_buffer());
 }
 
@@ -312,7 +322,8 @@ int Viewer::run() {
     if (m_state.show_ui && m_state.show_status &&
         (m_spp_timer.seconds() > 1.0 || (converged && !m_mean_spp_converged))) {
       const RenderSettings& render = m_session->settings().render;
-      m_state.mean_spp = double(m_session->renderer().total_samples()) / (double(render.width) * render.height);
+      m_state.mean_spp =
+          double(m_session->renderer().total_samples()) / (double(render.width) * render.height);
       m_mean_spp_converged = converged;
       m_spp_timer = Timer();
     }
@@ -325,8 +336,10 @@ int Viewer::run() {
     // The frame's work besides rendering (UI, display pass, presentation): what the adaptive
     // budget leaves room for.
     const double overhead_ms = std::max(frame_seconds * 1e3 - m_render_ms, 0.0);
-    m_frame_overhead_ms = m_frame_overhead_ms > 0.0 ? 0.8 * m_frame_overhead_ms + 0.2 * overhead_ms : overhead_ms;
-    if (m_state.steps_last_frame > 0) {  // re-rendering: its frame time, what crossed between host and device
+    m_frame_overhead_ms =
+        m_frame_overhead_ms > 0.0 ? 0.8 * m_frame_overhead_ms + 0.2 * overhead_ms : overhead_ms;
+    if (m_state.steps_last_frame >
+        0) {  // re-rendering: its frame time, what crossed between host and device
       m_rendering_frame_ms.push_back(frame_seconds * 1e3);
       m_rendering_counts += vk::DeviceCounts::now() - at_frame_start;
     }

@@ -16,13 +16,14 @@ namespace hipr::viewer {
 
 struct ViewerOptions {
   app::CommonOptions common;  // validated; render size from --size or --width/--height
-  std::vector<Edit> script;   // applied as if typed: edit k at frame script_start + k * script_every
+  std::vector<Edit> script;  // applied as if typed: edit k at frame script_start + k * script_every
   uint32_t script_every = 10;
-  uint32_t script_start = 0;  // 0: script_every
+  uint32_t script_start = 0;         // 0: script_every
   std::filesystem::path screenshot;  // written at exit
   uint32_t exit_after_frames = 0;    // 0: run until the window closes
   Overlay overlay = Overlay::None;
-  ScheduleSettings schedule;  // tiles_per_step 0: 1/64 of the frame; first_visit_spp 0: default_first_visit_spp
+  ScheduleSettings
+      schedule;  // tiles_per_step 0: 1/64 of the frame; first_visit_spp 0: default_first_visit_spp
   uint32_t steps_per_frame = 0;  // > 0: exactly this many steps per frame (reproducible scripts)
   double frame_budget_ms = 0.0;  // 0: adapt (ViewerState::frame_budget_ms)
   float exposure_ev = 0.0f;
@@ -35,9 +36,9 @@ struct ViewerOptions {
   // how many script edits it shows, and its time without the read-back), for measuring what the
   // screen showed frame by frame.
   std::filesystem::path frames_dir;
-  std::filesystem::path save;        // the edited scene, saved as glTF at exit
-  int select = -1;                   // node selected at start (-1: none)
-  bool focus_selection = true;       // hipr starts from the selected object (docs/method.md#focus)
+  std::filesystem::path save;   // the edited scene, saved as glTF at exit
+  int select = -1;              // node selected at start (-1: none)
+  bool focus_selection = true;  // hipr starts from the selected object (docs/method.md#focus)
 };
 
 // Runs the viewer on a loaded scene until the window closes or the frame count is reached.

@@ -89,12 +89,13 @@ class Viewer {
   ViewerState m_state;
   ViewportInput m_input;
   size_t m_script_next = 0;
-  nlohmann::json m_frame_log = nlohmann::json::array();  // --frames-dir: what each dumped frame shows
+  nlohmann::json m_frame_log =
+      nlohmann::json::array();  // --frames-dir: what each dumped frame shows
   uint64_t m_frames = 0;
   uint64_t m_steps = 0;
   // The renderer whose display buffer the display pass reads (a new session or settings that
   // rebuild the renderer bring another).
-  uint64_t m_shown_renderer = 0;  // Session::renderer_id()
+  uint64_t m_shown_renderer = 0;     // Session::renderer_id()
   double m_render_ms = 0.0;          // the last frame's scheduling steps
   double m_frame_overhead_ms = 0.0;  // a frame's other work, smoothed (the adaptive budget)
   // Frames that ran steps: their times (the frame rate while re-rendering) and the bytes copied
@@ -110,9 +111,9 @@ class Viewer {
     bool operator==(const OverlayKey&) const = default;
   } m_overlay_key;
   bool m_overlay_on = false;
-  bool m_swapchain_stale = false;  // the last present found the swapchain out of date
-  VkExtent2D m_requested_size{};   // the window size the swapchain was last made for
-  Timer m_spp_timer;                // the status line's mean spp: when it was read
+  bool m_swapchain_stale = false;     // the last present found the swapchain out of date
+  VkExtent2D m_requested_size{};      // the window size the swapchain was last made for
+  Timer m_spp_timer;                  // the status line's mean spp: when it was read
   bool m_mean_spp_converged = false;  // and whether the image had converged then
 };
 

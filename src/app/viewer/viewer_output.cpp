@@ -52,8 +52,7 @@ void Viewer::save_scene_file() {
     m_state.info("saved " + path.string());
     // The environment comes from --env, not from glTF: say how to get it and its edits back.
     if (m_session->scene().environment)
-      m_state.info("glTF has no environment: reopen with " +
-                   environment_flags(m_session->scene()));
+      m_state.info("glTF has no environment: reopen with " + environment_flags(m_session->scene()));
   } catch (const std::exception& e) {
     m_state.error("cannot save " + path.string() + ": " + e.what());
   }
@@ -73,8 +72,10 @@ void Viewer::dump_frame(uint32_t frame_index, double frame_seconds) {
   char name[32];
   std::snprintf(name, sizeof(name), "frame_%05u.exr", frame_index);
   write_image(m_options.frames_dir / name, m_session->displayed());
-  m_frame_log.push_back(
-      {{"frame", frame_index}, {"file", name}, {"script_edits", m_script_next}, {"frame_ms", frame_seconds * 1e3}});
+  m_frame_log.push_back({{"frame", frame_index},
+                         {"file", name},
+                         {"script_edits", m_script_next},
+                         {"frame_ms", frame_seconds * 1e3}});
 }
 
 void Viewer::write_frame_log() const {
@@ -88,7 +89,9 @@ nlohmann::json Viewer::rendering_stats() const {
   std::sort(ms.begin(), ms.end());
   double total = 0.0;
   for (double m : ms) total += m;
-  const auto at = [&ms](double q) { return ms[std::min(ms.size() - 1, size_t(q * double(ms.size())))]; };
+  const auto at = [&ms](double q) {
+    return ms[std::min(ms.size() - 1, size_t(q * double(ms.size())))];
+  };
   return {{"frames", ms.size()},
           {"fps", total > 0.0 ? 1e3 * double(ms.size()) / total : 0.0},
           {"frame_ms_median", at(0.5)},
@@ -107,21 +110,22 @@ void Viewer::write_stats(double seconds) const {
                      {"work_at_first_change", r.work_at_first_change},
                      {"steps_at_first_change", r.steps_at_first_change}});
   const RenderSettings& s = m_options.common.render;
-  const nlohmann::json stats = {{"device", m_ctx.device_name()},
-                                {"traversal", m_ctx.traversal_name()},
-                                {"presentation", m_presenter->description()},
-                                {"width", s.width},
-                                {"height", s.height},
-                                {"policy", policy_name(m_session->settings().schedule.policy)},
-                                {"first_frame_seconds", m_first_frame_seconds},
-                                {"frames", m_frames},
-                                {"seconds", seconds},
-                                {"fps", seconds > 0.0 ? double(m_frames) / seconds : 0.0},
-                                {"steps", m_steps},
-                                {"rendering", rendering_stats()},
-                                {"host_transfer_bytes_per_frame",
-                                 rendering ? double(m_rendering_counts.transfer_bytes) / double(rendering) : 0.0},
-                                {"edits", edits}};
+  const nlohmann::json stats = {
+      {"device", m_ctx.device_name()},
+      {"traversal", m_ctx.traversal_name()},
+      {"presentation", m_presenter->description()},
+      {"width", s.width},
+      {"height", s.height},
+      {"policy", policy_name(m_session->settings().schedule.policy)},
+      {"first_frame_seconds", m_first_frame_seconds},
+      {"frames", m_frames},
+      {"seconds", seconds},
+      {"fps", seconds > 0.0 ? double(m_frames) / seconds : 0.0},
+      {"steps", m_steps},
+      {"rendering", rendering_stats()},
+      {"host_transfer_bytes_per_frame",
+       rendering ? double(m_rendering_counts.transfer_bytes) / double(rendering) : 0.0},
+      {"edits", edits}};
   write_text_atomically(m_options.stats_json, stats.dump(2) + "\n");
 }
 

@@ -15,7 +15,8 @@ constexpr size_t kKeptMessages = 50;
 
 Focus view_focus(const Scene& scene, const ViewerState& state, std::optional<glm::vec2> cursor) {
   Focus focus;
-  if (state.focus_selection && state.selected_node >= 0 && size_t(state.selected_node) < scene.nodes.size())
+  if (state.focus_selection && state.selected_node >= 0 &&
+      size_t(state.selected_node) < scene.nodes.size())
     focus.seeds.push_back(focus_on_node(scene, size_t(state.selected_node)));
   if (state.focus_cursor && cursor)
     focus.seeds.push_back({.pixel = *cursor, .radius = std::max(state.focus_radius, 1.0f)});
@@ -45,7 +46,8 @@ void follow_environment(const Scene& scene, ViewerState& state) {
       std::isfinite(radiance)) {
     state.exposure_ev = std::clamp(state.exposure_ev - std::log2(radiance / before), -20.0f, 20.0f);
     char text[64];
-    std::snprintf(text, sizeof text, "exposure %.1f EV for the new light", double(state.exposure_ev));
+    std::snprintf(text, sizeof text, "exposure %.1f EV for the new light",
+                  double(state.exposure_ev));
     state.info(text);
   }
   state.environment_key = key;

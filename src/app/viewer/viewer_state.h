@@ -36,17 +36,19 @@ struct ViewerState {
   // frame's other work (UI, presentation), measured; on a device too slow for 60 fps, as long as
   // that other work, up to 30 ms (at least one step a frame, whatever it costs).
   double frame_budget_ms = 0.0;
-  double adaptive_budget_ms = 0.0;  // the budget the last frame used when adapting (shown in the panel)
-  uint32_t steps_per_frame = 0;   // > 0: a fixed number of steps instead (scripts, tests)
+  double adaptive_budget_ms =
+      0.0;  // the budget the last frame used when adapting (shown in the panel)
+  uint32_t steps_per_frame = 0;  // > 0: a fixed number of steps instead (scripts, tests)
 
   std::string open_path, save_path, screenshot_path;
   std::string import_path;  // the File panel's Import field
-  std::string environment_file;   // the last environment file shown, offered in the Environment panel
+  std::string
+      environment_file;  // the last environment file shown, offered in the Environment panel
   std::string environment_input;  // the Environment panel's file field
   bool request_open = false;
   bool request_save = false;
   bool request_screenshot = false;
-  bool open_confirmed = false;  // discard unsaved edits when opening
+  bool open_confirmed = false;                       // discard unsaved edits when opening
   std::optional<ScheduleSettings> request_schedule;  // the HiPR panel's scheduling settings
   std::optional<uint32_t> request_tile_size;
   std::optional<Sampler> request_sampler;

@@ -2,8 +2,8 @@
 // The viewer's GLFW window: creation (no OpenGL context; Vulkan draws), what Vulkan needs to
 // present into it (instance extensions, a surface), its size and its event loop. Headless
 // (`hipr view --headless`), a stand-in of a fixed size with no events that never closes: the
-// viewer's loop runs unchanged and the frames go off screen (vk/offscreen_presenter.h). Mouse input is
-// read through the UI library's state (ui_layer hooks the window's callbacks after ours); key
+// viewer's loop runs unchanged and the frames go off screen (vk/offscreen_presenter.h). Mouse input
+// is read through the UI library's state (ui_layer hooks the window's callbacks after ours); key
 // presses are also queued here, because the UI library of Debian 12 (1.86) only samples key
 // state once per frame, and a quick tap between two slow frames (lavapipe) would be lost.
 #include <vulkan/vulkan.h>

@@ -1,0 +1,93 @@
+#include "scene/gltf_precheck.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "hipr/scene_loader.h"
+#include "scene/gltf_sandbox.h"
+
+namespace hipr {
+
+const std::vector<std::string>& supported_gltf_extensions() {
+  static const std::vector<std::string> list = {
+      "KHR_lights_punctual",
+      "KHR_materials_emissive_strength",
+      "KHR_materials_specular",
+      "KHR_materials_ior",
+      "KHR_materials_transmission",
+      "KHR_materials_volume",
+      "KHR_materials_clearcoat",
+      "KHR_materials_sheen",
+      "KHR_materials_iridescence",
+      "KHR_materials_anisotropy",
+      "KHR_materials_diffuse_transmission",
+      "KHR_texture_transform",
+      "KHR_node_visibility",
+  };
+  return list;
+}
+
+namespace gltf {
+
+void warn_unsupported_extensions(const std::vector<std::string>& used, const std::string& name) {
+  const auto& supported = supported_gltf_extensions();
+  for (const std::string& ext : used) {
+    if (std::find(supported.begin(), supported.end(), ext) != supported.end()) continue;
+    if (ext == "KHR_materials_dispersion")
+      log::warn(name + ": KHR_materials_dispersion is not supported; rendered without dispersion");
+    else if (ext == "KHR_materials_variants")
+      log::warn(name + ": KHR_materials_variants is not supported; the default materials are used");
+    else
+      log::warn(name + ": glTF extension " + ext + " is not supported; ignored");
+  }
+}
+
+std::string json_text(const std::vector<unsigned char>& bytes, bool glb) {
+  if (!glb) return std::string(bytes.begin(), bytes.end());
+  uint32_t length;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return std::string(bytes.begin() + 20, bytes.begin() + 20 + std::ptrdiff_t(length));
+}
+
+void precheck_json(const std::string& text, const std::string& name) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    std::string why = e.what();
+    if (const size_t at = why.find("] "); at != std::string::npos) why = why.substr(at + 2);
+    throw InputError(name + ": invalid JSON: " + why);
+  }
+  if (!doc.is_object()) throw InputError(name + ": invalid glTF: top level is not a JSON object");
+  if (!doc.contains("asset") || !doc["asset"].is_object() || !doc["asset"].contains("version") ||
+      !doc["asset"]["version"].is_string())
+    throw InputError(name + ": invalid glTF: required 'asset.version' is missing");
+  const std::string version = doc["asset"]["version"];
+  if (version.rfind("2.", 0) != 0)
+    throw InputError(name + ": unsupported glTF version " + version + " (only 2.x is supported)");
+  if (doc.contains("extensionsRequired") && doc["extensionsRequired"].is_array()) {
+    for (const auto& ext : doc["extensionsRequired"]) {
+      if (!ext.is_string())
+        throw InputError(name + ": invalid glTF: extensionsRequired holds a non-string");
+      const auto& supported = supported_gltf_extensions();
+      if (std::find(supported.begin(), supported.end(), ext.get<std::string>()) == supported.end())
+        throw InputError(name + ": requires unsupported glTF extension " + ext.get<std::string>());
+    }
+  }
+  for (const char* kind : {"buffers", "images"}) {
+    if (!doc.contains(kind) || !doc[kind].is_array()) continue;
+    for (size_t i = 0; i < doc[kind].size(); ++i) {
+      const auto& item = doc[kind][i];
+      if (item.is_object() && item.contains("uri") && item["uri"].is_string())
+        check_uri(item["uri"], name + ": " + std::string(kind).substr(0, std::strlen(kind) - 1) +
+                                   " " + std::to_string(i));
+    }
+  }
+}
+
+}  // namespace gltf
+}  // namespace hipr
