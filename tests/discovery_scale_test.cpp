@@ -12,6 +12,7 @@
 #include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
+#include "render/render_readback.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
 
@@ -132,7 +133,7 @@ Discovery discover(float scale, const RenderSettings& s = settings()) {
   hipr_stages(renderer).stage1_visibility(diff_scenes(before, after));
   test::discover_all(renderer, 4);
   EXPECT_EQ(renderer.counters().non_finite_samples, 0u) << "scale " << scale;
-  return {renderer.tile_flags(), renderer.tile_weights(), renderer.gbuffer_instances()};
+  return {read_tile_flags(renderer), read_tile_weights(renderer), renderer.gbuffer_instances()};
 }
 
 // Tiles at least one tile away from the border of the occluder's front face on screen: every

@@ -12,6 +12,7 @@
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
 #include "render/radix_sorter.h"
+#include "render/render_readback.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -54,8 +55,8 @@ HiprRun run_hipr_edit(const vk::Context& ctx) {
   scheduler.on_edit(scene, diff_scenes(before, scene));
   for (int i = 0; i < 64 && scheduler.work_since_edit() < 2.0; ++i) scheduler.step();
   EXPECT_FALSE(scheduler.leading_steps_pending());
-  return {renderer.tile_flags(), renderer.schedule(), renderer.tile_weights(), renderer.image().rgb,
-          scheduler.displayed_image().rgb};
+  return {read_tile_flags(renderer), read_schedule(renderer), read_tile_weights(renderer),
+          renderer.image().rgb, scheduler.displayed_image().rgb};
 }
 
 TEST(FoldedDispatch, AHiprEditRendersSortsAndShowsExactlyAsInOneRow) {

@@ -10,6 +10,8 @@
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
 #include "image/error_metrics.h"
+#include "render/render_readback.h"
+#include "render/render_snapshot.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
 
@@ -128,10 +130,10 @@ TEST_P(StatisticalRules, AMajorChangeIsShownAtOnce) {
         to_stale += std::abs(shown.rgb[i] - box.stale.rgb[i]);
       }
   EXPECT_LT(to_fresh, 0.1 * to_stale) << "tile " << tile;
-  EXPECT_NE(box.renderer.tile_flags()[tile] & abi::kTileShown, 0u);
+  EXPECT_NE(read_tile_flags(box.renderer)[tile] & abi::kTileShown, 0u);
   if (GetParam() == DisplayRule::Switch) {
     EXPECT_LT(to_fresh, 1e-4 * to_stale) << "the fresh means, as the GPU divides them";
-    EXPECT_NE(box.renderer.tile_flags()[tile] & abi::kTileSettled, 0u);
+    EXPECT_NE(read_tile_flags(box.renderer)[tile] & abi::kTileSettled, 0u);
   }
 }
 
@@ -223,7 +225,7 @@ TEST(DisplayRules, ImmediateShowsEveryReRenderedPixel) {
   const ImageRGB shown = box.scheduler.displayed_image(), fresh = box.renderer.image();
   for (size_t i = 0; i < shown.rgb.size(); ++i)
     ASSERT_NEAR(shown.rgb[i], fresh.rgb[i], 1e-6f * fresh.rgb[i]) << i;
-  for (uint32_t flags : box.renderer.tile_flags())
+  for (uint32_t flags : read_tile_flags(box.renderer))
     EXPECT_EQ(flags & (abi::kTileShown | abi::kTileSettled), abi::kTileShown | abi::kTileSettled);
 }
 
@@ -261,11 +263,11 @@ TEST(DisplayRules, AnEditDuringAnEditKeepsWhatTheScreenShows) {
 
 TEST(RenderSnapshot, RestoresAccumulationAndDisplay) {
   EditedBox box(DisplayRule::Blend);
-  const RenderSnapshot snapshot = box.renderer.snapshot();
+  const RenderSnapshot snapshot = snapshot_render(box.renderer);
   box.edit(kRecolourRedWall);
   box.scheduler.step();
   ASSERT_NE(box.renderer.image().rgb, box.stale.rgb);
-  box.renderer.restore(snapshot);
+  restore_render(box.renderer, snapshot);
   EXPECT_EQ(box.renderer.image().rgb, box.stale.rgb);
   EXPECT_EQ(box.renderer.sample_counts(), std::vector<uint32_t>(32 * 32, kStaleSpp));
 }

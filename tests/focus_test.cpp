@@ -15,6 +15,7 @@
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
+#include "render/render_readback.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
 
@@ -93,16 +94,16 @@ TEST(Focus, ColdStartRendersTheFocusFirstAndEndsOnTheFullFrameImage) {
   scheduler.set_focus(focus);
   const std::set<uint32_t> focus_tiles = tiles_of(
       focus_pixels(focus, renderer.gbuffer_instances(), s.width, s.height), s, renderer.tiles_x());
-  const std::vector<uint32_t> flags = renderer.tile_flags();
+  const std::vector<uint32_t> flags = read_tile_flags(renderer);
   std::set<uint32_t> active;
   for (uint32_t t = 0; t < flags.size(); ++t)
     if (flags[t] & abi::kTileActive) active.insert(t);
   EXPECT_EQ(active, focus_tiles);  // stage 1 marked where the block is seen, nothing else
-  expect_leading(renderer.schedule(), focus_tiles);
+  expect_leading(read_schedule(renderer), focus_tiles);
   while (scheduler.leading_steps_pending()) scheduler.step();  // stage 2 over the focus
   // Stage 3: the focus, then the tiles its paths reached (by weight), then the rest.
-  const std::vector<uint32_t> order = renderer.schedule();
-  const std::vector<uint32_t> after = renderer.tile_flags();
+  const std::vector<uint32_t> order = read_schedule(renderer);
+  const std::vector<uint32_t> after = read_tile_flags(renderer);
   expect_leading(order, focus_tiles);
   size_t discovered = 0;
   bool seen_undiscovered = false;
@@ -171,8 +172,8 @@ TEST(Focus, AfterAnEditTheEditsTilesComeFirstThenTheFocus) {
   const std::vector<uint32_t> ids = renderer.gbuffer_instances();
   const std::set<uint32_t> focus_tiles =
       tiles_of(focus_pixels(focus, ids, s.width, s.height), s, renderer.tiles_x());
-  const std::vector<uint32_t> flags = renderer.tile_flags();
-  const std::vector<uint32_t> order = renderer.schedule();
+  const std::vector<uint32_t> flags = read_tile_flags(renderer);
+  const std::vector<uint32_t> order = read_schedule(renderer);
   const Focus red_wall{{FocusSeed{.instances = red.instances}}};
   const std::set<uint32_t> wall_tiles =
       tiles_of(focus_pixels(red_wall, ids, s.width, s.height), s, renderer.tiles_x());
@@ -218,7 +219,7 @@ TEST(Focus, OrdersACameraEditsTilesFromTheFocus) {
   const std::set<uint32_t> disc_tiles =
       tiles_of(focus_pixels({{disc}}, renderer.gbuffer_instances(), s.width, s.height), s,
                renderer.tiles_x());
-  const std::vector<uint32_t> order = renderer.schedule();
+  const std::vector<uint32_t> order = read_schedule(renderer);
   expect_leading(order, disc_tiles);
   // The other tiles go outward from the disc: distance never decreases along the schedule.
   const auto distance = [&](uint32_t tile) {
@@ -254,7 +255,7 @@ TEST(Focus, TheFocusRunsAheadButNeverPastTheConvergedCount) {
         << "first one visit, where the focus is";
     EXPECT_TRUE(scheduler.lead_pass_pending());
     while (scheduler.lead_pass_pending()) scheduler.step();
-    const std::vector<uint32_t> flags = renderer.tile_flags();
+    const std::vector<uint32_t> flags = read_tile_flags(renderer);
     counts = renderer.sample_counts();
     uint32_t focus_pixels = 0;
     for (uint32_t y = 0; y < s.height; ++y)
@@ -288,9 +289,9 @@ TEST(Focus, BucketOrdersIgnoreIt) {
   const Scene scene = cornell();
   Renderer renderer(test::context(), scene, settings());
   Scheduler scheduler(renderer, Policy::Spiral, 4);
-  const std::vector<uint32_t> order = renderer.schedule();
+  const std::vector<uint32_t> order = read_schedule(renderer);
   scheduler.set_focus(focus_on(scene, "tall_block"));
-  EXPECT_EQ(renderer.schedule(), order);
+  EXPECT_EQ(read_schedule(renderer), order);
   EXPECT_FALSE(scheduler.leading_steps_pending());
 }
 

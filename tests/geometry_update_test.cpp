@@ -19,6 +19,7 @@
 #include "hipr/scheduler.h"
 #include "image/error_metrics.h"
 #include "render/gpu_scene.h"
+#include "render/render_readback.h"
 #include "test_support.h"
 #include "vk/buffer.h"
 
@@ -155,7 +156,7 @@ TEST(GeometryUpdate, StageOneMarksWhereTheNodeWasAndWhereTheCopyIs) {
                                 const std::function<std::vector<bool>()>& showing) {
     renderer.update_scene(scene, changes);
     hipr_stages(renderer).stage1_visibility(changes);
-    const std::vector<uint32_t> flags = renderer.tile_flags();
+    const std::vector<uint32_t> flags = read_tile_flags(renderer);
     const std::vector<bool> tiles = showing();
     size_t marked = 0, expected = 0, active = 0;
     for (size_t t = 0; t < flags.size(); ++t) {

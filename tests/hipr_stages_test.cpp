@@ -15,6 +15,7 @@
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
 #include "render/radix_sorter.h"
+#include "render/render_readback.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
 
@@ -134,9 +135,9 @@ TEST(HiprStages, ScheduledRerenderConvergesToTheFullFrameImage) {
 TEST(HiprStages, ScheduleListsActiveThenDiscoveredByWeightThenTheRest) {
   const auto renderer = run_stages(
       edit_cornell(TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt}));
-  const auto flags = renderer->tile_flags();
-  const auto weights = renderer->tile_weights();
-  const auto order = renderer->schedule();
+  const auto flags = read_tile_flags(*renderer);
+  const auto weights = read_tile_weights(*renderer);
+  const auto order = read_schedule(*renderer);
   std::vector<uint32_t> sorted = order;
   std::sort(sorted.begin(), sorted.end());
   for (uint32_t i = 0; i < sorted.size(); ++i)
@@ -151,8 +152,8 @@ TEST(HiprStages, ScheduleListsActiveThenDiscoveredByWeightThenTheRest) {
 TEST(HiprStages, RecolouredWallDiscoversItsColourBleeding) {
   const auto renderer =
       run_stages(edit_cornell(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}}));
-  const auto flags = renderer->tile_flags();
-  const auto weights = renderer->tile_weights();
+  const auto flags = read_tile_flags(*renderer);
+  const auto weights = read_tile_weights(*renderer);
   // The wall's light reaches most of the box (floor, ceiling, back wall, blocks, and most of
   // all the wall facing it), so most other tiles are discovered, with weight.
   size_t others = 0, discovered = 0;
@@ -171,7 +172,7 @@ TEST(HiprStages, HiddenObjectWithoutLightInteractionDiscoversNothing) {
   apply_edit(e.after, TransformEdit{"short_block", glm::vec3(0.05f, 0.0f, 0.0f), std::nullopt});
   e.changes = diff_scenes(e.before, e.after);
   const auto renderer = run_stages(e);
-  const auto flags = renderer->tile_flags();
+  const auto flags = read_tile_flags(*renderer);
   EXPECT_EQ(count_flag(flags, 1), 0u);
   EXPECT_EQ(count_flag(flags, 2), 0u);
 }
@@ -180,7 +181,7 @@ TEST(HiprStages, HiddenObjectWithoutLightInteractionDiscoversNothing) {
 // colour bleeding), outside the active set, must be discovered.
 void expect_changed_tiles_discovered(const Edited& e) {
   const auto renderer = run_stages(e);
-  const auto flags = renderer->tile_flags();
+  const auto flags = read_tile_flags(*renderer);
   ImageRGB before, after;
   for (const auto& [scene, image] : {std::pair{&e.before, &before}, std::pair{&e.after, &after}}) {
     Renderer reference(test::context(), *scene, settings());
@@ -227,8 +228,8 @@ TEST(HiprStages, BlockMovedBesideAMirrorDiscoversTheMirror) {
   // The mirror's tiles (back wall in the G-buffer) that are not active are discovered through
   // specular paths.
   const auto renderer = run_stages(e);
-  const auto flags = renderer->tile_flags();
-  const auto weights = renderer->tile_weights();
+  const auto flags = read_tile_flags(*renderer);
+  const auto weights = read_tile_weights(*renderer);
   const auto instances = renderer->gbuffer_instances();
   const auto scene_instances = e.after.instances();
   const RenderSettings s = settings();
@@ -260,7 +261,7 @@ TEST(HiprStages, StagesRunOnAFreshRenderer) {
   hipr_stages(renderer).stage1_visibility(changes);
   test::discover_all(renderer, 1);
   hipr_stages(renderer).build_schedule();
-  EXPECT_GT(count_flag(renderer.tile_flags(), 1), 0u);
+  EXPECT_GT(count_flag(read_tile_flags(renderer), 1), 0u);
   EXPECT_EQ(renderer.counters().non_finite_samples, 0u);
 }
 
@@ -309,7 +310,7 @@ TEST(HiprStages, TilesAnObjectLeftTwoEditsAgoStayActive) {
   const std::vector<uint32_t> first = renderer.gbuffer_instances();
   pipeline.apply(move);
   const std::vector<uint32_t> second = renderer.gbuffer_instances();
-  const std::vector<uint32_t> flags = renderer.tile_flags();
+  const std::vector<uint32_t> flags = read_tile_flags(renderer);
   const std::vector<bool> left = tiles_where(start, renderer, [&](uint32_t p) {
     return start[p] == block && first[p] != block && second[p] != block;
   });
@@ -332,11 +333,11 @@ TEST(HiprStages, DiscoveredTilesNotYetRenderedKeepTheirRankAtTheNextEdit) {
   EditPipeline& pipeline = box.pipeline;
   pipeline.apply(TransformEdit{"tall_block", glm::vec3(0.12f, 0.0f, 0.0f), std::nullopt});
   while (scheduler.leading_steps_pending()) scheduler.step();  // stage 2 done, stage 3 not begun
-  const std::vector<uint32_t> flags1 = renderer.tile_flags();
-  const std::vector<double> weights1 = renderer.tile_weights();
+  const std::vector<uint32_t> flags1 = read_tile_flags(renderer);
+  const std::vector<double> weights1 = read_tile_weights(renderer);
   pipeline.apply(TransformEdit{"short_block", glm::vec3(0.0f, 0.0f, 0.05f), std::nullopt});
-  const std::vector<uint32_t> flags2 = renderer.tile_flags();
-  const std::vector<double> weights2 = renderer.tile_weights();
+  const std::vector<uint32_t> flags2 = read_tile_flags(renderer);
+  const std::vector<double> weights2 = read_tile_weights(renderer);
   size_t discovered = 0;
   for (uint32_t t = 0; t < flags1.size(); ++t) {
     if ((flags1[t] & abi::kTileDiscovered) == 0 || (flags1[t] & abi::kTileActive) != 0) continue;

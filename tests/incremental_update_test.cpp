@@ -9,6 +9,7 @@
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
 #include "render/kernel_features.h"
+#include "render/render_readback.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
 #include "vk/buffer.h"
@@ -130,7 +131,7 @@ TEST_P(FeatureEdits, RecompileTheKernelAndKeepAccumulationAndSchedule) {
   EXPECT_EQ(renderer.kernel_features(), before_features | brought);
   EXPECT_EQ(renderer.image().rgb, accumulated.rgb) << "the accumulation survives the recompile";
   EXPECT_EQ(renderer.sample_counts(), std::vector<uint32_t>(size_t(32) * 32, 1u));
-  EXPECT_EQ(renderer.schedule(), order) << "the schedule survives the recompile";
+  EXPECT_EQ(read_schedule(renderer), order) << "the schedule survives the recompile";
   renderer.reset();
   renderer.add_samples_full_frame(2);
   EXPECT_EQ(renderer.image().rgb, fresh_render(scene, 2).rgb);
@@ -229,7 +230,7 @@ TEST(IncrementalUpdate, EnvironmentEditMakesEveryTileActive) {
   const ChangeSet changes = diff_scenes(before, scene);
   renderer.update_scene(scene, changes);
   hipr_stages(renderer).stage1_visibility(changes);
-  for (uint32_t flags : renderer.tile_flags()) EXPECT_TRUE(flags & abi::kTileActive);
+  for (uint32_t flags : read_tile_flags(renderer)) EXPECT_TRUE(flags & abi::kTileActive);
 }
 
 TEST(EditEquivalence, MovedBlockScriptConvergesToTheMovedFile) {

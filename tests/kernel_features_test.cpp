@@ -16,6 +16,7 @@
 #include "hipr/scene_loader.h"
 #include "render/background_tiles.h"
 #include "render/kernel_features.h"
+#include "render/render_readback.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
 #include "vk/embedded_shaders.h"
@@ -358,7 +359,7 @@ TEST(BackgroundTiles, HiprStagesAreTheSameWithTheShortcut) {
     test::discover_all(renderer, 2);
     hipr_stages(renderer).build_schedule();
     renderer.render_schedule(0, renderer.tile_count(), 2, true);
-    return Result{renderer.tile_flags(), renderer.schedule(), renderer.tile_weights(),
+    return Result{read_tile_flags(renderer), read_schedule(renderer), read_tile_weights(renderer),
                   renderer.image(), renderer.counters().rays};
   };
   const Result skipped = run(true), traced = run(false);

@@ -14,6 +14,7 @@
 #include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
+#include "render/render_readback.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
 
@@ -91,7 +92,7 @@ Staged stage_one(const Scene& before, const Scene& after, uint32_t spp = 2) {
   s.renderer->update_scene(after, changes);
   s.renderer->mark_all_owed();
   s.active = hipr_stages(*s.renderer).stage1_visibility(changes);
-  s.flags = s.renderer->tile_flags();
+  s.flags = read_tile_flags(*s.renderer);
   return s;
 }
 
@@ -175,7 +176,7 @@ TEST(LightReach, TilesWhereTheShadowMovedComeFirst) {
     EXPECT_EQ(active(s.flags, t), t % kTilesX < kTilesX / 2) << t;
   test::discover_all(*s.renderer, 1);
   hipr_stages(*s.renderer).build_schedule();
-  const std::vector<uint32_t> order = s.renderer->schedule();
+  const std::vector<uint32_t> order = read_schedule(*s.renderer);
   // The 8 tiles of column 3 are wholly in the moved shadow's strip: they lead.
   for (uint32_t i = 0; i < kTilesX; ++i) EXPECT_EQ(order[i] % kTilesX, 3u) << i;
 }

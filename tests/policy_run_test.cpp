@@ -6,6 +6,7 @@
 #include "hipr/edits.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
+#include "render/render_snapshot.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -23,7 +24,7 @@ TEST(PolicyRun, ADragOfOneEditIsScheduledAsThatEdit) {
 
   Renderer renderer(test::context(), before, settings);
   renderer.add_samples_full_frame(8);
-  const RenderSnapshot start = renderer.snapshot();
+  const RenderSnapshot start = snapshot_render(renderer);
   bench::PolicyRunOptions options;
   options.schedule.tiles_per_step = 4;
   options.schedule.first_visit_spp = 2;

@@ -14,6 +14,7 @@
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
 #include "hipr/scheduler.h"
+#include "render/render_readback.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
 
@@ -73,7 +74,7 @@ TEST(Reproject, APanReprojectsExactlyWhereNothingIsDisoccluded) {
         ASSERT_EQ(at(after, x, y, c), at(before, x + 2, y, c)) << x << "," << y;
   // The two right columns see past the card's edge: rejected, so their tiles (the right column
   // of tiles) are the ones scored, first in the schedule.
-  const std::vector<uint32_t> order = renderer.schedule();
+  const std::vector<uint32_t> order = read_schedule(renderer);
   for (uint32_t i = 0; i < kSize / kTile; ++i)
     EXPECT_EQ(order[i] % (kSize / kTile), kSize / kTile - 1) << i;
 }
@@ -200,7 +201,7 @@ std::vector<uint32_t> schedule_after_pan(Scene scene, float dx) {
   const Scene old = scene;
   apply_edit(scene, CameraEdit{glm::vec3(dx, 0.0f, 0.0f), std::nullopt});
   scheduler.on_edit(scene, diff_scenes(old, scene));
-  return renderer.schedule();
+  return read_schedule(renderer);
 }
 
 // Where each tile of `tiles` stands in the schedule.

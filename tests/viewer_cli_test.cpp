@@ -21,6 +21,7 @@
 #include "image/debug_images.h"
 #include "image/image_io.h"
 #include "image/tonemap.h"
+#include "render/render_readback.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
 
@@ -455,7 +456,7 @@ TEST_F(ViewerWindow, AMovedLampRerendersWhereItReachesFirst) {
   const ChangeSet changes = diff_scenes(before, after);
   renderer.update_scene(after, changes);
   const uint32_t reached = hipr_stages(renderer).stage1_visibility(changes);
-  const std::vector<uint32_t> flags = renderer.tile_flags();
+  const std::vector<uint32_t> flags = read_tile_flags(renderer);
   EXPECT_GT(reached, 4u);
   EXPECT_LT(reached, 32u) << "a lamp of 0.2 m range lights a part of the box";
   uint32_t clean = 0;

@@ -22,6 +22,7 @@
 #include "image/tonemap.h"
 #include "render/display_pass.h"
 #include "render/light_tables.h"
+#include "render/render_readback.h"
 #include "test_support.h"
 
 namespace hipr::viewer {
@@ -351,19 +352,18 @@ TEST(Session, GpuOverlaysAreTheCpuOverlaysOfTheSameData) {
   const OverlayGrid grid{settings.render.width, settings.render.height, settings.render.tile_size,
                          renderer.tiles_x()};
   DisplayPass display(test::context(), grid.width, grid.height);
-  const auto gpu_overlay = [&](Renderer::DebugOverlay kind, uint32_t node) {
+  const auto gpu_overlay = [&](DebugOverlay kind, uint32_t node) {
     session.render_overlay(kind, node, display.overlay_buffer());
     return display.overlay_buffer().download_all<uint32_t>();
   };
   const std::vector<uint32_t> ids = session.instance_ids();
-  EXPECT_EQ(gpu_overlay(Renderer::DebugOverlay::Ids, UINT32_MAX), id_overlay(ids, grid));
-  EXPECT_EQ(gpu_overlay(Renderer::DebugOverlay::OwedTiles, UINT32_MAX),
-            owed_overlay(renderer.owed_tiles(), grid));
+  EXPECT_EQ(gpu_overlay(DebugOverlay::Ids, UINT32_MAX), id_overlay(ids, grid));
+  EXPECT_EQ(gpu_overlay(DebugOverlay::OwedTiles, UINT32_MAX),
+            owed_overlay(read_owed_tiles(renderer), grid));
 
-  const std::vector<uint32_t> weights =
-      gpu_overlay(Renderer::DebugOverlay::TileWeights, UINT32_MAX);
+  const std::vector<uint32_t> weights = gpu_overlay(DebugOverlay::TileWeights, UINT32_MAX);
   const std::vector<uint32_t> expected =
-      weight_overlay(renderer.tile_weights(), renderer.tile_flags(), grid);
+      weight_overlay(read_tile_weights(renderer), read_tile_flags(renderer), grid);
   ASSERT_EQ(weights.size(), expected.size());
   size_t coloured = 0;
   for (size_t i = 0; i < weights.size(); ++i) {
@@ -382,7 +382,7 @@ TEST(Session, GpuOverlaysAreTheCpuOverlaysOfTheSameData) {
   const auto instances = scene.instances();
   for (uint32_t i = 0; i < instances.size(); ++i)
     if (instances[i].node == node) outline_instance(outline, ids, i, grid);
-  EXPECT_EQ(gpu_overlay(Renderer::DebugOverlay::None, node), outline);
+  EXPECT_EQ(gpu_overlay(DebugOverlay::None, node), outline);
   EXPECT_GT(std::count_if(outline.begin(), outline.end(), [](uint32_t v) { return v != 0u; }), 8);
 }
 
@@ -607,12 +607,12 @@ TEST(RendererForViewer, EarlyCompilationRendersNothing) {
   early.compile_kernels_early = true;
   Renderer renderer(test::context(), scene, early);
   renderer.set_schedule(tile_order(Policy::Random, renderer.tiles_x(), renderer.tiles_y(), 7));
-  const std::vector<uint32_t> schedule = renderer.schedule();
+  const std::vector<uint32_t> schedule = read_schedule(renderer);
   hipr_stages(renderer);  // makes (and so compiles) stage 2's and stage 3's kernels
   EXPECT_EQ(renderer.counters().samples, 0u);
   EXPECT_EQ(renderer.counters().rays, 0u);
   for (float v : renderer.image().rgb) ASSERT_EQ(v, 0.0f);
-  EXPECT_EQ(renderer.schedule(), schedule);
+  EXPECT_EQ(read_schedule(renderer), schedule);
   renderer.add_samples_full_frame(2);
   Renderer fresh(test::context(), scene, tiny());
   fresh.add_samples_full_frame(2);
@@ -623,17 +623,17 @@ TEST(RendererForViewer, OwedTilesCountPixelsStillOwingARestart) {
   Renderer renderer(test::context(), cornell(),
                     tiny(20));  // 3 x 3 tiles, the last row and column 4 px wide
   renderer.add_samples_full_frame(1);
-  for (uint32_t owed : renderer.owed_tiles()) EXPECT_EQ(owed, 0u);
+  for (uint32_t owed : read_owed_tiles(renderer)) EXPECT_EQ(owed, 0u);
   renderer.mark_all_owed();
-  const std::vector<uint32_t> owed = renderer.owed_tiles();
+  const std::vector<uint32_t> owed = read_owed_tiles(renderer);
   ASSERT_EQ(owed.size(), 9u);
   EXPECT_EQ(owed[0], 64u);
   EXPECT_EQ(owed[2], 32u);
   EXPECT_EQ(owed[8], 16u);
   const uint32_t tile = 4;
   renderer.add_samples(std::span<const uint32_t>(&tile, 1), 1);
-  EXPECT_EQ(renderer.owed_tiles()[4], 0u);
-  EXPECT_EQ(renderer.owed_tiles()[3], 64u);
+  EXPECT_EQ(read_owed_tiles(renderer)[4], 0u);
+  EXPECT_EQ(read_owed_tiles(renderer)[3], 64u);
 }
 
 TEST(RendererForViewer, GBufferHitsAgreeWithTheInstanceImage) {
@@ -657,7 +657,7 @@ TEST(RendererForViewer, GBufferHitsAgreeWithTheInstanceImage) {
   renderer.refresh_gbuffer();
   const uint32_t block = instance_of(scene, "tall_block");
   for (uint32_t id : renderer.gbuffer_instances()) EXPECT_NE(id, block);
-  for (uint32_t flags : renderer.tile_flags()) EXPECT_EQ(flags, 0u);
+  for (uint32_t flags : read_tile_flags(renderer)) EXPECT_EQ(flags, 0u);
 }
 
 TEST(RendererForViewer, HiprParametersSteerTheNextStage2) {
@@ -674,7 +674,7 @@ TEST(RendererForViewer, HiprParametersSteerTheNextStage2) {
     hipr_stages(renderer).stage1_visibility(changes);
     test::discover_all(renderer, 1);
     EXPECT_EQ(renderer.settings().hipr.depth_epsilon, h.depth_epsilon);
-    return renderer.tile_weights();
+    return read_tile_weights(renderer);
   };
   HiprParameters direct, caustic;
   direct.w_path[0] = 1.0f;

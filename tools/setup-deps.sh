@@ -21,7 +21,7 @@ packages=(
   libopenimageio-dev openimageio-tools libimath-dev libopenexr-dev
   libimgui-dev libcli11-dev libgtest-dev
   xvfb xauth python3-matplotlib
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format
 )
 
 have_all() {

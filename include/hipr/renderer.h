@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hipr/device.h"
 #include "hipr/display_rule.h"
 #include "hipr/hipr_parameters.h"
 #include "hipr/image.h"
@@ -18,11 +19,6 @@
 #include "hipr/scene_diff.h"
 
 namespace hipr {
-namespace vk {
-class Buffer;
-class Context;
-}  // namespace vk
-
 // Which estimators of direct light take part. Only Mis is for production; the others exist so
 // tests can show that each estimator alone converges to the same image.
 enum class LightSampling { Mis = 0, BsdfOnly = 1, LightOnly = 2 };
@@ -81,27 +77,9 @@ struct SceneStats {
   double blas_build_seconds = 0.0;
 };
 
-// Per pixel, the difference estimate C = stale + sum_i d_i / c after an edit
-// (docs/method.md#the-difference-estimate): the stale estimate where a pixel has none (c = 0).
-struct DifferenceEstimates {
-  ImageRGB image;
-  std::vector<uint32_t> differenced;  // c: samples compared with the old scene's
-  std::vector<uint8_t> changed;       // 1: some difference is not zero
-};
-
-// The per-pixel state of a render (accumulation and display, in the GPU's layout), to start
-// several runs from one state.
-struct RenderSnapshot {
-  std::vector<uint8_t> accumulation;
-  std::vector<uint8_t> display;
-  std::vector<uint8_t> light_groups;  // the accumulation's and the stale estimate's group shares
-  std::vector<uint8_t> difference;    // the difference records
-  std::vector<uint8_t> judgements;    // the display's per-tile judgements (TileJudgement)
-};
-
 class Renderer final : public ProgressiveRenderer {
  public:
-  Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings);
+  Renderer(const Device& device, const Scene& scene, const RenderSettings& settings);
   ~Renderer() override;
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -143,48 +121,29 @@ class Renderer final : public ProgressiveRenderer {
   void resolve_display_all(DisplayRule rule) override;
   void capture_stale_display() override;
   ImageRGB displayed_image() const override;
-  // The display on the device (abi::DisplayTexel per pixel, `shown` is what the screen shows):
-  // what the viewer's display pass reads, with no copy through the host. Lives as long as the
-  // renderer.
-  const vk::Buffer& display_texels() const;
   bool relight(const std::vector<EmitterScale>& scales) override;
-  RenderSnapshot snapshot() const;
-  void restore(const RenderSnapshot& snapshot);
 
-  // ---- The device state (methods attach their passes to it: HiPR's stages)
+  // ---- The device state (methods attach their passes to it: HiPR's stages; the library's
+  // read-backs, snapshots and the viewer's sources read it: src/render/render_readback.h,
+  // render_snapshot.h, viewer_sources.h)
   RenderState* render_state() override;  // never null
+  const RenderState& state() const;
   void refresh_gbuffer() override;
   // New discovery weights and depth tolerance; they take effect from the next stage 2 on.
   void set_hipr_parameters(const HiprParameters& parameters);
 
-  // ---- Read-backs for inspection (viewer overlays, picking, debug images, tests)
+  // ---- Picking and light groups
   std::vector<uint32_t> gbuffer_instances() const;  // per pixel: instance index or UINT32_MAX
-  // The viewer's overlays, made on the device into `output` (one RGBA8 word per pixel: the
-  // display pass's overlay buffer) from what the renderer holds there, with no read-back:
-  // object ids of the G-buffer, stage 2's tile weights, the tiles still owed a restart; and the
-  // outline of `selected_node` on top (UINT32_MAX: none). The G-buffer is used as it is: call
-  // refresh_gbuffer first where edits left it behind (policies without stage 1).
-  enum class DebugOverlay { None, Ids, TileWeights, OwedTiles };
-  void render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output);
   struct PixelHit {
     uint32_t instance = UINT32_MAX;  // index into Scene::instances(), UINT32_MAX for background
     float depth = 0.0f;              // camera-space depth along the view axis
   };
   PixelHit gbuffer_at(uint32_t x, uint32_t y) const;  // one texel read back
-  std::vector<uint32_t> tile_flags() const;
-  std::vector<double> tile_weights() const;
-  std::vector<uint32_t> schedule() const;
-  // Per tile: how many of its pixels still show radiance from before the last edit (they owe
-  // a restart at their next visit).
-  std::vector<uint32_t> owed_tiles() const;
   // The light groups (names, in group order; emitters over the budget are pooled) and one group's
   // share of image().
   std::vector<std::string> light_group_names() const;
   std::vector<std::string> pooled_emitters() const;
   ImageRGB light_group_image(uint32_t group) const;
-  // The difference estimates of the samples since the last edit (empty without
-  // RenderSettings::difference_estimate).
-  DifferenceEstimates difference_estimates() const;
 
  private:
   struct Impl;

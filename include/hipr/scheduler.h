@@ -75,6 +75,8 @@ class Scheduler {
   // their first, before the rest of the round (docs/method.md#the-edits-lead). Needs the converged
   // count (set_converged_spp), which they never pass; 0: off. Policies other than hipr ignore it.
   void set_edit_lead(uint32_t visits) { m_edit_lead = visits; }
+  // Where the rounds stand (what the policy's own steps are planned from).
+  RoundState round_state() const;
   uint32_t edit_lead() const { return m_edit_lead; }
 
   ImageRGB displayed_image() const { return m_renderer.displayed_image(); }
@@ -111,9 +113,9 @@ class Scheduler {
   // The policy still renders leading steps of its own since the last edit (HiPR: stage 2, whose
   // weights are partial until it ends).
   bool leading_steps_pending() const { return m_leading_cursor < m_leading; }
-  // Once the leading steps have visited the edit's and the focus's tiles, the focus's take their
-  // lead (set_focus_lead) in steps of their own before the rest; some are still to come.
-  bool lead_pass_pending() const { return m_lead_cursor < m_lead_end; }
+  // The policy takes steps of its own before the rest of the round (HiPR: once the leading steps
+  // have visited the edit's and the focus's tiles, their leads); some are still to come.
+  bool lead_pass_pending() const { return m_policy->lead_pending(); }
 
  private:
   // How the tiles a step renders are shown (resolved in the step's own submission); none for
@@ -121,17 +123,10 @@ class Scheduler {
   std::optional<DisplayRule> step_display_rule() const;
   // The last schedule entry was rendered: the next step starts a new round at the first.
   void end_round();
-  // The renderer's round target: a visit brings each pixel to it (and the focus's tiles to
-  // theirs, once m_focus_ahead).
+  // The round's target: a visit brings each pixel to it (the policy's own targets follow).
   void set_round_target(uint32_t target);
-  // A plan was made (an edit or a focus): the focus's lead waits for its first visit.
-  void planned();
-  // The leading steps have passed the seeded entries: the focus's lead steps come next.
-  void begin_lead();
-  // The first round reached the tiles after the discovered ones: the edit's lead steps come next.
-  void begin_edit_lead();
-  // Tiles per lead step.
-  uint32_t lead_step_tiles() const;
+  // A plan was made (an edit, `edit`, or a focus): the policy's own steps start over.
+  void planned(bool edit);
 
   ProgressiveRenderer& m_renderer;
   std::unique_ptr<SchedulingPolicy> m_policy;
@@ -154,22 +149,10 @@ class Scheduler {
   // or focus (the renderer may have been given samples outside the scheduler).
   std::optional<uint32_t> m_round_target;
   Focus m_focus;
-  bool m_follows_focus = false;  // the policy ordered by the focus (its tiles may run ahead)
-  bool m_focus_ahead =
-      false;  // the focus's tiles are brought to their lead (not before their first visit)
-  uint32_t m_lead_cursor = 0,
-           m_lead_end = 0;  // the lead pass over schedule entries [0, m_lead_end)
-  uint32_t m_lead_at = 0;   // leading entries [0, m_lead_at) hold the edit's and the focus's tiles
-  bool m_lead_begun = false;    // the leading steps have passed them
-  uint32_t m_focus_target = 0;  // what the focus's tiles are brought to (0: the round target)
-  uint32_t m_edit_lead = kDefaultEditLead;
-  uint32_t m_edit_lead_target =
-      0;  // what the pixels that lead after the edit are brought to (0: none)
-  std::optional<uint32_t>
-      m_edit_lead_at;        // the schedule entry before which the edit's lead pass runs
-  bool m_edit_plan = false;  // the last plan was an edit's (not a new focus's)
+  // Settings the policy's own steps follow (RoundState).
   uint32_t m_converged_spp = 0;
   uint32_t m_focus_lead = kDefaultFocusLead;
+  uint32_t m_edit_lead = kDefaultEditLead;
 };
 
 // Tiles per step when none is given: a sixteenth of the frame, as `hipr replay` and `hipr

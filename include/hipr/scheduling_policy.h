@@ -37,6 +37,21 @@ DisplayRule default_display_rule(Policy policy);
 // The tile order of the fixed-order policies (every tile once; identity for the others).
 std::vector<uint32_t> tile_order(Policy policy, uint32_t tiles_x, uint32_t tiles_y, uint32_t seed);
 
+// Where the scheduler's rounds stand, for a policy's steps of its own.
+struct RoundState {
+  uint32_t target = 0;           // the samples every pixel has when the round ends (0: unknown)
+  uint32_t cursor = 0;           // the next schedule entry the round renders
+  bool leading_pending = false;  // the policy's leading steps are not all taken
+  uint32_t tiles_per_step = 1;   // the step budget
+  uint32_t visit_spp = 1;        // samples a visit adds
+  uint32_t first_visit_spp = 1;  // samples of a tile's first visit after an edit
+  uint32_t converged_spp = 0;    // where the render stops (0: unknown); no pixel passes it
+  bool focus_set = false;        // the user's focus is not empty
+  uint32_t focus_lead = 0;       // visits the focus's tiles may run ahead (ScheduleSettings)
+  uint32_t edit_lead = 0;        // visits the pixels an edit moved may get ahead (ScheduleSettings)
+  std::optional<DisplayRule> display;  // how a step's tiles are shown (none: at the pass's end)
+};
+
 class SchedulingPolicy {
  public:
   virtual ~SchedulingPolicy() = default;
@@ -58,31 +73,45 @@ class SchedulingPolicy {
   // in the renderer's schedule. Returns how many leading schedule entries the policy renders
   // itself (render_leading), 0 when the schedule is rendered as it is.
   virtual uint32_t plan(ProgressiveRenderer& renderer, const ChangeSet& changes) = 0;
-  // Renders leading entries [offset, offset + count) (HiPR: stage 2, with discovery).
-  virtual void render_leading(ProgressiveRenderer& renderer, uint32_t offset, uint32_t count,
-                              uint32_t samples_per_pixel, std::optional<DisplayRule> then_resolve) {
-    (void)renderer, (void)offset, (void)count, (void)samples_per_pixel, (void)then_resolve;
+  // Renders one leading step: entries from `offset`, at most `budget` of them (HiPR: stage 2,
+  // with discovery; it may stop early where its own lead begins). Returns how many it rendered
+  // (at least 1).
+  virtual uint32_t render_leading(ProgressiveRenderer& renderer, uint32_t offset, uint32_t budget,
+                                  uint32_t samples_per_pixel,
+                                  std::optional<DisplayRule> then_resolve,
+                                  const RoundState& round) {
+    (void)renderer, (void)offset, (void)samples_per_pixel, (void)then_resolve, (void)round;
+    return budget;
   }
   // After the last leading entry: orders the rest (HiPR: stage 3, from stage 2's weights).
-  virtual void finish_leading(ProgressiveRenderer& renderer) { (void)renderer; }
-  // Of the last plan's leading entries, the first this many hold the tiles the edit or the
-  // focus scored (HiPR: the rest of the active set follows them, by distance); 0: none.
-  virtual uint32_t seeded_leading(ProgressiveRenderer& renderer) {
-    (void)renderer;
-    return 0;
+  virtual void finish_leading(ProgressiveRenderer& renderer, const RoundState& round) {
+    (void)renderer, (void)round;
   }
-  // Of the last plan's seeded leading entries, how many hold pixels that lead after the edit
-  // (HiPR: stage 1's pixel-lead bits); 0: none, no edit lead.
-  virtual uint32_t lead_tiles(ProgressiveRenderer& renderer) {
-    (void)renderer;
-    return 0;
+
+  // ---- Rounds. A visit brings each pixel to the round's target (set_round_target); a policy
+  // may bring some pixels ahead of it in steps of its own (HiPR: the focus's and the edit's
+  // leads, docs/method.md#the-edits-lead). The scheduler keeps the rounds, the policy its leads.
+
+  // After a plan (an edit's, or a new focus's: `edit` false) with `leading` leading entries.
+  virtual void planned(ProgressiveRenderer& renderer, uint32_t leading, bool edit) {
+    (void)renderer, (void)leading, (void)edit;
   }
-  // After finish_leading: how many schedule entries after the leading ones hold tiles the
-  // leading steps found changed too (HiPR: discovered); the edit's lead waits for them.
-  virtual uint32_t discovered_entries(ProgressiveRenderer& renderer) {
-    (void)renderer;
-    return 0;
+  // The round's target is known or changed: the renderer's sample targets follow (the round's,
+  // and the policy's own for the pixels it brings ahead).
+  virtual void set_round_target(ProgressiveRenderer& renderer, const RoundState& round) {
+    renderer.set_sample_target(round.target);
   }
+  // Before each step: takes a step of the policy's own instead (HiPR: a lead step) and returns
+  // true, or false to leave the step to the scheduler.
+  virtual bool lead_step(ProgressiveRenderer& renderer, const RoundState& round) {
+    (void)renderer, (void)round;
+    return false;
+  }
+  // The policy's own steps are not done (a round cannot end before them).
+  virtual bool lead_pending() const { return false; }
+  // The last schedule entry was rendered: a new round starts.
+  virtual void round_ended() {}
+
   // The user's focus changed (docs/method.md#focus; no edit: nothing restarts). A policy that
   // follows it keeps it for every later plan, re-plans now and returns its leading entries as
   // plan() does; the others return nothing and keep their order.

@@ -27,6 +27,8 @@
 #include "hipr/edits.h"
 #include "hipr/focus.h"
 #include "hipr/scene_diff.h"
+#include "render/render_readback.h"
+#include "render/render_snapshot.h"
 #include "shaders/shared/abi.h"
 
 namespace hipr::app {
@@ -133,10 +135,10 @@ void run_cold_start_bench(const BenchOptions& o, const vk::Context& ctx, Rendere
 // kernel feature), compiled early, so no timed run pays for JIT compilation.
 std::vector<uint32_t> changed_tiles_and_warm_up(Renderer& renderer, const RenderSnapshot& start,
                                                 const Scene& after, const ChangeSet& changes) {
-  renderer.restore(start);
+  restore_render(renderer, start);
   Scheduler probe(renderer, Policy::Hipr, 1);
   probe.on_edit(after, changes);
-  const std::vector<uint32_t> flags = renderer.tile_flags();
+  const std::vector<uint32_t> flags = read_tile_flags(renderer);
   std::vector<uint32_t> tiles;
   for (uint32_t t = 0; t < flags.size(); ++t)
     if (flags[t] & abi::kTileActive) tiles.push_back(t);
@@ -168,7 +170,7 @@ void run_drag_bench(const BenchOptions& o, const vk::Context& ctx, Renderer& ren
   log::info("drag of " + std::to_string(edits.size()) + " edits: references ready");
   bench::converge(renderer, o.common.spp);  // the renderer holds the scene before the drag
   renderer.resolve_display_all(DisplayRule::Immediate);
-  const RenderSnapshot start = renderer.snapshot();
+  const RenderSnapshot start = snapshot_render(renderer);
   const ChangeSet whole = diff_scenes(states.front(), states.back()),
                   undo = diff_scenes(states.back(), states.front());
   changed_tiles_and_warm_up(renderer, start, states.back(), whole);  // compiles what the drag needs
@@ -334,7 +336,7 @@ int run_bench(BenchOptions& o) {
 
     bench::converge(renderer, o.common.spp);  // the renderer holds `before`
     renderer.resolve_display_all(DisplayRule::Immediate);
-    const RenderSnapshot start = renderer.snapshot();
+    const RenderSnapshot start = snapshot_render(renderer);
     const std::vector<uint32_t> changed =
         changed_tiles_and_warm_up(renderer, start, scene, changes);
     // The focus region: where the focus is seen in the edited scene (the probe's G-buffer).

@@ -19,6 +19,7 @@
 #include "hipr/scheduler.h"
 #include "image/debug_images.h"
 #include "image/image_io.h"
+#include "render/render_readback.h"
 #include "vk/buffer.h"
 
 namespace hipr::app {
@@ -71,9 +72,9 @@ void write_debug_images(const fs::path& dir, size_t edit, const Renderer& render
   const std::string stem = "edit" + std::to_string(edit + 1);
   write_image(dir / (stem + "_objects.png"),
               object_id_image(renderer.gbuffer_instances(), s.width, s.height));
-  const auto flags = renderer.tile_flags();
+  const auto flags = read_tile_flags(renderer);
   write_image(dir / (stem + "_weights.png"),
-              tile_weight_image(renderer.tile_weights(), flags, renderer.tiles_x(), s.tile_size,
+              tile_weight_image(read_tile_weights(renderer), flags, renderer.tiles_x(), s.tile_size,
                                 s.width, s.height));
   write_image(dir / (stem + "_tiles.png"),
               tile_mask_image(flags, renderer.tiles_x(), s.tile_size, s.width, s.height));

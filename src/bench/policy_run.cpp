@@ -5,6 +5,8 @@
 #include "bench/oracle_policy.h"
 #include "core/error.h"
 #include "core/timer.h"
+#include "render/render_readback.h"
+#include "render/render_snapshot.h"
 #include "shaders/shared/abi.h"
 
 namespace hipr::bench {
@@ -88,7 +90,7 @@ void finish(PolicyRun& run, const Scheduler& scheduler, double overhead_seconds,
 PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& changes,
                      const RenderSnapshot& start, const ImageRGB& reference,
                      const std::vector<uint32_t>& changed_tiles, const PolicyRunOptions& options) {
-  renderer.restore(start);
+  restore_render(renderer, start);
   Scheduler scheduler = make_scheduler(renderer, reference, options);
   if (!options.focus.empty())
     scheduler.set_focus(options.focus);  // what the user looked at before the edit
@@ -124,7 +126,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
       run.first_feedback_work = work;
       run.first_feedback_ms = wall * 1e3;
     }
-    if (run.changed_tiles_shown_work < 0.0 && all_shown(renderer.tile_flags(), changed_tiles)) {
+    if (run.changed_tiles_shown_work < 0.0 && all_shown(read_tile_flags(renderer), changed_tiles)) {
       run.changed_tiles_shown_work = work;
       run.changed_tiles_shown_ms = wall * 1e3;
     }
@@ -170,7 +172,7 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states,
                    const PolicyRunOptions& options) {
   if (changes.empty() || states.size() != changes.size() + 1 || references.size() != changes.size())
     throw InternalError("a drag needs a scene state and a reference after every edit");
-  renderer.restore(start);
+  restore_render(renderer, start);
   ImageRGB reference = references.front();  // the oracle reads the current one at each edit
   // Every setting, the converged count included: the edit's and the focus's leads run in drags
   // as after single edits.

@@ -10,6 +10,7 @@
 #include "hipr/schedule_settings.h"
 #include "hipr/scheduler.h"
 #include "image/error_metrics.h"
+#include "render/render_snapshot.h"
 
 namespace hipr::bench {
 

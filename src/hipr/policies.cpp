@@ -6,7 +6,7 @@
 #include <random>
 
 #include "core/error.h"
-#include "hipr/hipr_stages.h"
+#include "hipr/hipr_policy.h"
 #include "hipr/scheduling_policy.h"
 
 namespace hipr {
@@ -67,63 +67,6 @@ std::vector<uint32_t> tile_order(Policy policy, uint32_t tiles_x, uint32_t tiles
 
 namespace {
 
-// The paper: stage 1 marks the active tiles and orders them by change score; stage 2 renders
-// them (the leading steps) and discovers where their light goes; stage 3 sorts the rest.
-class HiprPolicy final : public SchedulingPolicy {
- public:
-  // `given`: stages of another progressive renderer; none: hipr's, on the renderer's device state.
-  explicit HiprPolicy(HiprStageRunner* given = nullptr) : m_given(given) {}
-  Policy id() const override { return Policy::Hipr; }
-  bool relights() const override { return true; }
-  void set_reprojection(bool reproject) override { m_reprojection = reproject; }
-  void start(ProgressiveRenderer& renderer) override {
-    HiprStageRunner& stages = stages_of(renderer);
-    stages.set_focus({});  // the stages outlive schedulers: no focus of an earlier one stays
-    stages.stage1_visibility({});
-  }
-  uint32_t plan(ProgressiveRenderer& renderer, const ChangeSet& changes) override {
-    HiprStageRunner& stages = stages_of(renderer);
-    stages.set_reprojection(m_reprojection);
-    const uint32_t active = stages.stage1_visibility(changes);
-    stages.build_schedule();  // active tiles first, by change score: the order of stage 2
-    return active;
-  }
-  void render_leading(ProgressiveRenderer& renderer, uint32_t offset, uint32_t count,
-                      uint32_t samples_per_pixel,
-                      std::optional<DisplayRule> then_resolve) override {
-    stages_of(renderer).stage2_discover(offset, count, samples_per_pixel, then_resolve);
-  }
-  void finish_leading(ProgressiveRenderer& renderer) override {
-    stages_of(renderer).build_schedule();
-  }
-  uint32_t seeded_leading(ProgressiveRenderer& renderer) override {
-    return stages_of(renderer).seeded_tiles();
-  }
-  uint32_t lead_tiles(ProgressiveRenderer& renderer) override {
-    return stages_of(renderer).lead_tiles();
-  }
-  uint32_t discovered_entries(ProgressiveRenderer& renderer) override {
-    return stages_of(renderer).discovered_tiles();
-  }
-  // The focus is a changed set for ordering only: stage 1 marks where it is seen (after what
-  // an edit left unrendered), stage 2 discovers from there, stage 3 orders the rest outward.
-  std::optional<uint32_t> refocus(ProgressiveRenderer& renderer, const Focus& focus) override {
-    HiprStageRunner& stages = stages_of(renderer);
-    stages.set_focus(focus);
-    const uint32_t active = stages.stage1_focus();
-    stages.build_schedule();
-    return active;
-  }
-
- private:
-  HiprStageRunner& stages_of(ProgressiveRenderer& renderer) {
-    return m_given ? *m_given : static_cast<HiprStageRunner&>(hipr_stages(renderer));
-  }
-
-  HiprStageRunner* m_given;
-  bool m_reprojection = true;
-};
-
 // Full-frame restart, as full-frame progressive viewers do.
 class FullPolicy final : public SchedulingPolicy {
  public:
@@ -152,10 +95,6 @@ class BucketOrderPolicy final : public SchedulingPolicy {
 };
 
 }  // namespace
-
-std::unique_ptr<SchedulingPolicy> make_hipr_policy(HiprStageRunner& stages) {
-  return std::make_unique<HiprPolicy>(&stages);
-}
 
 std::unique_ptr<SchedulingPolicy> make_policy(Policy policy) {
   switch (policy) {

@@ -73,8 +73,7 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   m_policy->set_reprojection(m_reproject);
   m_leading = std::min(m_policy->plan(m_renderer, changes), m_tile_count);
   m_leading_cursor = 0;
-  m_edit_plan = true;
-  planned();
+  planned(true);
   m_renderer.mark_all_owed();
   m_times.plan_seconds = schedule_timer.seconds();
 }
@@ -84,45 +83,52 @@ std::optional<DisplayRule> Scheduler::step_display_rule() const {
   return m_edited ? m_display : DisplayRule::Immediate;
 }
 
+RoundState Scheduler::round_state() const {
+  RoundState round;
+  round.target = m_round_target.value_or(0);
+  round.cursor = m_cursor;
+  round.leading_pending = leading_steps_pending();
+  round.tiles_per_step = m_tiles_per_step;
+  round.visit_spp = m_visit_spp;
+  round.first_visit_spp = m_first_visit_spp;
+  round.converged_spp = m_converged_spp;
+  round.focus_set = !m_focus.empty();
+  round.focus_lead = m_focus_lead;
+  round.edit_lead = m_edit_lead;
+  round.display = step_display_rule();
+  return round;
+}
+
 void Scheduler::step() {
   const Timer step_timer;
-  if (m_edit_lead_at && !lead_pass_pending() && !leading_steps_pending() &&
-      m_cursor >= *m_edit_lead_at)
-    begin_edit_lead();
-  const bool first_visit = m_first_round && m_edited && !m_policy->whole_passes();
-  const uint32_t spp = first_visit ? m_first_visit_spp : m_visit_spp;
-  if (lead_pass_pending()) {
-    const uint32_t count = std::min(lead_step_tiles(), m_lead_end - m_lead_cursor);
-    m_renderer.render_lead(m_lead_cursor, count, step_display_rule());
+  // A step of the policy's own first (HiPR: the focus's or the edit's lead), when it has one.
+  if (m_policy->lead_step(m_renderer, round_state())) {
     m_times.step_seconds += step_timer.seconds();
     m_times.steps += 1;
-    m_lead_cursor += count;
     if (!lead_pass_pending() && !leading_steps_pending() && m_cursor == m_tile_count) end_round();
     return;
   }
+  const bool first_visit = m_first_round && m_edited && !m_policy->whole_passes();
+  const uint32_t spp = first_visit ? m_first_visit_spp : m_visit_spp;
   if (leading_steps_pending()) {
     // The policy's own steps, one budget each (HiPR's stage 2: immediate feedback, most changed
     // first). After the last, the policy orders the rest (stage 3's sort, from the weights stage
     // 2 discovered); the leading entries stay first in it, so the schedule resumes after them.
-    uint32_t count = std::min(m_tiles_per_step, m_leading - m_leading_cursor);
-    if (!m_lead_begun && m_lead_at > m_leading_cursor)
-      count = std::min(count, m_lead_at - m_leading_cursor);
-    m_policy->render_leading(m_renderer, m_leading_cursor, count, spp, step_display_rule());
+    const uint32_t budget = std::min(m_tiles_per_step, m_leading - m_leading_cursor);
+    const uint32_t count =
+        std::min(m_policy->render_leading(m_renderer, m_leading_cursor, budget, spp,
+                                          step_display_rule(), round_state()),
+                 budget);
     m_times.leading_step_seconds += step_timer.seconds();
     m_times.leading_steps += 1;
-    m_leading_cursor += count;
-    if (!m_lead_begun && m_leading_cursor >= m_lead_at) begin_lead();
-    if (m_leading_cursor == m_leading) {
-      const Timer timer;
-      m_policy->finish_leading(m_renderer);
-      m_times.sort_seconds += timer.seconds();
+    m_leading_cursor += std::max(count, 1u);
+    if (m_leading_cursor >= m_leading) {
+      m_leading_cursor = m_leading;
       m_cursor = m_leading;
-      // The edit's lead comes once the tiles stage 2 discovered had their first visit too.
-      if (m_edit_plan && m_edit_lead > 0 && m_converged_spp > *m_round_target &&
-          m_policy->lead_tiles(m_renderer) > 0)
-        m_edit_lead_at = m_leading + m_policy->discovered_entries(m_renderer);
-      if (!lead_pass_pending() && m_cursor == m_tile_count)
-        end_round();  // every tile was a leading one
+      const Timer timer;
+      m_policy->finish_leading(m_renderer, round_state());
+      m_times.sort_seconds += timer.seconds();
+      if (!lead_pass_pending() && m_cursor == m_tile_count) end_round();  // every tile led
     }
     return;
   }
@@ -136,7 +142,7 @@ void Scheduler::step() {
 void Scheduler::end_round() {
   m_cursor = 0;
   m_first_round = false;
-  m_edit_lead_at.reset();  // a lead the first round did not reach: every pixel gets more now
+  m_policy->round_ended();
   if (m_round_target) set_round_target(*m_round_target + m_visit_spp);
   // A whole-pass policy shows a whole pass when it completes, as a full-frame progressive viewer
   // presents each frame. Like every policy's per-step display pass, this counts as rendering.
@@ -145,52 +151,12 @@ void Scheduler::end_round() {
 
 void Scheduler::set_round_target(uint32_t target) {
   m_round_target = target;
-  // The focus runs ahead by whole visits, up to the converged count (never past it: the work
-  // since the edit would then reach it before every pixel has).
-  m_focus_target = 0;
-  if (m_focus_ahead && m_follows_focus && !m_focus.empty() && m_focus_lead > 0 &&
-      m_converged_spp > target)
-    m_focus_target = std::min(target + m_focus_lead * m_visit_spp, m_converged_spp);
-  m_renderer.set_sample_target(target, m_focus_target, m_edit_lead_target);
+  m_policy->set_round_target(m_renderer, round_state());
 }
 
-void Scheduler::planned() {
-  m_focus_ahead = false;  // until the leading steps have visited the focus once
-  m_lead_begun = false;
-  m_lead_cursor = m_lead_end = 0;
-  m_edit_lead_target = 0;
-  m_edit_lead_at.reset();
-  m_lead_at = std::min(m_policy->seeded_leading(m_renderer), m_leading);
+void Scheduler::planned(bool edit) {
+  m_policy->planned(m_renderer, m_leading, edit);
   if (m_round_target) set_round_target(*m_round_target);
-}
-
-void Scheduler::begin_lead() {
-  // The edit's and the focus's tiles have had their first visit (one visit first wherever the
-  // stale image is wrong): the focus's among them now take their lead, before the rest of the
-  // leading steps (after a camera edit every tile leads) and the rest of the round.
-  m_lead_begun = true;
-  m_focus_ahead = true;
-  set_round_target(*m_round_target);
-  m_lead_cursor = 0;
-  m_lead_end = m_focus_target ? m_lead_at : 0;
-}
-
-uint32_t Scheduler::lead_step_tiles() const {
-  // The edit's lead gives a tile's marked pixels several visits at once: fewer tiles per step
-  // keep a step's work near a first visit's (the display is resolved, and a viewer presents,
-  // after each step).
-  if (m_edit_lead_target == 0 || m_edit_lead == 0) return m_tiles_per_step;
-  return std::max(1u, m_tiles_per_step * m_first_visit_spp / (m_edit_lead * m_visit_spp));
-}
-
-void Scheduler::begin_edit_lead() {
-  // The pixels that lead after the edit are brought to the lead target in a pass over the
-  // leading entries that hold them (once per edit: the target stays, and the rounds pass it).
-  m_edit_lead_at.reset();
-  m_edit_lead_target = std::min(*m_round_target + m_edit_lead * m_visit_spp, m_converged_spp);
-  set_round_target(*m_round_target);
-  m_lead_cursor = 0;
-  m_lead_end = m_lead_at;
 }
 
 void Scheduler::set_converged_spp(uint32_t spp) {
@@ -207,7 +173,6 @@ void Scheduler::set_focus(const Focus& focus) {
   m_focus = focus;
   const Timer timer;
   const std::optional<uint32_t> leading = m_policy->refocus(m_renderer, m_focus);
-  m_follows_focus = leading.has_value();
   if (!leading) return;  // the policy keeps its order
   // The round under way goes on in the new order: a visit brings a pixel to the round's target,
   // so tiles it already visited get nothing more and every pixel ends it with the same count
@@ -221,8 +186,7 @@ void Scheduler::set_focus(const Focus& focus) {
   m_cursor = 0;
   m_leading = std::min(*leading, m_tile_count);
   m_leading_cursor = 0;
-  m_edit_plan = false;
-  planned();
+  planned(false);
   m_times.focus_seconds += timer.seconds();
 }
 

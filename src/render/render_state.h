@@ -11,6 +11,7 @@
 #include "render/film.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
+#include "render/overlay_pass.h"
 #include "render/relight_pass.h"
 #include "render/resolve_pass.h"
 #include "render/tile_state.h"
@@ -71,6 +72,10 @@ class RenderState {
   RelightPass relight;
   TracePass trace;
   SampleTarget sample_target;
+  // The viewer's overlays (viewer_sources.h), made on first use, and the GpuScene::
+  // records_generation they show.
+  std::unique_ptr<OverlayPass> overlays;
+  uint64_t overlay_records_seen = 0;
   // The method's passes (made by the method on first use; declared last: they refer to the
   // members above and go first).
   std::unique_ptr<RenderExtension> extension;

@@ -7,10 +7,8 @@
 
 #include "core/error.h"
 #include "render/background_tiles.h"
-#include "render/difference_records.h"
 #include "render/frame_params.h"
 #include "render/kernel_features.h"
-#include "render/overlay_pass.h"
 #include "render/render_state.h"
 
 namespace hipr {
@@ -24,23 +22,12 @@ std::optional<Sampler> parse_sampler(std::string_view name) {
   if (name == "random") return Sampler::Random;
   return std::nullopt;
 }
-namespace {
-
-template <typename T>
-std::vector<uint8_t> bytes_of(const vk::Buffer& buffer) {
-  const std::vector<T> values = buffer.download_all<T>();
-  std::vector<uint8_t> bytes(values.size() * sizeof(T));
-  std::memcpy(bytes.data(), values.data(), bytes.size());
-  return bytes;
-}
-
-}  // namespace
 
 struct Renderer::Impl : RenderState {
   Impl(const vk::Context& c, const Scene& scene, const RenderSettings& s)
       : RenderState(c, scene, s), background(scene) {
     layout_seen = gpu.layout_generation();
-    records_seen = gpu.records_generation();
+    overlay_records_seen = gpu.records_generation();
     update_background(scene);
     gpu.set_frame(make_frame_params(scene, gpu, settings));
     warm_up_trace();
@@ -64,8 +51,8 @@ struct Renderer::Impl : RenderState {
   // layout_generation): bind them again; one that added or removed instances: the overlay's
   // records follow.
   void rebind_if_replaced() {
-    if (overlays && gpu.records_generation() != records_seen) overlays->update_records(gpu);
-    records_seen = gpu.records_generation();
+    if (overlays && gpu.records_generation() != overlay_records_seen) overlays->update_records(gpu);
+    overlay_records_seen = gpu.records_generation();
     if (gpu.layout_generation() == layout_seen) return;
     layout_seen = gpu.layout_generation();
     trace.rebind();
@@ -81,18 +68,18 @@ struct Renderer::Impl : RenderState {
   }
 
   BackgroundTiles background;
-  std::unique_ptr<OverlayPass> overlays;  // the viewer's, made on first use
-  uint64_t layout_seen = 0;               // GpuScene::layout_generation the passes are bound to
-  uint64_t records_seen = 0;              // GpuScene::records_generation the overlay shows
+  uint64_t layout_seen = 0;  // GpuScene::layout_generation the passes are bound to
 };
 
-Renderer::Renderer(const vk::Context& ctx, const Scene& scene, const RenderSettings& settings) {
+Renderer::Renderer(const Device& device, const Scene& scene, const RenderSettings& settings) {
+  const auto* ctx = dynamic_cast<const vk::Context*>(&device);
+  if (!ctx) throw InternalError("a device that is not hipr's (open_device makes one)");
   if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
       settings.height > 16384)
     throw InputError("image size must be between 1x1 and 16384x16384");
   if (settings.tile_size < 1 || settings.tile_size > 256)
     throw InputError("tile size must be between 1 and 256");
-  m = std::make_unique<Impl>(ctx, scene, settings);
+  m = std::make_unique<Impl>(*ctx, scene, settings);
 }
 
 Renderer::~Renderer() = default;
@@ -207,36 +194,8 @@ void Renderer::capture_stale_display() {
 
 ImageRGB Renderer::displayed_image() const { return m->resolve.displayed_image(); }
 
-const vk::Buffer& Renderer::display_texels() const { return m->resolve.display; }
-
-RenderSnapshot Renderer::snapshot() const {
-  std::vector<uint8_t> groups = bytes_of<glm::vec3>(m->film.group_sums);
-  const std::vector<uint8_t> stale_groups = bytes_of<glm::vec3>(m->relight.stale_groups);
-  groups.insert(groups.end(), stale_groups.begin(), stale_groups.end());
-  return {bytes_of<abi::PixelAccum>(m->film.accumulation),
-          bytes_of<abi::DisplayTexel>(m->resolve.display), std::move(groups),
-          bytes_of<abi::DifferenceRecord>(m->film.difference),
-          bytes_of<abi::TileJudgement>(m->resolve.judgements)};
-}
-
-void Renderer::restore(const RenderSnapshot& snapshot) {
-  const size_t film_groups = m->film.group_sums.size();
-  if (snapshot.accumulation.size() != m->film.accumulation.size() ||
-      snapshot.display.size() != m->resolve.display.size() ||
-      snapshot.light_groups.size() != film_groups + m->relight.stale_groups.size() ||
-      snapshot.difference.size() != m->film.difference.size() ||
-      snapshot.judgements.size() != m->resolve.judgements.size())
-    throw InternalError("a snapshot of another image size");
-  m->film.accumulation.upload(snapshot.accumulation.data(), snapshot.accumulation.size());
-  m->resolve.display.upload(snapshot.display.data(), snapshot.display.size());
-  m->film.group_sums.upload(snapshot.light_groups.data(), film_groups);
-  m->relight.stale_groups.upload(snapshot.light_groups.data() + film_groups,
-                                 m->relight.stale_groups.size());
-  m->film.difference.upload(snapshot.difference.data(), snapshot.difference.size());
-  m->resolve.judgements.upload(snapshot.judgements.data(), snapshot.judgements.size());
-}
-
 RenderState* Renderer::render_state() { return m.get(); }
+const RenderState& Renderer::state() const { return *m; }
 
 void Renderer::refresh_gbuffer() { m->gbuffers.render(); }
 
@@ -261,55 +220,8 @@ Renderer::PixelHit Renderer::gbuffer_at(uint32_t x, uint32_t y) const {
   return {m->gpu.record_instance()[hit.record], hit.depth};
 }
 
-void Renderer::render_overlay(DebugOverlay overlay, uint32_t selected_node,
-                              const vk::Buffer& output) {
-  if (!m->overlays) {
-    const OverlaySources sources{m->gbuffers.current, m->tiles.weights, m->tiles.flags,
-                                 m->film.accumulation};
-    m->overlays = std::make_unique<OverlayPass>(m->ctx, m->gpu, sources, m->settings.width,
-                                                m->settings.height, m->settings.tile_size,
-                                                tiles_x(), tile_count());
-  }
-  static constexpr uint32_t kModes[] = {abi::kOverlayNone, abi::kOverlayIds, abi::kOverlayWeights,
-                                        abi::kOverlayOwed};
-  m->overlays->render(kModes[size_t(overlay)],
-                      selected_node == UINT32_MAX ? abi::kInvalidIndex : selected_node, output);
-}
-
-std::vector<uint32_t> Renderer::tile_flags() const {
-  return m->tiles.flags.download_all<uint32_t>();
-}
-
-std::vector<double> Renderer::tile_weights() const {
-  const auto fixed = m->tiles.weights.download_all<uint64_t>();
-  std::vector<double> out(fixed.size());
-  for (size_t i = 0; i < fixed.size(); ++i) out[i] = double(fixed[i]) / abi::kWeightScale;
-  return out;
-}
-
-std::vector<uint32_t> Renderer::schedule() const {
-  return m->tiles.schedule.download_all<uint32_t>();
-}
-
 std::vector<std::string> Renderer::light_group_names() const { return m->gpu.light_groups().names; }
 std::vector<std::string> Renderer::pooled_emitters() const { return m->gpu.light_groups().pooled; }
 ImageRGB Renderer::light_group_image(uint32_t group) const { return m->film.group_image(group); }
-
-DifferenceEstimates Renderer::difference_estimates() const {
-  if (!m->film.keeps_difference()) return {};
-  return hipr::difference_estimates(m->settings.width, m->settings.height,
-                                    m->film.accumulation.download_all<abi::PixelAccum>(),
-                                    m->film.difference.download_all<abi::DifferenceRecord>(),
-                                    m->resolve.display.download_all<abi::DisplayTexel>());
-}
-
-std::vector<uint32_t> Renderer::owed_tiles() const {
-  const std::vector<bool> owed = m->film.owed_pixels();
-  const uint32_t width = m->settings.width;
-  std::vector<uint32_t> per_tile(tile_count(), 0);
-  for (size_t i = 0; i < owed.size(); ++i)
-    if (owed[i]) ++per_tile[m->tiles.tile_of(uint32_t(i % width), uint32_t(i / width))];
-  return per_tile;
-}
 
 }  // namespace hipr

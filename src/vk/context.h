@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "hipr/device.h"
+
 namespace hipr::vk {
 
 // How the kernels trace rays. Automatic: ray queries where the device has them, else the
@@ -48,10 +50,10 @@ struct DeviceFunctions {
 
 class StagingBuffers;  // vk/staging.h
 
-class Context {
+class Context final : public Device {
  public:
   explicit Context(const ContextOptions& options = {});
-  ~Context();
+  ~Context() override;
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
@@ -62,7 +64,7 @@ class Context {
   VkSurfaceKHR surface() const { return m_surface; }  // VK_NULL_HANDLE when headless
   uint32_t queue_family() const { return m_queue_family; }
   const DeviceFunctions& fn() const { return m_fn; }
-  const std::string& device_name() const { return m_device_name; }
+  const std::string& device_name() const override { return m_device_name; }
   bool is_cpu_device() const { return m_is_cpu; }
   // The kernels trace hipr's BVH instead of ray queries (HIPR_SOFTWARE_TRAVERSAL=1 in every
   // kernel; GpuScene builds the BVH instead of acceleration structures).
@@ -70,7 +72,9 @@ class Context {
   bool staged_device_memory() const { return m_staged_device_memory; }
   // Whether the device could trace with ray queries (whichever traversal was chosen).
   bool has_ray_queries() const { return m_has_ray_queries; }
-  const char* traversal_name() const { return m_software_traversal ? "software" : "ray-query"; }
+  const char* traversal_name() const override {
+    return m_software_traversal ? "software" : "ray-query";
+  }
   uint32_t min_storage_alignment() const { return m_min_storage_alignment; }
   uint32_t min_scratch_alignment() const { return m_min_scratch_alignment; }
   // maxComputeWorkGroupCount[0] and [1]: ComputePipeline::dispatch folds wider dispatches.

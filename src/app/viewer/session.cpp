@@ -171,10 +171,10 @@ void Session::on_presented() {
   m_awaiting_change = false;
 }
 
-void Session::render_overlay(Renderer::DebugOverlay overlay, uint32_t selected_node,
+void Session::render_overlay(DebugOverlay overlay, uint32_t selected_node,
                              const vk::Buffer& output) {
-  if (overlay == Renderer::DebugOverlay::Ids || selected_node != UINT32_MAX) ensure_gbuffer();
-  m_renderer->render_overlay(overlay, selected_node, output);
+  if (overlay == DebugOverlay::Ids || selected_node != UINT32_MAX) ensure_gbuffer();
+  hipr::render_overlay(*m_renderer, overlay, selected_node, output);
 }
 
 void Session::ensure_gbuffer() {

@@ -15,6 +15,7 @@
 #include "hipr/renderer.h"
 #include "hipr/schedule_settings.h"
 #include "hipr/scheduler.h"
+#include "render/viewer_sources.h"
 #include "vk/context.h"
 
 namespace hipr::viewer {
@@ -83,7 +84,7 @@ class Session {
 
   // What the scheduler says is displayed, read back from the device (only when something ran
   // since the last call): screenshots and tests. The viewer's frames show the renderer's display
-  // buffer directly (Renderer::display_texels).
+  // buffer directly (display_texels, render/viewer_sources.h).
   const ImageRGB& displayed();
   // Increments whenever the display may have changed (steps, edits, a new renderer).
   uint64_t display_version() const { return m_display_version; }
@@ -101,8 +102,7 @@ class Session {
 
   // Makes an overlay on the device into `output` (Renderer::render_overlay), the G-buffer
   // brought up to date first where ids or an outline need it.
-  void render_overlay(Renderer::DebugOverlay overlay, uint32_t selected_node,
-                      const vk::Buffer& output);
+  void render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output);
   // The G-buffer of the scene as it is now: instance per pixel, and one pixel's hit.
   const std::vector<uint32_t>& instance_ids();
   Renderer::PixelHit pick(uint32_t x, uint32_t y);

@@ -25,6 +25,7 @@
 #include "hipr/scene_writer.h"
 #include "image/builtin_environments.h"
 #include "render/display_pass.h"
+#include "render/viewer_sources.h"
 #include "vk/buffer.h"
 #include "vk/image.h"
 #include "vk/offscreen_presenter.h"
@@ -246,9 +247,8 @@ void Viewer::update_overlay() {
   if (!m_overlay_on) return;
   // Made on the GPU from the renderer's own buffers into the display pass's overlay: showing an
   // overlay while re-rendering reads nothing back (image/debug_images.cpp's colours).
-  static constexpr Renderer::DebugOverlay kinds[] = {
-      Renderer::DebugOverlay::None, Renderer::DebugOverlay::Ids,
-      Renderer::DebugOverlay::TileWeights, Renderer::DebugOverlay::OwedTiles};
+  static constexpr DebugOverlay kinds[] = {DebugOverlay::None, DebugOverlay::Ids,
+                                           DebugOverlay::TileWeights, DebugOverlay::OwedTiles};
   const uint32_t selected =
       m_state.selected_node >= 0 ? uint32_t(m_state.selected_node) : UINT32_MAX;
   m_session->render_overlay(kinds[size_t(m_state.overlay)], selected, m_display.overlay_buffer());
@@ -264,7 +264,7 @@ bool Viewer::present(const ViewLayout& layout) {
   // The previous frame is done (begin_frame waited): its inputs may change now. The display
   // pass reads the renderer's display buffer itself; only a new renderer needs telling.
   if (m_session->renderer_id() != m_shown_renderer) {
-    m_display.show(m_session->renderer().display_texels());
+    m_display.show(display_texels(m_session->renderer()));
     m_shown_renderer = m_session->renderer_id();
   }
   update_overlay();

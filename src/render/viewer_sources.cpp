@@ -1,0 +1,28 @@
+#include "render/viewer_sources.h"
+
+#include "render/render_state.h"
+
+namespace hipr {
+
+const vk::Buffer& display_texels(const Renderer& renderer) {
+  return renderer.state().resolve.display;
+}
+
+void render_overlay(Renderer& renderer, DebugOverlay overlay, uint32_t selected_node,
+                    const vk::Buffer& output) {
+  RenderState& m = *renderer.render_state();
+  if (!m.overlays) {
+    const OverlaySources sources{m.gbuffers.current, m.tiles.weights, m.tiles.flags,
+                                 m.film.accumulation};
+    m.overlays =
+        std::make_unique<OverlayPass>(m.ctx, m.gpu, sources, m.settings.width, m.settings.height,
+                                      m.settings.tile_size, m.tiles.tiles_x(), m.tiles.count());
+    m.overlay_records_seen = m.gpu.records_generation();
+  }
+  static constexpr uint32_t kModes[] = {abi::kOverlayNone, abi::kOverlayIds, abi::kOverlayWeights,
+                                        abi::kOverlayOwed};
+  m.overlays->render(kModes[size_t(overlay)],
+                     selected_node == UINT32_MAX ? abi::kInvalidIndex : selected_node, output);
+}
+
+}  // namespace hipr
