@@ -558,9 +558,9 @@ TEST(Session, FollowsTheSelectionAsItsFocus) {
   converge(session);
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), s).rgb);
   // A new policy keeps the focus and its lead; an edit re-renders with them and still ends exactly.
-  change_schedule(session, [](ScheduleSettings& s) { s.focus_lead = 5; });
-  change_schedule(session, [](ScheduleSettings& s) { s.policy = Policy::Full; });
-  change_schedule(session, [](ScheduleSettings& s) { s.policy = Policy::Hipr; });
+  change_schedule(session, [](ScheduleSettings& schedule) { schedule.focus_lead = 5; });
+  change_schedule(session, [](ScheduleSettings& schedule) { schedule.policy = Policy::Full; });
+  change_schedule(session, [](ScheduleSettings& schedule) { schedule.policy = Policy::Hipr; });
   EXPECT_EQ(session.focus().seeds.size(), 3u);
   EXPECT_EQ(session.scheduler().focus_lead(), 5u);
   session.edit(TransformEdit{"short_block", glm::vec3(0.04f, 0.0f, 0.0f), std::nullopt});

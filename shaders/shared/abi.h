@@ -23,6 +23,23 @@ using uint64_t = std::uint64_t;
 // ---- constants ----
 HIPR_CONST uint kPixelOwed = 0x80000000u;
 HIPR_CONST uint kPixelCountMask = 0x7fffffffu;
+// Tile flags (TileState::flags, one word per tile): the interface between the engine's kernels
+// and HiPR's. Who writes and who reads each (carry_tiles.comp carries the ranked ones across
+// edits, mark_owed.comp clears the display's at an edit):
+//   flag          written by                          read by
+//   Active        mark_active, light_reach (stage 1)  trace_tiles (stage 2 requires it, the
+//                                                     schedule's steps may skip it),
+//                                                     schedule_keys, overlay; HiprStages (|A|)
+//   Discovered    trace_tiles with discovery          schedule_keys; HiprStages (discovered)
+//   Shown         resolve_display                     hipr bench (changed tiles shown)
+//   Settled       resolve_display                     resolve_display
+//   Focus         mark_active                         trace_tiles (the focus's target)
+//   Scored        mark_active, light_reach            schedule_keys; HiprStages (seeded)
+//   Reshow        resolve_display                     show_display (which clears it)
+//   Reprojected   mark_active                         schedule_keys
+//   Moved         mark_active                         schedule_keys
+//   Lead          mark_active                         trace_tiles (a lead step requires it)
+//   EditLead      mark_active                         HiprStages (lead tiles)
 HIPR_CONST uint kTileActive = 1u;      // an element of E is visible in the tile (stage 1)
 HIPR_CONST uint kTileDiscovered = 2u;  // reached by a secondary vertex or occlusion (stage 2)
 HIPR_CONST uint kTileShown = 4u;       // since the last edit, the display has shown this tile's fresh estimate (weight >= 1/2)

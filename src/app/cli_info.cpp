@@ -11,7 +11,6 @@
 #include "render/background_tiles.h"
 #include "render/kernel_features.h"
 #include "render/light_groups.h"
-#include "shaders/shared/abi.h"
 
 namespace hipr::app {
 namespace {
@@ -72,7 +71,7 @@ int run_info(const InfoOptions& o) {
                 m.name.c_str(), m.params.base_color.x, m.params.base_color.y, m.params.base_color.z,
                 m.params.base_metalness, m.params.specular_roughness,
                 material_emits(m.params) ? "  emissive" : "",
-                (m.params.flags & abi::kMaterialDoubleSided) ? "  double-sided" : "");
+                (m.params.flags & kMaterialDoubleSided) ? "  double-sided" : "");
   }
   std::printf("textures   %zu (on %zu images)\n", scene.textures.size(), scene.images.size());
   std::printf("lights     %zu punctual, %zu emissive triangles\n", punctual, emissive_triangles);

@@ -11,7 +11,6 @@
 #include "core/hash.h"
 #include "hipr/scene_loader.h"
 #include "scene/default_camera.h"
-#include "shaders/shared/abi.h"
 
 namespace hipr {
 namespace {
@@ -108,7 +107,7 @@ uint32_t append_scene(Scene& scene, Scene&& other, const std::string& name,
   }
   for (Material material : other.materials) {
     for (uint32_t* slot : texture_slots(material.params))
-      if (*slot != abi::kInvalidIndex) *slot += texture_base;
+      if (*slot != kNoTexture) *slot += texture_base;
     scene.materials.push_back(std::move(material));
   }
   for (Mesh& mesh : other.meshes) {

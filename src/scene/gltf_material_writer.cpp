@@ -23,7 +23,6 @@
 #include "scene/gltf_materials.h"
 #include "scene/gltf_texture_writer.h"
 #include "scene/material_parameters.h"
-#include "shaders/shared/abi.h"
 
 namespace hipr::gltf {
 namespace {
@@ -229,7 +228,7 @@ std::vector<std::string> material_extensions_written() {
 // loader reads them (gltf_materials.cpp and the extension rows of gltf_material_table.cpp).
 void write_texture_references(Json& m, const M& params, TextureWriter& textures) {
   const auto set = [&](Json& owner, const char* key, uint32_t texture) {
-    if (texture != abi::kInvalidIndex) owner[key] = textures.texture_info(texture);
+    if (texture != kNoTexture) owner[key] = textures.texture_info(texture);
   };
   Json& pbr = m["pbrMetallicRoughness"];
   pbr = Json::object();
@@ -237,13 +236,13 @@ void write_texture_references(Json& m, const M& params, TextureWriter& textures)
   set(pbr, "metallicRoughnessTexture", params.metallic_roughness_texture);
   if (pbr.empty()) m.erase("pbrMetallicRoughness");
   set(m, "normalTexture", params.normal_texture);
-  if (params.normal_texture != abi::kInvalidIndex && params.normal_scale != 1.0f)
+  if (params.normal_texture != kNoTexture && params.normal_scale != 1.0f)
     m["normalTexture"]["scale"] = json_number(params.normal_scale);
   set(m, "emissiveTexture", params.emission_texture);
   for (const TextureRow& row : texture_rows()) {
     uint32_t texture = 0;
     std::memcpy(&texture, reinterpret_cast<const char*>(&params) + row.field, sizeof texture);
-    if (texture != abi::kInvalidIndex) set(m["extensions"][row.extension], row.key, texture);
+    if (texture != kNoTexture) set(m["extensions"][row.extension], row.key, texture);
   }
 }
 
@@ -259,12 +258,11 @@ std::vector<Material> write_new_materials(Json& doc, const std::vector<Material>
     if (params.alpha_cutoff >= 0.0f) {
       stub["alphaMode"] = "MASK";
       stub["alphaCutoff"] = json_number(params.alpha_cutoff);
-    } else if (!(params.flags & abi::kMaterialIgnoreTextureAlpha)) {
+    } else if (!(params.flags & kMaterialIgnoreTextureAlpha)) {
       stub["alphaMode"] = "BLEND";
     }
-    if (params.flags & abi::kMaterialDoubleSided) stub["doubleSided"] = true;
-    if (!(params.flags & abi::kMaterialThinWalled))
-      stub["extensions"][kVolume]["thicknessFactor"] = 1.0;
+    if (params.flags & kMaterialDoubleSided) stub["doubleSided"] = true;
+    if (!(params.flags & kMaterialThinWalled)) stub["extensions"][kVolume]["thicknessFactor"] = 1.0;
     write_texture_references(stub, params, textures);
     append_to(doc, "materials", std::move(stub));  // after the textures added their keys
     ordered.push_back(materials[i]);

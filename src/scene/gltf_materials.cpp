@@ -7,7 +7,6 @@
 #include "core/error.h"
 #include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_material_table.h"
-#include "shaders/shared/abi.h"
 
 namespace hipr::gltf {
 namespace {
@@ -76,7 +75,7 @@ void apply_alpha_mode(const tinygltf::Material& m, MaterialParameters& p, const 
     p.geometry_opacity = alpha;
   } else if (m.alphaMode.empty() || m.alphaMode == "OPAQUE") {
     p.geometry_opacity = 1.0f;
-    p.flags |= abi::kMaterialIgnoreTextureAlpha;
+    p.flags |= kMaterialIgnoreTextureAlpha;
   } else {
     throw InputError(what + " has unknown alphaMode '" + m.alphaMode +
                      "' (expected OPAQUE, MASK or BLEND)");
@@ -90,7 +89,7 @@ void apply_extension_rules(const tinygltf::Material& m, MaterialParameters& p) {
                      volume->Get("thicknessFactor").IsNumber() &&
                      volume->Get("thicknessFactor").GetNumberAsDouble() > 0.0;
   if (!thick) {
-    p.flags |= abi::kMaterialThinWalled;
+    p.flags |= kMaterialThinWalled;
     p.transmission_color = p.base_color;
     p.transmission_depth = 0.0f;
   } else if (!std::isfinite(p.transmission_depth)) {
@@ -131,7 +130,7 @@ MaterialParameters map_material_factors(const tinygltf::Material& m, const std::
   apply_alpha_mode(m, p, what);
   apply_factor_rows(m, p);
   apply_extension_rules(m, p);
-  if (m.doubleSided) p.flags |= abi::kMaterialDoubleSided;
+  if (m.doubleSided) p.flags |= kMaterialDoubleSided;
   return p;
 }
 

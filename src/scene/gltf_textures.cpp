@@ -5,7 +5,6 @@
 
 #include "core/error.h"
 #include "core/log.h"
-#include "shaders/shared/abi.h"
 
 namespace hipr::gltf {
 namespace {
@@ -152,33 +151,33 @@ uint32_t TextureTable::image_for(const tinygltf::Texture& source, int texture,
 
 uint32_t TextureTable::get(const TextureReference& reference, bool srgb, const std::string& what) {
   const int texture = reference.index;
-  if (texture < 0) return abi::kInvalidIndex;
+  if (texture < 0) return kNoTexture;
   if (size_t(texture) >= m_model.textures.size())
     throw InputError(what + " references missing texture " + std::to_string(texture));
   const tinygltf::Texture& source = m_model.textures[size_t(texture)];
 
   Texture t;
   t.name = source.name.empty() ? "texture " + std::to_string(texture) : source.name;
-  t.flags = srgb ? abi::kTextureSrgb : 0u;
+  t.flags = srgb ? kTextureSrgb : 0u;
   if (source.sampler >= 0) {
     if (size_t(source.sampler) >= m_model.samplers.size())
       throw InputError(what + ": texture " + std::to_string(texture) +
                        " references missing sampler");
     const tinygltf::Sampler& s = m_model.samplers[size_t(source.sampler)];
-    t.flags |= wrap_flags(s.wrapS, abi::kTextureClampU, abi::kTextureMirrorU);
-    t.flags |= wrap_flags(s.wrapT, abi::kTextureClampV, abi::kTextureMirrorV);
-    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) t.flags |= abi::kTextureNearest;
+    t.flags |= wrap_flags(s.wrapS, kTextureClampU, kTextureMirrorU);
+    t.flags |= wrap_flags(s.wrapT, kTextureClampV, kTextureMirrorV);
+    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) t.flags |= kTextureNearest;
   }
   int texcoord = reference.texcoord;
   if (reference.transform) apply_transform(*reference.transform, t, texcoord);
   if (texcoord == 1)
-    t.flags |= abi::kTextureUv1;
+    t.flags |= kTextureUv1;
   else if (texcoord != 0)
     log::warn(what + ": texture " + std::to_string(texture) + " reads TEXCOORD_" +
               std::to_string(texcoord) +
               "; only TEXCOORD_0 and TEXCOORD_1 are loaded, TEXCOORD_0 is used");
   t.image = image_for(source, texture, what);
-  if (m_fallbacks.count(t.image)) t.flags |= abi::kTextureNearest;  // crisp checker squares
+  if (m_fallbacks.count(t.image)) t.flags |= kTextureNearest;  // crisp checker squares
 
   for (size_t i = 0; i < m_scene.textures.size(); ++i) {
     const Texture& other = m_scene.textures[i];

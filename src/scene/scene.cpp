@@ -1,5 +1,4 @@
 #include "hipr/scene.h"
-#include "shaders/shared/abi.h"
 
 #include <limits>
 
@@ -33,14 +32,14 @@ MaterialParameters default_material_params() {
   m.geometry_opacity = 1.0f;
   m.flags = 0;
   m.normal_scale = 1.0f;
-  m.base_color_texture = abi::kInvalidIndex;
-  m.metallic_roughness_texture = abi::kInvalidIndex;
-  m.normal_texture = abi::kInvalidIndex;
-  m.emission_texture = abi::kInvalidIndex;
+  m.base_color_texture = kNoTexture;
+  m.metallic_roughness_texture = kNoTexture;
+  m.normal_texture = kNoTexture;
+  m.emission_texture = kNoTexture;
   m.alpha_cutoff = -1.0f;
   m.coat_normal_scale = 1.0f;
   m.thin_film_thickness_min = 0.0f;
-  for (uint32_t* texture : texture_slots(m)) *texture = abi::kInvalidIndex;
+  for (uint32_t* texture : texture_slots(m)) *texture = kNoTexture;
   return m;
 }
 
@@ -91,7 +90,7 @@ bool material_is_opaque(const MaterialParameters& m) {
   // A MASK material is tested even at full opacity: its texture alpha may cut it out.
   if (m.alpha_cutoff >= 0.0f) return false;
   const bool texture_alpha =
-      m.base_color_texture != abi::kInvalidIndex && !(m.flags & abi::kMaterialIgnoreTextureAlpha);
+      m.base_color_texture != kNoTexture && !(m.flags & kMaterialIgnoreTextureAlpha);
   return m.geometry_opacity >= 1.0f && !texture_alpha;
 }
 
