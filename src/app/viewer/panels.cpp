@@ -23,8 +23,14 @@ const Policy kPolicies[] = {Policy::Hipr, Policy::Full, Policy::Scanline, Policy
 // (for_each_schedule_setting); start-up-only settings are left to the flags.
 struct ScheduleWidgets {
   Policy policy;  // the one in use (the display rule's default is its own)
+  // The setting's help, wrapped to the panel's width (the flags' help is one long line).
   static void tooltip(const ScheduleSettingInfo& info) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", info.help);
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(info.help);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
   }
   void operator()(const ScheduleSettingInfo& info, Policy& chosen) const {
     if (ImGui::BeginCombo(info.name, policy_name(chosen).c_str())) {
