@@ -1,7 +1,7 @@
 #version 460
 // The viewer's display pass: what the window shows under the UI. Each window pixel takes the
 // nearest rendered pixel of the displayed image (placed and scaled by the push constants),
-// tone-maps it exactly as tonemap_srgb8 does (exposure, clamp, sRGB curve, 8 bits) and blends
+// tone-maps it exactly as tonemap_srgb8 does (exposure, tone mapper, sRGB curve, 8 bits) and blends
 // the overlay on top in display space; pixels outside the image get the background colour.
 // Reads: the display (DisplayTexel.shown, where the resolve wrote it: no copy through the host),
 // the overlay. Writes: one RGBA8 word per window pixel.
@@ -14,6 +14,7 @@ layout(local_size_x = 64) in;
 #include "shared/bindings/display.h"
 #include "common/dispatch.glsl"
 #include "common/srgb.glsl"
+#include "common/tone_mappers.glsl"
 
 layout(scalar, binding = kDisplayTexels) readonly buffer Display { DisplayTexel b_display[]; };
 layout(scalar, binding = kDisplayOverlay) readonly buffer Overlay { uint b_overlay[]; };
@@ -31,8 +32,10 @@ void main() {
     return;
   }
   const uint pixel = uint(source.y) * u_push.sourceWidth + uint(source.x);
-  const vec3 radiance = b_display[pixel].shown * u_push.exposureScale;
-  uvec3 rgb = srgb_bytes(radiance);
+  const vec3 exposed = b_display[pixel].shown * u_push.exposureScale;
+  // The clamp mapper stays per channel, bit for bit what it always was.
+  uvec3 rgb = srgb_bytes(u_push.toneMapper == kToneClamp ? exposed
+                                                         : tone_map(exposed, u_push.toneMapper));
   if (u_push.overlayEnabled != 0u) {
     const uint overlay = b_overlay[pixel];
     const float alpha = float(overlay >> 24u) / 255.0;

@@ -12,6 +12,7 @@
 #include "hipr/edits.h"
 #include "hipr/scene_loader.h"
 #include "hipr/schedule_settings.h"
+#include "image/auto_exposure.h"
 #include "image/image_io.h"
 #include "image/tonemap.h"
 #include "test_support.h"
@@ -141,8 +142,66 @@ INSTANTIATE_TEST_SUITE_P(
                    "bench $cornell $edits -o @/b --spp 2 --first-visit-spp 3"},
         BadCommand{"bench_edits_not_json", "bench $cornell $cornell -o @/b"},
         BadCommand{"bench_invalid_scene", "bench @/invalid.gltf $edits -o @/b"},
-        BadCommand{"replay_oracle", "replay $cornell $edits -o @/b --policy oracle"}),
+        BadCommand{"replay_oracle", "replay $cornell $edits -o @/b --policy oracle"},
+        BadCommand{"render_unknown_tonemap",
+                   "render $cornell -o @/out.png --spp 1 --tonemap filmic"},
+        BadCommand{"render_exposure_nan", "render $cornell -o @/out.png --spp 1 --exposure nan"},
+        BadCommand{"render_exposure_word",
+                   "render $cornell -o @/out.png --spp 1 --exposure bright"},
+        BadCommand{"render_exposure_trailing",
+                   "render $cornell -o @/out.png --spp 1 --exposure 1x"},
+        BadCommand{"replay_unknown_tonemap", "replay $cornell $edits -o @/b --tonemap none"},
+        BadCommand{"bench_exposure_inf", "bench $cornell $edits -o @/b --exposure inf"},
+        BadCommand{"view_unknown_tonemap", "view $cornell --tonemap reinhard --headless"},
+        BadCommand{"compare_unknown_tonemap", "compare $cornell $cornell --tonemap x"}),
     bad_command_name);
+
+TEST(Cli, EveryCommandThatShowsPicturesTakesTheDisplayFlags) {
+  for (const std::string command : {"render", "replay", "bench", "view", "compare"}) {
+    const test::CommandResult result = test::run_hipr(command + " --help");
+    EXPECT_EQ(result.exit_code, kExitOk) << result.output;
+    for (const char* flag : {"--exposure ", "--tonemap "})
+      EXPECT_NE(result.output.find(flag), std::string::npos) << command << " " << flag;
+  }
+}
+
+// The PNG follows --tonemap and --exposure (auto: metered); the EXR stays linear radiance.
+TEST(Cli, RenderToneMapsThePngOnly) {
+  const fs::path dir = test::temp_dir("cli-tonemap");
+  const std::string base = "render " + quoted(test::asset("cornell_box.gltf")) +
+                           " --width 16 --height 16 --spp 1 --seed 3 -q";
+  ASSERT_EQ(
+      test::run_hipr(base + " -o " + quoted(dir / "clamp.png") + " -o " + quoted(dir / "clamp.exr"))
+          .exit_code,
+      kExitOk);
+  const test::CommandResult agx =
+      test::run_hipr(base + " -o " + quoted(dir / "agx.png") + " -o " + quoted(dir / "agx.exr") +
+                     " --tonemap agx --exposure auto");
+  ASSERT_EQ(agx.exit_code, kExitOk) << agx.output;
+  const ImageRGB linear = read_image(dir / "clamp.exr");
+  EXPECT_EQ(read_image(dir / "agx.exr").rgb, linear.rgb) << "EXR is radiance, never tone-mapped";
+  const std::vector<uint8_t> expected =
+      tonemap_srgb8(linear.rgb, DisplayTransform{metered_exposure_ev(linear.rgb), ToneMapper::Agx});
+  const ImageRGB png = read_image(dir / "agx.png");
+  ASSERT_EQ(png.rgb.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i)
+    ASSERT_NEAR(png.rgb[i] * 255.0f, float(expected[i]), 0.01f) << i;
+  EXPECT_NE(read_image(dir / "clamp.png").rgb, png.rgb);
+}
+
+// FLIP compares what a screen shows: a brighter copy that clamps to the same white is the same
+// image under clamp, and a different one under a mapper that keeps highlights apart.
+TEST(Cli, CompareFlipFollowsTheToneMapper) {
+  const fs::path dir = test::temp_dir("cli-compare-tonemap");
+  ImageRGB a{4, 4, std::vector<float>(48, 2.0f)}, b{4, 4, std::vector<float>(48, 8.0f)};
+  write_image(dir / "a.exr", a);
+  write_image(dir / "b.exr", b);
+  const std::string args =
+      "compare " + quoted(dir / "a.exr") + " " + quoted(dir / "b.exr") + " --threshold 0.01 -q";
+  EXPECT_EQ(test::run_hipr(args).exit_code, kExitOk);
+  EXPECT_EQ(test::run_hipr(args + " --tonemap aces").exit_code, kExitDifferent);
+  EXPECT_EQ(test::run_hipr(args + " --tonemap aces --exposure -8").exit_code, kExitDifferent);
+}
 
 TEST(Cli, MissingOutputFolderIsABadInput) {
   const fs::path out_dir = test::temp_dir("cli-no-folder");

@@ -57,6 +57,21 @@ TEST(IncrementalUpdate, FiftyRapidEditsEndInTheFinalScene) {
   EXPECT_EQ(renderer.image().rgb, fresh_render(scene, 2).rgb);
 }
 
+// Rotate and scale ops (and the two together with a move) update the scene as a fresh upload.
+TEST(IncrementalUpdate, RotateAndScaleMatchAFreshUpload) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(1);
+  test::expect_update_matches_fresh(renderer, scene,
+                                    TransformEdit{"tall_block", {}, {}, glm::vec3(0, 90, 0), {}});
+  test::expect_update_matches_fresh(renderer, scene,
+                                    TransformEdit{"short_block",
+                                                  glm::vec3(0.05f, 0, 0),
+                                                  {},
+                                                  glm::vec3(0, -30, 0),
+                                                  glm::vec3(2.0f, 1.0f, 0.5f)});
+}
+
 // A scene update writes what an edit changed in place: it allocates no device memory and makes
 // no staged copy (each costs far more on a discrete GPU than on lavapipe), only the ray-query
 // TLAS's rebuild submits. render_test_staged_memory runs this with HIPR_DEVICE_MEMORY=staged, on

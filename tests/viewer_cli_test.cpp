@@ -38,10 +38,12 @@ bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 
 // frame count fixes the picture. Unedited, 2 spp are reached at frame 2; a script edit comes
 // at frame 4; by frame 8 the edit has converged again.
 // Without panels (--no-ui) the window is exactly the render.
+// The display is pinned to the plain one (no metering, clamp): the screenshots are compared
+// with images tone-mapped by tonemap_srgb8's default and with each other across edits.
 std::string view_arguments(const std::string& extra, bool panels = false) {
   return "view " + quoted(test::asset("cornell_box.gltf")) +
          " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 64 --steps-per-frame 1 "
-         "--script-every 4 -q " +
+         "--script-every 4 --exposure 0 --tonemap clamp -q " +
          (panels ? "" : "--no-ui ") + extra;
 }
 

@@ -305,6 +305,27 @@ TEST(FollowEnvironment, ExposureFollowsASwitchOfMap) {
   EXPECT_NEAR(state.exposure_ev, 1.0f, 1e-4f);
 }
 
+// With auto exposure on, the metering moves the exposure (the environment rule steps aside);
+// small changes (a converging image's noise) do not; a hand-set exposure (auto off) stays.
+TEST(FollowMetering, AutoExposureFollowsTheMeterUntilLocked) {
+  Scene scene = load_scene(test::asset("furnace_sphere.gltf"), {.environment = "studio"});
+  ViewerState state;
+  state.auto_exposure = true;
+  follow_environment(scene, state);
+  follow_metering(state, 2.0f);
+  EXPECT_EQ(state.exposure_ev, 2.0f);
+  follow_metering(state, 2.0f + 0.5f * kMeteringDeadbandEv);
+  EXPECT_EQ(state.exposure_ev, 2.0f) << "within the dead band: no pulsing";
+  apply_edit(scene, EnvironmentEdit{.source = std::filesystem::path("sky")});
+  follow_environment(scene, state);
+  EXPECT_EQ(state.exposure_ev, 2.0f) << "the meter, not the map's mean, follows the light";
+  follow_metering(state, -11.0f);
+  EXPECT_EQ(state.exposure_ev, -11.0f);
+  state.auto_exposure = false;  // what moving the slider does
+  follow_metering(state, 3.0f);
+  EXPECT_EQ(state.exposure_ev, -11.0f);
+}
+
 // ---- Session (headless GPU)
 
 // The session's scheduling settings with one change (Session::set_schedule takes them whole).
@@ -697,16 +718,18 @@ TEST(DisplayPass, ToneMapsLikeTheCpuAndPlacesTheImage) {
   DisplayView view;
   view.output_width = 4;
   view.output_height = 2;
-  for (float ev : {0.0f, -1.5f}) {
-    view.exposure_ev = ev;
-    const std::vector<uint32_t> out = pass.run(view);
-    const std::vector<uint8_t> expected = tonemap_srgb8(image.rgb, ev);
-    ASSERT_EQ(out.size(), 8u);
-    for (size_t i = 0; i < 8; ++i)
-      for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(int((out[i] >> (8 * c)) & 0xff), int(expected[3 * i + size_t(c)]), 1)
-            << i << " " << c << " ev " << ev;
-  }
+  for (ToneMapper mapper : tone_mappers())
+    for (float ev : {0.0f, -1.5f}) {
+      view.exposure_ev = ev;
+      view.tone_mapper = mapper;
+      const std::vector<uint32_t> out = pass.run(view);
+      const std::vector<uint8_t> expected = tonemap_srgb8(image.rgb, DisplayTransform{ev, mapper});
+      ASSERT_EQ(out.size(), 8u);
+      for (size_t i = 0; i < 8; ++i)
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(int((out[i] >> (8 * c)) & 0xff), int(expected[3 * i + size_t(c)]), 1)
+              << i << " " << c << " ev " << ev << " " << tone_mapper_name(mapper);
+    }
 
   // Scaled 2x at (1, 1) in a 10 x 6 window: nearest texels, background around.
   view = DisplayView{};

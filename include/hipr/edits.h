@@ -16,11 +16,36 @@
 
 namespace hipr {
 
+// Either `matrix` alone, or any of translate, rotate and scale, composed with the node's
+// current local transform by transformed_local (docs/method.md, "transform").
 struct TransformEdit {
   std::string node;
   std::optional<glm::vec3> translate;  // added to the node's current local translation
   std::optional<glm::mat4> matrix;     // replaces the local transform
+  std::optional<glm::vec3> rotate;     // Euler degrees about the parent's x, y, z (in that order)
+                                       // through the node's origin
+  std::optional<glm::vec3> scale;      // factors along the node's own axes (nonzero)
 };
+
+// The local transform a transform edit gives a node whose local transform is `local`:
+// `matrix` when set; else T(t + translate) * R(rotate) * L * S(scale), where t is the current
+// translation and L the rest of `local` (rotation about the node's origin in its parent's axes,
+// scale along its own axes, so a turned object is stretched, never sheared). Throws InputError
+// for a scale factor that is zero, non-finite or beyond 1e6 (or below 1e-6) in size.
+glm::mat4 transformed_local(const glm::mat4& local, const TransformEdit& edit);
+// The rotation of R(rotate) for Euler degrees (x first, then y, then z, about fixed axes).
+glm::mat4 euler_rotation(const glm::vec3& degrees);
+
+// A local transform as the viewer's Selection panel shows it: T * R(rotation) * S(scale).
+// local_pose takes a matrix apart (a shear, which glTF cannot hold in TRS either, is dropped;
+// a mirrored matrix shows a negative x scale); compose_pose puts one together.
+struct LocalPose {
+  glm::vec3 translation{0.0f};
+  glm::vec3 rotation_degrees{0.0f};  // as euler_rotation takes them
+  glm::vec3 scale{1.0f};
+};
+LocalPose local_pose(const glm::mat4& local);
+glm::mat4 compose_pose(const LocalPose& pose);
 
 // OpenPBR parameter name -> value (1 number or 3 for colours).
 struct ParameterValue {

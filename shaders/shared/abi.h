@@ -487,6 +487,7 @@ struct DisplayPush {
   float exposureScale;  // 2^EV, as tonemap_srgb8
   uint background;      // RGBA8 outside the rendered image
   uint overlayEnabled;  // 0: the overlay buffer is ignored
+  uint toneMapper;      // kTone* (common/tone_mappers.glsl), after the exposure
 };
 
 // The viewer's overlays (overlay.comp): what OverlayPush::mode draws over the image.

@@ -162,12 +162,13 @@ void BenchReport::write_images() const {
   for (const char* format : {".png", ".exr"})
     for (size_t e = 0; e < m_edits.size(); ++e) {
       const std::string stem = "edit" + std::to_string(e + 1);
-      write_image(m_folder / (stem + "_reference" + format), m_edits[e].reference);
+      const DisplayTransform display = display_transform(m_display, m_edits[e].reference);
+      write_image(m_folder / (stem + "_reference" + format), m_edits[e].reference, {}, display);
       for (const auto& [name, run] : m_edits[e].runs)
         for (const auto& [work, image] : run.captures) {
           char label[32];
           std::snprintf(label, sizeof label, "_work%g%s", work, format);
-          write_image(m_folder / (stem + "_" + name + label), image);
+          write_image(m_folder / (stem + "_" + name + label), image, {}, display);
         }
     }
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/display_flags.h"
 #include "bench/policy_run.h"
 #include "image/image_io.h"
 
@@ -31,8 +32,13 @@ struct BenchEdit {
 class BenchReport {
  public:
   // `settings`: what the runs were made with, recorded in summary.json.
-  BenchReport(std::string scene, nlohmann::json settings, std::filesystem::path folder)
-      : m_scene(std::move(scene)), m_settings(std::move(settings)), m_folder(std::move(folder)) {}
+  // `display`: the PNGs' exposure and tone mapper (auto: metered on each edit's reference).
+  BenchReport(std::string scene, nlohmann::json settings, std::filesystem::path folder,
+              DisplayFlags display = {})
+      : m_scene(std::move(scene)),
+        m_settings(std::move(settings)),
+        m_folder(std::move(folder)),
+        m_display(display) {}
   BenchEdit& add_edit(const std::string& name, ImageRGB reference, size_t changed_tiles,
                       uint32_t tiles);
   // Writes everything (each file atomically); plot.png last, since it needs python3-matplotlib
@@ -47,6 +53,7 @@ class BenchReport {
   std::string m_scene;
   nlohmann::json m_settings;
   std::filesystem::path m_folder;
+  DisplayFlags m_display;
   std::vector<BenchEdit> m_edits;
 };
 

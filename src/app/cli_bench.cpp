@@ -57,6 +57,7 @@ struct BenchOptions {
   bool no_ref_cache = false;
   double drag = 0.0;        // > 0: the edits are one drag, this much work apart (full-frame passes)
   bool cold_start = false;  // measure the render of the scene as loaded, from nothing, first
+  DisplayFlags display;     // the PNGs' (the metrics measure linear radiance, FLIP as clamp)
 };
 
 // The edits' own JSON text, one per edit: with the scene's hash it names a scene state.
@@ -283,7 +284,7 @@ int run_bench(BenchOptions& o) {
                                    {"sampler", sampler_name(settings.sampler)},
                                    {"device", ctx.device_name()},
                                    {"traversal", ctx.traversal_name()}};
-  BenchReport report(o.common.scene.filename().string(), recorded, o.output);
+  BenchReport report(o.common.scene.filename().string(), recorded, o.output, o.display);
   const auto display_of = [&](Policy policy) {
     return policy == Policy::Hipr || policy == Policy::Oracle ? ordered_display
                                                               : default_display_rule(policy);
@@ -392,6 +393,7 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--steps", options->steps,
                   "Scheduling steps per edit and policy (default: until converged)");
   add_schedule_flags(*cmd, options->schedule, {"policy"});
+  add_display_flags(*cmd, options->display, "the PNGs (auto: metered on each edit's reference)");
   cmd->add_option("--ref-cache", options->ref_cache,
                   "Folder of cached references (default: beside the shader cache)");
   cmd->add_flag("--no-ref-cache", options->no_ref_cache,

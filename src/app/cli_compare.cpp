@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "app/commands.h"
+#include "app/display_flags.h"
 #include "core/error.h"
 #include "core/file_util.h"
 #include "image/debug_images.h"
@@ -28,6 +29,7 @@ struct CompareOptions {
   std::optional<double> percentile;
   fs::path heatmap;
   fs::path json;
+  DisplayFlags display;  // FLIP's tone mapping
   bool quiet = false;
 };
 
@@ -61,7 +63,12 @@ int run_compare(const CompareOptions& o) {
   if (!o.heatmap.empty() && o.heatmap.extension() != ".png")
     throw InputError("--heatmap writes a .png");
   const ImageRGB a = read_linear(o.a), b = read_linear(o.b);
-  const ImageComparison c = compare_images(a, b, metric, o.threshold, o.percentile);
+  // An automatic exposure is metered on the reference, so both images see the same one.
+  const DisplayTransform display = display_transform(o.display, b);
+  FlipOptions flip;
+  flip.exposure_ev = display.exposure_ev;
+  flip.tone_mapper = display.tone_mapper;
+  const ImageComparison c = compare_images(a, b, metric, o.threshold, o.percentile, flip);
   const std::string measure =
       o.percentile ? o.metric + " p" + format_percentile(*o.percentile) : o.metric;
   const bool same = c.within(o.threshold);
@@ -129,6 +136,7 @@ Command add_compare_command(CLI::App& app) {
                   "metric over the image");
   cmd->add_option("--heatmap", options->heatmap, "Write the per-pixel error as a heat map (.png)");
   cmd->add_option("--json", options->json, "Write the comparison as JSON");
+  add_display_flags(*cmd, options->display, "FLIP (it compares what a screen shows)");
   cmd->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
   return {cmd, [options] { return run_compare(*options); }};
 }

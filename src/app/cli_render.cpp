@@ -5,6 +5,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/display_flags.h"
 #include "app/progress.h"
 #include "core/error.h"
 #include "core/file_util.h"
@@ -21,7 +22,7 @@ struct RenderOptions {
   CommonOptions common;
   std::vector<std::filesystem::path> outputs;
   std::filesystem::path stats_json;
-  float exposure = 0.0f;
+  DisplayFlags display;
 };
 
 int run_render(RenderOptions& o) {
@@ -92,7 +93,10 @@ int run_render(RenderOptions& o) {
       {"hipr:max_depth", std::to_string(o.common.render.max_depth)},
       {"Software", "hipr"},
   };
-  for (const auto& output : o.outputs) write_image(output, image, metadata, o.exposure);
+  const DisplayTransform display = display_transform(o.display, image);
+  if (!o.display.exposure_ev)
+    log::info("metered exposure " + std::to_string(display.exposure_ev) + " EV");
+  for (const auto& output : o.outputs) write_image(output, image, metadata, display);
 
   const double pixels = double(o.common.render.width) * o.common.render.height;
   const double samples = pixels * o.common.spp;
@@ -141,8 +145,7 @@ Command add_render_command(CLI::App& app) {
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--stats-json", options->stats_json, "Write render statistics as JSON");
-  cmd->add_option("--exposure", options->exposure, "Exposure in stops for PNG output")
-      ->capture_default_str();
+  add_display_flags(*cmd, options->display, "PNG output");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_render(*options); }};
 }

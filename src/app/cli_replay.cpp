@@ -8,6 +8,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/display_flags.h"
 #include "app/schedule_flags.h"
 #include "core/error.h"
 #include "core/file_util.h"
@@ -56,15 +57,17 @@ struct ReplayOptions {
   uint32_t steps = 0;         // per edit; 0 = until every pixel has --spp samples again
   ScheduleSettings schedule;  // tiles_per_step 0: default_tiles_per_step
   fs::path save;              // empty: the edited scene is not saved
+  DisplayFlags display;       // the PNGs' (auto: metered once, on the scene as loaded)
 };
 
 std::string step_name(size_t edit, uint32_t step) {
   return "edit" + std::to_string(edit + 1) + "_step" + std::to_string(step);
 }
 
-void write_pair(const fs::path& dir, const std::string& stem, const ImageRGB& image) {
+void write_pair(const fs::path& dir, const std::string& stem, const ImageRGB& image,
+                const DisplayTransform& display) {
   write_image(dir / (stem + ".exr"), image);
-  write_image(dir / (stem + ".png"), image);
+  write_image(dir / (stem + ".png"), image, {}, display);
 }
 
 void write_debug_images(const fs::path& dir, size_t edit, const Renderer& renderer) {
@@ -128,6 +131,10 @@ int run_replay(ReplayOptions& o) {
   const Timer pass_timer;
   renderer.add_samples_full_frame(1);
   const double pass_seconds = pass_timer.seconds();
+  // One exposure for every picture of the run: a sequence that does not flicker.
+  const DisplayTransform display =
+      o.display.exposure_ev ? DisplayTransform{*o.display.exposure_ev, o.display.tone_mapper}
+                            : display_transform(o.display, renderer.image());
 
   // Without --steps: until every pixel has --spp samples again (work counts samples since the
   // edit). The bound only guards against a schedule that would never get there.
@@ -171,7 +178,8 @@ int run_replay(ReplayOptions& o) {
         write_debug_images(o.output, e, renderer);
         debug_written = true;
       }
-      if (dumps.count(s)) write_pair(o.output, step_name(e, s), scheduler.displayed_image());
+      if (dumps.count(s))
+        write_pair(o.output, step_name(e, s), scheduler.displayed_image(), display);
     }
     summary["edits"].push_back(
         {{"edit", describe(edits[e])},
@@ -193,7 +201,7 @@ int run_replay(ReplayOptions& o) {
   }
   check_validation(ctx);
   const ImageRGB final_image = scheduler.displayed_image();
-  write_pair(o.output, "final", final_image);
+  write_pair(o.output, "final", final_image, display);
   write_text_atomically(o.output / "summary.json", summary.dump(2) + "\n");
   non_finite += renderer.counters().non_finite_samples;
   if (non_finite) log::warn(std::to_string(non_finite) + " non-finite samples were dropped");
@@ -215,6 +223,7 @@ Command add_replay_command(CLI::App& app) {
   cmd->add_option("--steps", options->steps,
                   "Scheduling steps per edit (default: until converged)");
   add_schedule_flags(*cmd, options->schedule);
+  add_display_flags(*cmd, options->display, "the PNGs (auto: metered on the scene as loaded)");
   cmd->add_option("--save", options->save,
                   "Also write the edited scene (after every edit) as glTF (.gltf or .glb); written "
                   "before rendering");

@@ -351,9 +351,16 @@ FlipPrepared prepare(const ImageRGB& image, const FlipOptions& options,
   Plane yy(w, h), cx(w, h), cz(w, h), luminance(w, h);
   for (size_t p = 0; p < size_t(w) * h; ++p) {
     float rgb[3];
-    for (int c = 0; c < 3; ++c) {
-      const float v = image.rgb[p * 3 + size_t(c)] * scale;
-      rgb[c] = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;  // as srgb_encode does
+    if (options.tone_mapper == ToneMapper::Clamp) {
+      for (int c = 0; c < 3; ++c) {
+        const float v = image.rgb[p * 3 + size_t(c)] * scale;
+        rgb[c] = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;  // as srgb_encode does
+      }
+    } else {
+      const glm::vec3 shown =
+          tone_map(glm::vec3(image.rgb[p * 3], image.rgb[p * 3 + 1], image.rgb[p * 3 + 2]) * scale,
+                   options.tone_mapper);
+      for (int c = 0; c < 3; ++c) rgb[c] = shown[c];
     }
     float n[3];  // XYZ relative to the white point
     for (int c = 0; c < 3; ++c)

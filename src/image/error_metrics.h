@@ -29,7 +29,9 @@ std::vector<double> relmse_tile_sums(const ImageRGB& test, const ImageRGB& refer
 
 struct FlipOptions {
   float pixels_per_degree = 67.0f;  // the FLIP paper's default viewing setup
-  float exposure_ev = 0.0f;         // tone mapping before FLIP: as tonemap_srgb8 (exposure, clamp)
+  // The display transform before FLIP, as tonemap_srgb8 applies it (exposure, tone mapper).
+  float exposure_ev = 0.0f;
+  ToneMapper tone_mapper = ToneMapper::Clamp;
 };
 
 // The two halves of LDR-FLIP per pixel (row-major), each in [0,1]: the compressed colour
@@ -40,7 +42,7 @@ struct FlipComponents {
 };
 
 // LDR-FLIP (Andersson et al. 2020, "FLIP: A Difference Evaluator for Alternating Images") of two
-// linear-radiance images after the project's tone mapping (exposure, clamp to [0,1]; FLIP then
+// linear-radiance images after the project's display transform (exposure, tone mapper; FLIP then
 // works on those display values as sRGB-encoded images, as the paper's LDR-FLIP expects).
 // Returns the per-pixel error map in [0,1] (row-major). Throws InternalError when sizes differ
 // and InputError when pixels_per_degree is below 1 or exposure_ev is not finite.

@@ -56,7 +56,8 @@ double nearest_rank_percentile(std::vector<float> values, double percentile) {
 }
 
 ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric,
-                               double threshold, std::optional<double> percentile) {
+                               double threshold, std::optional<double> percentile,
+                               const FlipOptions& flip) {
   if (a.width != b.width || a.height != b.height)
     throw InputError("the images differ in size: " + std::to_string(a.width) + "x" +
                      std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
@@ -68,7 +69,7 @@ ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetr
   result.pixel_error.assign(pixels, 0.0f);
   double sum = 0.0, peak = 0.0;
   if (metric == CompareMetric::Flip) {
-    result.pixel_error = flip_error_map(finite_copy(a), finite_copy(b));
+    result.pixel_error = flip_error_map(finite_copy(a), finite_copy(b), flip);
     for (float e : result.pixel_error) sum += e;
   } else {
     for (size_t i = 0; i < pixels; ++i) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "image/error_metrics.h"
 #include "image/image_io.h"
 
 namespace hipr {
@@ -36,9 +37,11 @@ struct ImageComparison {
 
 // Throws InputError when the sizes differ. With `percentile` (in (0, 100]) the value is that
 // percentile of the per-pixel errors (nearest rank) instead of the metric over the whole image:
-// a mean lets a handful of wrong pixels pass, the 99.9th percentile does not.
+// a mean lets a handful of wrong pixels pass, the 99.9th percentile does not. `flip`: FLIP's
+// display transform (exposure, tone mapper) and viewing setup.
 ImageComparison compare_images(const ImageRGB& a, const ImageRGB& b, CompareMetric metric,
-                               double threshold, std::optional<double> percentile = std::nullopt);
+                               double threshold, std::optional<double> percentile = std::nullopt,
+                               const FlipOptions& flip = {});
 
 // The nearest-rank `percentile` (in (0, 100]) of `values`; 0 for none.
 double nearest_rank_percentile(std::vector<float> values, double percentile);

@@ -27,7 +27,7 @@ bool is_supported_output(const fs::path& path) {
 }
 
 void write_image(const fs::path& path, const ImageRGB& image, const ImageMetadata& metadata,
-                 float exposure_ev) {
+                 const DisplayTransform& display) {
   const std::string ext = lower_extension(path);
   if (!is_supported_output(path))
     throw InputError("unsupported output format '" + ext + "' (use .exr or .png)");
@@ -45,7 +45,7 @@ void write_image(const fs::path& path, const ImageRGB& image, const ImageMetadat
     if (exr) {
       ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
     } else {
-      const std::vector<uint8_t> srgb = tonemap_srgb8(image.rgb, exposure_ev);
+      const std::vector<uint8_t> srgb = tonemap_srgb8(image.rgb, display);
       ok = out->write_image(OIIO::TypeDesc::UINT8, srgb.data());
     }
     if (!out->close() || !ok)

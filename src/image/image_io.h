@@ -7,14 +7,16 @@
 #include <vector>
 
 #include "hipr/image.h"
+#include "image/tonemap.h"
 
 namespace hipr {
 
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
+// PNG: `display` (exposure, tone mapper) then sRGB; EXR ignores it (linear radiance).
 // Throws InputError for an unsupported extension (only .exr and .png) or a failed write.
 void write_image(const std::filesystem::path& path, const ImageRGB& image,
-                 const ImageMetadata& metadata = {}, float exposure_ev = 0.0f);
+                 const ImageMetadata& metadata = {}, const DisplayTransform& display = {});
 // Writes 8-bit pixels as they are (already sRGB-encoded: no tone mapping) to a PNG, atomically.
 // `channels`: 3 (RGB) or 4 (RGBA) bytes per pixel, rows top first.
 void write_png8(const std::filesystem::path& path, uint32_t width, uint32_t height,

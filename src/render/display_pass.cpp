@@ -71,6 +71,7 @@ void DisplayPass::record(VkCommandBuffer cmd, const DisplayView& view) {
   push.exposureScale = std::exp2(view.exposure_ev);
   push.background = view.background;
   push.overlayEnabled = view.overlay ? 1u : 0u;
+  push.toneMapper = uint32_t(view.tone_mapper);
   // The display and the overlay were written by earlier submissions (kernels, uploads).
   vk::transfer_to_compute_barrier(cmd);
   vk::compute_to_compute_barrier(cmd);

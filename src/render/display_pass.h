@@ -1,13 +1,14 @@
 #pragma once
 // The viewer's display pass (shaders/display.comp): the displayed radiance, tone-mapped as
-// tonemap_srgb8 does, with an overlay blended on top, becomes the RGBA8 pixels of the window.
-// It runs on the GPU so the window can be larger than the render (letterbox, nearest texel)
-// without a CPU pass over every window pixel, and it reads the renderer's display buffer where
-// the resolve wrote it (show()): no image crosses to the host and back per frame.
+// tonemap_srgb8 does (exposure, tone mapper), with an overlay blended on top, becomes the RGBA8
+// pixels of the window. It runs on the GPU so the window can be larger than the render (letterbox,
+// nearest texel) without a CPU pass over every window pixel, and it reads the renderer's display
+// buffer where the resolve wrote it (show()): no image crosses to the host and back per frame.
 #include <cstdint>
 #include <vector>
 
 #include "image/image_io.h"
+#include "image/tonemap.h"
 #include "vk/buffer.h"
 #include "vk/compute_pipeline.h"
 #include "vk/context.h"
@@ -22,6 +23,7 @@ struct DisplayView {
   int y = 0;
   float scale = 1.0f;  // window pixels per rendered pixel
   float exposure_ev = 0.0f;
+  ToneMapper tone_mapper = ToneMapper::Clamp;
   uint32_t background = 0xff202020u;  // RGBA8 (R in the low byte)
   bool overlay = false;
 };

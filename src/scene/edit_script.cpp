@@ -165,10 +165,23 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
   if (!r.edit().is_object()) r.fail("an edit must be a JSON object");
   const std::string op = r.string("op");
   if (op == "transform") {
-    r.only_keys({"op", "node", "translate", "matrix"});
-    TransformEdit e{r.string("node"), r.vec3("translate"), r.matrix()};
-    if (e.translate.has_value() == e.matrix.has_value())
-      r.fail("a transform needs exactly one of \"translate\", \"matrix\"");
+    r.only_keys({"op", "node", "translate", "matrix", "rotate", "scale"});
+    TransformEdit e{r.string("node"), r.vec3("translate"), r.matrix(), r.vec3("rotate"),
+                    r.vec3("scale")};
+    const bool composed = e.translate || e.rotate || e.scale;
+    if (composed == e.matrix.has_value())
+      r.fail("a transform needs \"matrix\" alone, or any of \"translate\", \"rotate\", \"scale\"");
+    if (e.rotate)
+      for (int axis = 0; axis < 3; ++axis)
+        if (!(std::abs((*e.rotate)[axis]) <= 1e6f))
+          r.fail("\"rotate\" holds an angle beyond 1e6 degrees");
+    if (e.scale) {  // a bad factor is refused as the script is read, with the edit's place
+      try {
+        transformed_local(glm::mat4(1.0f), e);
+      } catch (const InputError& bad) {
+        r.fail(bad.what());
+      }
+    }
     return e;
   }
   if (op == "material" || op == "emission") {

@@ -73,7 +73,8 @@ struct Applier {
   Scene& scene;
 
   void operator()(const TransformEdit& e) const {
-    move_node(scene.nodes[find_node(scene, e.node)].local, e.translate, e.matrix);
+    glm::mat4& local = scene.nodes[find_node(scene, e.node)].local;
+    local = transformed_local(local, e);
   }
 
   void operator()(const MaterialEdit& e) const {
@@ -153,7 +154,7 @@ struct Inverter {
   const Scene& scene;
 
   Edit operator()(const TransformEdit& e) const {
-    return TransformEdit{e.node, std::nullopt, scene.nodes[find_node(scene, e.node)].local};
+    return TransformEdit{e.node, std::nullopt, scene.nodes[find_node(scene, e.node)].local, {}, {}};
   }
 
   Edit operator()(const MaterialEdit& e) const {

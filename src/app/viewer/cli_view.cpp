@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "app/commands.h"
+#include "app/display_flags.h"
 #include "app/schedule_flags.h"
 #include "app/viewer/screenshot.h"
 #include "app/viewer/viewer.h"
@@ -54,7 +55,6 @@ int run_view(ViewCommandOptions& o) {
     throw InputError("--visit-spp must be between 1 and --spp");
   if (!(v.frame_budget_ms >= 0.0) || v.frame_budget_ms > 10000.0)
     throw InputError("--frame-budget-ms must be between 0 (adapt) and 10000");
-  if (!std::isfinite(v.exposure_ev)) throw InputError("--exposure must be finite");
   if (!v.screenshot.empty()) viewer::check_screenshot_path(v.screenshot);
   if (!v.save.empty()) {
     const std::string ext = v.save.extension().string();
@@ -120,7 +120,7 @@ Command add_view_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--steps-per-frame", v.steps_per_frame,
                   "Exactly N scheduling steps per frame instead of a time budget");
-  cmd->add_option("--exposure", v.exposure_ev, "Display exposure in stops")->capture_default_str();
+  add_display_flags(*cmd, v.display, "the window (auto: metered as it converges, until set)");
   cmd->add_flag("--no-ui", options->no_ui,
                 "No panels or status line: the window shows the render alone");
   cmd->add_flag(

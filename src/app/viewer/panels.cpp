@@ -23,15 +23,7 @@ const Policy kPolicies[] = {Policy::Hipr, Policy::Full, Policy::Scanline, Policy
 // (for_each_schedule_setting); start-up-only settings are left to the flags.
 struct ScheduleWidgets {
   Policy policy;  // the one in use (the display rule's default is its own)
-  // The setting's help, wrapped to the panel's width (the flags' help is one long line).
-  static void tooltip(const ScheduleSettingInfo& info) {
-    if (!ImGui::IsItemHovered()) return;
-    ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-    ImGui::TextUnformatted(info.help);
-    ImGui::PopTextWrapPos();
-    ImGui::EndTooltip();
-  }
+  static void tooltip(const ScheduleSettingInfo& info) { viewer::tooltip(info.help); }
   void operator()(const ScheduleSettingInfo& info, Policy& chosen) const {
     if (ImGui::BeginCombo(info.name, policy_name(chosen).c_str())) {
       for (Policy p : kPolicies)
@@ -205,7 +197,23 @@ void display_section(ViewerState& state) {
   const char* names[] = {"none", "object ids", "tile weights", "owed tiles"};
   ImGui::Combo("overlay (0-3)", &overlay, names, 4);
   state.overlay = Overlay(overlay);
-  ImGui::SliderFloat("exposure (EV)", &state.exposure_ev, -20.0f, 20.0f, "%.1f");
+  // Setting the exposure by hand locks it; "auto" meters it again.
+  if (ImGui::SliderFloat("exposure (EV)", &state.exposure_ev, -20.0f, 20.0f, "%.1f"))
+    state.auto_exposure = false;
+  ImGui::Checkbox("auto exposure", &state.auto_exposure);
+  tooltip(
+      "Meter the exposure from the image: its brightest tenth of surfaces just under white "
+      "(--exposure auto). Moving the slider locks it.");
+  int mapper = int(state.tone_mapper);
+  std::vector<std::string> names_owned;
+  for (ToneMapper m : tone_mappers()) names_owned.push_back(tone_mapper_name(m));
+  std::vector<const char*> mapper_names;
+  for (const std::string& n : names_owned) mapper_names.push_back(n.c_str());
+  if (ImGui::Combo("tone mapper", &mapper, mapper_names.data(), int(mapper_names.size())))
+    state.tone_mapper = ToneMapper(mapper);
+  tooltip(
+      "After the exposure (--tonemap): clamp, Khronos PBR Neutral (glTF colours as "
+      "authored), AgX (Blender's default) or ACES");
   ImGui::Checkbox("status line", &state.show_status);
   bool adapt = state.frame_budget_ms <= 0.0;
   if (ImGui::Checkbox("adapt render time (60 fps)", &adapt))
@@ -221,6 +229,15 @@ void display_section(ViewerState& state) {
 }
 
 }  // namespace
+
+void tooltip(const char* help) {
+  if (!ImGui::IsItemHovered()) return;
+  ImGui::BeginTooltip();
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+  ImGui::TextUnformatted(help);
+  ImGui::PopTextWrapPos();
+  ImGui::EndTooltip();
+}
 
 bool ui_edit(Session& session, ViewerState& state, const Edit& edit) {
   if (!state.ui_group_open && ImGui::IsAnyItemActive()) {

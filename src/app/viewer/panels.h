@@ -25,6 +25,9 @@ bool ui_edit(Session& session, ViewerState& state, const Edit& edit);
 // Closes that undo step once no widget is active; call once per frame after the panels.
 void end_ui_edit_group(Session& session, ViewerState& state);
 
+// The last widget's help while hovered, wrapped to the panel's width (flags' help is one line).
+void tooltip(const char* help);
+
 // Sections of the side panel (scene_panels.cpp).
 void scene_tree_section(Session& session, ViewerState& state);
 void selection_section(Session& session, ViewerState& state);

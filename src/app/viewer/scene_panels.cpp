@@ -114,6 +114,32 @@ void selection_section(Session& session, ViewerState& state) {
     local[3] = glm::vec4(translation[0], translation[1], translation[2], 1.0f);
     ui_edit(session, state, TransformEdit{reference, std::nullopt, local});
   }
+  // Rotation and scale as the pose's parts; a changed field rebuilds the matrix from them (the
+  // node's shear, if it had one, goes: glTF's TRS cannot hold it either).
+  LocalPose pose = local_pose(n.local);
+  if (ImGui::DragFloat3("rotation (deg)", &pose.rotation_degrees.x, 0.5f, -360.0f, 360.0f, "%.1f"))
+    ui_edit(session, state, TransformEdit{reference, std::nullopt, compose_pose(pose)});
+  tooltip(
+      "Euler degrees about the parent's x, then y, then z axes (as an edit script's "
+      "\"rotate\"); drag, or Ctrl+click to type");
+  if (ImGui::DragFloat3("scale", &pose.scale.x, 0.005f, 0.001f, 1000.0f, "%.3f",
+                        ImGuiSliderFlags_AlwaysClamp))
+    ui_edit(session, state, TransformEdit{reference, std::nullopt, compose_pose(pose)});
+  int mode = int(state.gizmo_mode);
+  ImGui::RadioButton("move (W)", &mode, int(GizmoMode::Translate));
+  ImGui::SameLine();
+  ImGui::RadioButton("rotate (E)", &mode, int(GizmoMode::Rotate));
+  ImGui::SameLine();
+  ImGui::RadioButton("scale (R)", &mode, int(GizmoMode::Scale));
+  state.gizmo_mode = GizmoMode(mode);
+  bool local = state.gizmo_space == GizmoSpace::Local;
+  if (ImGui::Checkbox("local axes (Q)", &local))
+    state.gizmo_space = local ? GizmoSpace::Local : GizmoSpace::World;
+  tooltip(
+      "The gizmo over the selection: drag a handle to move, turn or scale along its axis "
+      "(the centre box scales evenly: drag right or up to grow); hold Ctrl to snap (15 degrees, "
+      "tenths of the scale, "
+      "round steps of a move). Scale handles always follow the object's own axes.");
   bool visible = n.visible;
   if (ImGui::Checkbox("visible", &visible))
     ui_edit(session, state, VisibilityEdit{reference, visible});

@@ -83,7 +83,9 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
   m_state.screenshot_path =
       options.screenshot.empty() ? "hipr_screenshot.png" : options.screenshot.string();
   m_state.overlay = options.overlay;
-  m_state.exposure_ev = options.exposure_ev;
+  m_state.exposure_ev = options.display.exposure_ev.value_or(0.0f);
+  m_state.auto_exposure = !options.display.exposure_ev;
+  m_state.tone_mapper = options.display.tone_mapper;
   m_state.show_ui = options.show_ui;
   m_state.frame_budget_ms = options.frame_budget_ms;
   m_state.steps_per_frame = options.steps_per_frame;
@@ -275,6 +277,7 @@ bool Viewer::present(const ViewLayout& layout) {
   view.y = layout.y;
   view.scale = layout.scale;
   view.exposure_ev = m_state.exposure_ev;
+  view.tone_mapper = m_state.tone_mapper;
   view.overlay = m_overlay_on;
   // Rebuilt at the next frame's start, so a screenshot of this frame still reads its image.
   if (!draw_and_present(*frame, view)) m_swapchain_stale = true;
@@ -314,6 +317,7 @@ int Viewer::run() {
     handle_requests();
     follow_environment(m_session->scene(), m_state);
     render_steps();
+    meter_exposure(frame_index);
     m_steps += m_state.steps_last_frame;
     // The mean over pixels of the samples they hold, only while the status line shows it: once a
     // second, and once more when the image has converged (so that it says the final count).

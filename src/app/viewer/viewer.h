@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/cli_common.h"
+#include "app/display_flags.h"
 #include "app/viewer/overlays.h"
 #include "hipr/edits.h"
 #include "hipr/schedule_settings.h"
@@ -26,7 +27,9 @@ struct ViewerOptions {
       schedule;  // tiles_per_step 0: 1/64 of the frame; first_visit_spp 0: default_first_visit_spp
   uint32_t steps_per_frame = 0;  // > 0: exactly this many steps per frame (reproducible scripts)
   double frame_budget_ms = 0.0;  // 0: adapt (ViewerState::frame_budget_ms)
-  float exposure_ev = 0.0f;
+  // What an artist expects of a viewer: metered exposure (until they set one) and Khronos PBR
+  // Neutral, which shows glTF base colours as authored and rolls highlights off to white.
+  app::DisplayFlags display{std::nullopt, ToneMapper::PbrNeutral};
   bool show_ui = true;
   // No window (machines without a display): frames are drawn off screen, as fast as the device
   // renders them, until exit_after_frames (which headless runs need).

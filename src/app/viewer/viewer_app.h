@@ -63,6 +63,8 @@ class Viewer {
   template <class T, class Apply>
   void take_setting_request(std::optional<T>& request, const char* what, Apply apply);
   void render_steps();
+  // Auto exposure: meters the displayed radiance on the first frames, then every 8th.
+  void meter_exposure(uint32_t frame_index);
   void update_overlay();
   bool present(const ViewLayout& layout);
   bool draw_and_present(const vk::PresentFrame& frame, const DisplayView& view);

@@ -10,6 +10,7 @@
 #include "core/log.h"
 #include "hipr/scene_loader.h"
 #include "hipr/scene_writer.h"
+#include "image/auto_exposure.h"
 #include "image/builtin_environments.h"
 #include "image/image_io.h"
 
@@ -66,6 +67,13 @@ void Viewer::take_screenshot(const fs::path& path) {
   } catch (const InputError& e) {
     m_state.error(e.what());
   }
+}
+
+void Viewer::meter_exposure(uint32_t frame_index) {
+  if (!m_state.auto_exposure) return;
+  // A read-back of the displayed radiance each time: cheap next to a frame, not free at 1080p.
+  if (frame_index >= 4 && frame_index % 8 != 0) return;
+  follow_metering(m_state, metered_exposure_ev(m_session->displayed().rgb));
 }
 
 void Viewer::dump_frame(uint32_t frame_index, double frame_seconds) {

@@ -42,8 +42,8 @@ void follow_environment(const Scene& scene, ViewerState& state) {
   if (key == state.environment_key) return;
   const float radiance = env ? environment_mean_luminance(*env) : 0.0f;
   const float before = state.environment_radiance;
-  if (!state.environment_key.empty() && before > 0.0f && radiance > 0.0f && std::isfinite(before) &&
-      std::isfinite(radiance)) {
+  if (!state.auto_exposure && !state.environment_key.empty() && before > 0.0f && radiance > 0.0f &&
+      std::isfinite(before) && std::isfinite(radiance)) {
     state.exposure_ev = std::clamp(state.exposure_ev - std::log2(radiance / before), -20.0f, 20.0f);
     char text[64];
     std::snprintf(text, sizeof text, "exposure %.1f EV for the new light",
@@ -52,6 +52,12 @@ void follow_environment(const Scene& scene, ViewerState& state) {
   }
   state.environment_key = key;
   if (radiance > 0.0f) state.environment_radiance = radiance;  // "none" in between keeps the last
+}
+
+void follow_metering(ViewerState& state, float metered_ev) {
+  if (!state.auto_exposure || !std::isfinite(metered_ev)) return;
+  if (std::abs(metered_ev - state.exposure_ev) > kMeteringDeadbandEv)
+    state.exposure_ev = metered_ev;
 }
 
 }  // namespace hipr::viewer

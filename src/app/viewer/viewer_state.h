@@ -8,11 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "app/viewer/gizmo.h"
 #include "app/viewer/overlays.h"
 #include "hipr/focus.h"
 #include "hipr/renderer.h"
 #include "hipr/schedule_settings.h"
 #include "hipr/scheduler.h"
+#include "image/tonemap.h"
 
 namespace hipr::viewer {
 
@@ -24,9 +26,15 @@ struct Message {
 struct ViewerState {
   Overlay overlay = Overlay::None;
   float exposure_ev = 0.0f;
+  // Metered while on (follow_metering); setting an exposure by hand turns it off (locks it).
+  bool auto_exposure = false;
+  ToneMapper tone_mapper = ToneMapper::Clamp;
   bool show_ui = true;      // panels and status line (Tab)
   bool show_status = true;  // the status line alone
   int selected_node = -1;
+  // The gizmo over the selection (W move, E rotate, R scale; Q world/local axes).
+  GizmoMode gizmo_mode = GizmoMode::Translate;
+  GizmoSpace gizmo_space = GizmoSpace::World;
   // Attention-guided rendering (docs/method.md#focus): HiPR starts from the selected object
   // (on by default) and, when asked, from a disc around the cursor.
   bool focus_selection = true;
@@ -87,7 +95,13 @@ Focus view_focus(const Scene& scene, const ViewerState& state, std::optional<glm
 // Called every frame: when another environment map lights the scene (a switch, its undo or
 // redo, a script), the exposure moves by the change in the maps' mean radiance, so a switch
 // between the studio (about 1 nit) and the daylight sky (thousands) stays viewable. Intensity
-// and the sun are left to show as they are.
+// and the sun are left to show as they are. With auto exposure on, the metering does that.
 void follow_environment(const Scene& scene, ViewerState& state);
+
+// With auto exposure on, takes the exposure metered from the displayed image
+// (image/auto_exposure.h) when it differs by more than kMeteringDeadbandEv: the noise of a
+// converging image does not make the picture pulse.
+constexpr float kMeteringDeadbandEv = 0.1f;
+void follow_metering(ViewerState& state, float metered_ev);
 
 }  // namespace hipr::viewer

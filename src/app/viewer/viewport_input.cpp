@@ -14,6 +14,9 @@ namespace {
 
 // A press that moves less than this (window pixels) before release is a click, not a drag.
 constexpr float kClickSlop = 3.0f;
+// The gizmo's handles: their length and how near (window coordinates) a press must be.
+constexpr float kGizmoHandlePixels = 80.0f;
+constexpr float kGizmoTolerancePixels = 7.0f;
 
 glm::mat4 parent_world(const Scene& scene, uint32_t node) {
   const int parent = scene.nodes[node].parent;
@@ -79,6 +82,12 @@ void ViewportInput::key(Session& session, ViewerState& state, const KeyPress& pr
   const Overlay overlays[] = {Overlay::None, Overlay::Ids, Overlay::Weights, Overlay::Owed};
   if (k >= GLFW_KEY_0 && k <= GLFW_KEY_3) state.overlay = overlays[k - GLFW_KEY_0];
   if (k == GLFW_KEY_ESCAPE) state.selected_node = -1;
+  if (k == GLFW_KEY_W) state.gizmo_mode = GizmoMode::Translate;
+  if (k == GLFW_KEY_E) state.gizmo_mode = GizmoMode::Rotate;
+  if (k == GLFW_KEY_R) state.gizmo_mode = GizmoMode::Scale;
+  if (k == GLFW_KEY_Q)
+    state.gizmo_space =
+        state.gizmo_space == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
 
   const std::optional<uint32_t> selected = selected_node(session, state);
   if (!selected) return;
@@ -110,6 +119,54 @@ void ViewportInput::finish_drag(Session& session) {
   if (m_grouped) session.end_group();
   m_grouped = false;
   m_drag = Drag::None;
+  m_gizmo.reset();
+}
+
+std::optional<GizmoScreen> ViewportInput::gizmo(const Session& session, ViewerState& state,
+                                                const ViewLayout& layout, float pixel_ratio) const {
+  const std::optional<uint32_t> selected = selected_node(session, state);
+  if (!selected || !state.show_ui) return std::nullopt;
+  const Scene& scene = session.scene();
+  ViewProjection view{resolve_camera(scene), layout.render_width, layout.render_height, layout};
+  return gizmo_screen(view, scene.world_transform(*selected), state.gizmo_space, state.gizmo_mode,
+                      kGizmoHandlePixels * pixel_ratio);
+}
+
+void ViewportInput::draw_gizmo(const GizmoScreen& screen, GizmoMode mode, int hot,
+                               float pixel_ratio) const {
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const auto at = [&](glm::vec2 p) { return ImVec2(p.x / pixel_ratio, p.y / pixel_ratio); };
+  const ImU32 colours[3] = {IM_COL32(230, 60, 60, 255), IM_COL32(70, 200, 70, 255),
+                            IM_COL32(70, 110, 240, 255)};
+  const ImU32 highlight = IM_COL32(255, 220, 40, 255);
+  const ImVec2 origin = at(screen.origin);
+  for (int axis = 0; axis < 3; ++axis) {
+    const ImU32 colour = hot == axis ? highlight : colours[axis];
+    const float width = hot == axis ? 3.5f : 2.5f;
+    if (mode == GizmoMode::Rotate) {
+      std::vector<ImVec2> ring;
+      for (glm::vec2 p : screen.rings[size_t(axis)]) ring.push_back(at(p));
+      draw->AddPolyline(ring.data(), int(ring.size()), colour, ImDrawFlags_None, width);
+      continue;
+    }
+    const ImVec2 tip = at(screen.tips[size_t(axis)]);
+    draw->AddLine(origin, tip, colour, width);
+    if (mode == GizmoMode::Scale) {
+      draw->AddRectFilled(ImVec2(tip.x - 5, tip.y - 5), ImVec2(tip.x + 5, tip.y + 5), colour);
+    } else {  // an arrow head along the handle
+      const glm::vec2 d = screen.tips[size_t(axis)] - screen.origin;
+      if (glm::length(d) < 4.0f) continue;
+      const glm::vec2 u = glm::normalize(d), n(-u.y, u.x);
+      const glm::vec2 base = screen.tips[size_t(axis)] - 14.0f * pixel_ratio * u;
+      draw->AddTriangleFilled(at(screen.tips[size_t(axis)]), at(base + 6.0f * pixel_ratio * n),
+                              at(base - 6.0f * pixel_ratio * n), colour);
+    }
+  }
+  if (mode == GizmoMode::Scale) {
+    const ImU32 colour = hot == kGizmoUniformScale ? highlight : IM_COL32(230, 230, 230, 255);
+    draw->AddRectFilled(ImVec2(origin.x - 6, origin.y - 6), ImVec2(origin.x + 6, origin.y + 6),
+                        colour);
+  }
 }
 
 void ViewportInput::update(Session& session, ViewerState& state, const ViewLayout& layout,
@@ -125,7 +182,17 @@ void ViewportInput::update(Session& session, ViewerState& state, const ViewLayou
     const bool left = ImGui::IsMouseClicked(ImGuiMouseButton_Left),
                right = ImGui::IsMouseClicked(ImGuiMouseButton_Right),
                middle = ImGui::IsMouseClicked(ImGuiMouseButton_Middle);
-    if (left && !io.KeyAlt) {
+    const std::optional<GizmoScreen> handles = gizmo(session, state, layout, pixel_ratio);
+    const int handle =
+        handles ? gizmo_hit(*handles, state.gizmo_mode, mouse, kGizmoTolerancePixels * pixel_ratio)
+                : -1;
+    if (left && !io.KeyAlt && handle >= 0) {
+      m_node = *selected_node(session, state);
+      const Scene& scene = session.scene();
+      m_gizmo.emplace(*handles, state.gizmo_mode, handle, mouse, scene.nodes[m_node].local,
+                      parent_world(scene, m_node), resolve_camera(scene).camera_to_world[3]);
+      m_drag = Drag::Gizmo;
+    } else if (left && !io.KeyAlt) {
       if (const auto pixel = layout.to_render(mouse)) {
         const Renderer::PixelHit hit = session.pick(pixel->x, pixel->y);
         const auto instances = session.scene().instances();
@@ -161,6 +228,16 @@ void ViewportInput::update(Session& session, ViewerState& state, const ViewLayou
     cursor = glm::vec2(*pixel) + 0.5f;
   session.set_view_focus(view_focus(session.scene(), state, cursor));
 
+  // The gizmo, its handle under the mouse (or the one dragged) highlighted.
+  if (const std::optional<GizmoScreen> handles = gizmo(session, state, layout, pixel_ratio)) {
+    int hot = -1;
+    if (m_drag == Drag::Gizmo && m_gizmo)
+      hot = m_gizmo->handle();
+    else if (m_drag == Drag::None && !io.WantCaptureMouse)
+      hot = gizmo_hit(*handles, state.gizmo_mode, mouse, kGizmoTolerancePixels * pixel_ratio);
+    draw_gizmo(*handles, state.gizmo_mode, hot, pixel_ratio);
+  }
+
   if (m_drag == Drag::None) return;
   const glm::vec2 delta = mouse - m_last;
   m_last = mouse;
@@ -172,6 +249,12 @@ void ViewportInput::update(Session& session, ViewerState& state, const ViewLayou
       break;
     case Drag::Move:
       if (delta != glm::vec2(0.0f)) drag_object(session, state, (mouse - m_press) / layout.scale);
+      break;
+    case Drag::Gizmo:
+      if (delta != glm::vec2(0.0f) && m_gizmo)
+        try_edit(session, state,
+                 TransformEdit{node_reference(session.scene(), m_node), std::nullopt,
+                               m_gizmo->local_at(mouse, io.KeyCtrl)});
       break;
     case Drag::Orbit:
       if (delta != glm::vec2(0.0f)) {
