@@ -194,8 +194,17 @@ void add_radiance(inout PathState p, uint group, vec3 value) {
 PathState start_path(uvec2 pixel, uint sampleIndex) {
   PathState p;
   p.rng = PathRng(pixel.y * u_frame.width + pixel.x, pixel, sampleIndex, u_frame.seed, u_frame.sampleSequence);
+  const vec4 u = rng_uniform4(p.rng, 0u, 2u);  // xy: where in the pixel, zw: where on the lens
   p.origin = u_frame.cameraPosition;
-  p.direction = camera_ray_direction(pixel, rng_uniform4(p.rng, 0u, 2u).xy);
+  p.direction = camera_ray_direction(pixel, u.xy);
+  if (u_frame.lensRadius > 0.0) {
+    // Thin lens: the ray through the pinhole meets the focus plane at `focus`; a ray from any
+    // point of the lens disc to it sees that plane sharp and the rest blurred.
+    const vec3 focus = p.origin + p.direction * (u_frame.focusDistance / dot(p.direction, u_frame.cameraForward));
+    const vec2 disc = u_frame.lensRadius * sample_concentric_disk(u.zw);
+    p.origin += disc.x * u_frame.cameraRight + disc.y * u_frame.cameraUp;
+    p.direction = normalize(focus - p.origin);
+  }
   p.radiance = vec3(0.0);
   p.throughput = vec3(1.0);
   p.previousPdf = 0.0;

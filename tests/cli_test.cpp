@@ -153,7 +153,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadCommand{"replay_unknown_tonemap", "replay $cornell $edits -o @/b --tonemap none"},
         BadCommand{"bench_exposure_inf", "bench $cornell $edits -o @/b --exposure inf"},
         BadCommand{"view_unknown_tonemap", "view $cornell --tonemap reinhard --headless"},
-        BadCommand{"compare_unknown_tonemap", "compare $cornell $cornell --tonemap x"}),
+        BadCommand{"compare_unknown_tonemap", "compare $cornell $cornell --tonemap x"},
+        BadCommand{"render_unknown_camera", "render $cornell -o @/out.png --spp 1 --camera 3"},
+        BadCommand{"info_unknown_camera", "info $cornell --camera side"},
+        BadCommand{"view_unknown_camera", "view $cornell --camera side --headless"}),
     bad_command_name);
 
 TEST(Cli, EveryCommandThatShowsPicturesTakesTheDisplayFlags) {
@@ -201,6 +204,26 @@ TEST(Cli, CompareFlipFollowsTheToneMapper) {
   EXPECT_EQ(test::run_hipr(args).exit_code, kExitOk);
   EXPECT_EQ(test::run_hipr(args + " --tonemap aces").exit_code, kExitDifferent);
   EXPECT_EQ(test::run_hipr(args + " --tonemap aces --exposure -8").exit_code, kExitDifferent);
+}
+
+// `hipr info` lists the cameras as --camera counts them; a lens saved in extras reloads.
+TEST(Cli, InfoListsCamerasAndTheirLens) {
+  const fs::path dir = test::temp_dir("cli-cameras");
+  const fs::path script = dir / "lens.json";
+  std::ofstream(script)
+      << R"({"edits": [{"op": "camera", "aperture": 0.02, "focus_distance": 1.2}]})";
+  const test::CommandResult saved = test::run_hipr(
+      "replay " + quoted(test::asset("cornell_box.gltf")) + " " + quoted(script) + " -o " +
+      quoted(dir / "out") + " --width 8 --height 8 --spp 1 --policy full -q --save " +
+      quoted(dir / "lens.gltf"));
+  ASSERT_EQ(saved.exit_code, kExitOk) << saved.output;
+  const test::CommandResult info =
+      test::run_hipr("info " + quoted(dir / "lens.gltf") + " --camera 0");
+  ASSERT_EQ(info.exit_code, kExitOk) << info.output;
+  EXPECT_NE(info.output.find("cameras    0 camera: yfov 39.3 deg, lens radius 0.02"),
+            std::string::npos)
+      << info.output;
+  EXPECT_NE(info.output.find("(used)"), std::string::npos) << info.output;
 }
 
 TEST(Cli, MissingOutputFolderIsABadInput) {

@@ -52,9 +52,8 @@ TEST(ToneMappers, MatchTheirPublishedDefinitions) {
   for (const Published& p : kPublished) {
     const glm::vec3 out = tone_map(p.in, p.mapper);
     for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(out[c], p.out[c], 1e-4f)
-          << tone_mapper_name(p.mapper) << " (" << p.in.x << ", " << p.in.y << ", " << p.in.z
-          << ") channel " << c;
+      EXPECT_NEAR(out[c], p.out[c], 1e-4f) << tone_mapper_name(p.mapper) << " (" << p.in.x << ", "
+                                           << p.in.y << ", " << p.in.z << ") channel " << c;
   }
 }
 

@@ -165,6 +165,27 @@ TEST(EditScript, BadRotateAndScaleAreRefused) {
                InputError);
 }
 
+TEST(EditScript, CameraOpsSwitchAndOpenTheLens) {
+  const auto edits = parse_edit_script(R"({"edits": [
+      {"op": "camera", "use": "camera"},
+      {"op": "camera", "aperture": 0.01, "focus_distance": 2.5},
+      {"op": "camera", "translate": [0, 0, 0.1], "focus_distance": 1}]})",
+                                       "e");
+  ASSERT_EQ(edits.size(), 3u);
+  EXPECT_EQ(std::get<CameraEdit>(edits[0]).use, "camera");
+  EXPECT_EQ(std::get<CameraEdit>(edits[1]).aperture_radius, 0.01f);
+  EXPECT_EQ(std::get<CameraEdit>(edits[1]).focus_distance, 2.5f);
+  Scene scene = cornell();
+  for (const Edit& edit : edits) apply_edit(scene, edit);
+  EXPECT_EQ(scene.cameras[0].aperture_radius, 0.01f);
+  EXPECT_EQ(scene.cameras[0].focus_distance, 1.0f);
+  expect_input_error(R"({"edits": [{"op": "camera", "aperture": -1}]})", "aperture");
+  expect_input_error(R"({"edits": [{"op": "camera", "focus_distance": 0}]})", "focus_distance");
+  expect_input_error(R"({"edits": [{"op": "camera", "use": "a", "aperture": 0.1}]})", "alone");
+  expect_input_error(R"({"edits": [{"op": "camera", "use": 3}]})", "use");
+  expect_input_error(R"({"edits": [{"op": "camera"}]})", "aperture");
+}
+
 // The Selection panel's fields: a local transform taken apart and put back together.
 TEST(Edits, LocalPoseRoundTrips) {
   const glm::vec3 rotations[] = {

@@ -43,8 +43,8 @@ TEST(Gizmo, ProjectsAsTheRendererTracesPixels) {
 }
 
 TEST(Gizmo, HandlesAreHitWhereTheyAreDrawn) {
-  const GizmoScreen s = *gizmo_screen(top_view(), glm::mat4(1.0f), GizmoSpace::World,
-                                      GizmoMode::Translate, 80.0f);
+  const GizmoScreen s =
+      *gizmo_screen(top_view(), glm::mat4(1.0f), GizmoSpace::World, GizmoMode::Translate, 80.0f);
   EXPECT_NEAR(glm::length(s.tips[0] - s.origin), 80.0f, 0.5f);
   EXPECT_GT(s.tips[0].x, s.origin.x) << "x to the right";
   EXPECT_GT(s.tips[2].y, s.origin.y + 70.0f) << "-z up, so +z down";
@@ -54,18 +54,18 @@ TEST(Gizmo, HandlesAreHitWhereTheyAreDrawn) {
   EXPECT_EQ(gizmo_hit(s, GizmoMode::Translate, s.origin + glm::vec2(40, 40), 7.0f), -1);
   // y points at the camera: seen end-on, not draggable.
   EXPECT_EQ(gizmo_hit(s, GizmoMode::Translate, s.origin, 7.0f), -1);
-  const GizmoScreen scale = *gizmo_screen(top_view(), glm::mat4(1.0f), GizmoSpace::World,
-                                          GizmoMode::Scale, 80.0f);
+  const GizmoScreen scale =
+      *gizmo_screen(top_view(), glm::mat4(1.0f), GizmoSpace::World, GizmoMode::Scale, 80.0f);
   EXPECT_EQ(gizmo_hit(scale, GizmoMode::Scale, scale.origin + glm::vec2(2, 1), 7.0f),
             kGizmoUniformScale);
-  const GizmoScreen rings = *gizmo_screen(top_view(), glm::mat4(1.0f), GizmoSpace::World,
-                                          GizmoMode::Rotate, 80.0f);
+  const GizmoScreen rings =
+      *gizmo_screen(top_view(), glm::mat4(1.0f), GizmoSpace::World, GizmoMode::Rotate, 80.0f);
   // Seen from above, y's ring is a circle around the origin; x's and z's are seen edge-on,
   // as lines through it (x's along screen y, z's along screen x).
   const float r = 0.9f * 80.0f;
-  EXPECT_EQ(gizmo_hit(rings, GizmoMode::Rotate, rings.origin + r * glm::vec2(0.7071f, -0.7071f),
-                      7.0f),
-            1);
+  EXPECT_EQ(
+      gizmo_hit(rings, GizmoMode::Rotate, rings.origin + r * glm::vec2(0.7071f, -0.7071f), 7.0f),
+      1);
   EXPECT_EQ(gizmo_hit(rings, GizmoMode::Rotate, rings.origin + glm::vec2(0.0f, 30.0f), 7.0f), 0);
   EXPECT_EQ(gizmo_hit(rings, GizmoMode::Rotate, rings.origin + glm::vec2(30.0f, 0.0f), 7.0f), 2);
   EXPECT_EQ(gizmo_hit(rings, GizmoMode::Rotate, rings.origin + glm::vec2(30.0f, 30.0f), 7.0f), -1);
@@ -96,8 +96,7 @@ TEST(Gizmo, RotateTurnsAboutTheAxisThroughTheNodesOrigin) {
   const ViewProjection view = top_view();
   const glm::mat4 local = glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 0.0f, -0.5f)) *
                           glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 1.0f, 2.0f));
-  const GizmoScreen s =
-      *gizmo_screen(view, local, GizmoSpace::World, GizmoMode::Rotate, 80.0f);
+  const GizmoScreen s = *gizmo_screen(view, local, GizmoSpace::World, GizmoMode::Rotate, 80.0f);
   const float r = 0.9f * glm::length(s.tips[0] - s.origin);
   GizmoDrag drag(s, GizmoMode::Rotate, 1, s.origin + glm::vec2(r, 0.0f), local, glm::mat4(1.0f),
                  view.eye());

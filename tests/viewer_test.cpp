@@ -870,5 +870,30 @@ TEST(Session, DuplicateDeleteAndImportReRenderAndUndo) {
   EXPECT_EQ(state.selected_node, -1);
 }
 
+// Files dropped on the window: a scene opens (asking first when edits are unsaved), with Shift
+// each is imported as an undoable edit; anything else is a message.
+TEST(Session, DroppedFilesOpenOrImport) {
+  Session session(test::context(), cornell(), small_settings());
+  ViewerState state;
+  const size_t nodes = session.scene().nodes.size();
+  drop_files(session, state, {"/tmp/notes.txt"}, false);
+  ASSERT_EQ(state.messages.size(), 1u);
+  EXPECT_TRUE(state.messages.back().error);
+  EXPECT_FALSE(state.request_open);
+
+  const std::string sphere = test::asset("cornell_sphere.glb").string();
+  drop_files(session, state, {sphere}, true);
+  EXPECT_GT(session.scene().nodes.size(), nodes) << "imported";
+  EXPECT_FALSE(state.request_open);
+  EXPECT_TRUE(session.history().unsaved());
+
+  const std::string box = test::asset("cornell_box.gltf").string();
+  drop_files(session, state, {box, sphere}, false);
+  EXPECT_TRUE(state.request_open);
+  EXPECT_EQ(state.open_path, box) << "the first opens";
+  EXPECT_FALSE(state.open_confirmed) << "the import is unsaved: asks first";
+  ASSERT_TRUE(session.undo());
+}
+
 }  // namespace
 }  // namespace hipr::viewer

@@ -70,9 +70,17 @@ struct VisibilityEdit {
   bool visible = true;
 };
 
+// The view: move the camera node (translate or matrix), look through another camera node
+// (`use`: a node name or "#index" whose node carries a camera), open or close its thin lens.
+// The lens belongs to the glTF camera the node shows (Camera::aperture_radius). `use` goes
+// alone (so its undo is a switch back). Without a camera in the file the default view becomes
+// a camera node first.
 struct CameraEdit {
   std::optional<glm::vec3> translate;
   std::optional<glm::mat4> matrix;
+  std::optional<std::string> use;
+  std::optional<float> aperture_radius;  // >= 0, world units
+  std::optional<float> focus_distance;   // > 0, along the view axis
 };
 
 // What lights the scene from afar, and how bright and turned. Scripts give the rotation in

@@ -102,6 +102,11 @@ struct Camera {
   glm::mat4 camera_to_world{1.0f};  // camera looks down its local -Z, +Y up
   float yfov = 0.8f;                // vertical field of view, radians
   float znear = 0.01f;
+  // Thin-lens depth of field (glTF has none: kept in the camera's extras.hipr_lens on save).
+  // A radius of 0 is a pinhole; otherwise points at focus_distance along the view axis are
+  // sharp (world units, > 0).
+  float aperture_radius = 0.0f;
+  float focus_distance = 1.0f;
 };
 
 // The built-in daylight sky (--env sky, image/builtin_environments.h): where the sun is and how
@@ -170,8 +175,13 @@ struct Scene {
   // depth-first order.
   std::vector<Instance> instances() const;
   glm::mat4 world_transform(uint32_t node) const;
-  // Camera node to render from: the first node with a camera, or -1 (default_camera then).
+  // Camera node to render from: `active_camera` when it is a camera node in the scene, else
+  // the first node with a camera, or -1 (default_camera then).
   int camera_node() const;
+  // The nodes in the scene that carry a camera, depth-first in scene order (what `hipr info`
+  // lists and --camera INDEX counts).
+  std::vector<uint32_t> camera_nodes() const;
+  int active_camera = -1;  // a node chosen by --camera or a camera edit's "use"; -1: the first
   // World-space bounds of all instances (min, max); a unit box when empty.
   std::pair<glm::vec3, glm::vec3> bounds() const;
   std::vector<uint32_t> root_nodes;             // of the default scene

@@ -47,6 +47,7 @@ struct ChangeSet {
   bool light_tables = false;  // emitters or punctual lights changed: rebuild light tables
   bool camera = false;        // the view changed
   Camera camera_before;       // the view before the edit (when `camera`)
+  bool lens = false;          // a camera with an open lens before or after: no reprojection
   // The environment changed (intensity, rotation or map). Like a punctual light it reaches
   // every tile without being visible in a G-buffer, so everything restarts.
   bool environment = false;
@@ -57,10 +58,11 @@ struct ChangeSet {
   // Empty for any other edit.
   std::vector<EmitterScale> emitter_scales;
 
-  // Nothing but the view changed: the image before the edit can be reprojected into the new one.
+  // Nothing but the view changed, through pinholes: the image before the edit can be
+  // reprojected into the new one.
   bool camera_only() const {
-    return camera && instances.empty() && departed.empty() && lights.empty() && !materials &&
-           !transforms && !geometry && !light_tables && !environment;
+    return camera && !lens && instances.empty() && departed.empty() && lights.empty() &&
+           !materials && !transforms && !geometry && !light_tables && !environment;
   }
 
   bool empty() const {

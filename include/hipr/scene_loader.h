@@ -21,6 +21,9 @@ struct SceneLoadOptions {
   float environment_intensity = 1.0f;
   float environment_rotation_degrees = 0.0f;
   SkyParameters sky;
+  // The camera node to look through (--camera): its index among the scene's cameras or a name
+  // (find_camera_node); empty: the first.
+  std::string camera;
 };
 
 // Loads a .gltf/.glb scene. Throws InputError (one line) for anything wrong with the input;

@@ -26,8 +26,8 @@ HIPR_FN vec3 to_world(vec3 local, vec3 n) {
   return local.x * t + local.y * b + local.z * n;
 }
 
-// Cosine-weighted hemisphere around +Z (concentric disk mapping, then lift).
-HIPR_FN vec3 sample_cosine_hemisphere(vec2 u) {
+// Uniform point on the unit disc (Shirley and Chiu's concentric mapping: strata stay compact).
+HIPR_FN vec2 sample_concentric_disk(vec2 u) {
   const vec2 d = 2.0f * u - 1.0f;
   vec2 p = vec2(0.0f);
   if (d.x != 0.0f || d.y != 0.0f) {
@@ -41,6 +41,12 @@ HIPR_FN vec3 sample_cosine_hemisphere(vec2 u) {
     }
     p = r * vec2(cos(phi), sin(phi));
   }
+  return p;
+}
+
+// Cosine-weighted hemisphere around +Z (concentric disk mapping, then lift).
+HIPR_FN vec3 sample_cosine_hemisphere(vec2 u) {
+  const vec2 p = sample_concentric_disk(u);
   return vec3(p, sqrt(max(0.0f, 1.0f - dot(p, p))));
 }
 

@@ -381,6 +381,8 @@ struct FrameParams {
   uint tilesY;
   float rayOffsetScale;  // size of the scene (diagonal of its bounds): scales ray_offset.glsl's offsets
   uint sampleSequence;   // kSamplerSobol or kSamplerRandom (common/rng.glsl)
+  float lensRadius;      // thin lens (world units); 0: a pinhole (Camera::aperture_radius)
+  float focusDistance;   // along the view axis: the plane that stays sharp
 };
 
 // Software traversal: one BVH node (bounds in the space of the level it belongs to).

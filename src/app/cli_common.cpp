@@ -41,6 +41,9 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
   app.add_option("--env-rotation", o.load.environment_rotation_degrees,
                  "Environment rotation about +Y, degrees")
       ->capture_default_str();
+  app.add_option("--camera", o.load.camera,
+                 "Look through this camera: its index in `hipr info`'s list, or its node's or glTF "
+                 "camera's name (default: the first)");
   app.add_option("--preset", o.preset, "HiPR weights preset: default, lookdev, glass, mirror");
   app.add_option("--w-lobe", o.w_lobe, "HiPR lobe weights: diffuse,glossy,specular,transmission")
       ->delimiter(',')

@@ -11,6 +11,7 @@
 #include "render/background_tiles.h"
 #include "render/kernel_features.h"
 #include "render/light_groups.h"
+#include "scene/default_camera.h"
 
 namespace hipr::app {
 namespace {
@@ -86,9 +87,20 @@ int run_info(const InfoOptions& o) {
   std::printf(
       "groups     %s%s\n", joined(groups.names, "none").c_str(),
       groups.pooled.empty() ? "" : ("; pooled, not relit: " + joined(groups.pooled, "")).c_str());
+  // Every camera the scene defines, as --camera counts them; the one the image uses marked.
   const int camera = scene.camera_node();
-  std::printf("camera     %s\n", camera >= 0 ? scene.nodes[size_t(camera)].name.c_str()
-                                             : "none (a default camera frames the scene)");
+  const std::vector<uint32_t> cameras = scene.camera_nodes();
+  if (cameras.empty()) std::printf("camera     none (a default camera frames the scene)\n");
+  for (size_t i = 0; i < cameras.size(); ++i) {
+    const Camera& c = scene.cameras[size_t(scene.nodes[cameras[i]].camera)];
+    std::string lens = "pinhole";
+    if (c.aperture_radius > 0.0f)
+      lens = "lens radius " + std::to_string(c.aperture_radius) + ", focus " +
+             std::to_string(c.focus_distance);
+    std::printf("%s %zu %s: yfov %.1f deg, %s%s\n", i == 0 ? "cameras   " : "          ", i,
+                camera_label(scene, cameras[i]).c_str(), double(glm::degrees(c.yfov)), lens.c_str(),
+                int(cameras[i]) == camera ? " (used)" : "");
+  }
   std::string extensions;
   for (const std::string& e : scene.extensions_used)
     extensions += (extensions.empty() ? "" : ", ") + e;
@@ -143,6 +155,9 @@ Command add_info_command(CLI::App& app) {
   cmd->add_option("--sun-azimuth", options->load.sky.sun_azimuth_degrees,
                   "--env sky: sun azimuth, degrees");
   cmd->add_option("--turbidity", options->load.sky.turbidity, "--env sky: haze, 1.7 to 10");
+  cmd->add_option("--camera", options->load.camera,
+                  "Look through this camera: its index in the list below, or its node's or "
+                  "glTF camera's name (default: the first)");
   cmd->add_option("--width", options->render.width, "Image width in pixels (for background tiles)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 16384u));

@@ -30,7 +30,8 @@ void add_display_flags(CLI::App& cmd, DisplayFlags& flags, const std::string& ap
            }
          },
          "Exposure in stops, or auto (the frame's 90th-percentile luminance at 80% of white), "
-         "for " + applies_to)
+         "for " +
+             applies_to)
       ->default_str(flags.exposure_ev ? current : "auto");
   cmd.add_option_function<std::string>(
          "--tonemap",
@@ -42,7 +43,8 @@ void add_display_flags(CLI::App& cmd, DisplayFlags& flags, const std::string& ap
            }
          },
          "Tone mapper after the exposure: clamp, pbr-neutral (Khronos PBR Neutral), agx or "
-         "aces, for " + applies_to)
+         "aces, for " +
+             applies_to)
       ->default_str(tone_mapper_name(flags.tone_mapper));
 }
 

@@ -20,7 +20,8 @@ abi::ViewFrame view_frame(const Camera& camera, float aspect) {
 
 abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu,
                                    const RenderSettings& s) {
-  const abi::ViewFrame view = view_frame(resolve_camera(scene), float(s.width) / float(s.height));
+  const Camera camera = resolve_camera(scene);
+  const abi::ViewFrame view = view_frame(camera, float(s.width) / float(s.height));
   abi::FrameParams f{};
   f.cameraPosition = view.position;
   f.cameraRight = view.right;
@@ -28,6 +29,8 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu,
   f.cameraForward = view.forward;
   f.tanHalfFovY = view.tanHalfFovY;
   f.aspect = view.aspect;
+  f.lensRadius = camera.aperture_radius;
+  f.focusDistance = camera.focus_distance;
   f.seed = s.seed;
   f.sampleSequence = s.sampler == Sampler::Random ? abi::kSamplerRandom : abi::kSamplerSobol;
   f.width = s.width;

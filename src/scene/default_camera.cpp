@@ -4,6 +4,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/error.h"
+
 namespace hipr {
 namespace {
 
@@ -59,6 +61,37 @@ Camera resolve_camera(const Scene& scene) {
   }
   camera.camera_to_world = rigid_frame(world);
   return camera;
+}
+
+uint32_t find_camera_node(const Scene& scene, const std::string& name_or_index) {
+  const std::vector<uint32_t> cameras = scene.camera_nodes();
+  if (cameras.empty())
+    throw InputError("--camera " + name_or_index + ": the scene has no camera (it is seen " +
+                     "from a default view framing it)");
+  const bool digits = !name_or_index.empty() && name_or_index.size() < 10 &&
+                      name_or_index.find_first_not_of("0123456789") == std::string::npos;
+  if (digits) {
+    const size_t index = std::stoul(name_or_index);
+    if (index < cameras.size()) return cameras[index];
+  }
+  for (uint32_t node : cameras) {
+    const Node& n = scene.nodes[node];
+    if (n.name == name_or_index || scene.cameras[size_t(n.camera)].name == name_or_index)
+      return node;
+  }
+  std::string known;
+  for (size_t i = 0; i < cameras.size() && i < 8; ++i)
+    known += (i ? ", " : "") + std::to_string(i) + " " + camera_label(scene, cameras[i]);
+  if (cameras.size() > 8) known += ", ...";
+  throw InputError("--camera " + name_or_index + ": no such camera (the scene has " + known + ")");
+}
+
+std::string camera_label(const Scene& scene, uint32_t node) {
+  const Node& n = scene.nodes[node];
+  std::string label = n.name.empty() ? "#" + std::to_string(node) : n.name;
+  const std::string& camera = scene.cameras[size_t(n.camera)].name;
+  if (!camera.empty() && camera != n.name) label += " (" + camera + ")";
+  return label;
 }
 
 }  // namespace hipr

@@ -47,6 +47,12 @@ class EditReader {
     return out;
   }
 
+  float number(const char* key) const {
+    const auto v = numbers(m_edit[key], key);
+    if (v.size() != 1) fail(std::string("\"") + key + "\" needs one number");
+    return v[0];
+  }
+
   std::optional<glm::vec3> vec3(const char* key) const {
     if (!m_edit.contains(key)) return std::nullopt;
     const auto v = numbers(m_edit[key], key);
@@ -214,10 +220,23 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
     return VisibilityEdit{r.string("node"), r.edit()["visible"].get<bool>()};
   }
   if (op == "camera") {
-    r.only_keys({"op", "translate", "matrix"});
+    r.only_keys({"op", "translate", "matrix", "use", "aperture", "focus_distance"});
     CameraEdit e{r.vec3("translate"), r.matrix()};
-    if (e.translate.has_value() == e.matrix.has_value())
-      r.fail("a camera edit needs exactly one of \"translate\", \"matrix\"");
+    if (r.edit().contains("use")) e.use = r.string("use");
+    if (r.edit().contains("aperture")) e.aperture_radius = r.number("aperture");
+    if (r.edit().contains("focus_distance")) e.focus_distance = r.number("focus_distance");
+    if (e.translate && e.matrix)
+      r.fail("a camera edit takes \"translate\" or \"matrix\", not both");
+    if (e.use && (e.translate || e.matrix || e.aperture_radius || e.focus_distance))
+      r.fail("\"use\" (switching cameras) goes alone in its camera edit");
+    if (!e.translate && !e.matrix && !e.use && !e.aperture_radius && !e.focus_distance)
+      r.fail(
+          "a camera edit needs \"translate\", \"matrix\", \"use\", \"aperture\" or "
+          "\"focus_distance\"");
+    if (e.aperture_radius && !(*e.aperture_radius >= 0.0f && *e.aperture_radius <= 1e6f))
+      r.fail("\"aperture\" (the lens radius) must be between 0 and 1e6");
+    if (e.focus_distance && !(*e.focus_distance > 0.0f && *e.focus_distance <= 1e12f))
+      r.fail("\"focus_distance\" must be above 0 and at most 1e12");
     return e;
   }
   if (op == "environment") {

@@ -45,6 +45,25 @@ void move_node(glm::mat4& local, const std::optional<glm::vec3>& translate,
     local[3] += glm::vec4(*translate, 0.0f);
 }
 
+// What apply_edit refuses of a camera edit: a `use` that names no camera node in the scene,
+// a lens out of range.
+void check_camera_edit(const Scene& scene, const CameraEdit& e) {
+  if (e.translate && e.matrix)
+    throw InputError("a camera edit moves by translate or matrix, not both");
+  if (e.use && (e.translate || e.matrix || e.aperture_radius || e.focus_distance))
+    throw InputError("a camera edit that switches cameras (\"use\") changes nothing else");
+  if (e.use) {
+    const size_t node = find_node(scene, *e.use);
+    const std::vector<uint32_t> cameras = scene.camera_nodes();
+    if (std::find(cameras.begin(), cameras.end(), uint32_t(node)) == cameras.end())
+      throw InputError("camera: node '" + *e.use + "' is not a camera in the scene");
+  }
+  if (e.aperture_radius && !(*e.aperture_radius >= 0.0f && *e.aperture_radius <= 1e6f))
+    throw InputError("camera: the aperture radius must be between 0 and 1e6");
+  if (e.focus_distance && !(*e.focus_distance > 0.0f && *e.focus_distance <= 1e12f))
+    throw InputError("camera: the focus distance must be above 0 and at most 1e12");
+}
+
 // What apply_edit refuses of an environment edit (but a file that cannot be read): without a
 // source it changes the current environment, so there must be one; the sun needs the sky.
 void check_environment_edit(const Scene& scene, const EnvironmentEdit& e) {
@@ -113,8 +132,15 @@ struct Applier {
   }
 
   void operator()(const CameraEdit& e) const {
-    // No camera in the file: materialize the default one so the edit has something to move.
-    move_node(scene.nodes[pin_default_camera(scene)].local, e.translate, e.matrix);
+    check_camera_edit(scene, e);
+    if (e.use) scene.active_camera = int(find_node(scene, *e.use));
+    if (!e.translate && !e.matrix && !e.aperture_radius && !e.focus_distance) return;
+    // No camera in the file: materialize the default one so the edit has something to change.
+    const size_t node = pin_default_camera(scene);
+    if (e.translate || e.matrix) move_node(scene.nodes[node].local, e.translate, e.matrix);
+    Camera& camera = scene.cameras[size_t(scene.nodes[node].camera)];
+    if (e.aperture_radius) camera.aperture_radius = *e.aperture_radius;
+    if (e.focus_distance) camera.focus_distance = *e.focus_distance;
   }
 
   void operator()(const EnvironmentEdit& e) const {
@@ -184,12 +210,20 @@ struct Inverter {
     return VisibilityEdit{e.node, scene.nodes[find_node(scene, e.node)].visible};
   }
 
-  Edit operator()(const CameraEdit&) const {
+  Edit operator()(const CameraEdit& e) const {
+    check_camera_edit(scene, e);
     // Without a camera node the edit creates one holding the default camera: restoring that
-    // matrix renders the same view.
+    // matrix (and the default's pinhole) renders the same view.
     const int node = scene.camera_node();
-    return CameraEdit{std::nullopt, node >= 0 ? scene.nodes[size_t(node)].local
-                                              : default_view(scene).camera_to_world};
+    CameraEdit inverse;
+    if (e.use) inverse.use = "#" + std::to_string(node);
+    const Camera camera = resolve_camera(scene);
+    if (e.translate || e.matrix)
+      inverse.matrix =
+          node >= 0 ? scene.nodes[size_t(node)].local : default_view(scene).camera_to_world;
+    if (e.aperture_radius) inverse.aperture_radius = camera.aperture_radius;
+    if (e.focus_distance) inverse.focus_distance = camera.focus_distance;
+    return inverse;
   }
 
   Edit operator()(const EnvironmentEdit& e) const {

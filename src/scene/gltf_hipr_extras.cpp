@@ -77,4 +77,18 @@ void apply_light_extras(const tinygltf::Value& extras, PunctualLight& light,
   }
 }
 
+void apply_lens_extras(const tinygltf::Value& extras, Camera& camera, const std::string& what) {
+  const tinygltf::Value* lens = member(extras, kLensExtras, what);
+  if (!lens) return;
+  for (const std::string& name : lens->Keys()) {
+    const std::string where = what + ": extras." + kLensExtras + "." + name;
+    if (name == "aperture_radius")
+      camera.aperture_radius = numbers(lens->Get(name), 1, 0.0f, 1e6f, where)[0];
+    else if (name == "focus_distance")
+      camera.focus_distance = numbers(lens->Get(name), 1, 1e-30f, 1e12f, where)[0];
+    else
+      throw InputError(where + " is not a lens parameter (aperture_radius, focus_distance)");
+  }
+}
+
 }  // namespace hipr::gltf

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "scene/default_camera.h"
+#include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_node_transform.h"
 
 namespace hipr::gltf {
@@ -92,17 +93,29 @@ void write_visibility(Json& node, bool visible) {
   });
 }
 
+// The thin lens, in extras (glTF cameras are pinholes): written while it is open.
+void write_lens(Json& json, const Camera& camera) {
+  erase_extra(json, kLensExtras);
+  if (camera.aperture_radius > 0.0f)
+    set_extra(json, kLensExtras,
+              {{"aperture_radius", json_number(camera.aperture_radius)},
+               {"focus_distance", json_number(camera.focus_distance)}},
+              "camera " + camera.name);
+}
+
 Json new_camera(const Camera& camera) {
   Json perspective = {{"yfov", json_number(camera.yfov)}, {"znear", json_number(camera.znear)}};
   Json out = Json::object();
   if (!camera.name.empty()) out["name"] = camera.name;
   out["type"] = "perspective";
   out["perspective"] = std::move(perspective);
+  write_lens(out, camera);
   return out;
 }
 
-// A perspective camera's field of view and near plane, should the scene's differ.
+// A perspective camera's field of view and near plane, should the scene's differ; its lens.
 void write_camera(Json& json, const Camera& camera) {
+  if (json.is_object()) write_lens(json, camera);
   if (!json.is_object() || json.value("type", "") != "perspective")
     return;  // orthographic: loaded as a fixed fov
   edit_object(json, "perspective", [&](Json& p) {

@@ -142,17 +142,25 @@ std::vector<Instance> Scene::instances() const {
   return result;
 }
 
-int Scene::camera_node() const {
+std::vector<uint32_t> Scene::camera_nodes() const {
   // Depth-first in scene order, so "the first camera" is what a glTF viewer would pick.
+  std::vector<uint32_t> found;
   std::vector<uint32_t> stack(root_nodes.rbegin(), root_nodes.rend());
   while (!stack.empty()) {
     const uint32_t index = stack.back();
     stack.pop_back();
-    if (nodes[index].camera >= 0) return int(index);
+    if (nodes[index].camera >= 0) found.push_back(index);
     const auto& kids = children[index];
     stack.insert(stack.end(), kids.rbegin(), kids.rend());
   }
-  return -1;
+  return found;
+}
+
+int Scene::camera_node() const {
+  const std::vector<uint32_t> all = camera_nodes();
+  for (uint32_t node : all)
+    if (int(node) == active_camera) return active_camera;
+  return all.empty() ? -1 : int(all.front());
 }
 
 std::vector<bool> Scene::reachable_nodes() const {

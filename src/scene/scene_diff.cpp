@@ -181,8 +181,14 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
 
   const Camera old_camera = resolve_camera(before);
   const Camera new_camera = resolve_camera(after);
-  changes.camera = old_camera.camera_to_world != new_camera.camera_to_world ||
-                   old_camera.yfov != new_camera.yfov;
+  changes.camera =
+      old_camera.camera_to_world != new_camera.camera_to_world ||
+      old_camera.yfov != new_camera.yfov ||
+      old_camera.aperture_radius != new_camera.aperture_radius ||
+      (new_camera.aperture_radius > 0.0f && old_camera.focus_distance != new_camera.focus_distance);
+  // Reprojection maps each pixel's surface through pinholes: a lens open on either side blurs
+  // what it would carry over, so such a change restarts the image (docs/method.md, "Cameras").
+  changes.lens = old_camera.aperture_radius > 0.0f || new_camera.aperture_radius > 0.0f;
   if (changes.camera) changes.camera_before = old_camera;
   if (changes.camera) linear = false;
 
@@ -219,6 +225,7 @@ Scene diff_snapshot(const Scene& scene) {
   s.lights = scene.lights;
   s.cameras = scene.cameras;
   s.default_camera = scene.default_camera;
+  s.active_camera = scene.active_camera;
   s.root_nodes = scene.root_nodes;
   s.children = scene.children;
   s.loaded_node_count = scene.loaded_node_count;

@@ -187,6 +187,7 @@ class Converter {
                   " is orthographic; rendered as a 45-degree perspective camera");
         camera.yfov = 0.785398f;
       }
+      gltf::apply_lens_extras(source.extras, camera, object("camera", i, source.name));
       m_scene.cameras.push_back(camera);
     }
   }
@@ -388,6 +389,7 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   scene.loaded_node_count = scene.nodes.size();
   scene.loaded_light_count = scene.lights.size();
   for (const Mesh& mesh : scene.meshes) scene.loaded_mesh_revisions.push_back(mesh.revision);
+  if (!options.camera.empty()) scene.active_camera = int(find_camera_node(scene, options.camera));
   fix_default_camera(scene);  // the view as loaded: edits move objects, not it
   const std::string choice = options.environment.string();
   const SceneLighting lighting = scene_lighting(scene);

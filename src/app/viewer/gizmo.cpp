@@ -183,7 +183,8 @@ glm::mat4 GizmoDrag::local_at(glm::vec2 mouse, bool snap) {
     float radians = m_axis_toward_eye ? -m_turned : m_turned;
     if (snap) radians = glm::radians(snapped(glm::degrees(radians), kSnapDegrees));
     const glm::vec3 o = m_screen.origin_world;
-    world_change = glm::translate(glm::mat4(1.0f), o) * glm::rotate(glm::mat4(1.0f), radians, axis) *
+    world_change = glm::translate(glm::mat4(1.0f), o) *
+                   glm::rotate(glm::mat4(1.0f), radians, axis) *
                    glm::translate(glm::mat4(1.0f), -o);
   }
   // W' = change * P * L, and L' = P^-1 * W'.

@@ -37,8 +37,8 @@ struct ViewProjection {
 struct GizmoScreen {
   glm::vec3 origin_world{0.0f};
   glm::vec2 origin{0.0f};
-  std::array<glm::vec3, 3> axes{};  // unit world directions of the handles
-  std::array<glm::vec2, 3> tips{};  // the handles' ends
+  std::array<glm::vec3, 3> axes{};              // unit world directions of the handles
+  std::array<glm::vec2, 3> tips{};              // the handles' ends
   std::array<std::vector<glm::vec2>, 3> rings;  // rotate mode: each axis's circle, closed
   float world_length = 1.0f;                    // a handle's length in world units
   float handle_pixels = 80.0f;                  // and in window pixels, seen square-on

@@ -265,6 +265,7 @@ void draw_side_panel(Session& session, ViewerState& state, float x, float height
   display_section(state);
   scene_tree_section(session, state);
   selection_section(session, state);
+  camera_section(session, state);
   lights_section(session, state);
   environment_section(session, state);
   hipr_section(session, state);

@@ -33,5 +33,6 @@ void scene_tree_section(Session& session, ViewerState& state);
 void selection_section(Session& session, ViewerState& state);
 void lights_section(Session& session, ViewerState& state);
 void environment_section(Session& session, ViewerState& state);
+void camera_section(Session& session, ViewerState& state);  // camera_panel.cpp
 
 }  // namespace hipr::viewer

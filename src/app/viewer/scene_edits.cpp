@@ -1,5 +1,8 @@
 #include "app/viewer/scene_edits.h"
 
+#include <cctype>
+#include <filesystem>
+
 #include "core/error.h"
 #include "scene/default_camera.h"
 
@@ -77,6 +80,32 @@ void delete_selection(Session& session, ViewerState& state) {
   if (!node) return;
   if (try_edit(session, state, DeleteEdit{node_reference(session.scene(), *node)}))
     state.selected_node = -1;
+}
+
+void drop_files(Session& session, ViewerState& state, const std::vector<std::string>& paths,
+                bool shift) {
+  bool opened = false;
+  for (const std::string& path : paths) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".gltf" && ext != ".glb") {
+      state.error("dropped " + path + ": not a glTF scene (.gltf or .glb)");
+      continue;
+    }
+    if (shift) {
+      if (try_edit(session, state, ImportEdit{path, "", glm::vec3(0.0f)}))
+        state.info("imported " + path);
+      continue;
+    }
+    if (opened) {
+      state.info("dropped " + path + ": one scene opens at a time (Shift imports them all)");
+      continue;
+    }
+    state.open_path = path;
+    state.request_open = true;
+    state.open_confirmed = !session.history().unsaved();
+    opened = true;
+  }
 }
 
 }  // namespace hipr::viewer

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/viewer/session.h"
 #include "app/viewer/viewer_state.h"
@@ -21,6 +22,12 @@ std::optional<uint32_t> selected_node(const Session& session, ViewerState& state
 // size), which becomes the selection. Delete: the selected node goes, and the selection with it.
 void duplicate_selection(Session& session, ViewerState& state);
 void delete_selection(Session& session, ViewerState& state);
+
+// Files dropped on the window: a .gltf/.glb opens (as the File panel's Open does: unsaved
+// edits ask first), or with Shift held is imported into the scene as a new object (an undoable
+// edit, one per file). Anything else is a message. Only the first file opens.
+void drop_files(Session& session, ViewerState& state, const std::vector<std::string>& paths,
+                bool shift);
 
 // How edits name a node or material: its name when that finds it, else "#index".
 std::string node_reference(const Scene& scene, uint32_t node);

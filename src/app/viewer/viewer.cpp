@@ -310,6 +310,8 @@ int Viewer::run() {
       resize(size);
 
     const std::vector<KeyPress> keys = m_window.take_key_presses();
+    for (const Window::Drop& drop : m_window.take_drops())
+      drop_files(*m_session, m_state, drop.paths, drop.shift);
     m_ui.new_frame(keys);
     run_script(frame_index);
     const ViewLayout view = layout();

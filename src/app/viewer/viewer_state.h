@@ -35,6 +35,7 @@ struct ViewerState {
   // The gizmo over the selection (W move, E rotate, R scale; Q world/local axes).
   GizmoMode gizmo_mode = GizmoMode::Translate;
   GizmoSpace gizmo_space = GizmoSpace::World;
+  bool pick_focus = false;  // the next click on the image sets the camera's focus distance
   // Attention-guided rendering (docs/method.md#focus): HiPR starts from the selected object
   // (on by default) and, when asked, from a disc around the cursor.
   bool focus_selection = true;

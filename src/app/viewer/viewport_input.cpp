@@ -192,6 +192,17 @@ void ViewportInput::update(Session& session, ViewerState& state, const ViewLayou
       m_gizmo.emplace(*handles, state.gizmo_mode, handle, mouse, scene.nodes[m_node].local,
                       parent_world(scene, m_node), resolve_camera(scene).camera_to_world[3]);
       m_drag = Drag::Gizmo;
+    } else if (left && !io.KeyAlt && state.pick_focus) {
+      // Click to focus: the surface's depth along the view axis becomes the focus distance.
+      if (const auto pixel = layout.to_render(mouse)) {
+        const Renderer::PixelHit hit = session.pick(pixel->x, pixel->y);
+        if (hit.instance != UINT32_MAX && hit.depth > 0.0f) {
+          CameraEdit edit;
+          edit.focus_distance = hit.depth;
+          try_edit(session, state, edit);
+        }
+      }
+      state.pick_focus = false;
     } else if (left && !io.KeyAlt) {
       if (const auto pixel = layout.to_render(mouse)) {
         const Renderer::PixelHit hit = session.pick(pixel->x, pixel->y);

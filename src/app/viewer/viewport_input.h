@@ -5,6 +5,7 @@
 //                    (Ctrl snaps); elsewhere: move the object under the cursor in the view
 //                    plane (one undo step either way)
 //   W / E / R        gizmo: move / rotate / scale;  Q  its axes: world / local
+//   left click after the Camera panel's "click to focus": the focus distance, not a selection
 //   right drag / Alt+left drag   orbit the camera;  middle drag / Shift+right drag   pan
 //   wheel            zoom towards the pivot
 //   arrows, PgUp/PgDn   move the selection along world X (left/right), Z (up/down), Y (page keys);

@@ -38,6 +38,7 @@ Window::Window(const std::string& title, uint32_t width, uint32_t height) {
   }
   glfwSetWindowUserPointer(m_window, this);
   glfwSetKeyCallback(m_window, on_key);  // installed first: the UI library chains to it
+  glfwSetDropCallback(m_window, on_drop);
 }
 
 Window::Window(Headless, uint32_t width, uint32_t height) : m_headless_size{width, height} {}
@@ -50,6 +51,18 @@ void Window::on_key(GLFWwindow* window, int key, int, int action, int mods) {
 }
 
 std::vector<KeyPress> Window::take_key_presses() { return std::exchange(m_keys, {}); }
+
+void Window::on_drop(GLFWwindow* window, int count, const char** paths) {
+  auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+  if (!self || count <= 0) return;
+  Drop drop;
+  for (int i = 0; i < count; ++i) drop.paths.emplace_back(paths[i]);
+  drop.shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+               glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+  self->m_drops.push_back(std::move(drop));
+}
+
+std::vector<Window::Drop> Window::take_drops() { return std::exchange(m_drops, {}); }
 
 Window::~Window() {
   if (headless()) return;

@@ -50,13 +50,21 @@ class Window {
   void set_title(const std::string& title) const;
   // Key presses (and repeats) since the last call, in order.
   std::vector<KeyPress> take_key_presses();
+  // Files dropped on the window since the last call, and whether Shift was held at the drop.
+  struct Drop {
+    std::vector<std::string> paths;
+    bool shift = false;
+  };
+  std::vector<Drop> take_drops();
 
  private:
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void on_drop(GLFWwindow* window, int count, const char** paths);
 
   GLFWwindow* m_window = nullptr;
   VkExtent2D m_headless_size{0, 0};
   std::vector<KeyPress> m_keys;
+  std::vector<Drop> m_drops;
 };
 
 }  // namespace hipr::viewer
