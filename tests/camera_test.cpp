@@ -91,8 +91,7 @@ TEST(Cameras, SwitchingAndLensEditsConvergeBitForBit) {
       const ChangeSet changes = diff_scenes(before, scene);
       EXPECT_TRUE(changes.camera) << describe(edit);
       scheduler.on_edit(scene, changes);
-      for (int s = 0; s < 10000 && scheduler.work_since_edit() < double(spp); ++s)
-        scheduler.step();
+      for (int s = 0; s < 10000 && scheduler.work_since_edit() < double(spp); ++s) scheduler.step();
       EXPECT_EQ(scheduler.displayed_image().rgb,
                 test::full_frame_display(scene, settings(), spp).rgb)
           << policy_name(policy) << " " << describe(edit);

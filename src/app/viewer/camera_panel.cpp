@@ -18,8 +18,7 @@ void camera_section(Session& session, ViewerState& state) {
   if (cameras.empty()) ImGui::TextDisabled("the default view (the file has no camera)");
   for (size_t i = 0; i < cameras.size(); ++i) {
     const std::string label = std::to_string(i) + " " + camera_label(scene, cameras[i]);
-    if (ImGui::RadioButton(label.c_str(), int(cameras[i]) == active) &&
-        int(cameras[i]) != active) {
+    if (ImGui::RadioButton(label.c_str(), int(cameras[i]) == active) && int(cameras[i]) != active) {
       CameraEdit edit;
       edit.use = "#" + std::to_string(cameras[i]);
       ui_edit(session, state, edit);
@@ -34,8 +33,9 @@ void camera_section(Session& session, ViewerState& state) {
     edit.aperture_radius = aperture;
     ui_edit(session, state, edit);
   }
-  tooltip("Depth of field: 0 is a pinhole (everything sharp); larger blurs what is off the "
-          "focus distance more. An edit script's camera \"aperture\".");
+  tooltip(
+      "Depth of field: 0 is a pinhole (everything sharp); larger blurs what is off the "
+      "focus distance more. An edit script's camera \"aperture\".");
   float focus = camera.focus_distance;
   if (ImGui::DragFloat("focus distance", &focus, 0.002f * radius, 1e-4f * radius, 1e6f, "%.3f",
                        ImGuiSliderFlags_AlwaysClamp)) {
@@ -45,8 +45,9 @@ void camera_section(Session& session, ViewerState& state) {
   }
   if (ImGui::Button(state.pick_focus ? "click the image..." : "click to focus"))
     state.pick_focus = !state.pick_focus;
-  tooltip("The next click on the image sets the focus distance to the surface there (its depth "
-          "along the view axis), instead of selecting.");
+  tooltip(
+      "The next click on the image sets the focus distance to the surface there (its depth "
+      "along the view axis), instead of selecting.");
 }
 
 }  // namespace hipr::viewer
