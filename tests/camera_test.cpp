@@ -57,9 +57,9 @@ TEST(Cameras, FoundByIndexOrNameAndListedInSceneOrder) {
 // exactly the full-frame render of the edited scene.
 TEST(Cameras, SwitchingAndLensEditsConvergeBitForBit) {
   const uint32_t spp = 3;
-  for (const auto [policy, display] : {std::pair{Policy::Hipr, DisplayRule::Difference},
-                                       std::pair{Policy::Hipr, DisplayRule::Blend},
-                                       std::pair{Policy::Full, DisplayRule::Immediate}}) {
+  for (const auto& [policy, display] : {std::pair{Policy::Hipr, DisplayRule::Difference},
+                                        std::pair{Policy::Hipr, DisplayRule::Blend},
+                                        std::pair{Policy::Full, DisplayRule::Immediate}}) {
     Scene scene = two_camera_box();
     Renderer renderer(test::context(), scene, settings());
     ImageRGB unused;

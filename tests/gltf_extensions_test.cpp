@@ -2,6 +2,8 @@
 // modes, KHR_texture_transform, TEXCOORD_1 and the handling of unsupported extensions.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <cmath>
 
 #include "core/error.h"
@@ -289,6 +291,43 @@ TEST(GltfExtensionSupport, UnknownOptionalExtensionWarnsOncePerExtension) {
       std::string::npos);
   for (const std::string& line : lines)
     EXPECT_EQ(line.rfind("hipr: warning: scene.gltf: ", 0), 0u) << line;
+}
+
+// KHR_materials_unlit: the base colour (factor and texture) shown as emission, nothing reflected.
+TEST(GltfExtensions, UnlitEmitsItsBaseColourAndReflectsNothing) {
+  const Loaded l = load_with({{"pbrMetallicRoughness",
+                               {{"baseColorFactor", {0.2, 0.4, 0.6, 1.0}},
+                                {"baseColorTexture", texture(0)},
+                                {"metallicFactor", 1.0},
+                                {"metallicRoughnessTexture", texture(1)}}},
+                              {"normalTexture", texture(1)},
+                              {"extensions", {{"KHR_materials_unlit", json::object()}}}},
+                             {"KHR_materials_unlit"});
+  const MaterialParameters& p = l.scene.materials[0].params;
+  EXPECT_EQ(p.emission_color, glm::vec3(0.2f, 0.4f, 0.6f));
+  EXPECT_EQ(p.emission_luminance, 1.0f);
+  EXPECT_NE(p.base_color_texture, kNoTexture);
+  EXPECT_EQ(p.emission_texture, p.base_color_texture);
+  EXPECT_EQ(p.base_weight, 0.0f);
+  EXPECT_EQ(p.specular_weight, 0.0f);
+  EXPECT_EQ(p.base_metalness, 0.0f);
+  EXPECT_EQ(p.metallic_roughness_texture, kNoTexture);
+  EXPECT_EQ(p.normal_texture, kNoTexture);
+  EXPECT_TRUE(l.warnings.empty()) << l.warnings;
+}
+
+// README's table of extensions is the loader's, row for row.
+TEST(GltfExtensionSupport, ReadmeTableIsTheLoadersTable) {
+  std::ifstream readme(fs::path(HIPR_ASSETS_DIR) / ".." / ".." / "README.md");
+  ASSERT_TRUE(readme) << "README.md not found";
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(readme, line);)
+    if (line.rfind("  | `", 0) == 0) rows.push_back(line);
+  std::vector<std::string> expected;
+  for (const GltfExtension& e : gltf_extension_table())
+    expected.push_back("  | `" + e.name + "` | " + e.meaning + " |");
+  EXPECT_EQ(rows, expected);
+  EXPECT_GE(expected.size(), 20u);
 }
 
 TEST(GltfExtensionSupport, EveryImplementedExtensionMayBeRequired) {

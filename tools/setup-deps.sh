@@ -18,6 +18,7 @@ packages=(
   libvulkan-dev vulkan-validationlayers vulkan-tools
   glslang-dev glslang-tools spirv-tools
   libglfw3-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+  libdraco-dev libmeshoptimizer-dev
   libopenimageio-dev openimageio-tools libimath-dev libopenexr-dev
   libimgui-dev libcli11-dev libgtest-dev
   xvfb xauth python3-matplotlib
@@ -34,14 +35,16 @@ have_all() {
   dpkg --compare-versions "$mesa" ge 23
 }
 
-# The Khronos glTF-Validator (npm package gltf-validator, pinned by tools/package-lock.json) for
-# the tests of saved scenes; they skip without it, so any failure here only warns. node and npm
-# come from Debian's packages when the machine has none (a node already installed is kept).
+# The Khronos glTF-Validator (npm package gltf-validator) for the tests of saved scenes, and
+# glTF-Transform (@gltf-transform/cli) that writes the compressed copies the loader's tests read,
+# both pinned by tools/package-lock.json; the tests skip without them, so a failure only warns.
+# node and npm come from Debian's packages when the machine has none (one installed is kept).
 install_gltf_validator() {
   local tools
   tools="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-  if [ -f "$tools/node_modules/gltf-validator/package.json" ]; then
-    echo "setup-deps: gltf-validator present"
+  if [ -f "$tools/node_modules/gltf-validator/package.json" ] &&
+    [ -f "$tools/node_modules/@gltf-transform/cli/package.json" ]; then
+    echo "setup-deps: gltf-validator and gltf-transform present"
     return 0
   fi
   if ! command -v node >/dev/null || ! command -v npm >/dev/null; then

@@ -30,8 +30,14 @@ struct SceneLoadOptions {
 // problems that have a sensible fallback (a missing texture image) are logged as warnings.
 Scene load_scene(const std::filesystem::path& path, const SceneLoadOptions& options = {});
 
-// glTF extensions the loader understands (used fully or in part); a scene that *requires* any
-// other is refused.
+// A glTF extension the loader understands (used fully or in part) and what hipr makes of it.
+struct GltfExtension {
+  std::string name;
+  std::string meaning;  // one line: what it maps to (README, "glTF extensions")
+};
+const std::vector<GltfExtension>& gltf_extension_table();
+
+// The names of gltf_extension_table(); a scene that *requires* any other is refused.
 const std::vector<std::string>& supported_gltf_extensions();
 
 }  // namespace hipr

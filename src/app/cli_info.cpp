@@ -101,9 +101,13 @@ int run_info(const InfoOptions& o) {
                 camera_label(scene, cameras[i]).c_str(), double(glm::degrees(c.yfov)), lens.c_str(),
                 int(cameras[i]) == camera ? " (used)" : "");
   }
+  // Each extension the file uses, and whether hipr reads it (README, "glTF extensions").
   std::string extensions;
-  for (const std::string& e : scene.extensions_used)
-    extensions += (extensions.empty() ? "" : ", ") + e;
+  const std::vector<std::string>& supported = supported_gltf_extensions();
+  for (const std::string& e : scene.extensions_used) {
+    const bool read = std::find(supported.begin(), supported.end(), e) != supported.end();
+    extensions += (extensions.empty() ? "" : ", ") + e + (read ? " (used)" : " (ignored)");
+  }
   std::printf("extensions %s\n", extensions.empty() ? "none" : extensions.c_str());
 
   // The kernel is compiled with the features the scene needs and nothing else (kernel_features.h).

@@ -1,5 +1,6 @@
 #include "scene/glb_container.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/error.h"
@@ -51,6 +52,27 @@ void check_glb_container(const std::vector<unsigned char>& bytes, const std::str
     ++chunk;
   }
   if (chunk == 0) fail("no JSON chunk");
+}
+
+std::vector<unsigned char> glb_with_json(const std::vector<unsigned char>& bytes,
+                                         const std::string& json) {
+  const size_t old_end = 20 + size_t(read_u32(bytes, 12));
+  std::string chunk = json;
+  chunk.resize((chunk.size() + 3) / 4 * 4,
+               ' ');  // chunks are 4-byte aligned, JSON pads with spaces
+  const size_t total = 20 + chunk.size() + (bytes.size() - old_end);
+  if (total > UINT32_MAX) throw InputError("a GLB of more than 4 GiB cannot be written");
+  std::vector<unsigned char> out(total);
+  const auto put = [&](size_t at, uint32_t value) { std::memcpy(out.data() + at, &value, 4); };
+  put(0, kMagic);
+  put(4, 2);
+  put(8, uint32_t(total));
+  put(12, uint32_t(chunk.size()));
+  put(16, kChunkJson);
+  std::memcpy(out.data() + 20, chunk.data(), chunk.size());
+  std::copy(bytes.begin() + std::ptrdiff_t(old_end), bytes.end(),
+            out.begin() + std::ptrdiff_t(20 + chunk.size()));
+  return out;
 }
 
 }  // namespace hipr::gltf

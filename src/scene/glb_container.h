@@ -11,4 +11,9 @@ void check_glb_container(const std::vector<unsigned char>& bytes, const std::str
 
 bool looks_like_glb(const std::vector<unsigned char>& bytes);
 
+// The same container (checked already) with its JSON chunk replaced by `json`; the chunks after
+// it are kept byte for byte.
+std::vector<unsigned char> glb_with_json(const std::vector<unsigned char>& bytes,
+                                         const std::string& json);
+
 }  // namespace hipr::gltf

@@ -114,6 +114,30 @@ void apply_extension_rules(const tinygltf::Material& m, MaterialParameters& p) {
   }
 }
 
+// KHR_materials_unlit: the surface shows its base colour whatever the light. A path tracer's
+// nearest honest reading is a surface that emits its base colour (factor x texture, one nit per
+// unit, as a display shows it at exposure 0) and reflects nothing: seen directly it is exactly
+// its colour, and like any emitter it also lights what faces it (dimly: <= 1 nit). The factors
+// here (the writer maps files with them), the textures in apply_unlit_textures.
+void apply_unlit_factors(MaterialParameters& p) {
+  p.emission_color = p.base_color;
+  p.emission_luminance = 1.0f;
+  p.base_weight = 0.0f;
+  p.base_metalness = 0.0f;
+  p.specular_weight = 0.0f;
+  p.transmission_weight = 0.0f;
+  p.subsurface_weight = 0.0f;
+  p.coat_weight = 0.0f;
+  p.fuzz_weight = 0.0f;
+  p.thin_film_weight = 0.0f;
+}
+
+void apply_unlit_textures(MaterialParameters& p) {
+  p.emission_texture = p.base_color_texture;
+  p.metallic_roughness_texture = kNoTexture;
+  p.normal_texture = kNoTexture;
+}
+
 }  // namespace
 
 MaterialParameters map_material_factors(const tinygltf::Material& m, const std::string& what) {
@@ -130,6 +154,7 @@ MaterialParameters map_material_factors(const tinygltf::Material& m, const std::
   apply_alpha_mode(m, p, what);
   apply_factor_rows(m, p);
   apply_extension_rules(m, p);
+  if (extension(m, "KHR_materials_unlit")) apply_unlit_factors(p);
   if (m.doubleSided) p.flags |= kMaterialDoubleSided;
   return p;
 }
@@ -156,6 +181,7 @@ Material convert_material(const tinygltf::Material& m, size_t index, TextureTabl
   p.normal_texture = textures.get(texture_reference(m.normalTexture), false, what);
   p.emission_texture = textures.get(texture_reference(m.emissiveTexture), true, what);
   apply_texture_rows(m, p, textures, what);
+  if (extension(m, "KHR_materials_unlit")) apply_unlit_textures(p);
   // What glTF cannot say, saved by save_scene (gltf_hipr_extras.h), overrides the mapping.
   apply_openpbr_extras(m.extras, kOpenPbrExtras, p, what);
   return out;

@@ -94,6 +94,17 @@ void refuse_source_file(const SourceDocument& source, const fs::path& path,
   }
 }
 
+// A buffer EXT_meshopt_compression decodes into: it may have no bytes at all.
+bool is_meshopt_fallback(const Json& buffer) {
+  if (!buffer.is_object() || !buffer.contains("extensions") || !buffer["extensions"].is_object())
+    return false;
+  const Json& extensions = buffer["extensions"];
+  if (!extensions.contains("EXT_meshopt_compression")) return false;
+  const Json& ext = extensions["EXT_meshopt_compression"];
+  return ext.is_object() && ext.contains("fallback") && ext["fallback"].is_boolean() &&
+         ext["fallback"].get<bool>();
+}
+
 }  // namespace
 
 std::vector<fs::path> source_files(const SourceDocument& source) {
@@ -127,10 +138,18 @@ void write_glb(const SourceDocument& source, Json doc, const fs::path& path) {
     has_bin = true;
     // Further buffers join the chunk (in a GLB they would need URIs, and a data: URI there is
     // what validators warn about): their views move to buffer 0, at the offset each lands at
-    // (4-aligned: no component is larger, so every accessor stays aligned).
+    // (4-aligned: no component is larger, so every accessor stays aligned). A meshopt fallback
+    // buffer has no bytes to join (EXT_meshopt_compression decodes into it): it stays a buffer.
     std::vector<size_t> base(doc["buffers"].size(), 0);
+    std::vector<size_t> index(doc["buffers"].size(), 0);
+    Json kept = Json::array({first});
     for (size_t i = 1; i < doc["buffers"].size(); ++i) {
       const Json& buffer = doc["buffers"][i];
+      if (is_meshopt_fallback(buffer) && !buffer.contains("uri")) {
+        index[i] = kept.size();
+        kept.push_back(buffer);
+        continue;
+      }
       if (!buffer.contains("uri") || !buffer["uri"].is_string())
         throw InputError(source.name + ": buffer " + std::to_string(i) + " has no uri");
       std::vector<unsigned char> bytes =
@@ -143,16 +162,25 @@ void write_glb(const SourceDocument& source, Json doc, const fs::path& path) {
       bin.insert(bin.end(), bytes.begin(), bytes.end());
       grown = true;
     }
+    const auto move_reference = [&](Json& object, const char* offset_key) {
+      if (!object.is_object() || !object.contains("buffer") ||
+          !object["buffer"].is_number_unsigned())
+        return;
+      const size_t buffer = object["buffer"].get<size_t>();
+      if (buffer == 0 || buffer >= base.size()) return;
+      object["buffer"] = index[buffer];
+      if (index[buffer] == 0)
+        object[offset_key] = base[buffer] + object.value(offset_key, size_t(0));
+    };
     if (doc["buffers"].size() > 1 && has_array(doc, "bufferViews"))
       for (Json& view : doc["bufferViews"]) {
-        if (!view.is_object() || !view.contains("buffer") || !view["buffer"].is_number_unsigned())
-          continue;
-        const size_t buffer = view["buffer"].get<size_t>();
-        if (buffer == 0 || buffer >= base.size()) continue;
-        view["buffer"] = 0;
-        view["byteOffset"] = base[buffer] + view.value("byteOffset", size_t(0));
+        move_reference(view, "byteOffset");
+        // The compressed bytes a meshopt bufferView decodes from live in a buffer too.
+        if (view.is_object() && view.contains("extensions") && view["extensions"].is_object() &&
+            view["extensions"].contains("EXT_meshopt_compression"))
+          move_reference(view["extensions"]["EXT_meshopt_compression"], "byteOffset");
       }
-    doc["buffers"].erase(doc["buffers"].begin() + 1, doc["buffers"].end());
+    doc["buffers"] = std::move(kept);
   }
   if (has_array(doc, "images")) {
     for (size_t i = 0; i < doc["images"].size(); ++i) {

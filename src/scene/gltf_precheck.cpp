@@ -12,22 +12,41 @@
 
 namespace hipr {
 
-const std::vector<std::string>& supported_gltf_extensions() {
-  static const std::vector<std::string> list = {
-      "KHR_lights_punctual",
-      "KHR_materials_emissive_strength",
-      "KHR_materials_specular",
-      "KHR_materials_ior",
-      "KHR_materials_transmission",
-      "KHR_materials_volume",
-      "KHR_materials_clearcoat",
-      "KHR_materials_sheen",
-      "KHR_materials_iridescence",
-      "KHR_materials_anisotropy",
-      "KHR_materials_diffuse_transmission",
-      "KHR_texture_transform",
-      "KHR_node_visibility",
+const std::vector<GltfExtension>& gltf_extension_table() {
+  static const std::vector<GltfExtension> table = {
+      {"KHR_materials_emissive_strength", "emission_luminance (nits) times emissiveFactor"},
+      {"KHR_materials_specular", "specular_weight, specular_color (factors and textures)"},
+      {"KHR_materials_ior", "specular_ior"},
+      {"KHR_materials_transmission", "transmission_weight (factor and texture)"},
+      {"KHR_materials_volume",
+       "thick (absorbing: transmission_color, transmission_depth) or thin-walled"},
+      {"KHR_materials_clearcoat", "coat_weight, coat_roughness, the coat's normal map"},
+      {"KHR_materials_sheen", "fuzz_color, fuzz_roughness"},
+      {"KHR_materials_iridescence", "thin_film_weight, thin_film_thickness, thin_film_ior"},
+      {"KHR_materials_anisotropy", "specular_anisotropy, specular_rotation (and texture)"},
+      {"KHR_materials_diffuse_transmission", "subsurface_weight, subsurface_color (thin)"},
+      {"KHR_materials_unlit",
+       "a surface emitting its base colour (1 nit per unit) that reflects nothing"},
+      {"KHR_texture_transform", "offset, rotation, scale and texCoord of every texture"},
+      {"KHR_lights_punctual", "point, spot and directional lights"},
+      {"KHR_node_visibility", "hidden nodes (and their subtrees) are not rendered"},
+      {"KHR_draco_mesh_compression", "decoded with libdraco at load"},
+      {"EXT_meshopt_compression", "decoded with libmeshoptimizer at load (every mode and filter)"},
+      {"KHR_mesh_quantization", "integer and normalized attributes, dequantized at load"},
+      {"EXT_texture_webp", "WebP images, decoded with OpenImageIO"},
+      {"MSFT_texture_dds", "DDS images, decoded with OpenImageIO"},
+      {"KHR_texture_basisu",
+       "KTX2 images cannot be decoded (no packaged decoder): the fallback image is used"},
   };
+  return table;
+}
+
+const std::vector<std::string>& supported_gltf_extensions() {
+  static const std::vector<std::string> list = [] {
+    std::vector<std::string> names;
+    for (const GltfExtension& e : gltf_extension_table()) names.push_back(e.name);
+    return names;
+  }();
   return list;
 }
 

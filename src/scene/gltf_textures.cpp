@@ -111,27 +111,50 @@ TextureReference texture_reference(const tinygltf::Value& extension, const char*
   return r;
 }
 
+namespace {
+
+// The image a texture shows: a WebP or DDS source (EXT_texture_webp, MSFT_texture_dds; both
+// decoded through OpenImageIO) before the core `source`, which is then the file's fallback. A
+// KTX2 source (KHR_texture_basisu) has no packaged decoder: the fallback is used, and without one
+// the file cannot be shown as its author meant, which is an error rather than a guess.
+int image_source(const tinygltf::Texture& source, int texture, const std::string& what) {
+  for (const char* extension : {"EXT_texture_webp", "MSFT_texture_dds"}) {
+    const auto it = source.extensions.find(extension);
+    if (it != source.extensions.end() && it->second.Has("source") &&
+        it->second.Get("source").IsInt())
+      return it->second.Get("source").GetNumberAsInt();
+  }
+  if (source.source < 0 && source.extensions.count("KHR_texture_basisu"))
+    throw InputError(what + ": texture " + std::to_string(texture) +
+                     " is only in KTX2/Basis Universal (KHR_texture_basisu), which hipr cannot "
+                     "decode: export it with a PNG, JPEG or WebP fallback");
+  return source.source;
+}
+
+}  // namespace
+
 uint32_t TextureTable::image_for(const tinygltf::Texture& source, int texture,
                                  const std::string& what) {
   // A broken or missing image gets its own fallback per texture, so the warning names it once.
-  const bool has_image = source.source >= 0 && size_t(source.source) < m_model.images.size();
-  if (source.source >= 0 && !has_image)
+  const int index = image_source(source, texture, what);
+  const bool has_image = index >= 0 && size_t(index) < m_model.images.size();
+  if (index >= 0 && !has_image)
     throw InputError(what + ": texture " + std::to_string(texture) + " references missing image " +
-                     std::to_string(source.source));
-  const int key = has_image ? source.source : -1 - texture;
+                     std::to_string(index));
+  const int key = has_image ? index : -1 - texture;
   if (const auto it = m_images.find(key); it != m_images.end()) return it->second;
 
   Image image;
   image.name = source.name.empty() ? "texture " + std::to_string(texture) : source.name;
   bool ok = false;
   if (has_image) {
-    const tinygltf::Image& decoded = m_model.images[size_t(source.source)];
+    const tinygltf::Image& decoded = m_model.images[size_t(index)];
     ok = to_rgba8(decoded, image.rgba8);
     image.width = uint32_t(std::max(decoded.width, 0));
     image.height = uint32_t(std::max(decoded.height, 0));
     if (!ok) {
       const std::string where =
-          decoded.uri.empty() ? std::to_string(source.source) : "'" + decoded.uri + "'";
+          decoded.uri.empty() ? std::to_string(index) : "'" + decoded.uri + "'";
       log::warn(what + ": texture image " + where +
                 " could not be read; rendering a magenta checkerboard instead");
     }

@@ -17,9 +17,13 @@
 #include "scene/default_camera.h"
 #include "scene/glb_container.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_draco.h"
 #include "scene/gltf_hipr_extras.h"
+#include "scene/gltf_image_decode.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_node_transform.h"
+#include "scene/gltf_parser_input.h"
 #include "scene/gltf_precheck.h"
 #include "scene/gltf_sandbox.h"
 #include "scene/mesh_processing.h"
@@ -43,6 +47,14 @@ bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* 
     return true;
   };
   size_t& decoded = *static_cast<size_t*>(user);
+  if (gltf::needs_oiio_decoder(bytes, size_t(std::max(size, 0)))) {  // WebP, DDS
+    std::string why;
+    const size_t budget = std::min(gltf::kMaxImagePixels, gltf::kMaxScenePixels - decoded);
+    if (!gltf::decode_with_oiio(image, bytes, size_t(size), budget, gltf::kMaxImageSide, &why))
+      return refuse("could not be decoded: " + why);
+    decoded += size_t(image->width) * size_t(image->height);
+    return true;
+  }
   int w = 0, h = 0, channels = 0;
   if (stbi_info_from_memory(bytes, size, &w, &h, &channels)) {
     if (w > gltf::kMaxImageSide || h > gltf::kMaxImageSide ||
@@ -332,6 +344,8 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   const bool glb = extension == ".glb" || gltf::looks_like_glb(bytes);
   if (glb) gltf::check_glb_container(bytes, name);
   gltf::precheck_json(gltf::json_text(bytes, glb), name);
+  const gltf::ParserInput input = gltf::prepare_parser_input(bytes, glb, name);
+  const std::vector<unsigned char>& parsed = input.rewritten ? *input.rewritten : bytes;
 
   const fs::path folder = fs::absolute(path).parent_path();
   gltf::Sandbox sandbox(folder);
@@ -361,11 +375,11 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   tinygltf::Model model;
   std::string err, warn;
   const std::string base = folder.string();
-  const bool ok = glb ? parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
-                                                    unsigned(bytes.size()), base)
+  const bool ok = glb ? parser.LoadBinaryFromMemory(&model, &err, &warn, parsed.data(),
+                                                    unsigned(parsed.size()), base)
                       : parser.LoadASCIIFromString(&model, &err, &warn,
-                                                   reinterpret_cast<const char*>(bytes.data()),
-                                                   unsigned(bytes.size()), base);
+                                                   reinterpret_cast<const char*>(parsed.data()),
+                                                   unsigned(parsed.size()), base);
   const auto first_line = [](std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
     const size_t newline = text.find('\n');
@@ -381,6 +395,8 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
     start = end + 1;
   }
 
+  gltf::decode_meshopt_views(model, input.fallbacks, name);  // before Draco: it may read them
+  gltf::decode_draco_primitives(model, input.draco_indices, name);
   gltf::validate_all_accessors(model, name);
   gltf::check_scene_elements(model, name);
   Scene scene;

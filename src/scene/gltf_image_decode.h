@@ -1,0 +1,19 @@
+#pragma once
+// Images stb cannot decode but OpenImageIO can (WebP for EXT_texture_webp, DDS for
+// MSFT_texture_dds), read from memory: the bytes may come from a bufferView or a data: URI.
+#include <tiny_gltf.h>
+
+#include <cstddef>
+#include <string>
+
+namespace hipr::gltf {
+
+// Whether the bytes start like a WebP (RIFF....WEBP) or DDS ("DDS ") file.
+bool needs_oiio_decoder(const unsigned char* bytes, size_t size);
+
+// Decodes into `image` as 8-bit with 1 to 4 channels. `max_pixels` bounds the size read from
+// the header before any pixel is decoded. False with `err` set when the image cannot be read.
+bool decode_with_oiio(tinygltf::Image* image, const unsigned char* bytes, size_t size,
+                      size_t max_pixels, int max_side, std::string* err);
+
+}  // namespace hipr::gltf
