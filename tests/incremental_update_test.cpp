@@ -8,6 +8,7 @@
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
+#include "material_variants_support.h"
 #include "render/kernel_features.h"
 #include "render/render_readback.h"
 #include "shaders/shared/abi.h"
@@ -205,6 +206,17 @@ Environment banded_environment() {
 
 // Intensity and rotation reach the kernels through the frame parameters and the light
 // selection table: after the update the renderer matches a fresh upload bit for bit.
+// A variant switch remaps primitives (one to an emissive material): records, BLAS opacity and
+// light tables follow, as a fresh upload of the switched scene has them.
+TEST(IncrementalUpdate, MaterialVariantSwitchesMatchAFreshUpload) {
+  Scene scene = load_scene(test::cornell_box_with_variants(test::temp_dir("variant_update")));
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(2);
+  test::expect_update_matches_fresh(renderer, scene, VariantEdit{"warm"});
+  test::expect_update_matches_fresh(renderer, scene, VariantEdit{"lamp"});
+  test::expect_update_matches_fresh(renderer, scene, VariantEdit{""});
+}
+
 TEST(IncrementalUpdate, EnvironmentEditMatchesAFreshUpload) {
   Scene scene = test::make_furnace_scene(0.5f, glm::vec3(0.0f), 0.8f, 1.0f);
   scene.environment = banded_environment();

@@ -157,6 +157,12 @@ struct DeformEdit {
   std::shared_ptr<const Mesh> restore;
 };
 
+// Shows a KHR_materials_variants variant: its name (or index in `hipr info`'s list), or empty for
+// the primitives' default materials. Every primitive the variant maps takes that material.
+struct VariantEdit {
+  std::string variant;
+};
+
 // What a duplicate, delete or import changes: the hierarchy, the lights and cameras (small,
 // copied whole) and how many meshes, materials, textures and images there are (those only grow).
 struct SceneStructure {
@@ -178,7 +184,7 @@ struct StructureEdit {
 // "emission" edits are material edits restricted to emission keys.
 using Edit = std::variant<TransformEdit, MaterialEdit, LightEdit, VisibilityEdit, CameraEdit,
                           EnvironmentEdit, FocusEdit, DuplicateEdit, DeleteEdit, ImportEdit,
-                          DeformEdit, StructureEdit>;
+                          DeformEdit, StructureEdit, VariantEdit>;
 
 // Whether the edit is a focus op (no change of the scene).
 inline bool is_focus(const Edit& edit) { return std::holds_alternative<FocusEdit>(edit); }
@@ -192,6 +198,12 @@ std::vector<Edit> parse_edit_script(const std::string& json_text, const std::str
 // The node an edit names: its glTF name (the first of that name in the scene) or "#index";
 // throws InputError, also for a node that is not in the scene (deleted).
 size_t find_node(const Scene& scene, const std::string& name);
+
+// The variant `name` names: a variant's name, else its index in Scene::material_variants; -1
+// for an empty name (the default materials). Throws InputError listing the variants otherwise.
+int find_material_variant(const Scene& scene, const std::string& name);
+// Shows variant `variant` (-1: the defaults): sets every primitive's material.
+void select_material_variant(Scene& scene, int variant);
 
 // Applies one edit to the scene; throws InputError for an unknown node, material or key.
 void apply_edit(Scene& scene, const Edit& edit);

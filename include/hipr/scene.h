@@ -20,7 +20,15 @@ struct MeshPrimitive {
   std::vector<glm::vec2> uvs;       // TEXCOORD_0, one per position (zeros when absent)
   std::vector<glm::vec2> uvs1;      // TEXCOORD_1, one per position (zeros when absent)
   std::vector<uint32_t> indices;    // triangle list
-  uint32_t material = 0;
+  uint32_t material = 0;            // the material shown: the active variant's, else the default
+  // KHR_materials_variants: the material each variant listed gives the primitive (variant: an
+  // index into Scene::material_variants); variants not listed show `default_material`.
+  struct VariantMaterial {
+    uint32_t variant = 0;
+    uint32_t material = 0;
+  };
+  std::vector<VariantMaterial> variant_materials;
+  uint32_t default_material = 0;
 };
 
 struct Mesh {
@@ -182,6 +190,10 @@ struct Scene {
   // lists and --camera INDEX counts).
   std::vector<uint32_t> camera_nodes() const;
   int active_camera = -1;  // a node chosen by --camera or a camera edit's "use"; -1: the first
+  // KHR_materials_variants: the file's named material sets, and the one shown (-1: the
+  // primitives' default materials). select_material_variant() sets it and the materials.
+  std::vector<std::string> material_variants;
+  int active_variant = -1;
   // World-space bounds of all instances (min, max); a unit box when empty.
   std::pair<glm::vec3, glm::vec3> bounds() const;
   std::vector<uint32_t> root_nodes;             // of the default scene

@@ -24,6 +24,9 @@ struct SceneLoadOptions {
   // The camera node to look through (--camera): its index among the scene's cameras or a name
   // (find_camera_node); empty: the first.
   std::string camera;
+  // The KHR_materials_variants variant to show (--variant): its name or index; empty: the
+  // primitives' default materials.
+  std::string variant;
 };
 
 // Loads a .gltf/.glb scene. Throws InputError (one line) for anything wrong with the input;

@@ -44,6 +44,9 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
   app.add_option("--camera", o.load.camera,
                  "Look through this camera: its index in `hipr info`'s list, or its node's or glTF "
                  "camera's name (default: the first)");
+  app.add_option("--variant", o.load.variant,
+                 "Show this KHR_materials_variants variant: its name or its index in `hipr info`'s "
+                 "list (default: the file's default materials)");
   app.add_option("--preset", o.preset, "HiPR weights preset: default, lookdev, glass, mirror");
   app.add_option("--w-lobe", o.w_lobe, "HiPR lobe weights: diffuse,glossy,specular,transmission")
       ->delimiter(',')

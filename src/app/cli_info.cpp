@@ -101,6 +101,10 @@ int run_info(const InfoOptions& o) {
                 camera_label(scene, cameras[i]).c_str(), double(glm::degrees(c.yfov)), lens.c_str(),
                 int(cameras[i]) == camera ? " (used)" : "");
   }
+  for (size_t v = 0; v < scene.material_variants.size(); ++v)
+    std::printf("%s %zu '%s'%s\n", v == 0 ? "variants  " : "          ", v,
+                scene.material_variants[v].c_str(),
+                int(v) == scene.active_variant ? " (shown)" : "");
   // Each extension the file uses, and whether hipr reads it (README, "glTF extensions").
   std::string extensions;
   const std::vector<std::string>& supported = supported_gltf_extensions();
@@ -162,6 +166,8 @@ Command add_info_command(CLI::App& app) {
   cmd->add_option("--camera", options->load.camera,
                   "Look through this camera: its index in the list below, or its node's or "
                   "glTF camera's name (default: the first)");
+  cmd->add_option("--variant", options->load.variant,
+                  "Show this material variant: its name or its index in the list below");
   cmd->add_option("--width", options->render.width, "Image width in pixels (for background tiles)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 16384u));

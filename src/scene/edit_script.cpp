@@ -213,6 +213,10 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
     }
     return e;
   }
+  if (op == "variant") {  // {"op": "variant", "name": NAME}; "" shows the default materials
+    r.only_keys({"op", "name"});
+    return VariantEdit{r.string("name")};
+  }
   if (op == "visibility") {
     r.only_keys({"op", "node", "visible"});
     if (!r.edit().contains("visible") || !r.edit()["visible"].is_boolean())
@@ -300,8 +304,7 @@ Edit read_edit(const EditReader& r, const std::filesystem::path& base) {
   }
   r.fail("unknown op \"" + op +
          "\" (transform, material, light, emission, visibility, camera, environment, focus, "
-         "duplicate, delete, "
-         "import, deform)");
+         "duplicate, delete, import, deform, variant)");
 }
 
 }  // namespace

@@ -173,6 +173,9 @@ struct Applier {
   void operator()(const ImportEdit& e) const { apply_import(scene, e); }
   void operator()(const DeformEdit& e) const { apply_deform(scene, e); }
   void operator()(const StructureEdit& e) const { apply_structure(scene, e); }
+  void operator()(const VariantEdit& e) const {
+    select_material_variant(scene, find_material_variant(scene, e.variant));
+  }
 };
 
 // Builds the inverse of an edit from the scene before it (see inverse_edit).
@@ -260,6 +263,12 @@ struct Inverter {
                       std::make_shared<const Mesh>(scene.meshes[size_t(node.mesh)])};
   }
   Edit operator()(const StructureEdit&) const { return structure_undo(scene); }
+  Edit operator()(const VariantEdit& e) const {
+    find_material_variant(scene, e.variant);
+    return VariantEdit{scene.active_variant < 0
+                           ? std::string()
+                           : scene.material_variants[size_t(scene.active_variant)]};
+  }
 };
 
 }  // namespace
@@ -323,6 +332,9 @@ std::string describe(const Edit& edit) {
     }
     std::string operator()(const DeformEdit& e) const { return "deform " + e.node; }
     std::string operator()(const StructureEdit&) const { return "restore nodes"; }
+    std::string operator()(const VariantEdit& e) const {
+      return e.variant.empty() ? "default materials" : "variant " + e.variant;
+    }
     std::string operator()(const FocusEdit& e) const {
       if (e.clear) return "focus clear";
       std::string text = "focus";

@@ -111,7 +111,12 @@ uint32_t append_scene(Scene& scene, Scene&& other, const std::string& name,
     scene.materials.push_back(std::move(material));
   }
   for (Mesh& mesh : other.meshes) {
-    for (MeshPrimitive& primitive : mesh.primitives) primitive.material += material_base;
+    for (MeshPrimitive& primitive : mesh.primitives) {
+      // An import brings its default materials; its variants are not the scene's.
+      primitive.material = primitive.default_material + material_base;
+      primitive.default_material = primitive.material;
+      primitive.variant_materials.clear();
+    }
     scene.meshes.push_back(std::move(mesh));
   }
   for (PunctualLight& light : other.lights) scene.lights.push_back(std::move(light));

@@ -27,6 +27,8 @@ const std::vector<GltfExtension>& gltf_extension_table() {
       {"KHR_materials_diffuse_transmission", "subsurface_weight, subsurface_color (thin)"},
       {"KHR_materials_unlit",
        "a surface emitting its base colour (1 nit per unit) that reflects nothing"},
+      {"KHR_materials_variants",
+       "named material sets: --variant, a variant edit, the viewer's Scene panel"},
       {"KHR_texture_transform", "offset, rotation, scale and texCoord of every texture"},
       {"KHR_lights_punctual", "point, spot and directional lights"},
       {"KHR_node_visibility", "hidden nodes (and their subtrees) are not rendered"},
@@ -58,8 +60,6 @@ void warn_unsupported_extensions(const std::vector<std::string>& used, const std
     if (std::find(supported.begin(), supported.end(), ext) != supported.end()) continue;
     if (ext == "KHR_materials_dispersion")
       log::warn(name + ": KHR_materials_dispersion is not supported; rendered without dispersion");
-    else if (ext == "KHR_materials_variants")
-      log::warn(name + ": KHR_materials_variants is not supported; the default materials are used");
     else
       log::warn(name + ": glTF extension " + ext + " is not supported; ignored");
   }

@@ -28,6 +28,8 @@ glm::vec3 face_normal(const MeshPrimitive& p, size_t tri) {
 void make_flat(MeshPrimitive& p) {
   MeshPrimitive flat;
   flat.material = p.material;
+  flat.variant_materials = p.variant_materials;
+  flat.default_material = p.default_material;
   const size_t triangles = p.indices.size() / 3;
   for (size_t t = 0; t < triangles; ++t) {
     glm::vec3 n = face_normal(p, t);

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/file_util.h"
 #include "core/log.h"
+#include "hipr/edits.h"
 #include "hipr/scene_loader.h"
 #include "image/builtin_environments.h"
 #include "scene/default_camera.h"
@@ -93,6 +94,7 @@ class Converter {
 
   void run() {
     convert_materials();
+    convert_variant_names();
     convert_meshes();
     convert_cameras();
     convert_lights();
@@ -119,6 +121,52 @@ class Converter {
                                m_name);
     m_default_material = uint32_t(m_scene.materials.size());
     m_scene.materials.push_back(fallback);
+  }
+
+  // KHR_materials_variants: the document's list of variant names (each primitive maps them).
+  void convert_variant_names() {
+    const auto it = m_model.extensions.find("KHR_materials_variants");
+    if (it == m_model.extensions.end()) return;
+    const tinygltf::Value& ext = it->second;
+    if (!ext.IsObject() || !ext.Has("variants") || !ext.Get("variants").IsArray())
+      throw InputError(m_name + ": KHR_materials_variants has no \"variants\" array");
+    const tinygltf::Value& variants = ext.Get("variants");
+    for (size_t v = 0; v < variants.ArrayLen(); ++v) {
+      const tinygltf::Value& variant = variants.Get(int(v));
+      const bool named =
+          variant.IsObject() && variant.Has("name") && variant.Get("name").IsString();
+      m_scene.material_variants.push_back(named ? variant.Get("name").Get<std::string>()
+                                                : "variant " + std::to_string(v));
+    }
+  }
+
+  // The primitive's KHR_materials_variants mappings: which material each variant gives it.
+  std::vector<MeshPrimitive::VariantMaterial> variant_materials(const tinygltf::Primitive& source,
+                                                                const std::string& what) const {
+    std::vector<MeshPrimitive::VariantMaterial> out;
+    const auto it = source.extensions.find("KHR_materials_variants");
+    if (it == source.extensions.end()) return out;
+    const tinygltf::Value& ext = it->second;
+    if (!ext.IsObject() || !ext.Has("mappings") || !ext.Get("mappings").IsArray())
+      throw InputError(what + ": KHR_materials_variants has no \"mappings\" array");
+    const tinygltf::Value& mappings = ext.Get("mappings");
+    for (size_t i = 0; i < mappings.ArrayLen(); ++i) {
+      const tinygltf::Value& mapping = mappings.Get(int(i));
+      if (!mapping.IsObject() || !mapping.Has("material") || !mapping.Get("material").IsInt() ||
+          !mapping.Has("variants") || !mapping.Get("variants").IsArray())
+        throw InputError(what + ": variant mapping " + std::to_string(i) +
+                         " needs a material and a variants array");
+      const int material = required(mapping.Get("material").Get<int>(), m_model.materials.size(),
+                                    what + " variant mapping", "material");
+      const tinygltf::Value& variants = mapping.Get("variants");
+      for (size_t k = 0; k < variants.ArrayLen(); ++k) {
+        const tinygltf::Value& variant = variants.Get(int(k));
+        const int index = variant.IsInt() ? variant.Get<int>() : -1;
+        required(index, m_scene.material_variants.size(), what + " variant mapping", "variant");
+        out.push_back({uint32_t(index), uint32_t(material)});
+      }
+    }
+    return out;
   }
 
   void convert_meshes() {
@@ -158,6 +206,8 @@ class Converter {
 
     MeshPrimitive p;
     p.material = source.material < 0 ? m_default_material : uint32_t(source.material);
+    p.default_material = p.material;
+    p.variant_materials = variant_materials(source, what);
     p.positions =
         gltf::to_vec3(gltf::read_floats(m_model, attribute("POSITION"), 3, what + " POSITION"));
     if (attribute("NORMAL") >= 0)
@@ -406,6 +456,8 @@ Scene load_scene(const fs::path& path, const SceneLoadOptions& options) {
   scene.loaded_light_count = scene.lights.size();
   for (const Mesh& mesh : scene.meshes) scene.loaded_mesh_revisions.push_back(mesh.revision);
   if (!options.camera.empty()) scene.active_camera = int(find_camera_node(scene, options.camera));
+  if (!options.variant.empty())
+    select_material_variant(scene, find_material_variant(scene, options.variant));
   fix_default_camera(scene);  // the view as loaded: edits move objects, not it
   const std::string choice = options.environment.string();
   const SceneLighting lighting = scene_lighting(scene);

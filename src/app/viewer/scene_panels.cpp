@@ -75,6 +75,29 @@ void material_editor(Session& session, ViewerState& state, uint32_t material) {
   }
 }
 
+// KHR_materials_variants: the file's material sets, one shown (a variant edit, undoable).
+void variant_list(Session& session, ViewerState& state) {
+  const Scene& scene = session.scene();
+  if (scene.material_variants.empty()) return;
+  const int active = scene.active_variant;
+  const std::string preview =
+      active < 0 ? "(default materials)" : scene.material_variants[size_t(active)];
+  if (ImGui::BeginCombo("material variant", preview.c_str())) {
+    if (ImGui::Selectable("(default materials)", active < 0) && active >= 0)
+      ui_edit(session, state, VariantEdit{""});
+    for (size_t v = 0; v < scene.material_variants.size(); ++v) {
+      const std::string label = std::to_string(v) + " " + scene.material_variants[v];
+      if (ImGui::Selectable(label.c_str(), int(v) == active) && int(v) != active)
+        ui_edit(session, state, VariantEdit{scene.material_variants[v]});
+    }
+    ImGui::EndCombo();
+  }
+  tooltip(
+      "The file's material variants (KHR_materials_variants): each gives some objects other "
+      "materials. An edit script's {\"op\": \"variant\", \"name\": ...}; --variant on the "
+      "command line.");
+}
+
 }  // namespace
 
 void scene_tree_section(Session& session, ViewerState& state) {
@@ -82,6 +105,7 @@ void scene_tree_section(Session& session, ViewerState& state) {
   ImGui::BeginChild("tree", ImVec2(0.0f, 160.0f), true);
   for (uint32_t root : session.scene().root_nodes) tree_node(session, state, root);
   ImGui::EndChild();
+  variant_list(session, state);
 }
 
 void selection_section(Session& session, ViewerState& state) {
