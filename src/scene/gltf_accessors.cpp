@@ -206,16 +206,14 @@ void validate_all_accessors(const tinygltf::Model& model, const std::string& nam
 
 std::vector<float> read_floats(const tinygltf::Model& model, int accessor, int components,
                                const std::string& what) {
-  const ElementLayout layout = layout_of(model, accessor, what);
+  const ElementLayout layout = layout_of(model, accessor, what, true);
   if (layout.components != components)
     throw InputError(what + ": accessor " + std::to_string(accessor) + " has " +
                      std::to_string(layout.components) + " components, expected " +
                      std::to_string(components));
   std::vector<float> values(layout.count * size_t(components), 0.0f);
-  if (!layout.base) return values;
   const size_t component_bytes = size_t(component_size(layout.component_type));
-  for (size_t i = 0; i < layout.count; ++i) {
-    const unsigned char* element = layout.base + i * layout.stride;
+  const auto read_element = [&](const unsigned char* element, size_t i) {
     for (int c = 0; c < components; ++c) {
       const float v = read_component(element + size_t(c) * component_bytes, layout.component_type,
                                      layout.normalized);
@@ -223,6 +221,35 @@ std::vector<float> read_floats(const tinygltf::Model& model, int accessor, int c
         throw InputError(what + ": accessor " + std::to_string(accessor) +
                          " holds a non-finite value");
       values[i * size_t(components) + size_t(c)] = v;
+    }
+  };
+  if (layout.base)
+    for (size_t i = 0; i < layout.count; ++i) read_element(layout.base + i * layout.stride, i);
+  // Sparse: the listed elements replaced (bounds checked by layout_of; indices checked here).
+  const tinygltf::Accessor& source = model.accessors[size_t(accessor)];
+  if (source.sparse.isSparse) {
+    const auto& sparse = source.sparse;
+    const auto at = [&](int view, int offset) {
+      const tinygltf::BufferView& v = model.bufferViews[size_t(view)];
+      return model.buffers[size_t(v.buffer)].data.data() + v.byteOffset + size_t(offset);
+    };
+    const unsigned char* indices = at(sparse.indices.bufferView, sparse.indices.byteOffset);
+    const unsigned char* replacements = at(sparse.values.bufferView, sparse.values.byteOffset);
+    const int index_type = sparse.indices.componentType;
+    const size_t index_bytes = size_t(component_size(index_type));
+    if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+      throw InputError(what + ": sparse accessor " + std::to_string(accessor) +
+                       " has indices of a non-integer type");
+    for (size_t k = 0; k < size_t(sparse.count); ++k) {
+      uint32_t index = 0;
+      std::memcpy(&index, indices + k * index_bytes, index_bytes);  // little-endian
+      if (index >= layout.count)
+        throw InputError(what + ": sparse accessor " + std::to_string(accessor) +
+                         " replaces element " + std::to_string(index) + " of " +
+                         std::to_string(layout.count));
+      read_element(replacements + k * component_bytes * size_t(components), index);
     }
   }
   return values;

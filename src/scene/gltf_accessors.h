@@ -25,7 +25,8 @@ inline constexpr size_t kMaxScenePixels = size_t(1) << 28;
 // vertices and indices, counted from their accessors before any is read.
 void check_scene_elements(const tinygltf::Model& model, const std::string& name);
 
-// Reads a float vector accessor (VEC2/VEC3/VEC4 or SCALAR), converting normalized integers.
+// Reads a float vector accessor (VEC2/VEC3/VEC4, SCALAR or MAT4), converting normalized integers
+// and applying its sparse substitutions.
 // `components` is what the caller wants; the accessor must have exactly that many.
 std::vector<float> read_floats(const tinygltf::Model& model, int accessor, int components,
                                const std::string& what);

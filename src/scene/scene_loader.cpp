@@ -25,6 +25,7 @@
 #include "scene/gltf_meshopt.h"
 #include "scene/gltf_node_transform.h"
 #include "scene/gltf_parser_input.h"
+#include "scene/gltf_pose.h"
 #include "scene/gltf_precheck.h"
 #include "scene/gltf_sandbox.h"
 #include "scene/mesh_processing.h"
@@ -90,7 +91,11 @@ glm::mat4 node_transform(const tinygltf::Node& node, const std::string& what) {
 class Converter {
  public:
   Converter(const tinygltf::Model& model, Scene& scene, const std::string& name)
-      : m_model(model), m_scene(scene), m_name(name), m_textures(model, scene) {}
+      : m_model(model),
+        m_scene(scene),
+        m_name(name),
+        m_textures(model, scene),
+        m_poses(model, name) {}
 
   void run() {
     convert_materials();
@@ -177,7 +182,7 @@ class Converter {
       for (size_t pi = 0; pi < source.primitives.size(); ++pi) {
         const std::string what =
             object("mesh", mi, source.name) + " primitive " + std::to_string(pi);
-        if (auto primitive = convert_primitive(source.primitives[pi], what))
+        if (auto primitive = convert_primitive(mi, source.primitives[pi], what))
           mesh.primitives.push_back(std::move(*primitive));
       }
       mesh.revision = mesh_revision(mesh);
@@ -185,7 +190,7 @@ class Converter {
     }
   }
 
-  std::optional<MeshPrimitive> convert_primitive(const tinygltf::Primitive& source,
+  std::optional<MeshPrimitive> convert_primitive(size_t mesh, const tinygltf::Primitive& source,
                                                  const std::string& what) {
     const int mode = source.mode < 0 ? TINYGLTF_MODE_TRIANGLES : source.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
@@ -222,6 +227,7 @@ class Converter {
     if (attribute("TEXCOORD_1") >= 0)
       p.uvs1 = gltf::to_vec2(
           gltf::read_floats(m_model, attribute("TEXCOORD_1"), 2, what + " TEXCOORD_1"));
+    m_poses.apply(mesh, source, p, what);  // morph targets and skin, as the file poses them
     if (source.indices >= 0) {
       p.indices = gltf::read_indices(m_model, source.indices, what + " indices");
     } else {
@@ -372,6 +378,7 @@ class Converter {
   Scene& m_scene;
   std::string m_name;
   gltf::TextureTable m_textures;
+  gltf::MeshPoses m_poses;
   uint32_t m_default_material = 0;
 };
 
