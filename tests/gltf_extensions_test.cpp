@@ -313,6 +313,57 @@ TEST(GltfExtensions, UnlitEmitsItsBaseColourAndReflectsNothing) {
   EXPECT_TRUE(l.warnings.empty()) << l.warnings;
 }
 
+// KHR_materials_pbrSpecularGlossiness: a dielectric keeps its diffuse colour, a metal's specular
+// colour becomes its base colour; glossiness turns into roughness.
+TEST(GltfExtensions, SpecularGlossinessFactorsBecomeMetalRough) {
+  const auto load = [](json ext) {
+    return load_with({{"extensions", {{"KHR_materials_pbrSpecularGlossiness", ext}}}},
+                     {"KHR_materials_pbrSpecularGlossiness"})
+        .scene.materials[0]
+        .params;
+  };
+  const MaterialParameters plastic = load({{"diffuseFactor", {0.5, 0.25, 0.125, 1.0}},
+                                           {"specularFactor", {0.04, 0.04, 0.04}},
+                                           {"glossinessFactor", 0.7}});
+  EXPECT_EQ(plastic.base_metalness, 0.0f);
+  EXPECT_NEAR(plastic.base_color.r, 0.5f, 1e-4f);
+  EXPECT_NEAR(plastic.base_color.b, 0.125f, 1e-4f);
+  EXPECT_NEAR(plastic.specular_roughness, 0.3f, 1e-6f);
+  const MaterialParameters gold = load({{"diffuseFactor", {0.0, 0.0, 0.0, 1.0}},
+                                        {"specularFactor", {1.0, 0.766, 0.336}},
+                                        {"glossinessFactor", 0.9}});
+  EXPECT_NEAR(gold.base_metalness, 1.0f, 1e-3f);
+  EXPECT_NEAR(gold.base_color.g, 0.766f, 1e-3f);
+  EXPECT_NEAR(gold.specular_roughness, 0.1f, 1e-6f);
+}
+
+// With textures the conversion is baked per texel: two new images, sampled as the diffuse one.
+TEST(GltfExtensions, SpecularGlossinessTexturesAreBakedPerTexel) {
+  const Loaded l = load_with({{"extensions",
+                               {{"KHR_materials_pbrSpecularGlossiness",
+                                 {{"diffuseTexture", texture(0)},
+                                  {"specularGlossinessTexture", texture(1)},
+                                  {"specularFactor", {0.0, 0.0, 0.0}},
+                                  {"glossinessFactor", 0.5}}}}}},
+                             {"KHR_materials_pbrSpecularGlossiness"});
+  const Scene& scene = l.scene;
+  const MaterialParameters& p = scene.materials[0].params;
+  EXPECT_EQ(p.base_color, glm::vec3(1.0f));  // the baked image holds it all
+  EXPECT_EQ(p.base_metalness, 1.0f);
+  ASSERT_NE(p.base_color_texture, kNoTexture);
+  ASSERT_NE(p.metallic_roughness_texture, kNoTexture);
+  const Image& base = scene.images[scene.textures[p.base_color_texture].image];
+  const Image& metal_rough = scene.images[scene.textures[p.metallic_roughness_texture].image];
+  EXPECT_NE(base.name.find("spec-gloss"), std::string::npos);
+  // grey.png is 0.5 linear: with a black specular the base colour is the diffuse over the 0.96
+  // a dielectric's diffuse keeps (0.5208: sRGB 191), metalness 0, roughness 1 - 0.5 x 1 = 0.5.
+  EXPECT_NEAR(base.rgba8[0], 191, 1);
+  EXPECT_EQ(metal_rough.rgba8[2], 0);
+  EXPECT_NEAR(metal_rough.rgba8[1], 128, 1);
+  EXPECT_TRUE(scene.textures[p.base_color_texture].flags & kTextureSrgb);
+  EXPECT_FALSE(scene.textures[p.metallic_roughness_texture].flags & kTextureSrgb);
+}
+
 // README's table of extensions is the loader's, row for row.
 TEST(GltfExtensionSupport, ReadmeTableIsTheLoadersTable) {
   std::ifstream readme(fs::path(HIPR_ASSETS_DIR) / ".." / ".." / "README.md");

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_material_table.h"
+#include "scene/gltf_spec_gloss.h"
 
 namespace hipr::gltf {
 namespace {
@@ -154,6 +155,7 @@ MaterialParameters map_material_factors(const tinygltf::Material& m, const std::
   apply_alpha_mode(m, p, what);
   apply_factor_rows(m, p);
   apply_extension_rules(m, p);
+  apply_spec_gloss_factors(m, p);
   if (extension(m, "KHR_materials_unlit")) apply_unlit_factors(p);
   if (m.doubleSided) p.flags |= kMaterialDoubleSided;
   return p;
@@ -181,6 +183,7 @@ Material convert_material(const tinygltf::Material& m, size_t index, TextureTabl
   p.normal_texture = textures.get(texture_reference(m.normalTexture), false, what);
   p.emission_texture = textures.get(texture_reference(m.emissiveTexture), true, what);
   apply_texture_rows(m, p, textures, what);
+  apply_spec_gloss_textures(m, p, textures, textures.scene(), what);
   if (extension(m, "KHR_materials_unlit")) apply_unlit_textures(p);
   // What glTF cannot say, saved by save_scene (gltf_hipr_extras.h), overrides the mapping.
   apply_openpbr_extras(m.extras, kOpenPbrExtras, p, what);

@@ -27,6 +27,9 @@ const std::vector<GltfExtension>& gltf_extension_table() {
       {"KHR_materials_diffuse_transmission", "subsurface_weight, subsurface_color (thin)"},
       {"KHR_materials_unlit",
        "a surface emitting its base colour (1 nit per unit) that reflects nothing"},
+      {"KHR_materials_pbrSpecularGlossiness",
+       "metalness, base colour and roughness solved from diffuse, specular and glossiness "
+       "(per texel into baked textures)"},
       {"KHR_materials_variants",
        "named material sets: --variant, a variant edit, the viewer's Scene panel"},
       {"KHR_texture_transform", "offset, rotation, scale and texCoord of every texture"},

@@ -29,6 +29,8 @@ class TextureTable {
   // Returns the Scene::textures index, or kInvalidIndex when the reference names no texture.
   // Equal references share one entry; entries on the same image share its texels.
   uint32_t get(const TextureReference& reference, bool srgb, const std::string& what);
+  // The scene the entries go into (for textures derived from others: gltf_spec_gloss.h).
+  Scene& scene() { return m_scene; }
 
  private:
   uint32_t image_for(const tinygltf::Texture& source, int texture, const std::string& what);
