@@ -15,6 +15,7 @@
 
 #include "core/error.h"
 #include "gltf_document.h"
+#include "gltf_transform_support.h"
 #include "hipr/scene_loader.h"
 #include "image/image_io.h"
 #include "scene/base64.h"
@@ -208,36 +209,6 @@ TEST(Meshopt, MalformedStreamsAreOneLineErrors) {
 
 // ---- copies made by glTF-Transform ----
 
-fs::path gltf_transform_cli() {
-  return fs::path(HIPR_TOOLS_DIR) / "node_modules" / "@gltf-transform" / "cli" / "bin" / "cli.js";
-}
-
-bool gltf_transform_available() {
-  static const bool available =
-      fs::exists(gltf_transform_cli()) &&
-      test::run_command("node " + test::quoted(gltf_transform_cli()) + " --version").exit_code == 0;
-  return available;
-}
-
-#define REQUIRE_GLTF_TRANSFORM()                                                       \
-  do {                                                                                 \
-    if (!gltf_transform_available()) {                                                 \
-      if (test::gltf_validator_required())                                             \
-        FAIL() << "glTF-Transform is not installed (tools/setup-deps.sh installs it)"; \
-      GTEST_SKIP() << "glTF-Transform not installed (npm ci --prefix tools)";          \
-    }                                                                                  \
-  } while (0)
-
-// `gltf-transform COMMAND input output ARGS`: the copy, or a test failure.
-fs::path transformed(const std::string& command, const fs::path& input, const fs::path& output,
-                     const std::string& arguments = "") {
-  const test::CommandResult result =
-      test::run_command("node " + test::quoted(gltf_transform_cli()) + " " + command + " " +
-                        test::quoted(input) + " " + test::quoted(output) + " " + arguments);
-  EXPECT_EQ(result.exit_code, 0) << command << ": " << result.output;
-  return output;
-}
-
 struct Triangle {
   glm::vec3 a, b, c;
 };
@@ -278,7 +249,7 @@ void expect_same_geometry(const Scene& copy, const Scene& original, float tolera
 }
 
 TEST(GltfTransformCopies, DracoMeshoptAndQuantizedLoadAsTheOriginalGeometry) {
-  REQUIRE_GLTF_TRANSFORM();
+  HIPR_REQUIRE_GLTF_TRANSFORM();
   const fs::path dir = test::temp_dir("gltf_transform_geometry");
   for (const char* name : {"cornell_box.gltf", "cornell_sphere.glb"}) {
     const fs::path source = test::asset(name);
@@ -290,7 +261,8 @@ TEST(GltfTransformCopies, DracoMeshoptAndQuantizedLoadAsTheOriginalGeometry) {
                                                           {"meshopt", ".glb"},
                                                           {"meshopt", ".gltf"},
                                                           {"quantize", ".glb"}}) {
-      const fs::path copy = transformed(command, source, dir / (stem + "_" + command + extension));
+      const fs::path copy =
+          test::gltf_transform(command, source, dir / (stem + "_" + command + extension));
       const std::string what = std::string(name) + " via " + command + extension;
       expect_same_geometry(load_scene(copy), original, 2e-3f, what);
     }
@@ -299,7 +271,7 @@ TEST(GltfTransformCopies, DracoMeshoptAndQuantizedLoadAsTheOriginalGeometry) {
 
 // A quad showing a 64x64 PNG, built here, and its WebP copy: the texels agree within WebP's loss.
 TEST(GltfTransformCopies, WebpTexturesDecodeAsTheirPngs) {
-  REQUIRE_GLTF_TRANSFORM();
+  HIPR_REQUIRE_GLTF_TRANSFORM();
   const fs::path dir = test::temp_dir("gltf_transform_webp");
   ImageRGB texture{64, 64, std::vector<float>(64 * 64 * 3)};
   for (uint32_t y = 0; y < 64; ++y)
@@ -324,8 +296,8 @@ TEST(GltfTransformCopies, WebpTexturesDecodeAsTheirPngs) {
   // 4:2:0 chroma): near it, and nowhere flipped or shifted (which would cost far more).
   for (const auto& [arguments, mean_limit] :
        std::vector<std::pair<std::string, double>>{{"--lossless true", 0.0}, {"", 25.0}}) {
-    const Scene webp =
-        load_scene(transformed("webp", dir / "quad.gltf", dir / "quad_webp.glb", arguments));
+    const Scene webp = load_scene(
+        test::gltf_transform("webp", dir / "quad.gltf", dir / "quad_webp.glb", arguments));
     ASSERT_EQ(webp.images.size(), 1u);
     const Image& a = webp.images[0];
     const Image& b = original.images[0];
@@ -341,9 +313,10 @@ TEST(GltfTransformCopies, WebpTexturesDecodeAsTheirPngs) {
 }
 
 TEST(GltfTransformCopies, BrokenDracoStreamsAreOneLineErrors) {
-  REQUIRE_GLTF_TRANSFORM();
+  HIPR_REQUIRE_GLTF_TRANSFORM();
   const fs::path dir = test::temp_dir("gltf_transform_bad_draco");
-  const fs::path copy = transformed("draco", test::asset("cornell_box.gltf"), dir / "draco.gltf");
+  const fs::path copy =
+      test::gltf_transform("draco", test::asset("cornell_box.gltf"), dir / "draco.gltf");
   json doc;
   std::ifstream(copy) >> doc;
   // The Draco stream of the first primitive, cut short; then its bytes overwritten.
