@@ -53,6 +53,9 @@ struct Node {
   int camera = -1;
   int light = -1;
   bool visible = true;
+  // Made by the loader for one EXT_mesh_gpu_instancing instance of its parent's mesh (the file
+  // has no node for it): an ordinary node to edit and render, saved back into the extension.
+  bool gpu_instance = false;
 };
 
 // One copy of a mesh: a node with a mesh, with its flattened world transform. Hidden ones
@@ -194,6 +197,14 @@ struct Scene {
   // primitives' default materials). select_material_variant() sets it and the materials.
   std::vector<std::string> material_variants;
   int active_variant = -1;
+  // EXT_mesh_gpu_instancing: per node carrying it, the instances' transforms as loaded (its
+  // child nodes with `gpu_instance`, in order), so that an unedited save keeps the extension's
+  // data as it was.
+  struct GpuInstances {
+    uint32_t node = 0;
+    std::vector<glm::mat4> loaded;
+  };
+  std::vector<GpuInstances> gpu_instances;
   // World-space bounds of all instances (min, max); a unit box when empty.
   std::pair<glm::vec3, glm::vec3> bounds() const;
   std::vector<uint32_t> root_nodes;             // of the default scene

@@ -58,7 +58,8 @@ uint32_t copy_subtree(Scene& scene, uint32_t source, int parent, const std::stri
   Node copy = scene.nodes[source];
   copy.name = name;
   copy.parent = parent;
-  if (copy.light >= 0) {  // a lamp of its own: editing one leaves the other
+  copy.gpu_instance = false;  // a node of its own (saved as one), not an instance of the file's
+  if (copy.light >= 0) {      // a lamp of its own: editing one leaves the other
     scene.lights.push_back(scene.lights[size_t(copy.light)]);
     copy.light = int(scene.lights.size() - 1);
   }

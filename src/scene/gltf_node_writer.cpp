@@ -188,10 +188,11 @@ void write_nodes(Json& doc, const Scene& scene, const std::string& name) {
   std::vector<size_t> written(scene.nodes.size(), SIZE_MAX);
   for (size_t i = 0; i < node_count; ++i) written[i] = i;
   size_t next = node_count;
+  // (EXT_mesh_gpu_instancing instances go back into their extension: write_gpu_instances.)
   for (size_t i = node_count; i < scene.nodes.size(); ++i)
-    if (reachable[i]) written[i] = next++;
+    if (reachable[i] && !scene.nodes[i].gpu_instance) written[i] = next++;
   for (size_t i = node_count; i < scene.nodes.size(); ++i) {
-    if (!reachable[i]) continue;
+    if (!reachable[i] || scene.nodes[i].gpu_instance) continue;
     doc["nodes"].push_back(new_node(scene.nodes[i]));
     const int parent = scene.nodes[i].parent;
     if (parent >= 0)

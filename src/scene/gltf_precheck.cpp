@@ -35,6 +35,9 @@ const std::vector<GltfExtension>& gltf_extension_table() {
       {"KHR_texture_transform", "offset, rotation, scale and texCoord of every texture"},
       {"KHR_lights_punctual", "point, spot and directional lights"},
       {"KHR_node_visibility", "hidden nodes (and their subtrees) are not rendered"},
+      {"EXT_mesh_gpu_instancing",
+       "each instance a child node sharing the mesh (one BLAS, a TLAS entry each), editable "
+       "alone or as a group"},
       {"KHR_draco_mesh_compression", "decoded with libdraco at load"},
       {"EXT_meshopt_compression", "decoded with libmeshoptimizer at load (every mode and filter)"},
       {"KHR_mesh_quantization", "integer and normalized attributes, dequantized at load"},

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.h"
@@ -35,6 +37,9 @@ namespace hipr {
 namespace fs = std::filesystem;
 
 namespace {
+
+// EXT_mesh_gpu_instancing instances in one scene (each a node and a TLAS entry).
+constexpr size_t kMaxGpuInstances = size_t(1) << 20;
 
 // Decodes images with stb, but a broken image becomes a warning and a fallback texture, not a
 // failed load. So does one whose size (read from its header first) is beyond the limits, or
@@ -104,6 +109,7 @@ class Converter {
     convert_cameras();
     convert_lights();
     convert_nodes();
+    convert_gpu_instances();
     for (const std::string& ext : m_model.extensionsUsed) m_scene.extensions_used.push_back(ext);
     gltf::warn_unsupported_extensions(m_model.extensionsUsed, m_name);
   }
@@ -349,6 +355,79 @@ class Converter {
       for (size_t i = 0; i < count; ++i)
         if (m_scene.nodes[i].parent < 0) m_scene.root_nodes.push_back(uint32_t(i));
     }
+  }
+
+  // EXT_mesh_gpu_instancing: each instance of a node's mesh becomes a child node "<name>/<k>"
+  // (Node::gpu_instance) with the instance's transform and the mesh, which the node itself no
+  // longer shows. Instances share the mesh (one BLAS), so a thousand cost a thousand TLAS
+  // entries, not a thousand meshes; each can be selected and edited, the node moves them all.
+  void convert_gpu_instances() {
+    size_t total = 0;
+    for (size_t i = 0; i < m_model.nodes.size(); ++i) {
+      const tinygltf::Node& source = m_model.nodes[i];
+      const auto it = source.extensions.find("EXT_mesh_gpu_instancing");
+      if (it == source.extensions.end() || m_scene.nodes[i].mesh < 0) continue;
+      const std::string what = object("node", i, source.name) + " EXT_mesh_gpu_instancing";
+      const std::vector<glm::mat4> transforms = instance_transforms(it->second, what);
+      total += transforms.size();
+      if (total > kMaxGpuInstances)
+        throw InputError(m_name + ": more than " + std::to_string(kMaxGpuInstances) +
+                         " instances (EXT_mesh_gpu_instancing; hipr's limit)");
+      const int mesh = m_scene.nodes[i].mesh;
+      m_scene.nodes[i].mesh = -1;
+      for (size_t k = 0; k < transforms.size(); ++k) {
+        Node instance;
+        instance.name = m_scene.nodes[i].name + "/" + std::to_string(k);
+        instance.parent = int(i);
+        instance.local = transforms[k];
+        instance.mesh = mesh;
+        instance.gpu_instance = true;
+        m_scene.nodes.push_back(std::move(instance));
+        m_scene.children.emplace_back();
+        m_scene.children[i].push_back(uint32_t(m_scene.nodes.size() - 1));
+      }
+      m_scene.gpu_instances.push_back({uint32_t(i), transforms});
+    }
+  }
+
+  std::vector<glm::mat4> instance_transforms(const tinygltf::Value& ext,
+                                             const std::string& what) const {
+    if (!ext.IsObject() || !ext.Has("attributes") || !ext.Get("attributes").IsObject())
+      throw InputError(what + " has no attributes object");
+    const tinygltf::Value& attributes = ext.Get("attributes");
+    size_t count = 0;
+    bool any = false;
+    const auto read = [&](const char* name, int components) {
+      std::vector<float> values;
+      if (!attributes.Has(name)) return values;
+      const tinygltf::Value& index = attributes.Get(name);
+      if (!index.IsInt()) throw InputError(what + ": " + name + " is not an accessor index");
+      values = gltf::read_floats(m_model, index.Get<int>(), components, what + " " + name);
+      const size_t n = values.size() / size_t(components);
+      if (any && n != count) throw InputError(what + ": its attributes have different counts");
+      count = n;
+      any = true;
+      return values;
+    };
+    const std::vector<float> t = read("TRANSLATION", 3), r = read("ROTATION", 4),
+                             s = read("SCALE", 3);
+    if (!any) throw InputError(what + " has none of TRANSLATION, ROTATION and SCALE");
+    std::vector<glm::mat4> out(count);
+    for (size_t k = 0; k < count; ++k) {
+      glm::mat4 m(1.0f);
+      if (!t.empty()) m = glm::translate(m, glm::vec3(t[3 * k], t[3 * k + 1], t[3 * k + 2]));
+      if (!r.empty()) {
+        const glm::quat q(r[4 * k + 3], r[4 * k], r[4 * k + 1], r[4 * k + 2]);  // glTF: x y z w
+        const float length = glm::length(q);
+        if (!(length > 0.0f))
+          throw InputError(what + ": instance " + std::to_string(k) +
+                           " has a zero rotation quaternion");
+        m = m * glm::mat4_cast(q / length);
+      }
+      if (!s.empty()) m = glm::scale(m, glm::vec3(s[3 * k], s[3 * k + 1], s[3 * k + 2]));
+      out[k] = m;
+    }
+    return out;
   }
 
   // KHR_node_visibility: "visible": false hides the node and its subtree (Scene::instances).

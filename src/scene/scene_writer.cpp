@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "hipr/scene_writer.h"
+#include "scene/gltf_instance_writer.h"
 #include "scene/gltf_light_writer.h"
 #include "scene/gltf_material_writer.h"
 #include "scene/gltf_mesh_writer.h"
@@ -75,6 +76,7 @@ void save_scene(const Scene& scene, const fs::path& path) {
     const std::vector<Material> materials =
         gltf::write_new_materials(doc, scene.materials, textures);
     gltf::write_nodes(doc, scene, source.name);
+    gltf::write_gpu_instances(doc, scene, buffer);
     gltf::write_lights(doc, scene.lights, source.name);
     gltf::write_materials(doc, materials, source.name);
     buffer.finish();
