@@ -269,8 +269,9 @@ TEST(GltfTransformCopies, DracoMeshoptAndQuantizedLoadAsTheOriginalGeometry) {
   }
 }
 
-// A quad showing a 64x64 PNG, built here, and its WebP copy: the texels agree within WebP's loss.
-TEST(GltfTransformCopies, WebpTexturesDecodeAsTheirPngs) {
+// A quad showing a 64x64 PNG, built here, and its WebP and AVIF copies: the texels agree within
+// the formats' loss (exactly for lossless WebP).
+TEST(GltfTransformCopies, WebpAndAvifTexturesDecodeAsTheirPngs) {
   HIPR_REQUIRE_GLTF_TRANSFORM();
   const fs::path dir = test::temp_dir("gltf_transform_webp");
   ImageRGB texture{64, 64, std::vector<float>(64 * 64 * 3)};
@@ -294,10 +295,18 @@ TEST(GltfTransformCopies, WebpTexturesDecodeAsTheirPngs) {
   ASSERT_EQ(original.images.size(), 1u);
   // Lossless WebP: every texel as the PNG has it. Lossy (the tool's default, quality 80, with
   // 4:2:0 chroma): near it, and nowhere flipped or shifted (which would cost far more).
-  for (const auto& [arguments, mean_limit] :
-       std::vector<std::pair<std::string, double>>{{"--lossless true", 0.0}, {"", 25.0}}) {
-    const Scene webp = load_scene(
-        test::gltf_transform("webp", dir / "quad.gltf", dir / "quad_webp.glb", arguments));
+  struct Copy {
+    const char* command;
+    std::string arguments;
+    double mean_limit;
+  };
+  for (const Copy& copy :
+       {Copy{"webp", "--lossless true", 0.0}, Copy{"webp", "", 25.0}, Copy{"avif", "", 25.0}}) {
+    const std::string arguments = std::string(copy.command) + " " + copy.arguments;
+    const double mean_limit = copy.mean_limit;
+    const Scene webp = load_scene(test::gltf_transform(copy.command, dir / "quad.gltf",
+                                                       dir / (std::string(copy.command) + ".glb"),
+                                                       copy.arguments));
     ASSERT_EQ(webp.images.size(), 1u);
     const Image& a = webp.images[0];
     const Image& b = original.images[0];
@@ -308,7 +317,7 @@ TEST(GltfTransformCopies, WebpTexturesDecodeAsTheirPngs) {
     for (size_t i = 0; i < a.rgba8.size(); ++i)
       difference += std::abs(int(a.rgba8[i]) - int(b.rgba8[i]));
     EXPECT_LE(difference / double(a.rgba8.size()), mean_limit)
-        << "webp " << arguments << ": mean texel difference out of 255";
+        << arguments << ": mean texel difference out of 255";
   }
 }
 

@@ -3,17 +3,71 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <memory>
 
 namespace hipr::gltf {
 
+namespace {
+
+bool starts(const unsigned char* bytes, size_t size, size_t at, const char* tag) {
+  const size_t n = std::strlen(tag);
+  return size >= at + n && std::memcmp(bytes + at, tag, n) == 0;
+}
+
+// The reader for the bytes: WebP, DDS, or AVIF (an ISO media file of brand avif or avis, which
+// OpenImageIO reads through libheif); empty for anything else.
+std::string format_of(const unsigned char* bytes, size_t size) {
+  if (starts(bytes, size, 0, "RIFF") && starts(bytes, size, 8, "WEBP")) return "webp";
+  if (starts(bytes, size, 0, "DDS ")) return "dds";
+  if (starts(bytes, size, 4, "ftyp") &&
+      (starts(bytes, size, 8, "avif") || starts(bytes, size, 8, "avis")))
+    return "heif";
+  return "";
+}
+
+// A private file holding the bytes, for readers that cannot read memory (OpenImageIO 2.4's
+// heif); removed when it goes out of scope.
+class TemporaryFile {
+ public:
+  TemporaryFile(const unsigned char* bytes, size_t size, const char* suffix) {
+    std::string name =
+        (std::filesystem::temp_directory_path() / "hipr-image-XXXXXX").string() + suffix;
+    const int fd = mkstemps(name.data(), int(std::strlen(suffix)));
+    if (fd < 0) return;
+    size_t written = 0;
+    while (written < size) {
+      const ssize_t n = ::write(fd, bytes + written, size - written);
+      if (n <= 0) break;
+      written += size_t(n);
+    }
+    ::close(fd);
+    m_path = name;
+    m_ok = written == size;
+  }
+  ~TemporaryFile() {
+    if (!m_path.empty()) std::remove(m_path.c_str());
+  }
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  bool ok() const { return m_ok; }
+  const std::string& path() const { return m_path; }
+
+ private:
+  std::string m_path;
+  bool m_ok = false;
+};
+
+}  // namespace
+
 bool needs_oiio_decoder(const unsigned char* bytes, size_t size) {
-  const auto starts = [&](size_t at, const char* tag) {
-    const size_t n = std::strlen(tag);
-    return size >= at + n && std::memcmp(bytes + at, tag, n) == 0;
-  };
-  return (starts(0, "RIFF") && starts(8, "WEBP")) || starts(0, "DDS ");
+  return !format_of(bytes, size).empty();
 }
 
 bool decode_with_oiio(tinygltf::Image* image, const unsigned char* bytes, size_t size,
@@ -22,15 +76,22 @@ bool decode_with_oiio(tinygltf::Image* image, const unsigned char* bytes, size_t
     if (err) *err = why;
     return false;
   };
-  const bool webp = size >= 4 && std::memcmp(bytes, "RIFF", 4) == 0;
-  const std::string format = webp ? "webp" : "dds";
+  const std::string format = format_of(bytes, size);
+  // The proxy and the file must outlive the input: declared first, they are destroyed last.
+  OIIO::Filesystem::IOMemReader memory(const_cast<unsigned char*>(bytes), size);
+  std::unique_ptr<TemporaryFile> file;
   auto input = OIIO::ImageInput::create(format);
   if (!input) return fail("this OpenImageIO has no " + format + " reader");
-  // The proxy must outlive the input: it is declared first, so it is destroyed last.
-  OIIO::Filesystem::IOMemReader memory(const_cast<unsigned char*>(bytes), size);
-  if (!input->set_ioproxy(&memory)) return fail("the " + format + " reader cannot read memory");
+  std::string name = "texture." + format;
+  if (input->supports("ioproxy")) {
+    if (!input->set_ioproxy(&memory)) return fail("the " + format + " reader cannot read memory");
+  } else {  // (2.4's heif reader reads files only)
+    file = std::make_unique<TemporaryFile>(bytes, size, ".heif");
+    if (!file->ok()) return fail("cannot write a temporary file to decode it");
+    name = file->path();
+  }
   OIIO::ImageSpec spec;
-  if (!input->open("texture." + format, spec, OIIO::ImageSpec())) return fail(input->geterror());
+  if (!input->open(name, spec, OIIO::ImageSpec())) return fail(input->geterror());
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     return fail("image has no pixels");
   if (spec.width > max_side || spec.height > max_side ||

@@ -1,6 +1,8 @@
 #pragma once
 // Images stb cannot decode but OpenImageIO can (WebP for EXT_texture_webp, DDS for
-// MSFT_texture_dds), read from memory: the bytes may come from a bufferView or a data: URI.
+// MSFT_texture_dds, AVIF for EXT_texture_avif), read from memory: the bytes may come from a
+// bufferView or a data: URI (AVIF goes through a private temporary file: OpenImageIO 2.4's heif
+// reader reads files only).
 #include <tiny_gltf.h>
 
 #include <cstddef>
@@ -8,7 +10,7 @@
 
 namespace hipr::gltf {
 
-// Whether the bytes start like a WebP (RIFF....WEBP) or DDS ("DDS ") file.
+// Whether the bytes start like a WebP (RIFF....WEBP), DDS ("DDS ") or AVIF (....ftypavif) file.
 bool needs_oiio_decoder(const unsigned char* bytes, size_t size);
 
 // Decodes into `image` as 8-bit with 1 to 4 channels. `max_pixels` bounds the size read from

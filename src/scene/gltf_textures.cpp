@@ -113,12 +113,12 @@ TextureReference texture_reference(const tinygltf::Value& extension, const char*
 
 namespace {
 
-// The image a texture shows: a WebP or DDS source (EXT_texture_webp, MSFT_texture_dds; both
-// decoded through OpenImageIO) before the core `source`, which is then the file's fallback. A
-// KTX2 source (KHR_texture_basisu) has no packaged decoder: the fallback is used, and without one
-// the file cannot be shown as its author meant, which is an error rather than a guess.
+// The image a texture shows: a WebP, AVIF or DDS source (EXT_texture_webp, EXT_texture_avif,
+// MSFT_texture_dds; decoded through OpenImageIO) before the core `source`, which is then the file's
+// fallback. A KTX2 source (KHR_texture_basisu) has no packaged decoder: the fallback is used, and
+// without one the file cannot be shown as its author meant, which is an error rather than a guess.
 int image_source(const tinygltf::Texture& source, int texture, const std::string& what) {
-  for (const char* extension : {"EXT_texture_webp", "MSFT_texture_dds"}) {
+  for (const char* extension : {"EXT_texture_webp", "EXT_texture_avif", "MSFT_texture_dds"}) {
     const auto it = source.extensions.find(extension);
     if (it != source.extensions.end() && it->second.Has("source") &&
         it->second.Get("source").IsInt())
