@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.h"
@@ -23,6 +21,7 @@
 #include "scene/gltf_draco.h"
 #include "scene/gltf_hipr_extras.h"
 #include "scene/gltf_image_decode.h"
+#include "scene/gltf_instancing.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_meshopt.h"
 #include "scene/gltf_node_transform.h"
@@ -30,6 +29,7 @@
 #include "scene/gltf_pose.h"
 #include "scene/gltf_precheck.h"
 #include "scene/gltf_sandbox.h"
+#include "scene/gltf_variants.h"
 #include "scene/mesh_processing.h"
 #include "scene/scene_limits.h"
 
@@ -54,7 +54,7 @@ bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* 
     return true;
   };
   size_t& decoded = *static_cast<size_t*>(user);
-  if (gltf::needs_oiio_decoder(bytes, size_t(std::max(size, 0)))) {  // WebP, DDS
+  if (gltf::needs_oiio_decoder(bytes, size_t(std::max(size, 0)))) {  // WebP, AVIF, DDS
     std::string why;
     const size_t budget = std::min(gltf::kMaxImagePixels, gltf::kMaxScenePixels - decoded);
     if (!gltf::decode_with_oiio(image, bytes, size_t(size), budget, gltf::kMaxImageSide, &why))
@@ -134,51 +134,7 @@ class Converter {
     m_scene.materials.push_back(fallback);
   }
 
-  // KHR_materials_variants: the document's list of variant names (each primitive maps them).
-  void convert_variant_names() {
-    const auto it = m_model.extensions.find("KHR_materials_variants");
-    if (it == m_model.extensions.end()) return;
-    const tinygltf::Value& ext = it->second;
-    if (!ext.IsObject() || !ext.Has("variants") || !ext.Get("variants").IsArray())
-      throw InputError(m_name + ": KHR_materials_variants has no \"variants\" array");
-    const tinygltf::Value& variants = ext.Get("variants");
-    for (size_t v = 0; v < variants.ArrayLen(); ++v) {
-      const tinygltf::Value& variant = variants.Get(int(v));
-      const bool named =
-          variant.IsObject() && variant.Has("name") && variant.Get("name").IsString();
-      m_scene.material_variants.push_back(named ? variant.Get("name").Get<std::string>()
-                                                : "variant " + std::to_string(v));
-    }
-  }
-
-  // The primitive's KHR_materials_variants mappings: which material each variant gives it.
-  std::vector<MeshPrimitive::VariantMaterial> variant_materials(const tinygltf::Primitive& source,
-                                                                const std::string& what) const {
-    std::vector<MeshPrimitive::VariantMaterial> out;
-    const auto it = source.extensions.find("KHR_materials_variants");
-    if (it == source.extensions.end()) return out;
-    const tinygltf::Value& ext = it->second;
-    if (!ext.IsObject() || !ext.Has("mappings") || !ext.Get("mappings").IsArray())
-      throw InputError(what + ": KHR_materials_variants has no \"mappings\" array");
-    const tinygltf::Value& mappings = ext.Get("mappings");
-    for (size_t i = 0; i < mappings.ArrayLen(); ++i) {
-      const tinygltf::Value& mapping = mappings.Get(int(i));
-      if (!mapping.IsObject() || !mapping.Has("material") || !mapping.Get("material").IsInt() ||
-          !mapping.Has("variants") || !mapping.Get("variants").IsArray())
-        throw InputError(what + ": variant mapping " + std::to_string(i) +
-                         " needs a material and a variants array");
-      const int material = required(mapping.Get("material").Get<int>(), m_model.materials.size(),
-                                    what + " variant mapping", "material");
-      const tinygltf::Value& variants = mapping.Get("variants");
-      for (size_t k = 0; k < variants.ArrayLen(); ++k) {
-        const tinygltf::Value& variant = variants.Get(int(k));
-        const int index = variant.IsInt() ? variant.Get<int>() : -1;
-        required(index, m_scene.material_variants.size(), what + " variant mapping", "variant");
-        out.push_back({uint32_t(index), uint32_t(material)});
-      }
-    }
-    return out;
-  }
+  void convert_variant_names() { m_scene.material_variants = gltf::variant_names(m_model, m_name); }
 
   void convert_meshes() {
     for (size_t mi = 0; mi < m_model.meshes.size(); ++mi) {
@@ -218,7 +174,8 @@ class Converter {
     MeshPrimitive p;
     p.material = source.material < 0 ? m_default_material : uint32_t(source.material);
     p.default_material = p.material;
-    p.variant_materials = variant_materials(source, what);
+    p.variant_materials =
+        gltf::variant_materials(m_model, source, m_scene.material_variants.size(), what);
     p.positions =
         gltf::to_vec3(gltf::read_floats(m_model, attribute("POSITION"), 3, what + " POSITION"));
     if (attribute("NORMAL") >= 0)
@@ -368,7 +325,8 @@ class Converter {
       const auto it = source.extensions.find("EXT_mesh_gpu_instancing");
       if (it == source.extensions.end() || m_scene.nodes[i].mesh < 0) continue;
       const std::string what = object("node", i, source.name) + " EXT_mesh_gpu_instancing";
-      const std::vector<glm::mat4> transforms = instance_transforms(it->second, what);
+      const std::vector<glm::mat4> transforms =
+          gltf::gpu_instance_transforms(m_model, it->second, what);
       total += transforms.size();
       if (total > kMaxGpuInstances)
         throw InputError(m_name + ": more than " + std::to_string(kMaxGpuInstances) +
@@ -388,46 +346,6 @@ class Converter {
       }
       m_scene.gpu_instances.push_back({uint32_t(i), transforms});
     }
-  }
-
-  std::vector<glm::mat4> instance_transforms(const tinygltf::Value& ext,
-                                             const std::string& what) const {
-    if (!ext.IsObject() || !ext.Has("attributes") || !ext.Get("attributes").IsObject())
-      throw InputError(what + " has no attributes object");
-    const tinygltf::Value& attributes = ext.Get("attributes");
-    size_t count = 0;
-    bool any = false;
-    const auto read = [&](const char* name, int components) {
-      std::vector<float> values;
-      if (!attributes.Has(name)) return values;
-      const tinygltf::Value& index = attributes.Get(name);
-      if (!index.IsInt()) throw InputError(what + ": " + name + " is not an accessor index");
-      values = gltf::read_floats(m_model, index.Get<int>(), components, what + " " + name);
-      const size_t n = values.size() / size_t(components);
-      if (any && n != count) throw InputError(what + ": its attributes have different counts");
-      count = n;
-      any = true;
-      return values;
-    };
-    const std::vector<float> t = read("TRANSLATION", 3), r = read("ROTATION", 4),
-                             s = read("SCALE", 3);
-    if (!any) throw InputError(what + " has none of TRANSLATION, ROTATION and SCALE");
-    std::vector<glm::mat4> out(count);
-    for (size_t k = 0; k < count; ++k) {
-      glm::mat4 m(1.0f);
-      if (!t.empty()) m = glm::translate(m, glm::vec3(t[3 * k], t[3 * k + 1], t[3 * k + 2]));
-      if (!r.empty()) {
-        const glm::quat q(r[4 * k + 3], r[4 * k], r[4 * k + 1], r[4 * k + 2]);  // glTF: x y z w
-        const float length = glm::length(q);
-        if (!(length > 0.0f))
-          throw InputError(what + ": instance " + std::to_string(k) +
-                           " has a zero rotation quaternion");
-        m = m * glm::mat4_cast(q / length);
-      }
-      if (!s.empty()) m = glm::scale(m, glm::vec3(s[3 * k], s[3 * k + 1], s[3 * k + 2]));
-      out[k] = m;
-    }
-    return out;
   }
 
   // KHR_node_visibility: "visible": false hides the node and its subtree (Scene::instances).
