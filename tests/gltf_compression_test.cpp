@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <glm/glm.hpp>
@@ -204,6 +205,86 @@ TEST(Meshopt, MalformedStreamsAreOneLineErrors) {
       EXPECT_NE(message.find(c.message), std::string::npos) << c.name << ": " << message;
       EXPECT_EQ(message.find('\n'), std::string::npos) << c.name << ": " << message;
     }
+  }
+}
+
+// ---- texture sources of other formats (built here: no tool needed) ----
+
+// An uncompressed 32-bit BGRA DDS file of `w` x `h` texels, texel (x, y) = (x * 60, y * 60, 200).
+std::vector<unsigned char> dds_image(uint32_t w, uint32_t h) {
+  std::vector<uint32_t> header(32, 0);  // "DDS " then the 124-byte DDS_HEADER
+  std::memcpy(header.data(), "DDS ", 4);
+  header[1] = 124;                       // dwSize
+  header[2] = 0x1 | 0x2 | 0x4 | 0x1000;  // CAPS, HEIGHT, WIDTH, PIXELFORMAT
+  header[3] = h;
+  header[4] = w;
+  header[5] = w * 4;        // pitch
+  header[19] = 32;          // DDS_PIXELFORMAT.dwSize
+  header[20] = 0x40 | 0x1;  // RGB, ALPHAPIXELS
+  header[22] = 32;          // bits per texel
+  header[23] = 0x00ff0000;  // R mask
+  header[24] = 0x0000ff00;  // G
+  header[25] = 0x000000ff;  // B
+  header[26] = 0xff000000;  // A
+  header[27] = 0x1000;      // DDSCAPS_TEXTURE
+  std::vector<unsigned char> bytes(128);
+  std::memcpy(bytes.data(), header.data(), 128);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x)
+      bytes.insert(bytes.end(), {200, uint8_t(y * 60), uint8_t(x * 60), 255});  // B G R A
+  return bytes;
+}
+
+// A triangle whose texture has a PNG `source` (grey) and the extension's other source.
+test::Document textured_triangle(const fs::path& dir, const json& texture) {
+  write_image(dir / "grey.png", ImageRGB{1, 1, {0.5f, 0.5f, 0.5f}});
+  test::Document doc = test::triangle_document();
+  const int uv = doc.add_accessor(std::vector<float>{0, 0, 1, 0, 0, 1}, test::kFloat, "VEC2", 3);
+  doc.primitive()["attributes"]["TEXCOORD_0"] = uv;
+  doc.gltf["images"] = json::array({{{"uri", "grey.png"}}, {{"uri", "texels.dds"}}});
+  doc.gltf["textures"] = json::array({texture});
+  doc.gltf["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
+  return doc;
+}
+
+TEST(TextureSources, DdsIsPreferredToTheFallback) {
+  const fs::path dir = test::temp_dir("dds");
+  test::write_bytes(dir / "texels.dds", dds_image(4, 3));
+  test::Document doc = textured_triangle(
+      dir, {{"source", 0}, {"extensions", {{"MSFT_texture_dds", {{"source", 1}}}}}});
+  doc.gltf["extensionsUsed"] = {"MSFT_texture_dds"};
+  test::write_document(dir / "dds.gltf", doc);
+  const Scene scene = load_scene(dir / "dds.gltf");
+  ASSERT_EQ(scene.images.size(), 1u);
+  const Image& image = scene.images[0];
+  ASSERT_EQ(image.width, 4u);
+  ASSERT_EQ(image.height, 3u);
+  const uint8_t* texel = &image.rgba8[(2 * 4 + 3) * 4];  // (3, 2)
+  EXPECT_EQ(texel[0], 180);
+  EXPECT_EQ(texel[1], 120);
+  EXPECT_EQ(texel[2], 200);
+}
+
+TEST(TextureSources, BasisuUsesItsFallbackOrIsOneClearError) {
+  const fs::path dir = test::temp_dir("basisu");
+  test::write_bytes(dir / "texels.dds", dds_image(1, 1));  // stands for a .ktx2: never decoded
+  test::Document doc = textured_triangle(
+      dir, {{"source", 0}, {"extensions", {{"KHR_texture_basisu", {{"source", 1}}}}}});
+  doc.gltf["extensionsUsed"] = {"KHR_texture_basisu"};
+  test::write_document(dir / "fallback.gltf", doc);
+  const Scene scene = load_scene(dir / "fallback.gltf");
+  ASSERT_EQ(scene.images.size(), 1u);
+  EXPECT_EQ(scene.images[0].width, 1u);
+  EXPECT_EQ(scene.images[0].rgba8[0], 188);  // the grey PNG, 0.5 linear
+
+  doc.gltf["textures"][0].erase("source");
+  doc.gltf["extensionsRequired"] = {"KHR_texture_basisu"};
+  test::write_document(dir / "only_ktx2.gltf", doc);
+  try {
+    load_scene(dir / "only_ktx2.gltf");
+    ADD_FAILURE() << "a KTX2-only texture loaded";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("KHR_texture_basisu"), std::string::npos) << e.what();
   }
 }
 
