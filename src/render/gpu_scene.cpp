@@ -4,13 +4,29 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "core/log.h"
 #include "core/timer.h"
 #include "render/bsdf_tables.h"
 #include "render/environment_tables.h"
 #include "render/material_packing.h"
+#include "render/texture_fit.h"
 #include "shaders/shared/bindings/scene.h"
 
 namespace hipr {
+namespace {
+
+// A scene whose data one storage buffer of this device cannot address is bad input for this
+// device (one line, exit 2), not a crash or a validation error: say what and by how much.
+void check_fits(const vk::Context& ctx, uint64_t bytes, const char* what) {
+  if (bytes <= ctx.max_storage_range()) return;
+  const auto mib = [](uint64_t b) { return std::to_string((b + (1u << 20) - 1) >> 20); };
+  throw InputError("the scene's " + std::string(what) + " take " + mib(bytes) +
+                   " MiB, more than this device addresses in one buffer (" +
+                   mib(ctx.max_storage_range()) + " MiB, maxStorageBufferRange): the scene does " +
+                   "not fit " + ctx.device_name());
+}
+
+}  // namespace
 
 GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_group_budget)
     : m_ctx(ctx), m_groups(assign_light_groups(scene, light_group_budget)) {
@@ -183,6 +199,11 @@ void GpuScene::upload_geometry(const Scene& scene) {
       m_ctx.software_traversal()
           ? 0
           : VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR;
+  check_fits(m_ctx, all_positions.size() * sizeof(all_positions[0]), "vertex positions");
+  check_fits(m_ctx, all_normals.size() * sizeof(all_normals[0]), "vertex normals");
+  check_fits(m_ctx, all_tangents.size() * sizeof(all_tangents[0]), "vertex tangents");
+  check_fits(m_ctx, all_uvs.size() * sizeof(all_uvs[0]), "texture coordinates");
+  check_fits(m_ctx, all_indices.size() * sizeof(all_indices[0]), "triangle indices");
   positions = vk::make_storage_buffer(m_ctx, all_positions, build_input);
   normals = vk::make_storage_buffer(m_ctx, all_normals);
   tangents = vk::make_storage_buffer(m_ctx, all_tangents);
@@ -243,22 +264,49 @@ void GpuScene::upload_textures(const Scene& scene) {
   // Texels once per image, one image after another; every texture reference on it points at
   // the same offset. Images only come and go at the end of the list (imports and their undo):
   // the leading ones the buffer holds already (same revision) stay where they are, on the device.
+  // Where they do not fit one buffer of this device, the largest images are halved on the
+  // device (texture_fit.h); a reduced buffer is rebuilt whole.
+  const uint64_t max_texels =
+      std::min<uint64_t>(m_ctx.max_storage_range() / sizeof(uint32_t), UINT32_MAX);
+  const std::vector<uint8_t> halvings = texture_halvings(scene.images, max_texels);
+  const bool reduced = std::any_of(halvings.begin(), halvings.end(), [](uint8_t h) { return h; });
   size_t kept = 0;
-  while (kept < std::min(m_image_revision.size(), scene.images.size()) &&
+  while (!reduced && !m_textures_reduced &&
+         kept < std::min(m_image_revision.size(), scene.images.size()) &&
          m_image_revision[kept] == scene.images[kept].revision)
     ++kept;
+  if (reduced) {
+    size_t halved = 0;
+    for (uint8_t h : halvings) halved += h > 0;
+    log::warn("the scene's textures do not fit one buffer of " + m_ctx.device_name() + " (" +
+              std::to_string(m_ctx.max_storage_range() >> 20) + " MiB): " + std::to_string(halved) +
+              " of " + std::to_string(scene.images.size()) +
+              " images are shown at reduced resolution");
+  }
+  m_textures_reduced = reduced;
   const size_t kept_texels =
-      kept == 0 ? 0 : m_image_offset[kept - 1] + scene.images[kept - 1].rgba8.size() / 4;
+      kept == 0
+          ? 0
+          : m_image_offset[kept - 1] + size_t(m_image_size[kept - 1].x) * m_image_size[kept - 1].y;
   m_image_offset.resize(kept);
   m_image_revision.resize(kept);
+  m_image_size.resize(kept);
   std::vector<uint32_t> added;  // the texels of the images after the kept ones
   for (size_t i = kept; i < scene.images.size(); ++i) {
     const Image& image = scene.images[i];
     m_image_offset.push_back(uint32_t(kept_texels + added.size()));
     m_image_revision.push_back(image.revision);
-    const size_t start = added.size();
-    added.resize(start + image.rgba8.size() / 4);
-    std::memcpy(added.data() + start, image.rgba8.data(), image.rgba8.size() / 4 * 4);
+    uint32_t width = image.width, height = image.height;
+    if (halvings[i] == 0) {
+      const size_t start = added.size();
+      added.resize(start + image.rgba8.size() / 4);
+      std::memcpy(added.data() + start, image.rgba8.data(), image.rgba8.size() / 4 * 4);
+    } else {
+      const std::vector<uint32_t> texels_of_image =
+          halved_texels(image, halvings[i], width, height);
+      added.insert(added.end(), texels_of_image.begin(), texels_of_image.end());
+    }
+    m_image_size.push_back({width, height});
   }
   if (!texels || !added.empty()) {
     vk::Buffer grown(m_ctx, VkDeviceSize(kept_texels + added.size()) * sizeof(uint32_t),
@@ -276,9 +324,9 @@ void GpuScene::upload_textures(const Scene& scene) {
   std::vector<abi::TextureInfo> infos;
   for (const Texture& t : scene.textures) {
     if (t.image >= scene.images.size()) throw InternalError("texture references a missing image");
-    const Image& image = scene.images[t.image];
-    infos.push_back({m_image_offset[t.image], image.width, image.height, t.flags, t.uv_transform_u,
-                     t.uv_transform_v});
+    const glm::uvec2 size = m_image_size[t.image];
+    infos.push_back(
+        {m_image_offset[t.image], size.x, size.y, t.flags, t.uv_transform_u, t.uv_transform_v});
   }
   textures = vk::make_storage_buffer(m_ctx, infos);
 }

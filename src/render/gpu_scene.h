@@ -130,6 +130,8 @@ class GpuScene {
   std::vector<uint64_t> m_blas_revision;         // per mesh: Mesh::revision as built
   std::vector<uint32_t> m_image_offset;          // per image: its first texel in `texels`
   std::vector<uint64_t> m_image_revision;  // per image: Image::revision of what `texels` holds
+  std::vector<glm::uvec2> m_image_size;    // per image: its size in `texels` (maybe halved)
+  bool m_textures_reduced = false;         // some image halved to fit the device (texture_fit.h)
   uint64_t m_layout_generation = 0, m_records_generation = 0;
   std::unordered_map<uint32_t, Slot> m_slots;         // per node with an instance
   std::vector<std::pair<uint32_t, uint32_t>> m_free;  // free records: (base, count)

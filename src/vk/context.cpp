@@ -304,6 +304,7 @@ void Context::pick_physical_device(const ContextOptions& options, Traversal trav
                                      m_software_traversal ? nullptr : &accel_props};
   vkGetPhysicalDeviceProperties2(m_physical, &props2);
   m_min_storage_alignment = uint32_t(props2.properties.limits.minStorageBufferOffsetAlignment);
+  m_max_storage_range = props2.properties.limits.maxStorageBufferRange;
   if (!m_software_traversal)
     m_min_scratch_alignment = accel_props.minAccelerationStructureScratchOffsetAlignment;
   const auto& groups = props2.properties.limits.maxComputeWorkGroupCount;

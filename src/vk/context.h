@@ -76,6 +76,8 @@ class Context final : public Device {
     return m_software_traversal ? "software" : "ray-query";
   }
   uint32_t min_storage_alignment() const { return m_min_storage_alignment; }
+  // The most bytes one storage buffer binding may address (maxStorageBufferRange).
+  uint64_t max_storage_range() const { return m_max_storage_range; }
   uint32_t min_scratch_alignment() const { return m_min_scratch_alignment; }
   // maxComputeWorkGroupCount[0] and [1]: ComputePipeline::dispatch folds wider dispatches.
   uint32_t max_dispatch_width() const { return m_max_dispatch[0]; }
@@ -118,7 +120,8 @@ class Context final : public Device {
   bool m_staged_device_memory = false;
   bool m_has_ray_queries = false;
   uint32_t m_min_storage_alignment = 16;
-  uint32_t m_max_dispatch[2] = {65535, 65535};  // the minimum every device supports
+  uint64_t m_max_storage_range = uint64_t(1) << 27;  // the minimum every device supports
+  uint32_t m_max_dispatch[2] = {65535, 65535};       // the minimum every device supports
   uint32_t m_min_scratch_alignment = 128;
   std::atomic<uint32_t> m_validation_errors{0};
 };
