@@ -26,27 +26,6 @@ int component_size(int type) {
   }
 }
 
-int component_count(int type) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR:
-      return 1;
-    case TINYGLTF_TYPE_VEC2:
-      return 2;
-    case TINYGLTF_TYPE_VEC3:
-      return 3;
-    case TINYGLTF_TYPE_VEC4:
-      return 4;
-    case TINYGLTF_TYPE_MAT2:
-      return 4;
-    case TINYGLTF_TYPE_MAT3:
-      return 9;
-    case TINYGLTF_TYPE_MAT4:
-      return 16;
-    default:
-      return 0;
-  }
-}
-
 // Where the accessor's elements live, after checking every element fits in its buffer.
 struct ElementLayout {
   const unsigned char* base = nullptr;  // null: no bufferView, all zeros
@@ -163,6 +142,27 @@ float read_component(const unsigned char* p, int type, bool normalized) {
 }
 
 }  // namespace
+
+int component_count(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+      return 1;
+    case TINYGLTF_TYPE_VEC2:
+      return 2;
+    case TINYGLTF_TYPE_VEC3:
+      return 3;
+    case TINYGLTF_TYPE_VEC4:
+      return 4;
+    case TINYGLTF_TYPE_MAT2:
+      return 4;
+    case TINYGLTF_TYPE_MAT3:
+      return 9;
+    case TINYGLTF_TYPE_MAT4:
+      return 16;
+    default:
+      return 0;
+  }
+}
 
 namespace {
 

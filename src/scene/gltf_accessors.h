@@ -21,6 +21,9 @@ inline constexpr int kMaxImageSide = 16384;
 inline constexpr size_t kMaxImagePixels = size_t(1) << 26;
 inline constexpr size_t kMaxScenePixels = size_t(1) << 28;
 
+// Components per element of an accessor type (TINYGLTF_TYPE_*): 1 to 16; 0 for an unknown type.
+int component_count(int type);
+
 // Throws InputError when the file's triangle primitives add up to more than kMaxSceneElements
 // vertices and indices, counted from their accessors before any is read.
 void check_scene_elements(const tinygltf::Model& model, const std::string& name);

@@ -13,21 +13,6 @@ namespace {
 
 constexpr const char* kExtension = "KHR_draco_mesh_compression";
 
-int components_of(int type) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR:
-      return 1;
-    case TINYGLTF_TYPE_VEC2:
-      return 2;
-    case TINYGLTF_TYPE_VEC3:
-      return 3;
-    case TINYGLTF_TYPE_VEC4:
-      return 4;
-    default:
-      return 0;
-  }
-}
-
 // Appends `bytes` to the model as a bufferView of a new buffer; returns the view's index.
 int append_view(tinygltf::Model& model, std::vector<unsigned char> bytes) {
   tinygltf::Buffer buffer;
@@ -125,8 +110,8 @@ class PrimitiveDecoder {
     const draco::PointAttribute* attribute = mesh.GetAttributeByUniqueId(id);
     if (!attribute)
       fail("Draco stream has no attribute " + std::to_string(id) + " for " + semantic);
-    const int components = components_of(m_model.accessors[size_t(accessor)].type);
-    if (components == 0) fail(semantic + " accessor is not a scalar or vector");
+    const int components = component_count(m_model.accessors[size_t(accessor)].type);
+    if (components == 0 || components > 4) fail(semantic + " accessor is not a scalar or vector");
     std::vector<unsigned char> bytes(size_t(mesh.num_points()) * size_t(components) * 4);
     float value[4];
     for (draco::PointIndex p(0); p < mesh.num_points(); ++p) {
