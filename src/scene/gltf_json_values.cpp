@@ -87,4 +87,14 @@ void set_extra(Json& owner, const char* key, Json value, const std::string& what
   owner["extras"][key] = std::move(value);
 }
 
+bool is_meshopt_fallback(const Json& buffer) {
+  if (!buffer.is_object() || !buffer.contains("extensions") || !buffer["extensions"].is_object())
+    return false;
+  const Json& extensions = buffer["extensions"];
+  if (!extensions.contains("EXT_meshopt_compression")) return false;
+  const Json& ext = extensions["EXT_meshopt_compression"];
+  return ext.is_object() && ext.contains("fallback") && ext["fallback"].is_boolean() &&
+         ext["fallback"].get<bool>();
+}
+
 }  // namespace hipr::gltf

@@ -45,6 +45,10 @@ void edit_object(Json& parent, const char* key, Edit&& edit) {
 // object[key] as an array, made an empty one where it is absent or something else (a list the
 // writer appends to).
 Json& array_member(Json& object, const char* key);
+
+// Whether a buffer object is an EXT_meshopt_compression fallback: bytes the extension decodes
+// into, which may have no data at all (read by the loader and kept by the GLB writer).
+bool is_meshopt_fallback(const Json& buffer);
 // Appends `value` to array_member(object, key); returns its index there.
 size_t append_to(Json& object, const char* key, Json value);
 // The length of object[key] when it is an array, else 0 (how many of a kind the file has).

@@ -94,17 +94,6 @@ void refuse_source_file(const SourceDocument& source, const fs::path& path,
   }
 }
 
-// A buffer EXT_meshopt_compression decodes into: it may have no bytes at all.
-bool is_meshopt_fallback(const Json& buffer) {
-  if (!buffer.is_object() || !buffer.contains("extensions") || !buffer["extensions"].is_object())
-    return false;
-  const Json& extensions = buffer["extensions"];
-  if (!extensions.contains("EXT_meshopt_compression")) return false;
-  const Json& ext = extensions["EXT_meshopt_compression"];
-  return ext.is_object() && ext.contains("fallback") && ext["fallback"].is_boolean() &&
-         ext["fallback"].get<bool>();
-}
-
 }  // namespace
 
 std::vector<fs::path> source_files(const SourceDocument& source) {

@@ -6,27 +6,19 @@
 
 #include "core/error.h"
 #include "scene/glb_container.h"
+#include "scene/gltf_json_values.h"
 #include "scene/gltf_precheck.h"
 
 namespace hipr::gltf {
 namespace {
 
-using Json = nlohmann::json;
-
 // Four zero bytes: tinygltf refuses both a buffer without data and an empty data: URI.
 constexpr const char* kPlaceholderUri = "data:application/octet-stream;base64,AAAAAA==";
 
-const Json* extension(const Json& object, const char* name) {
-  if (!object.is_object() || !object.contains("extensions")) return nullptr;
-  const Json& extensions = object["extensions"];
-  if (!extensions.is_object() || !extensions.contains(name)) return nullptr;
-  return &extensions[name];
-}
-
-bool is_fallback(const Json& buffer) {
-  const Json* ext = extension(buffer, "EXT_meshopt_compression");
-  return ext && ext->is_object() && ext->contains("fallback") && (*ext)["fallback"].is_boolean() &&
-         (*ext)["fallback"].get<bool>();
+bool is_draco(const Json& primitive) {
+  return primitive.is_object() && primitive.contains("extensions") &&
+         primitive["extensions"].is_object() &&
+         primitive["extensions"].contains("KHR_draco_mesh_compression");
 }
 
 bool stub_fallbacks(Json& doc, ParserInput& input, const std::string& name) {
@@ -34,7 +26,7 @@ bool stub_fallbacks(Json& doc, ParserInput& input, const std::string& name) {
   size_t total = 0;
   for (size_t i = 0; i < doc["buffers"].size(); ++i) {
     Json& buffer = doc["buffers"][i];
-    if (!is_fallback(buffer)) continue;
+    if (!is_meshopt_fallback(buffer)) continue;
     if (!buffer.contains("byteLength") || !buffer["byteLength"].is_number_unsigned())
       throw InputError(name + ": buffer " + std::to_string(i) + " has no valid byteLength");
     const size_t length = buffer["byteLength"].get<size_t>();
@@ -57,7 +49,7 @@ bool set_aside_draco_indices(Json& doc, ParserInput& input) {
       continue;
     for (size_t p = 0; p < mesh["primitives"].size(); ++p) {
       Json& primitive = mesh["primitives"][p];
-      if (!extension(primitive, "KHR_draco_mesh_compression") || !primitive.contains("indices") ||
+      if (!is_draco(primitive) || !primitive.contains("indices") ||
           !primitive["indices"].is_number_integer())
         continue;
       const int64_t accessor = primitive["indices"].get<int64_t>();

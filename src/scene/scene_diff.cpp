@@ -112,18 +112,15 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     changes.geometry = changes.geometry || before.meshes[m].revision != after.meshes[m].revision;
   // A primitive showing another material (a material variant): its instances change, and the
   // geometry records (and a BLAS whose opacity it changes) are rebuilt.
-  const auto reassigned = [&](uint32_t m) {
-    if (m >= before.meshes.size() || before.meshes[m].revision != after.meshes[m].revision)
-      return false;
+  std::vector<bool> reassigned(after.meshes.size(), false);
+  for (size_t m = 0; m < std::min(before.meshes.size(), after.meshes.size()); ++m) {
     const auto& a = before.meshes[m].primitives;
     const auto& b = after.meshes[m].primitives;
-    if (a.size() != b.size()) return false;
-    for (size_t p = 0; p < a.size(); ++p)
-      if (a[p].material != b[p].material) return true;
-    return false;
-  };
-  for (uint32_t m = 0; m < uint32_t(after.meshes.size()); ++m)
-    changes.geometry = changes.geometry || reassigned(m);
+    if (before.meshes[m].revision != after.meshes[m].revision || a.size() != b.size()) continue;
+    for (size_t p = 0; p < a.size() && !reassigned[m]; ++p)
+      reassigned[m] = a[p].material != b[p].material;
+    changes.geometry = changes.geometry || reassigned[m];
+  }
   if (changes.geometry) linear = false;
 
   const std::vector<int> old_of_node = instance_of_node(before, old_instances);
@@ -134,7 +131,7 @@ ChangeSet diff_scenes(const Scene& before, const Scene& after) {
     // Another mesh (or the same index holding other vertices) is a new instance.
     const bool same_mesh = old >= 0 && old_instances[size_t(old)].mesh == b.mesh &&
                            before.meshes[b.mesh].revision == after.meshes[b.mesh].revision &&
-                           !reassigned(b.mesh);
+                           !reassigned[b.mesh];
     bool changed = !same_mesh || old_instances[size_t(old)].world != b.world ||
                    old_instances[size_t(old)].visible != b.visible;
     if (changed) {
