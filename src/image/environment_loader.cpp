@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "image/exr_header.h"
 
 namespace hipr {
 
@@ -14,23 +15,28 @@ Environment load_environment(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError("environment map not found: " + path.string());
+  // A header may claim any size. Up to 16384 x 8192 texels (the largest HDRIs offered) are
+  // read; and no real file holds more than about a thousand texels per byte (the best compression
+  // of a constant image), so a claim beyond either is refused before the texels are allocated.
+  const uintmax_t bytes = std::filesystem::file_size(path, ec);
+  if (ec) throw InputError("cannot read environment map " + path.string() + ": " + ec.message());
+  const auto check_claimed_size = [&](int64_t width, int64_t height) {
+    if (width < 1 || height < 1 || width * height > (int64_t(1) << 27))
+      throw InputError("environment map " + path.string() + " has an unusable size (" +
+                       std::to_string(width) + "x" + std::to_string(height) + ")");
+    if (uintmax_t(width) * uintmax_t(height) > std::max<uintmax_t>(bytes, 4096) * 1024)
+      throw InputError("environment map " + path.string() + " claims more texels (" +
+                       std::to_string(width) + "x" + std::to_string(height) + ") than its " +
+                       std::to_string(bytes) + " bytes can hold");
+  };
+  // OpenEXR trusts its header's sizes while parsing it: it is checked here first.
+  if (const auto window = scan_exr_header(path)) check_claimed_size(window->width, window->height);
   auto input = OIIO::ImageInput::open(path.string());
   if (!input)
     throw InputError("cannot read environment map " + path.string() + ": " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input->spec();
-  // Up to 16384 x 8192 texels (the largest HDRIs offered), whatever the header claims.
-  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 ||
-      int64_t(spec.width) * spec.height > (int64_t(1) << 27))
-    throw InputError("environment map " + path.string() + " has an unusable size");
-  // A header may claim any size: no real file holds more than about a thousand texels per byte
-  // (the best compression of a constant image), so a claim beyond that is refused before the
-  // texels are allocated.
-  const uintmax_t bytes = std::filesystem::file_size(path, ec);
-  if (ec ||
-      uintmax_t(spec.width) * uintmax_t(spec.height) > std::max<uintmax_t>(bytes, 4096) * 1024)
-    throw InputError("environment map " + path.string() + " claims more texels (" +
-                     std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                     ") than its " + std::to_string(bytes) + " bytes can hold");
+  if (spec.nchannels < 1) throw InputError("environment map " + path.string() + " has no channels");
+  check_claimed_size(spec.width, spec.height);
   // Only the first three channels (RGB; one is grey) are read, straight into the texels: a header
   // naming many channels costs nothing more.
   const int channels = std::min(spec.nchannels, 3);

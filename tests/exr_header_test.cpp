@@ -1,0 +1,126 @@
+// The OpenEXR header walk (image/exr_header.h) that runs before OpenEXR: real files pass with
+// their size, hostile headers are refused in microseconds instead of gigabytes.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "image/environment_loader.h"
+#include "image/exr_header.h"
+#include "image/image_io.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Builds a single-part header attribute by attribute, as the OpenEXR file layout describes it.
+class ExrBytes {
+ public:
+  explicit ExrBytes(uint32_t version = 2) {
+    bytes_ = {0x76, 0x2f, 0x31, 0x01};
+    u32(version);
+  }
+  ExrBytes& attribute(const std::string& name, const std::string& type, int32_t size,
+                      const std::vector<uint8_t>& value) {
+    text(name);
+    text(type);
+    u32(uint32_t(size));
+    bytes_.insert(bytes_.end(), value.begin(), value.end());
+    return *this;
+  }
+  ExrBytes& data_window(int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
+    std::vector<uint8_t> box;
+    for (int32_t v : {x0, y0, x1, y1})
+      for (int k = 0; k < 4; ++k) box.push_back(uint8_t(uint32_t(v) >> (8 * k)));
+    return attribute("dataWindow", "box2i", 16, box);
+  }
+  ExrBytes& end_header() {
+    bytes_.push_back(0);
+    return *this;
+  }
+  fs::path write(const std::string& name) const {
+    const fs::path path = test::temp_dir("exr_header") / name;
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes_.data()), std::streamsize(bytes_.size()));
+    return path;
+  }
+
+ private:
+  void u32(uint32_t v) {
+    for (int k = 0; k < 4; ++k) bytes_.push_back(uint8_t(v >> (8 * k)));
+  }
+  void text(const std::string& s) {
+    bytes_.insert(bytes_.end(), s.begin(), s.end());
+    bytes_.push_back(0);
+  }
+  std::vector<uint8_t> bytes_;
+};
+
+TEST(ExrHeader, ARealFileGivesItsDataWindow) {
+  const fs::path path = test::temp_dir("exr_header") / "real.exr";
+  write_image(path, ImageRGB{6, 3, std::vector<float>(6 * 3 * 3, 0.5f)});
+  const auto window = scan_exr_header(path);
+  ASSERT_TRUE(window.has_value());
+  EXPECT_EQ(window->width, 6);
+  EXPECT_EQ(window->height, 3);
+  EXPECT_EQ(read_image(path).width, 6u);
+}
+
+TEST(ExrHeader, OtherFilesAreNotItsBusiness) {
+  const fs::path path = test::temp_dir("exr_header") / "image.hdr";
+  std::ofstream(path) << "#?RADIANCE\n";
+  EXPECT_FALSE(scan_exr_header(path).has_value());
+  EXPECT_FALSE(scan_exr_header(path.parent_path() / "missing.exr").has_value());
+}
+
+TEST(ExrHeader, AnAttributeLargerThanTheFileIsRefused) {
+  // OpenEXR would allocate the claimed 1.9 GB before finding the file short.
+  const fs::path path = ExrBytes()
+                            .attribute("comments", "string", 0x74746173, {'a', 'b'})
+                            .data_window(0, 0, 7, 3)
+                            .end_header()
+                            .write("huge_attribute.exr");
+  EXPECT_THROW(scan_exr_header(path), InputError);
+  EXPECT_THROW(load_environment(path), InputError);
+  EXPECT_THROW(read_image(path), InputError);
+}
+
+TEST(ExrHeader, MalformedHeadersAreRefused) {
+  EXPECT_THROW(scan_exr_header(ExrBytes().data_window(0, 0, 7, 3).write("unterminated.exr")),
+               InputError);
+  EXPECT_THROW(scan_exr_header(ExrBytes().end_header().write("no_window.exr")), InputError);
+  EXPECT_THROW(scan_exr_header(ExrBytes().data_window(5, 0, 4, 3).end_header().write("empty.exr")),
+               InputError);
+  EXPECT_THROW(scan_exr_header(ExrBytes()
+                                   .attribute(std::string(40, 'n'), "int", 4, {0, 0, 0, 0})
+                                   .data_window(0, 0, 7, 3)
+                                   .end_header()
+                                   .write("long_name.exr")),
+               InputError);
+  EXPECT_THROW(scan_exr_header(ExrBytes()
+                                   .attribute("x", "int", -4, {})
+                                   .data_window(0, 0, 7, 3)
+                                   .end_header()
+                                   .write("negative_size.exr")),
+               InputError);
+}
+
+TEST(ExrHeader, AWindowBeyondTheFileIsRefusedBeforeOpenExrSeesIt) {
+  // A valid header claiming 2^31 x 2^31 texels in a few dozen bytes.
+  const fs::path path = ExrBytes()
+                            .data_window(-1073741824, -1073741824, 1073741823, 1073741823)
+                            .end_header()
+                            .write("vast_window.exr");
+  const auto window = scan_exr_header(path);
+  ASSERT_TRUE(window.has_value());
+  EXPECT_EQ(window->width, int64_t(1) << 31);
+  EXPECT_THROW(load_environment(path), InputError);
+}
+
+}  // namespace
+}  // namespace hipr
