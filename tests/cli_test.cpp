@@ -337,6 +337,19 @@ TEST_F(CornellRender, StatsJsonHasTheContractKeys) {
   EXPECT_GE(json["rays_per_second"].get<double>(), json["samples_per_second"].get<double>());
 }
 
+// What the big-scene measurements read (BENCHMARKS.md "Big scenes"): the acceleration structure
+// build is part of the set-up, and the device holds at least the scene's triangles.
+TEST_F(CornellRender, StatsJsonStatesBuildTimeAndMemory) {
+  std::ifstream in(stats());
+  const nlohmann::json json = nlohmann::json::parse(in);
+  const double blas = json.at("blas_build_seconds");
+  EXPECT_GT(blas, 0.0);
+  EXPECT_LE(blas, json.at("setup_seconds").get<double>());
+  const uint64_t triangles = json.at("triangles");
+  EXPECT_GE(json.at("device_bytes").get<uint64_t>(), triangles * 3 * sizeof(float) * 3);
+  EXPECT_GT(json.at("peak_resident_bytes").get<uint64_t>(), 0u);
+}
+
 TEST_F(CornellRender, NothingElseIsLeftInTheOutputFolder) {
   EXPECT_EQ(files_in(s_dir),
             (std::vector<std::string>{"cornell.exr", "cornell.png", "stats.json"}));

@@ -2,6 +2,7 @@
 """Write hipr's small glTF 2.0 test scenes into assets/scenes/.
 
 Usage: python3 tools/make_scenes.py [--out DIR]
+       python3 tools/make_scenes.py --triangles N --out DIR   (a big terrain: tools/big_scene.py)
 
 The output is byte-for-byte deterministic so the generated files can be
 committed and checked against a fresh run (tools/test_make_scenes.py):
@@ -546,7 +547,19 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=DEFAULT_OUT_DIR,
                         help="output directory (default: assets/scenes)")
-    write_all(parser.parse_args(argv).out)
+    parser.add_argument("--triangles", type=int,
+                        help="instead, write terrain_<N>.glb: a terrain of at least N triangles")
+    args = parser.parse_args(argv)
+    if args.triangles is None:
+        write_all(args.out)
+        return
+    if args.triangles < 1:
+        parser.error("--triangles must be at least 1")
+    import big_scene  # beside this file: only the big-scene mode needs it
+    args.out.mkdir(parents=True, exist_ok=True)
+    path = args.out / f"terrain_{args.triangles}.glb"
+    count = big_scene.write_terrain(args.triangles, path)
+    print(f"wrote {path}: {count} triangles, {path.stat().st_size} bytes")
 
 
 if __name__ == "__main__":

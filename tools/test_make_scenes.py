@@ -228,6 +228,47 @@ class TestSceneFiles(unittest.TestCase):
                     self.assertGreater(dot(geometric, shading), 0.0, f"{name} {node_name} {(a, b, c)}")
 
 
+class TestBigTerrain(unittest.TestCase):
+    """`--triangles N`: the generated terrain of BENCHMARKS.md "Big scenes"."""
+
+    def terrain(self, triangles):
+        with tempfile.TemporaryDirectory() as tmp:
+            subprocess.run([sys.executable, str(SCRIPT), "--triangles", str(triangles), "--out", tmp],
+                           check=True, stdout=subprocess.DEVNULL)
+            return load_scene(Path(tmp) / f"terrain_{triangles}.glb")
+
+    def test_at_least_the_asked_triangles_in_tiles(self):
+        for asked in (1, 1000, 300000):
+            doc, buffers = self.terrain(asked)
+            meshes = world_meshes(doc, buffers)
+            count = sum(len(mesh.triangles) for mesh in meshes.values())
+            self.assertGreaterEqual(count, asked)
+            self.assertLess(count, asked * 1.1 + 8, "no more than about what was asked")
+            self.assertEqual(len(meshes), len(doc["meshes"]), "one node per tile")
+            self.assertTrue(all(len(m.triangles) <= 131072 for m in meshes.values()))
+            self.assertEqual(len(doc["cameras"]), 1)
+
+    def test_tiles_are_valid_meshes(self):
+        doc, buffers = self.terrain(5000)
+        for name, mesh in world_meshes(doc, buffers).items():
+            self.assertTrue(all(0 <= i < len(mesh.positions) for t in mesh.triangles for i in t), name)
+            for normal in mesh.normals:
+                self.assertAlmostEqual(math.sqrt(dot(normal, normal)), 1.0, delta=1e-5, msg=name)
+            for a, b, c in mesh.triangles:  # counter-clockwise seen from above, as the normals
+                pa, pb, pc = mesh.positions[a], mesh.positions[b], mesh.positions[c]
+                geometric = cross(sub(pb, pa), sub(pc, pa))
+                self.assertGreater(dot(geometric, mesh.normals[a]), 0.0, f"{name} {(a, b, c)}")
+        for accessor in doc["accessors"]:
+            if "min" in accessor:
+                values = accessor_values(doc, buffers, doc["accessors"].index(accessor))
+                for axis in range(3):
+                    self.assertEqual(f32(accessor["min"][axis]), min(v[axis] for v in values))
+                    self.assertEqual(f32(accessor["max"][axis]), max(v[axis] for v in values))
+
+    def test_output_is_deterministic(self):
+        self.assertEqual(self.terrain(2000), self.terrain(2000))
+
+
 class TestCornellBox(unittest.TestCase):
     def setUp(self):
         self.doc, buffers = load_scene(COMMITTED_DIR / "cornell_box.gltf")

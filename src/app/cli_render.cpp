@@ -10,10 +10,12 @@
 #include "core/error.h"
 #include "core/file_util.h"
 #include "core/log.h"
+#include "core/memory_usage.h"
 #include "core/timer.h"
 #include "image/builtin_environments.h"
 #include "image/image_io.h"
 #include "render/gpu_scene.h"
+#include "vk/buffer.h"
 
 namespace hipr::app {
 namespace {
@@ -106,6 +108,10 @@ int run_render(RenderOptions& o) {
         {"render_cpu_seconds", render_cpu_seconds},  // all threads: robust to a busy machine
         {"load_seconds", load_seconds},
         {"setup_seconds", setup_seconds},
+        // Of the set-up: building the meshes' acceleration structures, device wait included.
+        {"blas_build_seconds", renderer.scene_stats().blas_build_seconds},
+        {"device_bytes", vk::device_bytes_in_use()},  // every buffer and image hipr allocated
+        {"peak_resident_bytes", peak_resident_bytes()},
         {"samples_per_second", samples / render_seconds},
         {"rays_per_second", double(counters.rays) / render_seconds},
         {"nonfinite_samples", counters.non_finite_samples},

@@ -15,11 +15,14 @@
 namespace hipr {
 namespace {
 
+// Rounded up: a limit below 1 MiB (tests reach the limits with small scenes) is not "0 MiB".
+std::string mib(uint64_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20); }
+
 // A scene whose data one storage buffer of this device cannot address is bad input for this
 // device (one line, exit 2), not a crash or a validation error: say what and by how much.
+
 void check_fits(const vk::Context& ctx, uint64_t bytes, const char* what) {
   if (bytes <= ctx.max_storage_range()) return;
-  const auto mib = [](uint64_t b) { return std::to_string((b + (1u << 20) - 1) >> 20); };
   throw InputError("the scene's " + std::string(what) + " take " + mib(bytes) +
                    " MiB, more than this device addresses in one buffer (" +
                    mib(ctx.max_storage_range()) + " MiB, maxStorageBufferRange): the scene does " +
@@ -279,9 +282,8 @@ void GpuScene::upload_textures(const Scene& scene) {
     size_t halved = 0;
     for (uint8_t h : halvings) halved += h > 0;
     log::warn("the scene's textures do not fit one buffer of " + m_ctx.device_name() + " (" +
-              std::to_string(m_ctx.max_storage_range() >> 20) + " MiB): " + std::to_string(halved) +
-              " of " + std::to_string(scene.images.size()) +
-              " images are shown at reduced resolution");
+              mib(m_ctx.max_storage_range()) + " MiB): " + std::to_string(halved) + " of " +
+              std::to_string(scene.images.size()) + " images are shown at reduced resolution");
   }
   m_textures_reduced = reduced;
   const size_t kept_texels =

@@ -305,6 +305,8 @@ void Context::pick_physical_device(const ContextOptions& options, Traversal trav
   vkGetPhysicalDeviceProperties2(m_physical, &props2);
   m_min_storage_alignment = uint32_t(props2.properties.limits.minStorageBufferOffsetAlignment);
   m_max_storage_range = props2.properties.limits.maxStorageBufferRange;
+  if (options.storage_range_limit)
+    m_max_storage_range = std::min(m_max_storage_range, options.storage_range_limit);
   if (!m_software_traversal)
     m_min_scratch_alignment = accel_props.minAccelerationStructureScratchOffsetAlignment;
   const auto& groups = props2.properties.limits.maxComputeWorkGroupCount;

@@ -33,6 +33,9 @@ struct ContextOptions {
   // Tests: fold 1-D dispatches wider than this many workgroups into rows (see
   // max_dispatch_width) as if the device allowed no more; 0 = the device's own limit.
   uint32_t dispatch_width_limit = 0;
+  // Tests: as if one storage buffer could address at most this many bytes (maxStorageBufferRange),
+  // to reach the limits of big scenes with small ones; 0 = the device's own limit.
+  uint64_t storage_range_limit = 0;
   // Device buffers (MemoryUse::Device) are never mapped, even where their memory is host-visible
   // (lavapipe, integrated GPUs): their uploads and read-backs go through staging copies, as on a
   // discrete GPU. The environment variable HIPR_DEVICE_MEMORY=staged sets it, so that tests and

@@ -11,6 +11,7 @@
 #include "app/cli_common.h"
 #include "core/error.h"
 #include "image/builtin_environments.h"
+#include "vk/buffer.h"
 
 namespace hipr::viewer {
 namespace {
@@ -287,6 +288,10 @@ void draw_status_line(const Session& session, const ViewerState& state, float x,
   add("%.1f s since edit", session.seconds_since_edit());
   add("%.2f Msamples/s", session.samples_per_second() * 1e-6);
   add("%.1f fps", state.fps);
+  // What the scene costs (BENCHMARKS.md "Big scenes"): triangles drawn, and every buffer and
+  // image hipr holds on the device.
+  add("%.2f M triangles", double(session.renderer().scene_stats().triangle_count) * 1e-6);
+  add("%.0f MiB on the device", double(vk::device_bytes_in_use()) / double(1 << 20));
   // Which light from afar the image uses (the built-in studio lights a scene with no light).
   if (session.scene().environment) add("env %s", environment_description(session.scene()).c_str());
   const auto& records = session.edit_records();
