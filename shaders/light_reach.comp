@@ -33,6 +33,7 @@ layout(local_size_x = 64) in;
 #include "common/cutout.glsl"
 #include "common/scene_trace.glsl"
 #include "common/material_inputs.glsl"
+#include "common/dispersion.glsl"
 #include "common/shading.glsl"
 #include "common/environment.glsl"
 #include "common/lights.glsl"
@@ -109,7 +110,7 @@ void main() {
   const SurfaceHit surface =
       make_surface_hit(hit.record, hit.primitive, hit.barycentrics, hit.objectToWorld, hit.worldToObject, ray);
   const vec3 wo = -ray;
-  const ShadingParams shading = shading_params(surface, wo);
+  const ShadingParams shading = shading_params(surface, wo, kNoChannel);
   const BsdfPoint bsdf = bsdf_point(shading.bsdf, BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent), wo);
 
   bool anyReached = false;

@@ -39,6 +39,7 @@ layout(scalar, binding = kTraceMaterialGroups) readonly buffer MaterialGroups { 
 #include "common/cutout.glsl"
 #include "common/scene_trace.glsl"
 #include "common/material_inputs.glsl"
+#include "common/dispersion.glsl"
 #include "common/shading.glsl"
 #include "common/environment.glsl"
 #include "common/lights.glsl"
@@ -126,7 +127,8 @@ vec3 leave_surface(vec3 position, vec3 geometricNormal, vec3 direction) {
   return offset_ray_origin(position, dot(direction, geometricNormal) >= 0.0 ? geometricNormal : -geometricNormal);
 }
 
-vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWeight, inout uint rays, out uint group) {
+// Rays traced, by kind: x camera, y extension (a path's later segments), z shadow.
+vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWeight, inout uvec3 rays, out uint group) {
   const LightSample ls = sample_light(surface.position, u);
   group = ls.group;
   if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
@@ -145,7 +147,7 @@ vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWei
     direction = toTarget / tMax;
     tMax *= 0.99999;
   }
-  rays += 1u;
+  rays.z += 1u;
 #if HIPR_DISCOVERY
   // Stage 2: a shadow cast by a changed element makes the shadowed point's tile a priority.
   const uint blocker = closest_blocker(origin, direction, tMax);
@@ -175,6 +177,7 @@ struct PathState {
   uint depth;
   uint firstLobe;             // lobe sampled at x_0 (discovery path classes)
   bool specularSinceFirst;    // every lobe after x_0 so far was specular or transmission
+  uint channel;               // the colour channel it carries since a dispersive surface, or kNoChannel
 };
 
 // Adds a contribution to the path's radiance and to its light group's share. The share is what
@@ -212,6 +215,7 @@ PathState start_path(uvec2 pixel, uint sampleIndex) {
   p.depth = 0u;
   p.firstLobe = kLobeDiffuse;
   p.specularSinceFirst = true;
+  p.channel = kNoChannel;
 #if HIPR_LIGHT_GROUPS > 0
   for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g) g_sampleGroups[g] = vec3(0.0);
 #endif
@@ -220,7 +224,7 @@ PathState start_path(uvec2 pixel, uint sampleIndex) {
 
 // Traces one segment and scatters; returns true when the path has ended. `backgroundTile`:
 // the camera ray cannot hit anything (see main), so it misses without a query.
-bool path_step(inout PathState p, bool backgroundTile, inout uint rays) {
+bool path_step(inout PathState p, bool backgroundTile, inout uvec3 rays) {
 #if !HIPR_HAS_LIGHTS && !HIPR_DISCOVERY
   // Nothing emits and nothing can be sampled: every sample is black, whatever its path.
   // (Stage 2 still walks paths: discovery weighs throughput, not radiance.)
@@ -233,7 +237,10 @@ bool path_step(inout PathState p, bool backgroundTile, inout uint rays) {
 #endif
   RayHit hit;
   const bool query = p.depth > 0u || !backgroundTile;
-  if (query) rays += 1u;
+  if (query) {
+    if (p.depth == 0u) rays.x += 1u;
+    else rays.y += 1u;
+  }
   if (!query || !trace_closest(p.origin, p.direction, kFloatMax, hit)) {
     if (HIPR_FEATURE_ENVIRONMENT != 0 && u_frame.environmentLight != kInvalidIndex) {
       float weight = 1.0;
@@ -246,7 +253,12 @@ bool path_step(inout PathState p, bool backgroundTile, inout uint rays) {
   const SurfaceHit surface = make_surface_hit(hit.record, hit.primitive, hit.barycentrics, hit.objectToWorld,
                                               hit.worldToObject, p.direction);
   const vec3 wo = -p.direction;
-  const ShadingParams shading = shading_params(surface, wo);
+  // The first dispersive dielectric on the path picks the colour channel it carries on.
+  if (p.channel == kNoChannel && material_disperses(surface.material)) {
+    p.channel = dispersion_channel(rng_uniform4(p.rng, p.depth, 3u).x);
+    p.throughput *= dispersion_channel_weight(p.channel);
+  }
+  const ShadingParams shading = shading_params(surface, wo, p.channel);
   const OpenPbrParams params = shading.bsdf;
   // A ray that hits a transmissive solid from inside crossed its medium: Beer-Lambert.
   // (Media are not nested: a segment inside one solid that ends on another is not absorbed.)
@@ -347,7 +359,7 @@ void main() {
     if (restart) clear_record_sums(record);
   }
 #endif
-  uint rays = 0u;
+  uvec3 rays = uvec3(0u);
   uint nonFinite = 0u;
   // Samples finish in index order, so the sum is the same whatever the dispatch size.
   uint finished = 0u;
@@ -381,7 +393,9 @@ void main() {
   for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g) b_group_sums[pixelIndex * HIPR_LIGHT_GROUPS + g] = groupSums[g];
 #endif
 
-  atomicAdd(b_stats.rays, uint64_t(rays));
+  atomicAdd(b_stats.rays, uint64_t(rays.x + rays.y + rays.z));
+  atomicAdd(b_stats.cameraRays, uint64_t(rays.x));
+  atomicAdd(b_stats.shadowRays, uint64_t(rays.z));
   atomicAdd(b_stats.samples, uint64_t(samples));
   if (nonFinite > 0u) atomicAdd(b_stats.nonFiniteSamples, nonFinite);
 }

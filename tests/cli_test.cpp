@@ -350,6 +350,19 @@ TEST_F(CornellRender, StatsJsonStatesBuildTimeAndMemory) {
   EXPECT_GT(json.at("peak_resident_bytes").get<uint64_t>(), 0u);
 }
 
+// Rays by kind: every sample of the closed box starts with one camera ray, a lit point casts a
+// shadow ray, and the kinds add up to all the rays.
+TEST_F(CornellRender, StatsJsonSplitsTheRaysByKind) {
+  std::ifstream in(stats());
+  const nlohmann::json json = nlohmann::json::parse(in);
+  const uint64_t camera = json.at("camera_rays"), extension = json.at("extension_rays"),
+                 shadow = json.at("shadow_rays"), all = json.at("rays");
+  EXPECT_EQ(camera + extension + shadow, all);
+  EXPECT_EQ(camera, uint64_t(kSize) * kSize * kSpp);
+  EXPECT_GT(shadow, camera / 2);
+  EXPECT_GT(extension, 0u);
+}
+
 TEST_F(CornellRender, NothingElseIsLeftInTheOutputFolder) {
   EXPECT_EQ(files_in(s_dir),
             (std::vector<std::string>{"cornell.exr", "cornell.png", "stats.json"}));

@@ -193,6 +193,18 @@ TEST(GltfExtensions, DiffuseTransmissionBecomesThinSubsurface) {
   EXPECT_TRUE(l.material().flags & abi::kMaterialThinWalled);
 }
 
+// glTF's Abbe number is 20 / dispersion; OpenPBR's is abbe_number / scale, abbe_number 20.
+TEST(GltfExtensions, DispersionBecomesTheDispersionScale) {
+  const Loaded l = load_with({{"extensions",
+                               {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                {"KHR_materials_volume", {{"thicknessFactor", 0.5}}},
+                                {"KHR_materials_dispersion", {{"dispersion", 0.4}}}}}});
+  EXPECT_FLOAT_EQ(l.material().transmission_dispersion_scale, 0.4f);
+  EXPECT_FLOAT_EQ(l.material().transmission_dispersion_abbe_number, 20.0f);
+  const Loaded none = load_with(json::object());
+  EXPECT_EQ(none.material().transmission_dispersion_scale, 0.0f);
+}
+
 TEST(GltfExtensions, ValuesOutOfRangeAreClamped) {
   const Loaded l = load_with({{"extensions",
                                {{"KHR_materials_transmission", {{"transmissionFactor", 3.0}}},
@@ -279,13 +291,13 @@ TEST(GltfTexCoords, SecondUvSetIsLoadedAndSelected) {
 }
 
 TEST(GltfExtensionSupport, UnknownOptionalExtensionWarnsOncePerExtension) {
-  const Loaded l = load_with(json::object(), {"EXT_hipr_made_up", "KHR_materials_dispersion",
-                                              "KHR_materials_variants", "KHR_materials_sheen"});
+  const Loaded l = load_with(
+      json::object(), {"EXT_hipr_made_up", "KHR_materials_dispersion", "KHR_materials_variants",
+                       "EXT_hipr_other", "KHR_materials_sheen"});
   const auto lines = test::lines_of(l.warnings);
-  ASSERT_EQ(lines.size(), 2u) << l.warnings;  // variants and sheen are read
+  ASSERT_EQ(lines.size(), 2u) << l.warnings;  // dispersion, variants and sheen are read
   EXPECT_NE(lines[0].find("EXT_hipr_made_up is not supported"), std::string::npos) << lines[0];
-  EXPECT_NE(lines[1].find("KHR_materials_dispersion is not supported"), std::string::npos)
-      << lines[1];
+  EXPECT_NE(lines[1].find("EXT_hipr_other is not supported"), std::string::npos) << lines[1];
   for (const std::string& line : lines)
     EXPECT_EQ(line.rfind("hipr: warning: scene.gltf: ", 0), 0u) << line;
 }
@@ -389,18 +401,18 @@ TEST(GltfExtensionSupport, EveryImplementedExtensionMayBeRequired) {
   }
 }
 
-TEST(GltfExtensionSupport, RequiredDispersionIsRefused) {
+TEST(GltfExtensionSupport, RequiredUnknownExtensionIsRefused) {
   Document doc = test::triangle_document();
-  doc.gltf["extensionsUsed"] = {"KHR_materials_dispersion"};
-  doc.gltf["extensionsRequired"] = {"KHR_materials_dispersion"};
-  const fs::path file = test::temp_dir("gltf-required-dispersion") / "tri.gltf";
+  doc.gltf["extensionsUsed"] = {"KHR_materials_volume_scatter"};
+  doc.gltf["extensionsRequired"] = {"KHR_materials_volume_scatter"};
+  const fs::path file = test::temp_dir("gltf-required-unknown") / "tri.gltf";
   test::write_document(file, doc);
   try {
     load_scene(file);
     ADD_FAILURE() << "loaded a scene that requires an unsupported extension";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "tri.gltf: requires unsupported glTF extension KHR_materials_dispersion");
+              "tri.gltf: requires unsupported glTF extension KHR_materials_volume_scatter");
   }
 }
 

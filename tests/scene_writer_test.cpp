@@ -248,6 +248,7 @@ TEST(SceneWriter, EveryParameterRoundTripsOnAMaterialWithEveryExtension) {
         {"KHR_materials_iridescence", {{"iridescenceFactor", 0.5}}},
         {"KHR_materials_anisotropy", {{"anisotropyStrength", 0.5}}},
         {"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.1}}},
+        {"KHR_materials_dispersion", {{"dispersion", 0.3}}},
         {"KHR_materials_ior", {{"ior", 1.3}}},
         {"KHR_materials_specular", {{"specularFactor", 0.7}}},
         {"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}};

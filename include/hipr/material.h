@@ -42,6 +42,10 @@ struct MaterialParameters {
   float transmission_weight;
   float transmission_depth;
   glm::vec3 transmission_color;
+  // Dispersion of the transmitting dielectric: its Abbe number is
+  // transmission_dispersion_abbe_number / transmission_dispersion_scale (0: none).
+  float transmission_dispersion_scale;
+  float transmission_dispersion_abbe_number;
   float subsurface_weight;
   glm::vec3 subsurface_color;
   float subsurface_radius;

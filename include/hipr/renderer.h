@@ -59,9 +59,11 @@ struct RenderSettings {
 };
 
 struct RenderCounters {
-  uint64_t rays = 0;
+  uint64_t rays = 0;  // every ray traced: camera_rays + shadow_rays + the paths' later segments
   uint64_t samples = 0;
   uint32_t non_finite_samples = 0;
+  uint64_t camera_rays = 0;  // a path's first segment (skipped where the camera sees nothing)
+  uint64_t shadow_rays = 0;  // toward a light sample (next-event estimation)
 };
 
 // What the renderer holds of the scene.

@@ -35,6 +35,9 @@
 #ifndef HIPR_FEATURE_ANISOTROPY  // specular_roughness_anisotropy > 0
 #define HIPR_FEATURE_ANISOTROPY 1
 #endif
+#ifndef HIPR_FEATURE_DISPERSION  // transmission_dispersion_scale > 0 on a thick transmissive material
+#define HIPR_FEATURE_DISPERSION 1
+#endif
 
 // ---- what the scene holds besides BSDF lobes ----
 #ifndef HIPR_FEATURE_TEXTURES  // a material reads a texture (any slot)

@@ -2,7 +2,7 @@
 // BSDF takes them, plus what the integrator needs besides: emission, the medium behind the
 // surface and the anisotropy direction. Features the kernel was compiled without become
 // constants here (features.glsl), so the compiler drops their code.
-// Needs surface.glsl and material_inputs.glsl.
+// Needs surface.glsl, material_inputs.glsl and dispersion.glsl.
 #ifndef HIPR_SHADING_GLSL
 #define HIPR_SHADING_GLSL
 
@@ -14,9 +14,19 @@ struct ShadingParams {
   bool doubleSided;
 };
 
+// Whether a path meeting this material takes one colour channel (common/dispersion.glsl): a
+// thick transmissive dielectric with dispersion. (A thin-walled slab bends every wavelength back
+// as it was: it does not disperse.)
+bool material_disperses(uint material) {
+  return HIPR_FEATURE_DISPERSION != 0 && HIPR_FEATURE_TRANSMISSION != 0 &&
+         b_materials[material].transmission_dispersion_scale > 0.0 && b_materials[material].transmission_weight > 0.0 &&
+         (b_materials[material].flags & kMaterialThinWalled) == 0u;
+}
+
 // Seen from the side the ray arrived on: a ray inside a transmissive solid sees the inverse
-// index, and neither coat nor fuzz (they are on the outside).
-ShadingParams shading_params(SurfaceHit hit, vec3 wo) {
+// index, and neither coat nor fuzz (they are on the outside). `channel`: the colour channel the
+// path carries (kNoChannel for all three), whose wavelength a dispersive material refracts.
+ShadingParams shading_params(SurfaceHit hit, vec3 wo, uint channel) {
   const uint material = hit.material;
   ShadingParams s;
   vec3 baseColor = b_materials[material].base_color;
@@ -47,7 +57,13 @@ ShadingParams shading_params(SurfaceHit hit, vec3 wo) {
     s.tangent = a.direction;
   }
   p.alpha = ggx_alpha_anisotropic(clamp(roughness, 0.0, 1.0), anisotropy);
-  const float ior = ior_with_specular_weight(max(b_materials[material].specular_ior, 1.0), p.specularWeight);
+  float baseIor = max(b_materials[material].specular_ior, 1.0);
+  if (channel != kNoChannel && material_disperses(material))
+    baseIor = dispersed_ior(baseIor,
+                            b_materials[material].transmission_dispersion_scale /
+                                b_materials[material].transmission_dispersion_abbe_number,
+                            dispersion_wavelength(channel));
+  const float ior = ior_with_specular_weight(baseIor, p.specularWeight);
   p.eta = HIPR_FEATURE_SPECULAR != 0 || HIPR_FEATURE_TRANSMISSION != 0 ? ((thin || hit.frontFacing) ? ior : 1.0 / ior) : 1.0;
   p.transmission = HIPR_FEATURE_TRANSMISSION != 0 ? clamp(material_transmission_weight(hit), 0.0, 1.0) : 0.0;
   const vec3 transmissionColor = b_materials[material].transmission_color;

@@ -93,6 +93,10 @@ HIPR_CONST uint kLightEnvironment = 4u;
 HIPR_CONST uint kSamplerSobol = 0u;
 HIPR_CONST uint kSamplerRandom = 1u;
 
+// The colour channel a path carries after a dispersive dielectric (common/dispersion.glsl):
+// 0, 1, 2 for R, G, B, or none yet.
+HIPR_CONST uint kNoChannel = 3u;
+
 // HIPR_LIGHT_SAMPLING values (a define of trace_tiles.comp).
 #define kLightSamplingMis 0
 #define kLightSamplingBsdfOnly 1
@@ -153,6 +157,8 @@ struct MaterialBlock {
   float transmission_weight;
   float transmission_depth;
   vec3 transmission_color;
+  float transmission_dispersion_scale;        // Abbe number: abbe_number / scale (0: none)
+  float transmission_dispersion_abbe_number;
   float subsurface_weight;
   vec3 subsurface_color;
   float subsurface_radius;
@@ -347,7 +353,9 @@ HIPR_CONST uint kDisplayDifference = 4u; // blend, where a pixel's stale estimat
 
 // Counters the kernels add to. 64-bit so long renders never wrap.
 struct RenderStats {
-  uint64_t rays;
+  uint64_t rays;        // all of them: camera + extension + shadow
+  uint64_t cameraRays;  // a path's first segment (none in a tile the camera sees no object in)
+  uint64_t shadowRays;  // toward a light sample
   uint64_t samples;
   uint nonFiniteSamples;
   uint padding;

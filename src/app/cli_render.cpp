@@ -120,6 +120,10 @@ int run_render(RenderOptions& o) {
         {"height", o.common.render.height},
         {"rays", counters.rays},
         {"rays_per_sample", double(counters.rays) / samples},
+        // By kind (the throughput work of issue 41): extension rays are a path's later segments.
+        {"camera_rays", counters.camera_rays},
+        {"extension_rays", counters.rays - counters.camera_rays - counters.shadow_rays},
+        {"shadow_rays", counters.shadow_rays},
         {"device", ctx.device_name()},
         {"traversal", ctx.traversal_name()},
         {"scene_hash", scene.content_hash},

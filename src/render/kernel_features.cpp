@@ -56,6 +56,13 @@ const std::vector<KernelFeature>& kernel_feature_table() {
        [](const M& m) { return m.base_diffuse_roughness > 0.0f; }, nullptr, true},
       {1u << 8, "HIPR_FEATURE_ANISOTROPY", "anisotropy",
        [](const M& m) { return m.specular_anisotropy > 0.0f; }, nullptr, true},
+      // As shading.glsl's material_disperses: a thin-walled slab does not disperse.
+      {1u << 16, "HIPR_FEATURE_DISPERSION", "dispersion",
+       [](const M& m) {
+         return m.transmission_weight > 0.0f && m.transmission_dispersion_scale > 0.0f &&
+                (m.flags & abi::kMaterialThinWalled) == 0;
+       },
+       nullptr, true},
       {1u << 9, "HIPR_FEATURE_TEXTURES", "textures", has_texture, nullptr, false},
       {1u << 10, "HIPR_FEATURE_NORMAL_MAP", "normal maps",
        [](const M& m) {

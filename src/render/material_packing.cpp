@@ -30,6 +30,8 @@ abi::MaterialBlock pack_material(const MaterialParameters& p) {
   b.transmission_weight = p.transmission_weight;
   b.transmission_depth = p.transmission_depth;
   b.transmission_color = p.transmission_color;
+  b.transmission_dispersion_scale = p.transmission_dispersion_scale;
+  b.transmission_dispersion_abbe_number = p.transmission_dispersion_abbe_number;
   b.subsurface_weight = p.subsurface_weight;
   b.subsurface_color = p.subsurface_color;
   b.subsurface_radius = p.subsurface_radius;

@@ -1,4 +1,5 @@
 // The one place that says which glTF material field becomes which OpenPBR parameter.
+// clang-format off
 //
 // glTF field                                  -> OpenPBR (MaterialParameters)
 // --- core (gltf_materials.cpp) ---
@@ -6,47 +7,55 @@
 // metallicFactor / roughnessFactor (x MR tex) -> base_metalness / specular_roughness
 // normalTexture (+ scale)                     -> normal_texture, normal_scale
 // emissiveFactor (x emissiveTexture)          -> emission_color (emission_luminance = 1)
-// alphaMode OPAQUE                            -> geometry_opacity 1, alpha_cutoff -1, texture alpha
-// ignored alphaMode MASK                              -> geometry_opacity = baseColorFactor.a,
-// alpha_cutoff = alphaCutoff alphaMode BLEND                             -> geometry_opacity =
-// baseColorFactor.a, alpha_cutoff -1 (stochastic)
+// alphaMode OPAQUE                            -> geometry_opacity 1, alpha_cutoff -1, texture
+//                                                alpha ignored
+// alphaMode MASK                              -> geometry_opacity = baseColorFactor.a,
+//                                                alpha_cutoff = alphaCutoff
+// alphaMode BLEND                             -> geometry_opacity = baseColorFactor.a,
+//                                                alpha_cutoff -1 (stochastic)
 //   (opacity = geometry_opacity x baseColorTexture.a in both cases; see shaders/common/cutout.glsl)
 // doubleSided                                 -> flags kMaterialDoubleSided
 // occlusionTexture                            -> ignored (a path tracer computes occlusion)
 // --- extensions (rows below) ---
 // KHR_materials_emissive_strength  emissiveStrength -> emission_luminance
-// KHR_materials_ior                ior              -> specular_ior
+// KHR_materials_ior                ior -> specular_ior
 // KHR_materials_specular           specularFactor / specularColorFactor -> specular_weight /
-// specular_color KHR_materials_transmission       transmissionFactor -> transmission_weight
+//                                  specular_color
+// KHR_materials_transmission       transmissionFactor -> transmission_weight
 // KHR_materials_volume             attenuationColor / attenuationDistance -> transmission_color /
-// transmission_depth
-//                                  (infinite distance: colour 1, depth 0 = no absorption);
-//                                  thicknessFactor > 0 clears kMaterialThinWalled; thicknessTexture
-//                                  ignored (a path tracer measures thickness by tracing)
-// no KHR_materials_volume, or thicknessFactor 0 -> kMaterialThinWalled (glTF: such transmission is
-// thin);
-//                                  a thin transmissive material's transmission_color =
+//                                  transmission_depth (infinite distance: colour 1, depth 0 = no
+//                                  absorption); thicknessFactor > 0 clears kMaterialThinWalled;
+//                                  thicknessTexture ignored (a path tracer measures thickness by
+//                                  tracing)
+// no KHR_materials_volume, or thicknessFactor 0 -> kMaterialThinWalled (glTF: such transmission
+//                                  is thin); a thin transmissive material's transmission_color =
 //                                  baseColorFactor.rgb (glTF tints transmitted light by the base
 //                                  colour)
 // KHR_materials_clearcoat          clearcoatFactor / clearcoatRoughnessFactor -> coat_weight /
-// coat_roughness;
-//                                  coat_ior 1.5, coat_color 1, coat_darkening 0 (glTF's coat does
-//                                  not darken); clearcoatNormalTexture.scale -> coat_normal_scale
+//                                  coat_roughness; coat_ior 1.5, coat_color 1, coat_darkening 0
+//                                  (glTF's coat does not darken); clearcoatNormalTexture.scale ->
+//                                  coat_normal_scale
 // KHR_materials_sheen              sheenColorFactor -> fuzz_color, fuzz_weight = 1 when the colour
-// or its
-//                                  texture is non-zero; sheenRoughnessFactor -> fuzz_roughness
+//                                  or its texture is non-zero; sheenRoughnessFactor ->
+//                                  fuzz_roughness
 // KHR_materials_iridescence        iridescenceFactor -> thin_film_weight, iridescenceIor ->
-// thin_film_ior,
-//                                  iridescenceThicknessMaximum / Minimum -> thin_film_thickness /
-//                                  thin_film_thickness_min (nanometres, as glTF; OpenPBR uses um)
+//                                  thin_film_ior, iridescenceThicknessMaximum / Minimum ->
+//                                  thin_film_thickness / thin_film_thickness_min (nanometres, as
+//                                  glTF; OpenPBR uses um)
 // KHR_materials_anisotropy         anisotropyStrength -> specular_anisotropy,
 //                                  anisotropyRotation -> specular_rotation (radians, glTF's unit)
 // KHR_materials_diffuse_transmission diffuseTransmissionFactor / ColorFactor -> subsurface_weight /
 //                                  subsurface_color: with thin walls, OpenPBR's subsurface is
 //                                  exactly a diffuse transmission (its textures are not read)
-// KHR_materials_dispersion         not supported: one warning, rendered without dispersion
-// KHR_materials_variants           not supported: one warning, the default materials are used
+// KHR_materials_dispersion         dispersion -> transmission_dispersion_scale, with
+//                                  transmission_dispersion_abbe_number 20: glTF's Abbe number is
+//                                  20 / dispersion, OpenPBR's abbe_number / scale. Three
+//                                  wavelengths, one per colour channel (common/dispersion.glsl)
+// KHR_materials_variants           material sets (gltf_variants.cpp)
+// KHR_materials_unlit              gltf_materials.cpp; KHR_materials_pbrSpecularGlossiness:
+//                                  gltf_spec_gloss.cpp
 // KHR_texture_transform            every textureInfo: see gltf_textures.cpp
+// clang-format on
 #include "scene/gltf_material_table.h"
 
 #include <limits>
@@ -92,6 +101,8 @@ const std::vector<FactorRow>& factor_rows() {
        offsetof(M, subsurface_weight), 1, zero, 0, 1},
       {"KHR_materials_diffuse_transmission", "diffuseTransmissionColorFactor",
        offsetof(M, subsurface_color), 3, one, 0, 1},
+      {"KHR_materials_dispersion", "dispersion", offsetof(M, transmission_dispersion_scale), 1,
+       zero, 0, kInf},
   };
   return rows;
 }

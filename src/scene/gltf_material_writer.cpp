@@ -30,6 +30,7 @@ namespace {
 using M = MaterialParameters;
 constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 constexpr const char* kVolume = "KHR_materials_volume";
+constexpr const char* kDispersion = "KHR_materials_dispersion";
 
 std::vector<float> values(const M& m, size_t offset, int components) {
   std::vector<float> v(static_cast<size_t>(components));
@@ -75,6 +76,14 @@ std::vector<std::string> row_extensions() {
 bool has_extension(const Json& m, const std::string& extension) {
   return m.contains("extensions") && m["extensions"].is_object() &&
          m["extensions"].contains(extension);
+}
+
+// A volume of positive thickness: glTF's thick material (a thin one has no medium).
+bool is_thick(const Json& m) {
+  if (!has_extension(m, kVolume)) return false;
+  const Json& volume = m["extensions"][kVolume];
+  return volume.is_object() && volume.contains("thicknessFactor") &&
+         volume["thicknessFactor"].is_number() && volume["thicknessFactor"].get<double>() > 0.0;
 }
 
 void write_core(Json& m, const M& t) {
@@ -130,7 +139,9 @@ void write_extension_rows(Json& m, const M& t) {
       for (const FactorRow* row : rows)
         needed = needed || values(t, row->field, row->components) != fallback(*row);
     }
-    if (!needed) continue;
+    // glTF disperses only inside a volume (the validator warns otherwise): a thin material's
+    // dispersion, which hipr does not render either, can only go to extras.
+    if (!needed || (extension == kDispersion && !is_thick(m))) continue;
     edit_object(m, "extensions", [&](Json& extensions) {
       edit_object(extensions, extension.c_str(), [&](Json& ext) {
         for (const FactorRow* row : rows) {
@@ -146,12 +157,8 @@ void write_extension_rows(Json& m, const M& t) {
 // Absorption of a thick (volume) material; a thin one's transmission colour is its base colour
 // in glTF, so an edit of it can only go to extras.
 void write_volume(Json& m, const M& t) {
-  if (!has_extension(m, kVolume)) return;
+  if (!is_thick(m)) return;
   Json& volume = m["extensions"][kVolume];
-  const bool thick = volume.is_object() && volume.contains("thicknessFactor") &&
-                     volume["thicknessFactor"].is_number() &&
-                     volume["thicknessFactor"].get<double>() > 0.0;
-  if (!thick) return;
   const std::vector<float> color = {t.transmission_color.x, t.transmission_color.y,
                                     t.transmission_color.z};
   constexpr float kInf = std::numeric_limits<float>::infinity();

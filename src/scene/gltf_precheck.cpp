@@ -25,6 +25,8 @@ const std::vector<GltfExtension>& gltf_extension_table() {
       {"KHR_materials_iridescence", "thin_film_weight, thin_film_thickness, thin_film_ior"},
       {"KHR_materials_anisotropy", "specular_anisotropy, specular_rotation (and texture)"},
       {"KHR_materials_diffuse_transmission", "subsurface_weight, subsurface_color (thin)"},
+      {"KHR_materials_dispersion",
+       "transmission_dispersion_scale (Abbe number 20 / dispersion); R, G, B refract apart"},
       {"KHR_materials_unlit",
        "a surface emitting its base colour (1 nit per unit) that reflects nothing"},
       {"KHR_materials_pbrSpecularGlossiness",
@@ -66,10 +68,7 @@ void warn_unsupported_extensions(const std::vector<std::string>& used, const std
   const auto& supported = supported_gltf_extensions();
   for (const std::string& ext : used) {
     if (std::find(supported.begin(), supported.end(), ext) != supported.end()) continue;
-    if (ext == "KHR_materials_dispersion")
-      log::warn(name + ": KHR_materials_dispersion is not supported; rendered without dispersion");
-    else
-      log::warn(name + ": glTF extension " + ext + " is not supported; ignored");
+    log::warn(name + ": glTF extension " + ext + " is not supported; ignored");
   }
 }
 

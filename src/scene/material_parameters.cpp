@@ -22,6 +22,10 @@ const std::vector<MaterialParameter>& material_parameters() {
       {"transmission_weight", offsetof(M, transmission_weight), 1, 0, 1},
       {"transmission_color", offsetof(M, transmission_color), 3, 0, 1},
       {"transmission_depth", offsetof(M, transmission_depth), 1, 0, kInf},
+      {"transmission_dispersion_scale", offsetof(M, transmission_dispersion_scale), 1, 0, kInf},
+      // Below 1 the index would swing by more than itself across the visible spectrum.
+      {"transmission_dispersion_abbe_number", offsetof(M, transmission_dispersion_abbe_number), 1,
+       1, kInf},
       {"subsurface_weight", offsetof(M, subsurface_weight), 1, 0, 1},
       {"subsurface_color", offsetof(M, subsurface_color), 3, 0, 1},
       {"subsurface_radius", offsetof(M, subsurface_radius), 1, 0, kInf},

@@ -17,6 +17,8 @@ MaterialParameters default_material_params() {
   m.specular_roughness = 0.3f;
   m.specular_ior = 1.5f;
   m.transmission_color = glm::vec3(1.0f);
+  m.transmission_dispersion_scale = 0.0f;
+  m.transmission_dispersion_abbe_number = 20.0f;  // OpenPBR's default (and glTF's reference)
   m.subsurface_color = glm::vec3(0.8f);
   m.subsurface_radius = 1.0f;
   m.coat_roughness = 0.0f;
