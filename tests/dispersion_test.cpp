@@ -151,7 +151,7 @@ ImageRGB render(const Scene& scene, uint32_t spp) {
 
 TEST(Dispersion, EachChannelRefractsAtItsOwnWavelength) {
   // Abbe number 2 (scale 10 of 20): red sees 1.47, green 1.56, blue 1.73. Measured: each
-  // channel 0.004 from its own index's render (block means, 192 spp) and 0.21 to 0.32 from the
+  // channel 0.004 from its own index's render (block means, at 192 spp) and 0.21 to 0.32 from the
   // others'.
   const float ior = 1.5f, scale = 10.0f;
   const ImageRGB dispersive = render(sphere_before_stripes(ior, scale), 64);

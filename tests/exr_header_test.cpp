@@ -110,6 +110,54 @@ TEST(ExrHeader, MalformedHeadersAreRefused) {
                InputError);
 }
 
+TEST(ExrHeader, LongNamesNeedTheirFlag) {
+  const std::string name(40, 'n');
+  const auto file = [&](uint32_t version, const char* file_name) {
+    return ExrBytes(version)
+        .attribute(name, "int", 4, {0, 0, 0, 0})
+        .data_window(0, 0, 7, 3)
+        .end_header()
+        .write(file_name);
+  };
+  EXPECT_TRUE(scan_exr_header(file(2 | 0x400, "long_names.exr")).has_value());
+  EXPECT_THROW(scan_exr_header(file(2, "short_names.exr")), InputError);
+}
+
+TEST(ExrHeader, EveryPartOfAMultipartFileIsWalkedAndTheLargestReported) {
+  const fs::path path = ExrBytes(2 | 0x1000)
+                            .data_window(0, 0, 3, 3)
+                            .end_header()
+                            .data_window(0, 0, 99, 49)
+                            .end_header()
+                            .end_header()  // the empty header that ends the list
+                            .write("parts.exr");
+  const auto window = scan_exr_header(path);
+  ASSERT_TRUE(window.has_value());
+  EXPECT_EQ(window->width, 100);
+  EXPECT_EQ(window->height, 50);
+  // A second part that claims more than the file is refused like the first.
+  EXPECT_THROW(scan_exr_header(ExrBytes(2 | 0x1000)
+                                   .data_window(0, 0, 3, 3)
+                                   .end_header()
+                                   .attribute("x", "string", 1 << 30, {})
+                                   .write("bad_second_part.exr")),
+               InputError);
+  // Without the list's end, the walk runs past the file.
+  EXPECT_THROW(
+      scan_exr_header(
+          ExrBytes(2 | 0x1000).data_window(0, 0, 3, 3).end_header().write("unended_parts.exr")),
+      InputError);
+}
+
+TEST(ExrHeader, PlausibleSizesNeverOverflow) {
+  EXPECT_TRUE(plausible_image_size(4, 2, 100));
+  EXPECT_FALSE(plausible_image_size(0, 2, 100));
+  // 2^32 x 2^32 would wrap to 0 in 64 bits.
+  EXPECT_FALSE(plausible_image_size(int64_t(1) << 32, int64_t(1) << 32, 1u << 20));
+  EXPECT_FALSE(plausible_image_size(int64_t(1) << 20, int64_t(1) << 20, 1u << 20));
+  EXPECT_TRUE(plausible_image_size(1 << 10, 1 << 10, 1u << 20));
+}
+
 TEST(ExrHeader, AWindowBeyondTheFileIsRefusedBeforeOpenExrSeesIt) {
   // A valid header claiming 2^31 x 2^31 texels in a few dozen bytes.
   const fs::path path = ExrBytes()
@@ -120,6 +168,7 @@ TEST(ExrHeader, AWindowBeyondTheFileIsRefusedBeforeOpenExrSeesIt) {
   ASSERT_TRUE(window.has_value());
   EXPECT_EQ(window->width, int64_t(1) << 31);
   EXPECT_THROW(load_environment(path), InputError);
+  EXPECT_THROW(read_image(path), InputError);
 }
 
 }  // namespace

@@ -269,6 +269,36 @@ TEST(SceneWriter, EveryParameterRoundTripsOnAMaterialWithEveryExtension) {
              dir / "no_material_saved.gltf");
 }
 
+// Dispersion edited on a thick glass: written as glTF's dispersion (20 / its Abbe number, so other
+// viewers see the same glass) and declared; on a thin one, only in hipr's extras (glTF disperses
+// only inside a volume).
+TEST(SceneWriter, DispersionIsWrittenAsGltfsAbbeNumberInsideAVolume) {
+  test::Document doc = test::triangle_document();
+  doc.gltf["materials"][0] = {{"name", "glass"},
+                              {"extensions",
+                               {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                {"KHR_materials_volume", {{"thicknessFactor", 0.2}}}}}};
+  doc.gltf["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume"};
+  const fs::path dir = test::temp_dir("writer-dispersion");
+  test::write_document(dir / "thick.gltf", doc);
+  const MaterialEdit edit{"glass",
+                          {{"transmission_dispersion_scale", {0.5f}},
+                           {"transmission_dispersion_abbe_number", {40.0f}}}};
+  const Scene saved = round_trip(dir / "thick.gltf", {edit}, dir / "thick_saved.gltf");
+  EXPECT_EQ(saved.materials[0].params.transmission_dispersion_scale, 0.5f);
+  EXPECT_EQ(saved.materials[0].params.transmission_dispersion_abbe_number, 40.0f);
+  const json written = read_json(dir / "thick_saved.gltf");
+  EXPECT_EQ(written["materials"][0]["extensions"]["KHR_materials_dispersion"]["dispersion"], 0.25);
+  const auto& used = written["extensionsUsed"];
+  EXPECT_NE(std::find(used.begin(), used.end(), "KHR_materials_dispersion"), used.end());
+
+  doc.gltf["materials"][0]["extensions"].erase("KHR_materials_volume");
+  test::write_document(dir / "thin.gltf", doc);
+  round_trip(dir / "thin.gltf", {edit}, dir / "thin_saved.gltf");
+  const json thin = read_json(dir / "thin_saved.gltf");
+  EXPECT_FALSE(thin["materials"][0]["extensions"].contains("KHR_materials_dispersion"));
+}
+
 TEST(SceneWriter, AnimatedNodesStayTrs) {
   // glTF forbids `matrix` on a node an animation targets: a matrix edit is decomposed into TRS.
   test::Document doc = test::triangle_document();

@@ -31,7 +31,7 @@ MAX_QUADS_PER_TILE = 256 * 256  # a tile is at most 131072 triangles
 def tiling(triangles):
     """(tiles per side, quads per tile side) giving at least `triangles` triangles."""
     quads = max(1, (triangles + 1) // 2)
-    tiles = max(1, round(math.sqrt(quads / MAX_QUADS_PER_TILE)))
+    tiles = max(1, math.ceil(math.sqrt(quads / MAX_QUADS_PER_TILE)))
     per_side = max(1, math.ceil(math.sqrt(quads / (tiles * tiles))))
     return tiles, per_side
 

@@ -15,19 +15,22 @@ Environment load_environment(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError("environment map not found: " + path.string());
-  // A header may claim any size. Up to 16384 x 8192 texels (the largest HDRIs offered) are
-  // read; and no real file holds more than about a thousand texels per byte (the best compression
-  // of a constant image), so a claim beyond either is refused before the texels are allocated.
+  // A header may claim any size. Up to 16384 x 8192 texels (the largest HDRIs offered) are read,
+  // and no more than the file can hold (plausible_image_size): a claim beyond either is refused
+  // before the texels are allocated.
   const uintmax_t bytes = std::filesystem::file_size(path, ec);
   if (ec) throw InputError("cannot read environment map " + path.string() + ": " + ec.message());
   const auto check_claimed_size = [&](int64_t width, int64_t height) {
-    if (width < 1 || height < 1 || width * height > (int64_t(1) << 27))
-      throw InputError("environment map " + path.string() + " has an unusable size (" +
-                       std::to_string(width) + "x" + std::to_string(height) + ")");
-    if (uintmax_t(width) * uintmax_t(height) > std::max<uintmax_t>(bytes, 4096) * 1024)
+    const auto unusable = [&] {
+      return InputError("environment map " + path.string() + " has an unusable size (" +
+                        std::to_string(width) + "x" + std::to_string(height) + ")");
+    };
+    if (width < 1 || height < 1) throw unusable();
+    if (!plausible_image_size(width, height, bytes))
       throw InputError("environment map " + path.string() + " claims more texels (" +
                        std::to_string(width) + "x" + std::to_string(height) + ") than its " +
                        std::to_string(bytes) + " bytes can hold");
+    if (width * height > (int64_t(1) << 27)) throw unusable();  // sides <= 2^31 here: no overflow
   };
   // OpenEXR trusts its header's sizes while parsing it: it is checked here first.
   if (const auto window = scan_exr_header(path)) check_claimed_size(window->width, window->height);

@@ -1,5 +1,6 @@
 #include "image/exr_header.h"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <fstream>
@@ -81,7 +82,7 @@ std::optional<ExrDataWindow> scan_exr_header(const std::filesystem::path& path) 
   const size_t max_name = (version & kLongNamesFlag) ? 255 : 31;
   const bool multipart = (version & kMultipartFlag) != 0;
 
-  std::optional<ExrDataWindow> first_window;
+  std::optional<ExrDataWindow> largest;
   for (int part = 0;; ++part) {
     std::optional<ExrDataWindow> window;
     bool empty_header = true;
@@ -111,10 +112,19 @@ std::optional<ExrDataWindow> scan_exr_header(const std::filesystem::path& path) 
     // A multi-part file's header list ends with an empty header; a single part has one header.
     if (multipart && empty_header && part > 0) break;
     if (!window) reader.fail("has a header without a dataWindow");
-    if (!first_window) first_window = window;
+    // Sides reach 2^32: compared as doubles, whose products cannot wrap.
+    if (!largest || double(window->width) * double(window->height) >
+                        double(largest->width) * double(largest->height))
+      largest = window;
     if (!multipart) break;
   }
-  return first_window;
+  return largest;
+}
+
+bool plausible_image_size(int64_t width, int64_t height, uintmax_t file_bytes) {
+  constexpr int64_t kMaxSide = int64_t(1) << 31;  // sides up to 2^31: the product fits 64 bits
+  if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide) return false;
+  return uintmax_t(width) * uintmax_t(height) <= std::max<uintmax_t>(file_bytes, 4096) * 1024;
 }
 
 }  // namespace hipr

@@ -72,10 +72,21 @@ void write_png8(const fs::path& path, uint32_t width, uint32_t height, uint32_t 
 }
 
 ImageRGB read_image(const fs::path& path) {
-  (void)scan_exr_header(path);  // OpenEXR trusts its header's sizes: they are checked first
+  // OpenEXR trusts its header's sizes: they are checked first, and every format's after.
+  std::error_code ec;
+  const uintmax_t bytes = fs::file_size(path, ec);
+  const auto check_size = [&](int64_t width, int64_t height) {
+    if (!plausible_image_size(width, height, bytes))
+      throw InputError("image " + path.string() + " claims more pixels (" + std::to_string(width) +
+                       "x" + std::to_string(height) + ") than its " + std::to_string(bytes) +
+                       " bytes can hold");
+  };
+  if (const auto window = scan_exr_header(path)) check_size(window->width, window->height);
   auto input = OIIO::ImageInput::open(path.string());
   if (!input) throw InputError("cannot read image " + path.string() + ": " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input->spec();
+  if (spec.nchannels < 1) throw InputError("image " + path.string() + " has no channels");
+  check_size(spec.width, spec.height);
   ImageRGB image;
   image.width = uint32_t(spec.width);
   image.height = uint32_t(spec.height);

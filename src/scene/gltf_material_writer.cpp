@@ -68,6 +68,7 @@ std::vector<std::string> row_extensions() {
   std::vector<std::string> out;
   for (const FactorRow& row : factor_rows())
     if (row.extension != std::string(kEmissiveStrength) && row.extension != std::string(kVolume) &&
+        row.extension != std::string(kDispersion) &&
         std::find(out.begin(), out.end(), row.extension) == out.end())
       out.push_back(row.extension);
   return out;
@@ -127,6 +128,22 @@ void write_emission(Json& m, const M& t) {
   });
 }
 
+// glTF's dispersion is 20 / its Abbe number, OpenPBR's Abbe number abbe_number / scale: other
+// viewers see the same glass (hipr's own load gets both fields back exactly through extras). glTF
+// disperses only inside a volume (the validator warns otherwise): a thin material's dispersion,
+// which hipr does not render either, can only go to extras.
+void write_dispersion(Json& m, const M& t) {
+  if (!is_thick(m)) return;
+  const float abbe = t.transmission_dispersion_abbe_number;
+  const float dispersion = abbe == 20.0f ? t.transmission_dispersion_scale
+                                         : t.transmission_dispersion_scale * 20.0f / abbe;
+  if (!has_extension(m, kDispersion) && dispersion == 0.0f) return;
+  edit_object(m, "extensions", [&](Json& extensions) {
+    edit_object(extensions, kDispersion,
+                [&](Json& ext) { put_number(ext, "dispersion", dispersion, dispersion, 0.0f); });
+  });
+}
+
 void write_extension_rows(Json& m, const M& t) {
   for (const std::string& extension : row_extensions()) {
     std::vector<const FactorRow*> rows;
@@ -139,9 +156,7 @@ void write_extension_rows(Json& m, const M& t) {
       for (const FactorRow* row : rows)
         needed = needed || values(t, row->field, row->components) != fallback(*row);
     }
-    // glTF disperses only inside a volume (the validator warns otherwise): a thin material's
-    // dispersion, which hipr does not render either, can only go to extras.
-    if (!needed || (extension == kDispersion && !is_thick(m))) continue;
+    if (!needed) continue;
     edit_object(m, "extensions", [&](Json& extensions) {
       edit_object(extensions, extension.c_str(), [&](Json& ext) {
         for (const FactorRow* row : rows) {
@@ -228,6 +243,7 @@ std::vector<M> map_with_loader(const Json& materials, const std::string& name) {
 std::vector<std::string> material_extensions_written() {
   std::vector<std::string> out = row_extensions();
   out.push_back(kEmissiveStrength);
+  out.push_back(kDispersion);
   return out;
 }
 
@@ -292,6 +308,7 @@ void write_materials(Json& doc, const std::vector<Material>& materials, const st
     write_emission(m, t);
     write_extension_rows(m, t);
     write_volume(m, t);
+    write_dispersion(m, t);
   }
   if (count > 0) {
     const std::vector<M> mapped = map_with_loader(doc["materials"], name);
