@@ -55,4 +55,12 @@ MaterialParameters black_material() {
   return m;
 }
 
+MaterialParameters emissive_texture_material(uint32_t texture) {
+  MaterialParameters m = black_material();
+  m.emission_color = glm::vec3(1.0f);
+  m.emission_luminance = 1.0f;
+  m.emission_texture = texture;
+  return m;
+}
+
 }  // namespace hipr::test

@@ -17,4 +17,8 @@ uint32_t add_card(Scene& scene, const std::string& name, const glm::mat4& transf
 // A material that reflects nothing and emits nothing: a card of it is black where it is hit.
 MaterialParameters black_material();
 
+// A material that reflects nothing and emits texture `texture` (1 nit per unit): a card of it
+// shows the texture's texels as they are.
+MaterialParameters emissive_texture_material(uint32_t texture);
+
 }  // namespace hipr::test

@@ -39,11 +39,7 @@ Scene quadrant_card() {
     }
   scene.images.push_back(image);
   scene.textures.push_back({"quadrants", 0, abi::kTextureNearest, {1, 0, 0}, {0, 1, 0}});
-  MaterialParameters m = test::black_material();
-  m.emission_color = glm::vec3(1.0f);
-  m.emission_luminance = 1.0f;
-  m.emission_texture = 0;
-  test::add_card(scene, "card", glm::mat4(1.0f), m);
+  test::add_card(scene, "card", glm::mat4(1.0f), test::emissive_texture_material(0));
   return scene;
 }
 

@@ -72,11 +72,7 @@ Scene sphere_before_stripes(float ior, float dispersion_scale) {
   }
   scene.images.push_back(stripes);
   scene.textures.push_back({"stripes", 0, abi::kTextureNearest, {1, 0, 0}, {0, 1, 0}});
-  MaterialParameters light = test::black_material();
-  light.emission_color = glm::vec3(1.0f);
-  light.emission_luminance = 1.0f;
-  light.emission_texture = 0;
-  test::add_card(scene, "stripes", glm::mat4(1.0f), light);
+  test::add_card(scene, "stripes", glm::mat4(1.0f), test::emissive_texture_material(0));
 
   MeshPrimitive sphere;
   const int rings = 24, segments = 48;

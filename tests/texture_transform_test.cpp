@@ -25,11 +25,7 @@ std::array<Texel, 4> quadrants(uint32_t flags, glm::vec3 row_u, glm::vec3 row_v)
                    0,   0, 255, 255, 255, 255, 255, 255};  // R G / B W
   scene.images.push_back(checker);
   scene.textures.push_back({"checker", 0, flags | abi::kTextureNearest, row_u, row_v});
-  MaterialParameters m = test::black_material();
-  m.emission_color = glm::vec3(1.0f);
-  m.emission_luminance = 1.0f;
-  m.emission_texture = 0;
-  test::add_card(scene, "card", glm::mat4(1.0f), m);
+  test::add_card(scene, "card", glm::mat4(1.0f), test::emissive_texture_material(0));
 
   RenderSettings s;
   s.width = s.height = 32;

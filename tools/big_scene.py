@@ -15,14 +15,10 @@ import math
 import struct
 import sys
 
-FLOAT = 5126
+from make_scenes import (ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, FLOAT, GLB_CHUNK_BIN, GLB_CHUNK_JSON,
+                         GLB_MAGIC, TRIANGLES, glb_chunk)
+
 UNSIGNED_INT = 5125
-ARRAY_BUFFER = 34962
-ELEMENT_ARRAY_BUFFER = 34963
-TRIANGLES = 4
-GLB_MAGIC = b"glTF"
-GLB_CHUNK_JSON = 0x4E4F534A
-GLB_CHUNK_BIN = 0x004E4942
 
 SIDE = 100.0  # meters across the whole terrain
 MAX_QUADS_PER_TILE = 256 * 256  # a tile is at most 131072 triangles
@@ -134,12 +130,9 @@ def terrain_glb(triangles):
         "buffers": [{"byteLength": len(binary)}],
     }
     json_data = json.dumps(document, separators=(",", ":")).encode("utf-8")
-    json_data += b" " * (-len(json_data) % 4)
-    binary.extend(b"\0" * (-len(binary) % 4))
-    body = (struct.pack("<II", len(json_data), GLB_CHUNK_JSON) + json_data +
-            struct.pack("<II", len(binary), GLB_CHUNK_BIN))
-    header = struct.pack("<4sII", GLB_MAGIC, 2, 12 + len(body) + len(binary))
-    return header + body + bytes(binary), tiles * tiles * 2 * n * n
+    chunks = glb_chunk(GLB_CHUNK_JSON, json_data, b" ") + glb_chunk(GLB_CHUNK_BIN, bytes(binary), b"\0")
+    header = struct.pack("<4sII", GLB_MAGIC, 2, 12 + len(chunks))
+    return header + chunks, tiles * tiles * 2 * n * n
 
 
 def write_terrain(triangles, path):
