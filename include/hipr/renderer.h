@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hipr/denoise.h"
 #include "hipr/device.h"
 #include "hipr/display_rule.h"
 #include "hipr/hipr_parameters.h"
@@ -123,6 +124,9 @@ class Renderer final : public ProgressiveRenderer {
   void resolve_display_all(DisplayRule rule) override;
   void capture_stale_display() override;
   ImageRGB displayed_image() const override;
+  // What the display shows, denoised by `settings` (enabled or not: disabled, or strength 0,
+  // gives displayed_image() as it is). The display and the accumulation are left unchanged.
+  ImageRGB denoised_image(const DenoiseSettings& settings);
   bool relight(const std::vector<EmitterScale>& scales) override;
 
   // ---- The device state (methods attach their passes to it: HiPR's stages; the library's

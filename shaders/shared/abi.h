@@ -531,6 +531,30 @@ struct SortPush {
   uint groups;   // workgroups over `count` keys
 };
 
+// ---- the display denoiser (denoise_*.comp; docs/method.md, "The denoised display") ----
+// What the pixel centre's ray sees, guiding the filter's edges: recomputed only when the scene
+// or the camera changed.
+struct DenoiseGuide {
+  uint record;     // GeometryRecord, kInvalidIndex for background
+  float distance;  // along the pixel centre's ray (0 for background)
+  uint normal;     // shading normal facing the camera, octahedral, two snorm16
+  uint albedo;     // what the radiance is demodulated by: unorm8 RGB (A unused)
+};
+
+// A pixel's key in the filter (denoise_prepare.comp): neighbours mix only with equal keys.
+HIPR_CONST uint kDenoiseSurfaceMask = 0x3fffffffu;  // the surface shown, + 1 (0: background)
+HIPR_CONST uint kDenoiseCurrent = 0x40000000u;      // what is shown is of the scene since the last edit
+HIPR_CONST uint kDenoiseKept = 0x80000000u;         // shown as it is, read by no neighbour
+
+struct DenoisePush {
+  uint width;
+  uint height;
+  uint step;           // a-trous pass: the taps' spacing (1, 2, 4, ...)
+  uint last;           // a-trous pass: 1 writes the remodulated radiance to the output
+  float strength;      // scales the luminance edge's tolerance (0: nothing moves)
+  uint displayState;   // prepare: 1 uses the display's sample counts and scene states
+};
+
 #ifdef __cplusplus
 }  // namespace hipr::abi
 #endif

@@ -1,10 +1,11 @@
-// `hipr render SCENE -o OUT.exr|.png [--stats-json FILE]`
+// `hipr render SCENE -o OUT.exr|.png [--denoise [--raw-output RAW]] [--stats-json FILE]`
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/denoise_flags.h"
 #include "app/display_flags.h"
 #include "app/progress.h"
 #include "core/error.h"
@@ -23,8 +24,10 @@ namespace {
 struct RenderOptions {
   CommonOptions common;
   std::vector<std::filesystem::path> outputs;
+  std::vector<std::filesystem::path> raw_outputs;  // the accumulation, where -o is denoised
   std::filesystem::path stats_json;
   DisplayFlags display;
+  DenoiseSettings denoise;
 };
 
 int run_render(RenderOptions& o) {
@@ -37,7 +40,11 @@ int run_render(RenderOptions& o) {
     if (!std::filesystem::is_directory(folder))
       throw InputError("output folder does not exist: " + folder.string());
   };
-  for (const auto& output : o.outputs) {
+  if (!o.raw_outputs.empty() && !o.denoise.enabled)
+    throw InputError("--raw-output needs --denoise (without it -o writes the raw image)");
+  std::vector<std::filesystem::path> all_outputs = o.outputs;
+  all_outputs.insert(all_outputs.end(), o.raw_outputs.begin(), o.raw_outputs.end());
+  for (const auto& output : all_outputs) {
     if (!is_supported_output(output))
       throw InputError("output " + output.string() + ": unsupported format (use .exr or .png)");
     check_folder(output);
@@ -80,7 +87,16 @@ int run_render(RenderOptions& o) {
   const double render_cpu_seconds = cpu_timer.seconds();
   progress.finish();
 
-  const ImageRGB image = renderer.image();
+  const ImageRGB raw = renderer.image();
+  // The denoised image is a copy made from the display: the accumulation stays as rendered.
+  const Timer denoise_timer;
+  ImageRGB denoised;
+  if (o.denoise.enabled) {
+    renderer.resolve_display_all(DisplayRule::Immediate);
+    denoised = renderer.denoised_image(o.denoise);
+  }
+  const double denoise_seconds = o.denoise.enabled ? denoise_timer.seconds() : 0.0;
+  const ImageRGB& image = o.denoise.enabled ? denoised : raw;
   const RenderCounters counters = renderer.counters();
   check_validation(ctx);
   if (counters.non_finite_samples > 0)
@@ -95,10 +111,17 @@ int run_render(RenderOptions& o) {
       {"hipr:max_depth", std::to_string(o.common.render.max_depth)},
       {"Software", "hipr"},
   };
-  const DisplayTransform display = display_transform(o.display, image);
+  ImageMetadata denoised_metadata = metadata;
+  denoised_metadata.emplace_back("hipr:denoised",
+                                 "strength " + std::to_string(o.denoise.strength) + ", " +
+                                     std::to_string(o.denoise.passes) + " passes");
+  // Both images share the raw image's exposure, so the two compare as they are.
+  const DisplayTransform display = display_transform(o.display, raw);
   if (!o.display.exposure_ev)
     log::info("metered exposure " + std::to_string(display.exposure_ev) + " EV");
-  for (const auto& output : o.outputs) write_image(output, image, metadata, display);
+  for (const auto& output : o.outputs)
+    write_image(output, image, o.denoise.enabled ? denoised_metadata : metadata, display);
+  for (const auto& output : o.raw_outputs) write_image(output, raw, metadata, display);
 
   const double pixels = double(o.common.render.width) * o.common.render.height;
   const double samples = pixels * o.common.spp;
@@ -107,6 +130,7 @@ int run_render(RenderOptions& o) {
         {"render_seconds", render_seconds},
         {"render_cpu_seconds", render_cpu_seconds},  // all threads: robust to a busy machine
         {"load_seconds", load_seconds},
+        {"denoise_seconds", denoise_seconds},  // resolve, filter and read-back; 0 without
         {"setup_seconds", setup_seconds},
         // Of the set-up: building the meshes' acceleration structures, device wait included.
         {"blas_build_seconds", renderer.scene_stats().blas_build_seconds},
@@ -154,7 +178,14 @@ Command add_render_command(CLI::App& app) {
       ->expected(1)
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd->add_option("--raw-output", options->raw_outputs,
+                  "With --denoise: also write the image as rendered (.exr or .png); repeat for "
+                  "several")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--stats-json", options->stats_json, "Write render statistics as JSON");
+  add_denoise_flags(*cmd, options->denoise);
   add_display_flags(*cmd, options->display, "PNG output");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_render(*options); }};

@@ -57,4 +57,11 @@ const GBufferPass& RenderState::rendered_gbuffers() {
   return gbuffers;
 }
 
+DenoisePass& RenderState::denoise_pass() {
+  if (!denoiser)
+    denoiser = std::make_unique<DenoisePass>(ctx, gpu, film, resolve.display, settings.width,
+                                             settings.height);
+  return *denoiser;
+}
+
 }  // namespace hipr

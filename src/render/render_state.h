@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "hipr/renderer.h"
+#include "render/denoise_pass.h"
 #include "render/film.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
@@ -76,6 +77,10 @@ class RenderState {
   // records_generation they show.
   std::unique_ptr<OverlayPass> overlays;
   uint64_t overlay_records_seen = 0;
+  // The display denoiser (denoise_pass.h), made on first use: renders that never show a
+  // denoised image never compile its kernels.
+  std::unique_ptr<DenoisePass> denoiser;
+  DenoisePass& denoise_pass();
   // The method's passes (made by the method on first use; declared last: they refer to the
   // members above and go first).
   std::unique_ptr<RenderExtension> extension;

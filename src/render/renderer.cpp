@@ -124,7 +124,10 @@ void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
     m->gpu.update_lights(scene);
   if (changes.transforms || changes.geometry || changes.camera) m->update_background(scene);
   m->rebind_if_replaced();
-  if (!changes.empty()) m->gbuffers.set_stale();
+  if (!changes.empty()) {
+    m->gbuffers.set_stale();
+    if (m->denoiser) m->denoiser->set_guides_stale();
+  }
   m->gpu.set_frame(make_frame_params(scene, m->gpu, m->settings));
 }
 
@@ -193,6 +196,12 @@ void Renderer::capture_stale_display() {
 }
 
 ImageRGB Renderer::displayed_image() const { return m->resolve.displayed_image(); }
+
+ImageRGB Renderer::denoised_image(const DenoiseSettings& settings) {
+  DenoisePass& denoiser = m->denoise_pass();
+  denoiser.run(settings);
+  return denoiser.result_image();
+}
 
 RenderState* Renderer::render_state() { return m.get(); }
 const RenderState& Renderer::state() const { return *m; }

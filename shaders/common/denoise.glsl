@@ -1,0 +1,32 @@
+// What the display denoiser's kernels share: the guides' packing, luminance, and the buffers of
+// set 0 (shared/bindings/denoise.h). The filter itself is denoise_atrous.comp.
+#ifndef HIPR_DENOISE_GLSL
+#define HIPR_DENOISE_GLSL
+
+#include "shared/bindings/denoise.h"
+
+// Octahedral map of a unit vector to two snorm16 (Cigolle et al. 2014): 4 bytes per normal,
+// under 1e-4 rad of error, enough for an edge test that cares about degrees.
+uint pack_normal(vec3 n) {
+  n /= abs(n.x) + abs(n.y) + abs(n.z);
+  vec2 e = n.xy;
+  if (n.z < 0.0) e = (1.0 - abs(n.yx)) * mix(vec2(-1.0), vec2(1.0), greaterThanEqual(n.xy, vec2(0.0)));
+  return packSnorm2x16(e);
+}
+
+vec3 unpack_normal(uint packed) {
+  const vec2 e = unpackSnorm2x16(packed);
+  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+  const float t = max(-n.z, 0.0);
+  n.xy += mix(vec2(t), vec2(-t), greaterThanEqual(n.xy, vec2(0.0)));
+  return normalize(n);
+}
+
+// The albedo radiance is divided by before filtering and multiplied by after: texture detail
+// stays sharp. Floored so that a black surface's noise does not become huge illumination.
+const float kDenoiseAlbedoFloor = 0.02;
+vec3 unpack_albedo(uint packed) { return max(unpackUnorm4x8(packed).rgb, vec3(kDenoiseAlbedoFloor)); }
+
+float denoise_luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+#endif

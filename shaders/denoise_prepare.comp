@@ -1,0 +1,109 @@
+#version 460
+// The display denoiser's first kernel: what each pixel shows, demodulated by its albedo, with
+// the variance of its luminance, and the key that says which neighbours it may mix with.
+// Reads: the guides, the display (shown value, its samples, record and scene state), the
+// accumulation (sum, sum of squares, count), FrameParams. Writes: the input of the first a-trous
+// pass (vec4: demodulated radiance, variance) and the keys.
+//
+// The variance is the shown value's own: with hipr's display state (DenoisePush::displayState),
+// a pixel showing the edited scene takes its samples' variance over the samples behind what it
+// shows (DisplayTexel::shownSamples: more than its fresh samples where a converged stale estimate
+// still weighs). Without it (the ablation: a denoiser that knows only the accumulation), the
+// accumulation's own count. A pixel with fewer than two samples behind it, or one showing the
+// scene before the edit, takes the spatial variance of its 3 x 3 neighbours of the same key.
+// Keys: neighbours mix only when they show the same surface (the G-buffer record their guide
+// ray hit) and, with the display state, values of the same scene state (a stale pixel and a fresh
+// one never mix: the filter does not spread a change, or the absence of one, across the line the
+// re-render has reached). A pixel whose shown value depicts another surface than the one its
+// guide sees (a moved object's old place, still stale) is kept as it is and read by no one.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+
+layout(local_size_x = 64) in;
+
+#include "common/frame.glsl"
+#include "common/denoise.glsl"
+#include "common/dispatch.glsl"
+
+layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
+layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel b_display[]; };
+layout(scalar, binding = kDenoiseAccumulation) readonly buffer Accumulation { PixelAccum b_accum[]; };
+layout(scalar, binding = kDenoiseKeys) writeonly buffer Keys { uint b_keys[]; };
+layout(scalar, binding = kDenoiseInput) writeonly buffer Input { vec4 b_input[]; };
+layout(scalar, binding = kDenoiseSamples) writeonly buffer Samples { uint b_samples[]; };
+layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
+
+bool shows_current(DisplayTexel texel) { return u_push.displayState == 0u || (texel.flags & kShownCurrent) != 0u; }
+
+uint pixel_key(uint index) {
+  const DisplayTexel texel = b_display[index];
+  const uint seen = b_guides[index].record;
+  if (u_push.strength <= 0.0 || any(isinf(texel.shown)) || any(isnan(texel.shown))) return kDenoiseKept;
+  if (u_push.displayState != 0u && texel.shownRecord != kRecordUnknown && texel.shownRecord != seen) return kDenoiseKept;
+  const uint surface = seen == kInvalidIndex ? 0u : (seen + 1u) & kDenoiseSurfaceMask;
+  return surface | (shows_current(texel) ? kDenoiseCurrent : 0u);
+}
+
+float demodulated_luminance(uint index) {
+  return denoise_luminance(b_display[index].shown / unpack_albedo(b_guides[index].albedo));
+}
+
+// The samples behind what is shown, as far as the variance knows them (1: a spatial estimate).
+uint samples_behind(DisplayTexel texel, uint n) { return u_push.displayState != 0u ? max(texel.shownSamples, n) : n; }
+
+// The samples' variance of the demodulated luminance, over the samples behind what is shown, or
+// -1 where the pixel cannot tell (fewer than two samples, or a value of the scene before).
+float sampled_variance(uint index, vec3 albedo, out uint behind) {
+  const DisplayTexel texel = b_display[index];
+  const PixelAccum accum = b_accum[index];
+  const uint n = (accum.count & kPixelOwed) != 0u ? 0u : accum.count & kPixelCountMask;
+  behind = 1u;
+  if (n < 2u || !shows_current(texel)) return -1.0;
+  const vec3 mean = accum.sum / float(n);
+  const vec3 spread = sqrt(max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u)) / albedo;
+  // The channels' noise is of the same paths: their deviations add up in the luminance.
+  const float deviation = denoise_luminance(spread);
+  behind = samples_behind(texel, n);
+  return deviation * deviation / float(behind);
+}
+
+// The variance of the luminance over the 3 x 3 neighbours with the pixel's key.
+float spatial_variance(uvec2 pixel, uint key, float own) {
+  float sum = 0.0, squares = 0.0;
+  uint count = 0u;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const ivec2 q = ivec2(pixel) + ivec2(dx, dy);
+      if (any(lessThan(q, ivec2(0))) || q.x >= int(u_push.width) || q.y >= int(u_push.height)) continue;
+      const uint neighbour = uint(q.y) * u_push.width + uint(q.x);
+      if (pixel_key(neighbour) != key) continue;
+      const float l = demodulated_luminance(neighbour);
+      sum += l;
+      squares += l * l;
+      count += 1u;
+    }
+  if (count < 2u) return own * own;
+  const float mean = sum / float(count);
+  return max(squares / float(count) - mean * mean, 0.0) * float(count) / float(count - 1u);
+}
+
+void main() {
+  const uint index = dispatch_index();
+  if (index >= u_push.width * u_push.height) return;
+  const uvec2 pixel = uvec2(index % u_push.width, index / u_push.width);
+  const vec3 albedo = unpack_albedo(b_guides[index].albedo);
+  const vec3 radiance = b_display[index].shown / albedo;
+  const uint key = pixel_key(index);
+  b_keys[index] = key;
+  uint behind = 1u;
+  if (key == kDenoiseKept) {
+    b_input[index] = vec4(radiance, 0.0);
+    b_samples[index] = behind;
+    return;
+  }
+  float variance = sampled_variance(index, albedo, behind);
+  if (variance < 0.0) variance = spatial_variance(pixel, key, denoise_luminance(radiance));
+  b_input[index] = vec4(radiance, isinf(variance) || isnan(variance) ? 0.0 : variance);
+  b_samples[index] = behind;
+}

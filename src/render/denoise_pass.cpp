@@ -1,0 +1,88 @@
+#include "render/denoise_pass.h"
+
+#include <algorithm>
+
+#include "shaders/shared/bindings/denoise.h"
+
+namespace hipr {
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+size_t pixels(uint32_t width, uint32_t height) { return size_t(width) * height; }
+
+}  // namespace
+
+DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Film& film,
+                         const vk::Buffer& display, uint32_t width, uint32_t height)
+    : result(ctx, pixels(width, height) * sizeof(abi::vec3), kStorage),
+      m_ctx(ctx),
+      m_width(width),
+      m_height(height),
+      m_guides(ctx, pixels(width, height) * sizeof(abi::DenoiseGuide), kStorage),
+      m_keys(ctx, pixels(width, height) * sizeof(uint32_t), kStorage),
+      m_samples(ctx, pixels(width, height) * sizeof(uint32_t), kStorage),
+      m_ping(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
+      m_pong(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
+      m_trace_guides(ctx, "denoise_guides.comp", {}, {{abi::kDenoiseGuides, &m_guides}}, 0,
+                     &scene.descriptor_set()),
+      m_prepare(ctx, "denoise_prepare.comp", {},
+                {{abi::kDenoiseGuides, &m_guides},
+                 {abi::kDenoiseDisplay, &display},
+                 {abi::kDenoiseAccumulation, &film.accumulation},
+                 {abi::kDenoiseKeys, &m_keys},
+                 {abi::kDenoiseInput, &m_ping},
+                 {abi::kDenoiseSamples, &m_samples}},
+                sizeof(abi::DenoisePush), &scene.descriptor_set()),
+      m_ping_to_pong(ctx, "denoise_atrous.comp", {},
+                     {{abi::kDenoiseGuides, &m_guides},
+                      {abi::kDenoiseDisplay, &display},
+                      {abi::kDenoiseKeys, &m_keys},
+                      {abi::kDenoiseInput, &m_ping},
+                      {abi::kDenoiseOutput, &m_pong},
+                      {abi::kDenoiseResult, &result},
+                      {abi::kDenoiseSamples, &m_samples}},
+                     sizeof(abi::DenoisePush), &scene.descriptor_set()),
+      m_pong_to_ping(ctx, "denoise_atrous.comp", {},
+                     {{abi::kDenoiseGuides, &m_guides},
+                      {abi::kDenoiseDisplay, &display},
+                      {abi::kDenoiseKeys, &m_keys},
+                      {abi::kDenoiseInput, &m_pong},
+                      {abi::kDenoiseOutput, &m_ping},
+                      {abi::kDenoiseResult, &result},
+                      {abi::kDenoiseSamples, &m_samples}},
+                     sizeof(abi::DenoisePush), &scene.descriptor_set()) {}
+
+void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings) {
+  const uint32_t groups = groups_for(m_width * m_height);
+  vk::compute_to_compute_barrier(cmd);
+  if (!m_guides_current) {
+    m_trace_guides.dispatch(cmd, nullptr, groups);
+    vk::compute_to_compute_barrier(cmd);
+    m_guides_current = true;
+  }
+  abi::DenoisePush push{};
+  push.width = m_width;
+  push.height = m_height;
+  push.strength = settings.enabled ? std::max(settings.strength, 0.0f) : 0.0f;
+  push.displayState = settings.display_state ? 1u : 0u;
+  m_prepare.dispatch(cmd, &push, groups);
+  const uint32_t passes = std::clamp(settings.passes, 1u, kMaxDenoisePasses);
+  for (uint32_t pass = 0; pass < passes; ++pass) {
+    vk::compute_to_compute_barrier(cmd);
+    push.step = 1u << pass;
+    push.last = pass + 1 == passes ? 1u : 0u;
+    (pass % 2 == 0 ? m_ping_to_pong : m_pong_to_ping).dispatch(cmd, &push, groups);
+  }
+}
+
+void DenoisePass::run(const DenoiseSettings& settings) {
+  m_ctx.submit_and_wait([&](VkCommandBuffer cmd) { record(cmd, settings); });
+}
+
+ImageRGB DenoisePass::result_image() const {
+  return image_of(m_width, m_height, result.download_all<abi::vec3>(),
+                  [](const abi::vec3& v) { return v; });
+}
+
+}  // namespace hipr

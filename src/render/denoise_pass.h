@@ -1,0 +1,44 @@
+#pragma once
+// The display denoiser (denoise_guides.comp, denoise_prepare.comp, denoise_atrous.comp): an
+// edge-avoiding a-trous filter of what the display shows, guided by each pixel's noise, the
+// surface its centre sees and the scene state of its value. It writes a copy (`result`):
+// the accumulation and the display stay as they are (docs/method.md, "The denoised display").
+#include <cstdint>
+
+#include "hipr/denoise.h"
+#include "hipr/image.h"
+#include "render/film.h"
+#include "render/gpu_scene.h"
+#include "vk/buffer.h"
+#include "vk/compute_pipeline.h"
+
+namespace hipr {
+
+class DenoisePass {
+ public:
+  DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Film& film,
+              const vk::Buffer& display, uint32_t width, uint32_t height);
+
+  // The guides no longer show the scene (an edit, a camera move): the next record traces them.
+  void set_guides_stale() { m_guides_current = false; }
+  // Records the filter of what `display` shows now into `result` (after whatever the command
+  // buffer wrote before).
+  void record(VkCommandBuffer cmd, const DenoiseSettings& settings);
+  // Records, submits and waits.
+  void run(const DenoiseSettings& settings);
+  ImageRGB result_image() const;
+
+  vk::Buffer result;  // vec3 per pixel: the denoised radiance
+
+ private:
+  const vk::Context& m_ctx;
+  uint32_t m_width, m_height;
+  bool m_guides_current = false;
+  vk::Buffer m_guides, m_keys, m_samples, m_ping, m_pong;
+  vk::ComputePipeline m_trace_guides;  // denoise_guides.comp
+  vk::ComputePipeline m_prepare;       // denoise_prepare.comp: display -> ping
+  vk::ComputePipeline m_ping_to_pong;  // denoise_atrous.comp
+  vk::ComputePipeline m_pong_to_ping;
+};
+
+}  // namespace hipr

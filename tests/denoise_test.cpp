@@ -1,0 +1,185 @@
+// The display denoiser (src/render/denoise_pass.h): it filters a copy of the display and nothing
+// else; a precise pixel stays as it is; it never mixes two surfaces, nor a value of the scene
+// before an edit with one after it; and it takes the noise out of a real render.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <random>
+
+#include "card_scene.h"
+#include "hipr/renderer.h"
+#include "hipr/scene_loader.h"
+#include "image/error_metrics.h"
+#include "render/render_state.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+
+constexpr uint32_t kSize = 32;
+
+DenoiseSettings denoise_on() {
+  DenoiseSettings s;
+  s.enabled = true;
+  return s;
+}
+
+// Two cards side by side filling the view, each its own surface (G-buffer record): the left
+// one on x < 0, the right one on x > 0.
+Scene two_cards() {
+  Scene scene = test::make_card_camera_scene(1.0f);
+  const glm::mat4 half = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 1.0f, 1.0f));
+  test::add_card(scene, "left", glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0, 0)) * half,
+           default_material_params());
+  test::add_card(scene, "right", glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0, 0)) * half,
+           default_material_params());
+  return scene;
+}
+
+// A display written directly: per pixel the value shown, whether it is of the scene since the
+// last edit, and behind it `samples` samples of standard deviation `deviation` (the
+// accumulation's sums say so, as if they had been rendered).
+struct SyntheticPixel {
+  glm::vec3 shown{0.0f};
+  bool current = true;
+  uint32_t samples = 4;
+  float deviation = 0.5f;
+};
+
+void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels) {
+  RenderState& state = *renderer.render_state();
+  std::vector<abi::DisplayTexel> texels(pixels.size());
+  std::vector<abi::PixelAccum> accum(pixels.size());
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    const SyntheticPixel& p = pixels[i];
+    abi::DisplayTexel& t = texels[i];
+    t.shown = t.stale = p.shown;
+    t.shownSamples = t.staleSamples = p.samples;
+    t.shownRecord = t.staleRecord = abi::kRecordUnknown;
+    t.flags = p.current ? abi::kShownCurrent : 0u;
+    const float n = float(p.samples);
+    accum[i].sum = p.shown * n;
+    accum[i].count = p.current ? p.samples : 0u;
+    // sum of squares = n (mean^2 + variance (n - 1) / n): the sample variance is deviation^2.
+    accum[i].sumSquares = n * p.shown * p.shown + glm::vec3((n - 1.0f) * p.deviation * p.deviation);
+  }
+  state.resolve.display.upload(texels.data(), texels.size() * sizeof(abi::DisplayTexel));
+  state.film.accumulation.upload(accum.data(), accum.size() * sizeof(abi::PixelAccum));
+}
+
+// White noise around `value` (seeded), as a render's pixels scatter around their mean.
+std::vector<SyntheticPixel> noisy(float value, float deviation, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> normal(0.0f, deviation / 2.0f);  // 4 samples: sd / 2
+  std::vector<SyntheticPixel> pixels(kSize * kSize);
+  for (SyntheticPixel& p : pixels) {
+    p.shown = glm::vec3(std::max(value + normal(rng), 0.0f));
+    p.deviation = deviation;
+  }
+  return pixels;
+}
+
+TEST(Denoise, FiltersACopyAndLeavesAccumulationAndDisplayAlone) {
+  const Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, test::render_settings(48, 48, 8, 4, 1));
+  renderer.add_samples_full_frame(4);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const ImageRGB accumulation = renderer.image();
+  const ImageRGB display = renderer.displayed_image();
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  EXPECT_TRUE(test::all_finite(denoised));
+  EXPECT_NE(denoised.rgb, display.rgb);
+  EXPECT_EQ(renderer.image().rgb, accumulation.rgb);
+  EXPECT_EQ(renderer.displayed_image().rgb, display.rgb);
+  // Off, or at strength 0, it is the display bit for bit.
+  EXPECT_EQ(renderer.denoised_image(DenoiseSettings{}).rgb, display.rgb);
+  DenoiseSettings zero = denoise_on();
+  zero.strength = 0.0f;
+  EXPECT_EQ(renderer.denoised_image(zero).rgb, display.rgb);
+}
+
+TEST(Denoise, TakesTheNoiseOutOfARender) {
+  const Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  const RenderSettings settings = test::render_settings(48, 48, 8, 4, 2);
+  Renderer reference(test::context(), scene, test::render_settings(48, 48, 8, 4, 9));
+  reference.add_samples_full_frame(256);
+  Renderer renderer(test::context(), scene, settings);
+  renderer.add_samples_full_frame(4);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const double raw = relmse(renderer.displayed_image(), reference.image());
+  const double denoised = relmse(renderer.denoised_image(denoise_on()), reference.image());
+  EXPECT_LT(denoised, 0.25 * raw) << "raw " << raw << ", denoised " << denoised;
+}
+
+TEST(Denoise, APrecisePixelIsLeftAsItIs) {
+  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+  std::vector<SyntheticPixel> pixels = noisy(0.5f, 0.4f, 3);
+  const size_t precise = 10 * kSize + 8;  // on the left card
+  pixels[precise].shown = glm::vec3(0.61f, 0.52f, 0.43f);
+  pixels[precise].samples = 1u << 20;
+  pixels[precise].deviation = 0.4f;
+  write_display(renderer, pixels);
+  const ImageRGB shown = renderer.displayed_image();
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  for (size_t c = 0; c < 3; ++c)
+    EXPECT_NEAR(denoised.rgb[3 * precise + c], shown.rgb[3 * precise + c], 1e-6f) << c;
+  // Its noisy neighbours were filtered.
+  EXPECT_NE(denoised.rgb[3 * (precise + 1)], shown.rgb[3 * (precise + 1)]);
+}
+
+TEST(Denoise, NeverMixesTwoSurfaces) {
+  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+  // Flat values on each card, noisy as far as their samples tell: the filter may average within
+  // a card (the values are all alike) but any weight across the edge shows.
+  std::vector<SyntheticPixel> pixels(kSize * kSize);
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      pixels[y * kSize + x].shown = glm::vec3(x < kSize / 2 ? 1.0f : 0.25f);
+      pixels[y * kSize + x].deviation = 2.0f;
+    }
+  write_display(renderer, pixels);
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x)
+      ASSERT_NEAR(denoised.rgb[3 * (y * kSize + x) + 1], x < kSize / 2 ? 1.0f : 0.25f, 1e-5f)
+          << x << ", " << y;
+}
+
+TEST(Denoise, NeverMixesTheSceneBeforeAnEditWithTheSceneAfter) {
+  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+  // One surface: its top half re-rendered since the edit, its bottom half still the stale image.
+  std::vector<SyntheticPixel> pixels(kSize * kSize);
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize / 2; ++x) {
+      SyntheticPixel& p = pixels[y * kSize + x];
+      p.current = y < kSize / 2;
+      p.shown = glm::vec3(p.current ? 0.2f : 0.8f);
+      p.deviation = 2.0f;
+      p.samples = p.current ? 2u : 64u;
+    }
+  write_display(renderer, pixels);
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize / 2; ++x)
+      ASSERT_NEAR(denoised.rgb[3 * (y * kSize + x) + 1], y < kSize / 2 ? 0.2f : 0.8f, 1e-5f)
+          << x << ", " << y;
+  // The ablation that knows only the accumulation mixes them: what the test looks for is there.
+  DenoiseSettings plain = denoise_on();
+  plain.display_state = false;
+  const ImageRGB mixed = renderer.denoised_image(plain);
+  EXPECT_GT(mixed.rgb[3 * ((kSize / 2 - 1) * kSize + 4) + 1], 0.2f + 1e-3f);
+}
+
+TEST(Denoise, NothingNonFiniteComesOut) {
+  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+  std::vector<SyntheticPixel> pixels = noisy(0.5f, 0.4f, 5);
+  pixels[40].shown = glm::vec3(3.0e38f);  // a firefly at float's edge
+  pixels[41].deviation = 3.0e38f;         // sums that overflowed
+  write_display(renderer, pixels);
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  EXPECT_TRUE(test::all_finite(denoised));
+}
+
+}  // namespace
+}  // namespace hipr
