@@ -110,7 +110,7 @@ void main() {
   const vec4 filtered = vec4(sum / weights, variance / (weights * weights));
   b_output[index] = filtered;
   if (u_push.last != 0u) {
-    const vec3 radiance = filtered.rgb * unpack_albedo(guide.albedo);
+    const vec3 radiance = remodulated(filtered.rgb, guide);
     b_result[index] = any(isinf(radiance)) || any(isnan(radiance)) ? b_display[index].shown : radiance;
   }
 }

@@ -1,7 +1,7 @@
 #version 460
 // The display denoiser's guides: one ray through every pixel centre (the ray of visibility.comp)
-// records the surface it hits, how far, its shading normal facing the camera and the albedo the
-// radiance is demodulated by. Run when the scene or the camera changed.
+// records the surface it hits, how far, its shading normal facing the camera, the albedo the
+// radiance is demodulated by and the radiance the surface emits toward the camera. Run when the scene or the camera changed.
 // Reads: TLAS (or the software BVH), FrameParams, geometry, materials and textures.
 // Writes: DenoiseGuide per pixel.
 #extension GL_GOOGLE_include_directive : require
@@ -41,7 +41,7 @@ void main() {
   if (index >= u_frame.width * u_frame.height) return;
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
   const vec3 direction = pixel_centre_ray(pixel);
-  DenoiseGuide guide = DenoiseGuide(kInvalidIndex, 0.0, 0u, packUnorm4x8(vec4(1.0)));
+  DenoiseGuide guide = DenoiseGuide(kInvalidIndex, 0.0, 0u, packUnorm4x8(vec4(1.0)), 0u, 0u);
   RayHit hit;
   if (trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit)) {
     const SurfaceHit surface =
@@ -50,6 +50,12 @@ void main() {
     guide.distance = hit.t;
     guide.normal = pack_normal(surface.shadingNormal);
     guide.albedo = packUnorm4x8(vec4(surface_albedo(surface), 1.0));
+    // As the camera path adds it at its first hit (trace_tiles.comp: shading_params).
+    const bool emits = surface.frontFacing || (b_materials[surface.material].flags & kMaterialDoubleSided) != 0u;
+    const vec3 emission =
+        emits ? material_emission(surface.material, surface.uvs, dot(surface.geometricNormal, -direction)) : vec3(0.0);
+    guide.emissionRG = packHalf2x16(emission.rg);
+    guide.emissionB = packHalf2x16(vec2(emission.b, 0.0));
   }
   b_guides[index] = guide;
 }

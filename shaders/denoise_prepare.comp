@@ -1,5 +1,6 @@
 #version 460
-// The display denoiser's first kernel: what each pixel shows, demodulated by its albedo, with
+// The display denoiser's first kernel: what each pixel shows, less its surface's emission and
+// demodulated by its albedo (common/denoise.glsl), with
 // the variance of its luminance, and the key that says which neighbours it may mix with.
 // Reads: the guides, the display (shown value, its samples, record and scene state), the
 // accumulation (sum, sum of squares, count), FrameParams. Writes: the input of the first a-trous
@@ -39,14 +40,16 @@ bool shows_current(DisplayTexel texel) { return u_push.displayState == 0u || (te
 uint pixel_key(uint index) {
   const DisplayTexel texel = b_display[index];
   const uint seen = b_guides[index].record;
-  if (u_push.strength <= 0.0 || any(isinf(texel.shown)) || any(isnan(texel.shown))) return kDenoiseKept;
+  if (u_push.strength <= 0.0 || any(isinf(texel.shown)) || any(isnan(texel.shown)) ||
+      any(isinf(unpack_emission(b_guides[index]))))
+    return kDenoiseKept;
   if (u_push.displayState != 0u && texel.shownRecord != kRecordUnknown && texel.shownRecord != seen) return kDenoiseKept;
   const uint surface = seen == kInvalidIndex ? 0u : (seen + 1u) & kDenoiseSurfaceMask;
   return surface | (shows_current(texel) ? kDenoiseCurrent : 0u);
 }
 
 float demodulated_luminance(uint index) {
-  return denoise_luminance(b_display[index].shown / unpack_albedo(b_guides[index].albedo));
+  return denoise_luminance(demodulated(b_display[index].shown, b_guides[index]));
 }
 
 // The samples behind what is shown, as far as the variance knows them (1: a spatial estimate).
@@ -93,7 +96,7 @@ void main() {
   if (index >= u_push.width * u_push.height) return;
   const uvec2 pixel = uvec2(index % u_push.width, index / u_push.width);
   const vec3 albedo = unpack_albedo(b_guides[index].albedo);
-  const vec3 radiance = b_display[index].shown / albedo;
+  const vec3 radiance = demodulated(b_display[index].shown, b_guides[index]);
   const uint key = pixel_key(index);
   b_keys[index] = key;
   uint behind = 1u;

@@ -31,9 +31,9 @@ Scene two_cards() {
   Scene scene = test::make_card_camera_scene(1.0f);
   const glm::mat4 half = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 1.0f, 1.0f));
   test::add_card(scene, "left", glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0, 0)) * half,
-           default_material_params());
+                 default_material_params());
   test::add_card(scene, "right", glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0, 0)) * half,
-           default_material_params());
+                 default_material_params());
   return scene;
 }
 

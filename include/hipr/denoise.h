@@ -32,11 +32,12 @@ struct DenoiseSettingInfo {
 // Calls `visit(info, field)` for every setting, in the order help and panel list them.
 template <typename Settings, typename Visitor>
 void for_each_denoise_setting(Settings& s, Visitor&& visit) {
-  visit(DenoiseSettingInfo{"denoise", "--denoise",
-                           "Show (or write) the display denoised: an edge-avoiding filter guided by "
-                           "each pixel's noise, surface and scene state; the accumulation is "
-                           "never filtered"},
-        s.enabled);
+  visit(
+      DenoiseSettingInfo{"denoise", "--denoise",
+                         "Show (or write) the display denoised: an edge-avoiding filter guided by "
+                         "each pixel's noise, surface and scene state; the accumulation is "
+                         "never filtered"},
+      s.enabled);
   visit(DenoiseSettingInfo{"strength", "--denoise-strength",
                            "How far the denoiser reaches across luminance differences, in units "
                            "of each pixel's own noise (0: off)",

@@ -27,6 +27,17 @@ vec3 unpack_normal(uint packed) {
 const float kDenoiseAlbedoFloor = 0.02;
 vec3 unpack_albedo(uint packed) { return max(unpackUnorm4x8(packed).rgb, vec3(kDenoiseAlbedoFloor)); }
 
+vec3 unpack_emission(DenoiseGuide guide) {
+  return vec3(unpackHalf2x16(guide.emissionRG), unpackHalf2x16(guide.emissionB).x);
+}
+
+// What the filter works on: the shown radiance less what the surface itself emits (texture
+// detail of an emissive map is not noise), divided by the albedo.
+vec3 demodulated(vec3 shown, DenoiseGuide guide) { return (shown - unpack_emission(guide)) / unpack_albedo(guide.albedo); }
+
+// The inverse: the filtered value as radiance again.
+vec3 remodulated(vec3 value, DenoiseGuide guide) { return max(value * unpack_albedo(guide.albedo) + unpack_emission(guide), vec3(0.0)); }
+
 float denoise_luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 #endif

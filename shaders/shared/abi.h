@@ -539,6 +539,8 @@ struct DenoiseGuide {
   float distance;  // along the pixel centre's ray (0 for background)
   uint normal;     // shading normal facing the camera, octahedral, two snorm16
   uint albedo;     // what the radiance is demodulated by: unorm8 RGB (A unused)
+  uint emissionRG; // what the surface emits toward the camera, set apart before the filter:
+  uint emissionB;  // three halfs (infinite past half's range: such a pixel is shown as it is)
 };
 
 // A pixel's key in the filter (denoise_prepare.comp): neighbours mix only with equal keys.

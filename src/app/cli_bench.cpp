@@ -18,6 +18,7 @@
 #include "app/bench_report.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/denoise_flags.h"
 #include "app/schedule_flags.h"
 #include "bench/policy_run.h"
 #include "bench/reference_cache.h"
@@ -58,6 +59,7 @@ struct BenchOptions {
   double drag = 0.0;        // > 0: the edits are one drag, this much work apart (full-frame passes)
   bool cold_start = false;  // measure the render of the scene as loaded, from nothing, first
   DisplayFlags display;     // the PNGs' (the metrics measure linear radiance, FLIP as clamp)
+  DenoiseSettings denoise;  // enabled: every policy's displayed image is measured denoised
 };
 
 // The edits' own JSON text, one per edit: with the scene's hash it names a scene state.
@@ -262,6 +264,7 @@ int run_bench(BenchOptions& o) {
     run_options.schedule.tiles_per_step = default_tiles_per_step(renderer.tile_count());
   run_options.target_spp = o.common.spp;
   run_options.max_steps = o.steps;
+  run_options.denoise = o.denoise;
 
   const nlohmann::json recorded = {{"width", settings.width},
                                    {"height", settings.height},
@@ -279,6 +282,10 @@ int run_bench(BenchOptions& o) {
                                    {"drag_work_per_edit", o.drag},
                                    {"focus_lead", schedule.focus_lead},
                                    {"edit_lead", schedule.edit_lead},
+                                   {"denoise", o.denoise.enabled},
+                                   {"denoise_strength", o.denoise.strength},
+                                   {"denoise_passes", o.denoise.passes},
+                                   {"denoise_display_state", o.denoise.display_state},
                                    {"max_depth", settings.max_depth},
                                    {"seed", settings.seed},
                                    {"sampler", sampler_name(settings.sampler)},
@@ -393,6 +400,7 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--steps", options->steps,
                   "Scheduling steps per edit and policy (default: until converged)");
   add_schedule_flags(*cmd, options->schedule, {"policy"});
+  add_denoise_flags(*cmd, options->denoise);
   add_display_flags(*cmd, options->display, "the PNGs (auto: metered on each edit's reference)");
   cmd->add_option("--ref-cache", options->ref_cache,
                   "Folder of cached references (default: beside the shader cache)");

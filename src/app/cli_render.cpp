@@ -112,9 +112,9 @@ int run_render(RenderOptions& o) {
       {"Software", "hipr"},
   };
   ImageMetadata denoised_metadata = metadata;
-  denoised_metadata.emplace_back("hipr:denoised",
-                                 "strength " + std::to_string(o.denoise.strength) + ", " +
-                                     std::to_string(o.denoise.passes) + " passes");
+  denoised_metadata.emplace_back("hipr:denoised", "strength " + std::to_string(o.denoise.strength) +
+                                                      ", " + std::to_string(o.denoise.passes) +
+                                                      " passes");
   // Both images share the raw image's exposure, so the two compare as they are.
   const DisplayTransform display = display_transform(o.display, raw);
   if (!o.display.exposure_ev)

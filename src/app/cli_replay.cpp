@@ -8,6 +8,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/denoise_flags.h"
 #include "app/display_flags.h"
 #include "app/schedule_flags.h"
 #include "core/error.h"
@@ -58,6 +59,7 @@ struct ReplayOptions {
   ScheduleSettings schedule;  // tiles_per_step 0: default_tiles_per_step
   fs::path save;              // empty: the edited scene is not saved
   DisplayFlags display;       // the PNGs' (auto: metered once, on the scene as loaded)
+  DenoiseSettings denoise;    // enabled: every image written is written denoised too (_denoised)
 };
 
 std::string step_name(size_t edit, uint32_t step) {
@@ -68,6 +70,14 @@ void write_pair(const fs::path& dir, const std::string& stem, const ImageRGB& im
                 const DisplayTransform& display) {
   write_image(dir / (stem + ".exr"), image);
   write_image(dir / (stem + ".png"), image, {}, display);
+}
+
+// The display as `stem`, and with --denoise its denoised copy as `stem`_denoised.
+void write_shown(const ReplayOptions& o, const std::string& stem, Renderer& renderer,
+                 const DisplayTransform& display) {
+  write_pair(o.output, stem, renderer.displayed_image(), display);
+  if (o.denoise.enabled)
+    write_pair(o.output, stem + "_denoised", renderer.denoised_image(o.denoise), display);
 }
 
 void write_debug_images(const fs::path& dir, size_t edit, const Renderer& renderer) {
@@ -178,8 +188,7 @@ int run_replay(ReplayOptions& o) {
         write_debug_images(o.output, e, renderer);
         debug_written = true;
       }
-      if (dumps.count(s))
-        write_pair(o.output, step_name(e, s), scheduler.displayed_image(), display);
+      if (dumps.count(s)) write_shown(o, step_name(e, s), renderer, display);
     }
     summary["edits"].push_back(
         {{"edit", describe(edits[e])},
@@ -200,8 +209,7 @@ int run_replay(ReplayOptions& o) {
               "): " + std::to_string(steps) + " steps, " + std::to_string(timer.seconds()) + " s");
   }
   check_validation(ctx);
-  const ImageRGB final_image = scheduler.displayed_image();
-  write_pair(o.output, "final", final_image, display);
+  write_shown(o, "final", renderer, display);
   write_text_atomically(o.output / "summary.json", summary.dump(2) + "\n");
   non_finite += renderer.counters().non_finite_samples;
   if (non_finite) log::warn(std::to_string(non_finite) + " non-finite samples were dropped");
@@ -224,6 +232,7 @@ Command add_replay_command(CLI::App& app) {
                   "Scheduling steps per edit (default: until converged)");
   add_schedule_flags(*cmd, options->schedule);
   add_display_flags(*cmd, options->display, "the PNGs (auto: metered on the scene as loaded)");
+  add_denoise_flags(*cmd, options->denoise);
   cmd->add_option("--save", options->save,
                   "Also write the edited scene (after every edit) as glTF (.gltf or .glb); written "
                   "before rendering");

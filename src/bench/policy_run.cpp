@@ -41,6 +41,13 @@ CurvePoint measured(uint32_t step, double work, double wall_seconds, const Image
   return point;
 }
 
+// What the screen shows: the display, or a denoised copy of it when the run asks (the display
+// the scheduler judges stays as it is).
+ImageRGB shown_image(Renderer& renderer, const PolicyRunOptions& options) {
+  return options.denoise.enabled ? renderer.denoised_image(options.denoise)
+                                 : renderer.displayed_image();
+}
+
 // Adds the point measured at `step` to the curve, and `shown` as each capture its work reaches.
 void record(PolicyRun& run, uint32_t step, double work, double wall_seconds, const ImageRGB& shown,
             const ImageRGB& reference, const PolicyRunOptions& options) {
@@ -97,11 +104,11 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
 
   PolicyRun run;
   const ImageRGB stale = scheduler.displayed_image();
+  // Measures what the screen shows; returns the display (what feedback is judged by).
   const auto evaluate = [&](uint32_t step, double wall_seconds) {
-    ImageRGB shown = scheduler.displayed_image();
-    record(run, step, step == 0 ? 0.0 : scheduler.work_since_edit(), wall_seconds, shown, reference,
-           options);
-    return shown;
+    record(run, step, step == 0 ? 0.0 : scheduler.work_since_edit(), wall_seconds,
+           shown_image(renderer, options), reference, options);
+    return scheduler.displayed_image();
   };
   double wall = 0.0;  // only scheduling and rendering: evaluation and read-backs are left out
   {
@@ -145,7 +152,7 @@ PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference,
   PolicyRun run;
   double wall = 0.0;
   const auto evaluate = [&](uint32_t step) {
-    record(run, step, scheduler.work_since_edit(), wall, scheduler.displayed_image(), reference,
+    record(run, step, scheduler.work_since_edit(), wall, shown_image(renderer, options), reference,
            options);
   };
   if (!options.focus.empty()) {
@@ -184,7 +191,7 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states,
   uint32_t non_finite = 0;   // the counters restart at every edit
   uint32_t step = 0;
   const auto evaluate = [&](double work) {
-    record(run, step, work, wall, scheduler.displayed_image(), reference, options);
+    record(run, step, work, wall, shown_image(renderer, options), reference, options);
   };
   for (size_t e = 0; e < changes.size(); ++e) {
     if (e > 0) {

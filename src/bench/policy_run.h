@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bench/error_curve.h"
+#include "hipr/denoise.h"
 #include "hipr/renderer.h"
 #include "hipr/schedule_settings.h"
 #include "hipr/scheduler.h"
@@ -28,6 +29,9 @@ struct PolicyRunOptions {
   // One entry per pixel, non-zero in the region whose error is also measured (focus_relmse);
   // empty: none.
   std::vector<uint8_t> focus_region;
+  // Each measured image is the display denoised by these settings when enabled (a peer's
+  // viewer shows its denoised image); the feedback times and the final image stay the display's.
+  DenoiseSettings denoise;
 };
 
 struct PolicyRun {
