@@ -11,8 +11,8 @@
 //   plane     exp(-|n_p . (x_q - x_p)| / (0.05 |x_q - x_p|)): q lies in p's tangent plane
 // and the variance is carried through as Var' = sum w^2 Var / (sum w)^2. Passes double the step
 // (1, 2, 4, 8, 16): a 125-pixel footprint for 25 taps a pass.
-// Reads: the guides, keys, the pass's input, FrameParams (the pixel rays), the display (kept
-// pixels). Writes: the pass's output; the last pass writes the remodulated radiance.
+// Reads: the guides, keys, samples, the pass's input, FrameParams (the pixel rays). Writes: the
+// pass's output (denoise_blend.comp takes the last one).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -25,11 +25,9 @@ layout(local_size_x = 64) in;
 #include "common/pixel_ray.glsl"
 
 layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
-layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel b_display[]; };
 layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) readonly buffer Input { vec4 b_input[]; };
 layout(scalar, binding = kDenoiseOutput) writeonly buffer Output { vec4 b_output[]; };
-layout(scalar, binding = kDenoiseResult) writeonly buffer Result { vec3 b_result[]; };
 layout(scalar, binding = kDenoiseSamples) readonly buffer Samples { uint b_samples[]; };
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
@@ -70,7 +68,6 @@ void main() {
   const vec4 centre = b_input[index];
   if (key == kDenoiseKept) {
     b_output[index] = centre;
-    if (u_push.last != 0u) b_result[index] = b_display[index].shown;
     return;
   }
   const DenoiseGuide guide = b_guides[index];
@@ -109,8 +106,4 @@ void main() {
   // The centre's own weight (kSpline[0]^2) keeps `weights` positive.
   const vec4 filtered = vec4(sum / weights, variance / (weights * weights));
   b_output[index] = filtered;
-  if (u_push.last != 0u) {
-    const vec3 radiance = remodulated(filtered.rgb, guide);
-    b_result[index] = any(isinf(radiance)) || any(isnan(radiance)) ? b_display[index].shown : radiance;
-  }
 }

@@ -4,7 +4,8 @@
 // the variance of its luminance, and the key that says which neighbours it may mix with.
 // Reads: the guides, the display (shown value, its samples, record and scene state), the
 // accumulation (sum, sum of squares, count), FrameParams. Writes: the input of the first a-trous
-// pass (vec4: demodulated radiance, variance) and the keys.
+// pass (vec4: demodulated radiance, variance), the variance again (for denoise_blend.comp), the
+// samples behind each value and the keys.
 //
 // The variance is the shown value's own: with hipr's display state (DenoisePush::displayState),
 // a pixel showing the edited scene takes its samples' variance over the samples behind what it
@@ -17,6 +18,10 @@
 // one never mix: the filter does not spread a change, or the absence of one, across the line the
 // re-render has reached). A pixel whose shown value depicts another surface than the one its
 // guide sees (a moved object's old place, still stale) is kept as it is and read by no one.
+// A pixel beside an edge (a neighbour sees another surface, a normal or plane of its own, another
+// albedo) mixes two surfaces in its samples, though its centre sees one: it takes and gives only
+// among pixels beside edges too (kDenoiseBoundary). Filtered with the inside of its surface, an
+// edge lost its antialiasing and a bright emitter's rim bled along the surface beside it.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -26,6 +31,7 @@ layout(local_size_x = 64) in;
 #include "common/frame.glsl"
 #include "common/denoise.glsl"
 #include "common/dispatch.glsl"
+#include "common/pixel_ray.glsl"
 
 layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
 layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel b_display[]; };
@@ -33,7 +39,39 @@ layout(scalar, binding = kDenoiseAccumulation) readonly buffer Accumulation { Pi
 layout(scalar, binding = kDenoiseKeys) writeonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) writeonly buffer Input { vec4 b_input[]; };
 layout(scalar, binding = kDenoiseSamples) writeonly buffer Samples { uint b_samples[]; };
+layout(scalar, binding = kDenoiseVariance) writeonly buffer Variance { float b_variance[]; };
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
+
+const float kEdgeNormalCosine = 0.9;   // normals further apart: an edge (about 25 degrees)
+const float kEdgePlane = 0.1;           // a neighbour further off the tangent plane (as a slope)
+const float kEdgeAlbedo = 0.1;          // an albedo further off in any channel
+
+vec3 guide_position(uvec2 pixel, DenoiseGuide guide) {
+  return u_frame.cameraPosition + pixel_centre_ray(pixel) * guide.distance;
+}
+
+// Whether a neighbour of the pixel sees another surface, or the same one across an edge of its
+// own (a fold, a corner) or of its albedo.
+bool beside_edge(uvec2 pixel, DenoiseGuide guide) {
+  const bool surface = guide.record != kInvalidIndex;
+  const vec3 normal = surface ? unpack_normal(guide.normal) : vec3(0.0);
+  const vec3 position = surface ? guide_position(pixel, guide) : vec3(0.0);
+  const vec3 albedo = unpackUnorm4x8(guide.albedo).rgb;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const ivec2 q = ivec2(pixel) + ivec2(dx, dy);
+      if ((dx == 0 && dy == 0) || any(lessThan(q, ivec2(0))) || q.x >= int(u_push.width) || q.y >= int(u_push.height))
+        continue;
+      const DenoiseGuide other = b_guides[uint(q.y) * u_push.width + uint(q.x)];
+      if (other.record != guide.record) return true;
+      if (any(greaterThan(abs(unpackUnorm4x8(other.albedo).rgb - albedo), vec3(kEdgeAlbedo)))) return true;
+      if (!surface) continue;
+      if (dot(unpack_normal(other.normal), normal) < kEdgeNormalCosine) return true;
+      const vec3 offset = guide_position(uvec2(q), other) - position;
+      if (abs(dot(normal, offset)) > kEdgePlane * length(offset)) return true;
+    }
+  return false;
+}
 
 bool shows_current(DisplayTexel texel) { return u_push.displayState == 0u || (texel.flags & kShownCurrent) != 0u; }
 
@@ -45,7 +83,9 @@ uint pixel_key(uint index) {
     return kDenoiseKept;
   if (u_push.displayState != 0u && texel.shownRecord != kRecordUnknown && texel.shownRecord != seen) return kDenoiseKept;
   const uint surface = seen == kInvalidIndex ? 0u : (seen + 1u) & kDenoiseSurfaceMask;
-  return surface | (shows_current(texel) ? kDenoiseCurrent : 0u);
+  const uvec2 pixel = uvec2(index % u_push.width, index / u_push.width);
+  return surface | (shows_current(texel) ? kDenoiseCurrent : 0u) |
+         (beside_edge(pixel, b_guides[index]) ? kDenoiseBoundary : 0u);
 }
 
 float demodulated_luminance(uint index) {
@@ -103,10 +143,13 @@ void main() {
   if (key == kDenoiseKept) {
     b_input[index] = vec4(radiance, 0.0);
     b_samples[index] = behind;
+    b_variance[index] = 0.0;
     return;
   }
   float variance = sampled_variance(index, albedo, behind);
   if (variance < 0.0) variance = spatial_variance(pixel, key, denoise_luminance(radiance));
-  b_input[index] = vec4(radiance, isinf(variance) || isnan(variance) ? 0.0 : variance);
+  variance = isinf(variance) || isnan(variance) ? 0.0 : variance;
+  b_input[index] = vec4(radiance, variance);
   b_samples[index] = behind;
+  b_variance[index] = variance;
 }

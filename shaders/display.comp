@@ -3,8 +3,8 @@
 // nearest rendered pixel of the displayed image (placed and scaled by the push constants),
 // tone-maps it exactly as tonemap_srgb8 does (exposure, tone mapper, sRGB curve, 8 bits) and blends
 // the overlay on top in display space; pixels outside the image get the background colour.
-// Reads: the display (DisplayTexel.shown, where the resolve wrote it: no copy through the host),
-// the overlay. Writes: one RGBA8 word per window pixel.
+// Reads: the display (DisplayTexel.shown, where the resolve wrote it: no copy through the host)
+// or the denoiser's copy of it (vec3), the overlay. Writes: one RGBA8 word per window pixel.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -16,7 +16,7 @@ layout(local_size_x = 64) in;
 #include "common/srgb.glsl"
 #include "common/tone_mappers.glsl"
 
-layout(scalar, binding = kDisplayTexels) readonly buffer Display { DisplayTexel b_display[]; };
+layout(scalar, binding = kDisplayTexels) readonly buffer Source { float b_source[]; };
 layout(scalar, binding = kDisplayOverlay) readonly buffer Overlay { uint b_overlay[]; };
 layout(scalar, binding = kDisplayOutput) writeonly buffer Output { uint b_output[]; };
 layout(push_constant, scalar) uniform Push { DisplayPush u_push; };
@@ -32,7 +32,8 @@ void main() {
     return;
   }
   const uint pixel = uint(source.y) * u_push.sourceWidth + uint(source.x);
-  const vec3 exposed = b_display[pixel].shown * u_push.exposureScale;
+  const uint at = pixel * u_push.sourceStride;
+  const vec3 exposed = vec3(b_source[at], b_source[at + 1u], b_source[at + 2u]) * u_push.exposureScale;
   // The clamp mapper stays per channel, bit for bit what it always was.
   uvec3 rgb = srgb_bytes(u_push.toneMapper == kToneClamp ? exposed
                                                          : tone_map(exposed, u_push.toneMapper));

@@ -498,6 +498,7 @@ struct DisplayPush {
   uint background;      // RGBA8 outside the rendered image
   uint overlayEnabled;  // 0: the overlay buffer is ignored
   uint toneMapper;      // kTone* (common/tone_mappers.glsl), after the exposure
+  uint sourceStride;    // floats per rendered pixel in the source; its first three: the radiance
 };
 
 // The viewer's overlays (overlay.comp): what OverlayPush::mode draws over the image.
@@ -544,7 +545,8 @@ struct DenoiseGuide {
 };
 
 // A pixel's key in the filter (denoise_prepare.comp): neighbours mix only with equal keys.
-HIPR_CONST uint kDenoiseSurfaceMask = 0x3fffffffu;  // the surface shown, + 1 (0: background)
+HIPR_CONST uint kDenoiseSurfaceMask = 0x1fffffffu;  // the surface shown, + 1 (0: background)
+HIPR_CONST uint kDenoiseBoundary = 0x20000000u;     // a neighbour sees another surface, normal or albedo
 HIPR_CONST uint kDenoiseCurrent = 0x40000000u;      // what is shown is of the scene since the last edit
 HIPR_CONST uint kDenoiseKept = 0x80000000u;         // shown as it is, read by no neighbour
 
@@ -552,7 +554,7 @@ struct DenoisePush {
   uint width;
   uint height;
   uint step;           // a-trous pass: the taps' spacing (1, 2, 4, ...)
-  uint last;           // a-trous pass: 1 writes the remodulated radiance to the output
+  uint unused;
   float strength;      // scales the luminance edge's tolerance (0: nothing moves)
   uint displayState;   // prepare: 1 uses the display's sample counts and scene states
 };

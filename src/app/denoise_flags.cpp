@@ -6,11 +6,19 @@ namespace {
 struct FlagBinder {
   CLI::App& cmd;
 
-  // A flag flips the default: --denoise turns the denoiser on, --denoise-plain its knowledge off.
+  // A flag flips the default: --denoise turns the denoiser on (--no-denoise off, where it is
+  // on by default: the viewer), --denoise-plain its knowledge off.
   void operator()(const DenoiseSettingInfo& info, bool& value) const {
     const bool flipped = !value;
+    const std::string flag = info.flag;
+    if (flag == "--denoise" && value) {
+      cmd.add_flag_function(
+          "--no-denoise", [&value](int64_t) { value = false; },
+          "Show the display as rendered: no denoiser (N toggles it)");
+      return;
+    }
     cmd.add_flag_function(
-        info.flag, [&value, flipped](int64_t) { value = flipped; }, info.help);
+        flag, [&value, flipped](int64_t) { value = flipped; }, info.help);
   }
   void operator()(const DenoiseSettingInfo& info, float& value) const {
     cmd.add_option(info.flag, value, info.help)

@@ -22,6 +22,7 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
       m_guides(ctx, pixels(width, height) * sizeof(abi::DenoiseGuide), kStorage),
       m_keys(ctx, pixels(width, height) * sizeof(uint32_t), kStorage),
       m_samples(ctx, pixels(width, height) * sizeof(uint32_t), kStorage),
+      m_variance(ctx, pixels(width, height) * sizeof(float), kStorage),
       m_ping(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
       m_pong(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
       m_trace_guides(ctx, "denoise_guides.comp", {}, {{abi::kDenoiseGuides, &m_guides}}, 0,
@@ -32,26 +33,33 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
                  {abi::kDenoiseAccumulation, &film.accumulation},
                  {abi::kDenoiseKeys, &m_keys},
                  {abi::kDenoiseInput, &m_ping},
-                 {abi::kDenoiseSamples, &m_samples}},
+                 {abi::kDenoiseSamples, &m_samples},
+                 {abi::kDenoiseVariance, &m_variance}},
                 sizeof(abi::DenoisePush), &scene.descriptor_set()),
-      m_ping_to_pong(ctx, "denoise_atrous.comp", {},
-                     {{abi::kDenoiseGuides, &m_guides},
-                      {abi::kDenoiseDisplay, &display},
-                      {abi::kDenoiseKeys, &m_keys},
-                      {abi::kDenoiseInput, &m_ping},
-                      {abi::kDenoiseOutput, &m_pong},
-                      {abi::kDenoiseResult, &result},
-                      {abi::kDenoiseSamples, &m_samples}},
+      m_ping_to_pong(ctx, "denoise_atrous.comp", {}, atrous_bindings(m_ping, m_pong),
                      sizeof(abi::DenoisePush), &scene.descriptor_set()),
-      m_pong_to_ping(ctx, "denoise_atrous.comp", {},
-                     {{abi::kDenoiseGuides, &m_guides},
-                      {abi::kDenoiseDisplay, &display},
-                      {abi::kDenoiseKeys, &m_keys},
-                      {abi::kDenoiseInput, &m_pong},
-                      {abi::kDenoiseOutput, &m_ping},
-                      {abi::kDenoiseResult, &result},
-                      {abi::kDenoiseSamples, &m_samples}},
-                     sizeof(abi::DenoisePush), &scene.descriptor_set()) {}
+      m_pong_to_ping(ctx, "denoise_atrous.comp", {}, atrous_bindings(m_pong, m_ping),
+                     sizeof(abi::DenoisePush), &scene.descriptor_set()),
+      m_blend_ping(ctx, "denoise_blend.comp", {}, blend_bindings(display, m_ping),
+                   sizeof(abi::DenoisePush), &scene.descriptor_set()),
+      m_blend_pong(ctx, "denoise_blend.comp", {}, blend_bindings(display, m_pong),
+                   sizeof(abi::DenoisePush), &scene.descriptor_set()) {}
+
+std::vector<vk::BufferBinding> DenoisePass::atrous_bindings(const vk::Buffer& input,
+                                                            const vk::Buffer& output) const {
+  return {{abi::kDenoiseGuides, &m_guides},
+          {abi::kDenoiseKeys, &m_keys},
+          {abi::kDenoiseSamples, &m_samples},
+          {abi::kDenoiseInput, &input},
+          {abi::kDenoiseOutput, &output}};
+}
+
+std::vector<vk::BufferBinding> DenoisePass::blend_bindings(const vk::Buffer& display,
+                                                           const vk::Buffer& filtered) const {
+  return {{abi::kDenoiseGuides, &m_guides},     {abi::kDenoiseKeys, &m_keys},
+          {abi::kDenoiseDisplay, &display},     {abi::kDenoiseInput, &filtered},
+          {abi::kDenoiseVariance, &m_variance}, {abi::kDenoiseResult, &result}};
+}
 
 void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings) {
   const uint32_t groups = groups_for(m_width * m_height);
@@ -71,9 +79,10 @@ void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings) {
   for (uint32_t pass = 0; pass < passes; ++pass) {
     vk::compute_to_compute_barrier(cmd);
     push.step = 1u << pass;
-    push.last = pass + 1 == passes ? 1u : 0u;
     (pass % 2 == 0 ? m_ping_to_pong : m_pong_to_ping).dispatch(cmd, &push, groups);
   }
+  vk::compute_to_compute_barrier(cmd);
+  (passes % 2 == 0 ? m_blend_ping : m_blend_pong).dispatch(cmd, &push, groups);
 }
 
 void DenoisePass::run(const DenoiseSettings& settings) {

@@ -1,9 +1,11 @@
 #pragma once
-// The display denoiser (denoise_guides.comp, denoise_prepare.comp, denoise_atrous.comp): an
+// The display denoiser (denoise_guides.comp, denoise_prepare.comp, denoise_atrous.comp,
+// denoise_blend.comp): an
 // edge-avoiding a-trous filter of what the display shows, guided by each pixel's noise, the
 // surface its centre sees and the scene state of its value. It writes a copy (`result`):
 // the accumulation and the display stay as they are (docs/method.md, "The denoised display").
 #include <cstdint>
+#include <vector>
 
 #include "hipr/denoise.h"
 #include "hipr/image.h"
@@ -31,14 +33,21 @@ class DenoisePass {
   vk::Buffer result;  // vec3 per pixel: the denoised radiance
 
  private:
+  std::vector<vk::BufferBinding> atrous_bindings(const vk::Buffer& input,
+                                                 const vk::Buffer& output) const;
+  std::vector<vk::BufferBinding> blend_bindings(const vk::Buffer& display,
+                                                const vk::Buffer& filtered) const;
+
   const vk::Context& m_ctx;
   uint32_t m_width, m_height;
   bool m_guides_current = false;
-  vk::Buffer m_guides, m_keys, m_samples, m_ping, m_pong;
+  vk::Buffer m_guides, m_keys, m_samples, m_variance, m_ping, m_pong;
   vk::ComputePipeline m_trace_guides;  // denoise_guides.comp
   vk::ComputePipeline m_prepare;       // denoise_prepare.comp: display -> ping
   vk::ComputePipeline m_ping_to_pong;  // denoise_atrous.comp
   vk::ComputePipeline m_pong_to_ping;
+  vk::ComputePipeline m_blend_ping;  // denoise_blend.comp, after an even number of passes
+  vk::ComputePipeline m_blend_pong;  // after an odd number
 };
 
 }  // namespace hipr

@@ -12,6 +12,9 @@ vk::Buffer storage(const vk::Context& ctx, size_t bytes) {
   return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
 
+constexpr uint32_t kTexelStride = sizeof(abi::DisplayTexel) / sizeof(float);
+constexpr uint32_t kRadianceStride = 3;
+
 }  // namespace
 
 DisplayPass::DisplayPass(const vk::Context& ctx, uint32_t width, uint32_t height)
@@ -25,7 +28,8 @@ DisplayPass::DisplayPass(const vk::Context& ctx, uint32_t width, uint32_t height
                  {{abi::kDisplayTexels, &m_texels},
                   {abi::kDisplayOverlay, &m_overlay},
                   {abi::kDisplayOutput, nullptr}},
-                 sizeof(abi::DisplayPush)) {
+                 sizeof(abi::DisplayPush)),
+      m_stride(kTexelStride) {
   m_texels.clear();
   m_overlay.clear();
 }
@@ -34,6 +38,14 @@ void DisplayPass::show(const vk::Buffer& display_texels) {
   if (display_texels.size() < size_t(m_width) * m_height * sizeof(abi::DisplayTexel))
     throw InternalError("the display buffer is smaller than the rendered size");
   m_pipeline.bind_buffer(abi::kDisplayTexels, display_texels);
+  m_stride = kTexelStride;
+}
+
+void DisplayPass::show_radiance(const vk::Buffer& rgb) {
+  if (rgb.size() < size_t(m_width) * m_height * kRadianceStride * sizeof(float))
+    throw InternalError("the radiance buffer is smaller than the rendered size");
+  m_pipeline.bind_buffer(abi::kDisplayTexels, rgb);
+  m_stride = kRadianceStride;
 }
 
 void DisplayPass::set_image(const ImageRGB& image) {
@@ -45,6 +57,7 @@ void DisplayPass::set_image(const ImageRGB& image) {
     texels[i].shown = glm::vec3(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]);
   m_texels.upload(texels.data(), texels.size() * sizeof(abi::DisplayTexel));
   m_pipeline.bind_buffer(abi::kDisplayTexels, m_texels);
+  m_stride = kTexelStride;
 }
 
 void DisplayPass::set_overlay(const std::vector<uint32_t>& rgba8) {
@@ -72,6 +85,7 @@ void DisplayPass::record(VkCommandBuffer cmd, const DisplayView& view) {
   push.background = view.background;
   push.overlayEnabled = view.overlay ? 1u : 0u;
   push.toneMapper = uint32_t(view.tone_mapper);
+  push.sourceStride = m_stride;
   // The display and the overlay were written by earlier submissions (kernels, uploads).
   vk::transfer_to_compute_barrier(cmd);
   vk::compute_to_compute_barrier(cmd);

@@ -37,6 +37,9 @@ class DisplayPass {
   // read at every record(), so what the resolve writes later shows without another call. The
   // buffer must outlive its use here (the viewer shows its session's renderer).
   void show(const vk::Buffer& display_texels);
+  // Shows linear RGB radiance instead (a vec3 per rendered pixel: the denoiser's result), read
+  // in place the same way.
+  void show_radiance(const vk::Buffer& rgb);
   // Shows an image instead (linear RGB, the rendered size; uploaded once: tests, screenshots).
   void set_image(const ImageRGB& image);
   // One RGBA8 word per rendered pixel: sRGB-encoded colour, alpha = how much it covers.
@@ -57,6 +60,7 @@ class DisplayPass {
   uint32_t m_width, m_height;
   vk::Buffer m_texels, m_overlay, m_output;  // m_texels: set_image's, when no display is shown
   vk::ComputePipeline m_pipeline;
+  uint32_t m_stride;  // floats per pixel of the buffer shown (DisplayPush::sourceStride)
 };
 
 }  // namespace hipr

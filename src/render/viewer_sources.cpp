@@ -8,6 +8,12 @@ const vk::Buffer& display_texels(const Renderer& renderer) {
   return renderer.state().resolve.display;
 }
 
+const vk::Buffer& denoised_display(Renderer& renderer, const DenoiseSettings& settings) {
+  DenoisePass& denoiser = renderer.render_state()->denoise_pass();
+  denoiser.run(settings);
+  return denoiser.result;
+}
+
 void render_overlay(Renderer& renderer, DebugOverlay overlay, uint32_t selected_node,
                     const vk::Buffer& output) {
   RenderState& m = *renderer.render_state();

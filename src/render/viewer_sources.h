@@ -12,6 +12,10 @@ namespace hipr {
 // the renderer.
 const vk::Buffer& display_texels(const Renderer& renderer);
 
+// What the display shows now, denoised by `settings` into the denoiser's result (a vec3 per
+// pixel, DisplayPass::show_radiance), on the device; waits. Lives as long as the renderer.
+const vk::Buffer& denoised_display(Renderer& renderer, const DenoiseSettings& settings);
+
 // The viewer's overlays, made on the device into `output` (one RGBA8 word per pixel: the
 // display pass's overlay buffer) from what the renderer holds there: object ids of the G-buffer,
 // stage 2's tile weights, the tiles still owed a restart; and the outline of `selected_node` on

@@ -19,6 +19,7 @@ HIPR_CONST uint kDenoiseInput = 4u;         // vec4 per pixel: demodulated radia
 HIPR_CONST uint kDenoiseOutput = 5u;        // vec4 per pixel: the same after a pass
 HIPR_CONST uint kDenoiseResult = 6u;        // vec3 per pixel: the denoised radiance
 HIPR_CONST uint kDenoiseSamples = 7u;       // uint per pixel: samples behind the value (prepare writes)
+HIPR_CONST uint kDenoiseVariance = 8u;      // float per pixel: the shown value's variance (prepare writes)
 
 #ifdef __cplusplus
 }  // namespace hipr::abi

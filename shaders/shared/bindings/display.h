@@ -10,7 +10,9 @@
 namespace hipr::abi {
 #endif
 
-HIPR_CONST uint kDisplayTexels = 0u;    // DisplayTexel per rendered pixel (the resolve's display; `shown`)
+HIPR_CONST uint kDisplayTexels = 0u;    // per rendered pixel, DisplayPush::sourceStride floats whose first
+                                        // three are the radiance: the resolve's display (DisplayTexel,
+                                        // `shown` first) or the denoiser's result (vec3)
 HIPR_CONST uint kDisplayOverlay = 1u;   // uint RGBA8 per rendered pixel (sRGB, A = coverage)
 HIPR_CONST uint kDisplayOutput = 2u;    // uint RGBA8 per window pixel (what the window shows)
 

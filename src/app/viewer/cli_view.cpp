@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "app/commands.h"
+#include "app/denoise_flags.h"
 #include "app/display_flags.h"
 #include "app/schedule_flags.h"
 #include "app/viewer/screenshot.h"
@@ -121,6 +122,7 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--steps-per-frame", v.steps_per_frame,
                   "Exactly N scheduling steps per frame instead of a time budget");
   add_display_flags(*cmd, v.display, "the window (auto: metered as it converges, until set)");
+  add_denoise_flags(*cmd, v.denoise);
   cmd->add_flag("--no-ui", options->no_ui,
                 "No panels or status line: the window shows the render alone");
   cmd->add_flag(

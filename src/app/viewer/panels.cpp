@@ -192,6 +192,29 @@ void hipr_section(Session& session, ViewerState& state) {
       settings.spp);
 }
 
+// The denoiser's widgets, one per setting of its declaration (hipr/denoise.h).
+struct DenoiseWidgets {
+  bool enabled;  // the settings past the toggle show only while it is on
+  void operator()(const DenoiseSettingInfo& info, bool& value) const {
+    if (std::string(info.flag) != "--denoise" && !enabled) return;
+    ImGui::Checkbox(
+        std::string(info.name).append(std::string(info.flag) == "--denoise" ? " (N)" : "").c_str(),
+        &value);
+    tooltip(info.help);
+  }
+  void operator()(const DenoiseSettingInfo& info, float& value) const {
+    if (!enabled) return;
+    ImGui::SliderFloat(info.name, &value, info.min, info.max, "%.2f");
+    tooltip(info.help);
+  }
+  void operator()(const DenoiseSettingInfo& info, uint32_t& value) const {
+    if (!enabled) return;
+    int n = int(value);
+    if (ImGui::SliderInt(info.name, &n, int(info.min), int(info.max))) value = uint32_t(n);
+    tooltip(info.help);
+  }
+};
+
 void display_section(ViewerState& state) {
   if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
   int overlay = int(state.overlay);
@@ -215,6 +238,7 @@ void display_section(ViewerState& state) {
   tooltip(
       "After the exposure (--tonemap): clamp, Khronos PBR Neutral (glTF colours as "
       "authored), AgX (Blender's default) or ACES");
+  for_each_denoise_setting(state.denoise, DenoiseWidgets{state.denoise.enabled});
   ImGui::Checkbox("status line", &state.show_status);
   bool adapt = state.frame_budget_ms <= 0.0;
   if (ImGui::Checkbox("adapt render time (60 fps)", &adapt))

@@ -154,6 +154,10 @@ const ImageRGB& Session::displayed() {
   return m_displayed;
 }
 
+ImageRGB Session::shown(const DenoiseSettings& denoise) {
+  return denoise.enabled ? m_renderer->denoised_image(denoise) : displayed();
+}
+
 bool Session::edit_shown_unpresented() const {
   return edit_awaits_first_step() && m_scheduler->relit();
 }
@@ -175,6 +179,10 @@ void Session::render_overlay(DebugOverlay overlay, uint32_t selected_node,
                              const vk::Buffer& output) {
   if (overlay == DebugOverlay::Ids || selected_node != UINT32_MAX) ensure_gbuffer();
   hipr::render_overlay(*m_renderer, overlay, selected_node, output);
+}
+
+const vk::Buffer& Session::denoised_display(const DenoiseSettings& settings) {
+  return hipr::denoised_display(*m_renderer, settings);
 }
 
 void Session::ensure_gbuffer() {

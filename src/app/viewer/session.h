@@ -86,6 +86,8 @@ class Session {
   // since the last call): screenshots and tests. The viewer's frames show the renderer's display
   // buffer directly (display_texels, render/viewer_sources.h).
   const ImageRGB& displayed();
+  // What the window shows: displayed(), or its denoised copy when `denoise` is enabled.
+  ImageRGB shown(const DenoiseSettings& denoise);
   // Increments whenever the display may have changed (steps, edits, a new renderer).
   uint64_t display_version() const { return m_display_version; }
   // The last edit is on the display already and no frame has shown it yet: a light edit relit
@@ -103,6 +105,8 @@ class Session {
   // Makes an overlay on the device into `output` (Renderer::render_overlay), the G-buffer
   // brought up to date first where ids or an outline need it.
   void render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output);
+  // What the display shows now, denoised on the device (hipr::denoised_display).
+  const vk::Buffer& denoised_display(const DenoiseSettings& settings);
   // The G-buffer of the scene as it is now: instance per pixel, and one pixel's hit.
   const std::vector<uint32_t>& instance_ids();
   Renderer::PixelHit pick(uint32_t x, uint32_t y);

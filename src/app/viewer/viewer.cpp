@@ -87,6 +87,7 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
   m_state.auto_exposure = !options.display.exposure_ev;
   m_state.tone_mapper = options.display.tone_mapper;
   m_state.show_ui = options.show_ui;
+  m_state.denoise = options.denoise;
   m_state.frame_budget_ms = options.frame_budget_ms;
   m_state.steps_per_frame = options.steps_per_frame;
   m_state.hipr_sliders = options.common.render.hipr;
@@ -256,6 +257,24 @@ void Viewer::update_overlay() {
   m_session->render_overlay(kinds[size_t(m_state.overlay)], selected, m_display.overlay_buffer());
 }
 
+// The display pass reads the renderer's display buffer itself: only a new renderer needs
+// telling. Denoised, it reads the denoiser's copy, made again when the display changed.
+void Viewer::update_source() {
+  const bool denoised = m_state.denoise.enabled;
+  const SourceKey key{m_session->renderer_id(), denoised ? m_session->display_version() : 0,
+                      denoised ? m_state.denoise : DenoiseSettings{}};
+  if (key == m_source_key) return;
+  const bool same_buffer =
+      m_source_key.renderer == key.renderer && m_source_key.denoise.enabled == key.denoise.enabled;
+  m_source_key = key;
+  if (denoised) {
+    const vk::Buffer& copy = m_session->denoised_display(m_state.denoise);
+    if (!same_buffer) m_display.show_radiance(copy);
+  } else if (!same_buffer) {
+    m_display.show(display_texels(m_session->renderer()));
+  }
+}
+
 bool Viewer::present(const ViewLayout& layout) {
   const auto frame = m_presenter->begin_frame();
   if (!frame) {
@@ -263,12 +282,8 @@ bool Viewer::present(const ViewLayout& layout) {
     resize(m_window.framebuffer_size());
     return false;
   }
-  // The previous frame is done (begin_frame waited): its inputs may change now. The display
-  // pass reads the renderer's display buffer itself; only a new renderer needs telling.
-  if (m_session->renderer_id() != m_shown_renderer) {
-    m_display.show(display_texels(m_session->renderer()));
-    m_shown_renderer = m_session->renderer_id();
-  }
+  // The previous frame is done (begin_frame waited): its inputs may change now.
+  update_source();
   update_overlay();
   DisplayView view;
   view.output_width = m_frame.extent().width;

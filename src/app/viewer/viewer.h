@@ -10,6 +10,7 @@
 #include "app/cli_common.h"
 #include "app/display_flags.h"
 #include "app/viewer/overlays.h"
+#include "hipr/denoise.h"
 #include "hipr/edits.h"
 #include "hipr/schedule_settings.h"
 
@@ -31,6 +32,7 @@ struct ViewerOptions {
   // Neutral, which shows glTF base colours as authored and rolls highlights off to white.
   app::DisplayFlags display{std::nullopt, ToneMapper::PbrNeutral};
   bool show_ui = true;
+  DenoiseSettings denoise{.enabled = true};  // the window shows the display denoised (N)
   // No window (machines without a display): frames are drawn off screen, as fast as the device
   // renders them, until exit_after_frames (which headless runs need).
   bool headless = false;

@@ -66,6 +66,7 @@ class Viewer {
   // Auto exposure: meters the displayed radiance on the first frames, then every 8th.
   void meter_exposure(uint32_t frame_index);
   void update_overlay();
+  void update_source();
   bool present(const ViewLayout& layout);
   bool draw_and_present(const vk::PresentFrame& frame, const DisplayView& view);
   ViewLayout layout() const;
@@ -97,7 +98,14 @@ class Viewer {
   uint64_t m_steps = 0;
   // The renderer whose display buffer the display pass reads (a new session or settings that
   // rebuild the renderer bring another).
-  uint64_t m_shown_renderer = 0;     // Session::renderer_id()
+  // What the display pass reads: the renderer's display, or the denoiser's copy of it (made
+  // again whenever the display or the denoiser's settings change).
+  struct SourceKey {
+    uint64_t renderer = 0;          // Session::renderer_id()
+    uint64_t version = UINT64_MAX;  // Session::display_version() the copy was made at
+    DenoiseSettings denoise;
+    bool operator==(const SourceKey&) const = default;
+  } m_source_key;
   double m_render_ms = 0.0;          // the last frame's scheduling steps
   double m_frame_overhead_ms = 0.0;  // a frame's other work, smoothed (the adaptive budget)
   // Frames that ran steps: their times (the frame rate while re-rendering) and the bytes copied

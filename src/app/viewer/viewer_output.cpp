@@ -62,7 +62,7 @@ void Viewer::save_scene_file() {
 void Viewer::take_screenshot(const fs::path& path) {
   try {
     m_presenter->wait_idle();
-    save_screenshot(path, m_ctx, m_frame, m_session->displayed());
+    save_screenshot(path, m_ctx, m_frame, m_session->shown(m_state.denoise));
     m_state.info("screenshot " + path.string());
   } catch (const InputError& e) {
     m_state.error(e.what());
@@ -79,7 +79,7 @@ void Viewer::meter_exposure(uint32_t frame_index) {
 void Viewer::dump_frame(uint32_t frame_index, double frame_seconds) {
   char name[32];
   std::snprintf(name, sizeof(name), "frame_%05u.exr", frame_index);
-  write_image(m_options.frames_dir / name, m_session->displayed());
+  write_image(m_options.frames_dir / name, m_session->shown(m_state.denoise));
   m_frame_log.push_back({{"frame", frame_index},
                          {"file", name},
                          {"script_edits", m_script_next},

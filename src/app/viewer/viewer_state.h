@@ -10,6 +10,7 @@
 
 #include "app/viewer/gizmo.h"
 #include "app/viewer/overlays.h"
+#include "hipr/denoise.h"
 #include "hipr/focus.h"
 #include "hipr/renderer.h"
 #include "hipr/schedule_settings.h"
@@ -29,6 +30,9 @@ struct ViewerState {
   // Metered while on (follow_metering); setting an exposure by hand turns it off (locks it).
   bool auto_exposure = false;
   ToneMapper tone_mapper = ToneMapper::Clamp;
+  // The display denoised (N): on by default, at convergence too, where the filter leaves precise
+  // pixels as they are (docs/method.md, "The denoised display").
+  DenoiseSettings denoise{.enabled = true};
   bool show_ui = true;      // panels and status line (Tab)
   bool show_status = true;  // the status line alone
   int selected_node = -1;

@@ -79,6 +79,7 @@ void ViewportInput::key(Session& session, ViewerState& state, const KeyPress& pr
       k != GLFW_KEY_DOWN && k != GLFW_KEY_PAGE_UP && k != GLFW_KEY_PAGE_DOWN)
     return;  // only moves repeat while a key is held
   if (k == GLFW_KEY_TAB) state.show_ui = !state.show_ui;
+  if (k == GLFW_KEY_N) state.denoise.enabled = !state.denoise.enabled;
   const Overlay overlays[] = {Overlay::None, Overlay::Ids, Overlay::Weights, Overlay::Owed};
   if (k >= GLFW_KEY_0 && k <= GLFW_KEY_3) state.overlay = overlays[k - GLFW_KEY_0];
   if (k == GLFW_KEY_ESCAPE) state.selected_node = -1;

@@ -1,0 +1,62 @@
+#version 460
+// The display denoiser's last kernel: how much of the filtered value each pixel shows. The
+// filter trades noise for bias (a shading gradient averaged over its footprint): where the
+// pixel's own estimate is precise, the bias is the larger error. As hipr's display rules weigh a
+// stale estimate against a fresh one (resolve_display.comp), over the 7 x 7 pixels of the same
+// key around it, with r the shown value and f the filtered one (demodulated luminances),
+//   D = sum (f - r)^2   (E[D] ~ B + V: the filter's squared bias, and r's noise)
+//   V = sum Var(r)
+// and the pixel shows r + a (f - r), a = min(1, V / D): the mix whose expected error is least
+// when f's own noise is small next to r's. A precise pixel (V = 0) shows r as it is; a 2-spp
+// pixel, whose noise dwarfs any bias, shows f. (f and r are correlated, so V / D over-weighs f
+// a little; the window keeps a from following one pixel's noise.)
+// Reads: the guides, keys, the display, the variance of each shown value, the last a-trous
+// pass's output. Writes: the denoised radiance.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+
+layout(local_size_x = 64) in;
+
+#include "common/frame.glsl"
+#include "common/denoise.glsl"
+#include "common/dispatch.glsl"
+
+layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
+layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel b_display[]; };
+layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
+layout(scalar, binding = kDenoiseInput) readonly buffer Filtered { vec4 b_filtered[]; };
+layout(scalar, binding = kDenoiseVariance) readonly buffer Variance { float b_variance[]; };
+layout(scalar, binding = kDenoiseResult) writeonly buffer Result { vec3 b_result[]; };
+layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
+
+const int kWindowRadius = 3;
+
+void main() {
+  const uint index = dispatch_index();
+  if (index >= u_push.width * u_push.height) return;
+  const uint key = b_keys[index];
+  const vec3 shown = b_display[index].shown;
+  if (key == kDenoiseKept) {
+    b_result[index] = shown;
+    return;
+  }
+  const ivec2 p = ivec2(index % u_push.width, index / u_push.width);
+  float difference = 0.0, noise = 0.0;
+  for (int dy = -kWindowRadius; dy <= kWindowRadius; ++dy)
+    for (int dx = -kWindowRadius; dx <= kWindowRadius; ++dx) {
+      const ivec2 q = p + ivec2(dx, dy);
+      if (q.x < 0 || q.y < 0 || q.x >= int(u_push.width) || q.y >= int(u_push.height)) continue;
+      const uint neighbour = uint(q.y) * u_push.width + uint(q.x);
+      if (b_keys[neighbour] != key) continue;
+      const float raw = denoise_luminance(demodulated(b_display[neighbour].shown, b_guides[neighbour]));
+      const float d = denoise_luminance(b_filtered[neighbour].rgb) - raw;
+      difference += d * d;
+      noise += b_variance[neighbour];
+    }
+  const float weight = difference > noise ? noise / difference : 1.0;
+  const DenoiseGuide guide = b_guides[index];
+  const vec3 raw = demodulated(shown, guide);
+  const vec3 radiance = remodulated(raw + weight * (b_filtered[index].rgb - raw), guide);
+  b_result[index] = any(isinf(radiance)) || any(isnan(radiance)) ? shown : radiance;
+}
