@@ -38,13 +38,13 @@ bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 
 // frame count fixes the picture. Unedited, 2 spp are reached at frame 2; a script edit comes
 // at frame 4; by frame 8 the edit has converged again.
 // Without panels (--no-ui) the window is exactly the render.
-// The display is pinned to the plain one (no metering, clamp): the screenshots are compared
-// with images tone-mapped by tonemap_srgb8's default and with each other across edits.
-std::string view_arguments(const std::string& extra, bool panels = false) {
+// The display is pinned to the plain one (no metering, clamp, not denoised): the screenshots are
+// compared with images tone-mapped by tonemap_srgb8's default and with each other across edits.
+std::string view_arguments(const std::string& extra, bool panels = false, bool denoised = false) {
   return "view " + quoted(test::asset("cornell_box.gltf")) +
          " --size 128x128 --tile 16 --spp 2 --max-depth 4 --tiles-per-step 64 --steps-per-frame 1 "
          "--script-every 4 --exposure 0 --tonemap clamp -q " +
-         (panels ? "" : "--no-ui ") + extra;
+         (panels ? "" : "--no-ui ") + (denoised ? "" : "--no-denoise ") + extra;
 }
 
 test::CommandResult run_in_xvfb(const std::string& arguments) {
@@ -496,6 +496,27 @@ TEST_F(ViewerWindow, TheSelectedObjectIsRenderedFirst) {
   EXPECT_EQ(masked_mean(shots["--no-focus"], ids, block, 0), 0.0)
       << "scanline order has not reached the block";
   EXPECT_GT(masked_mean(shots["--no-focus"], ids, ceiling, 0), 0.0) << "it starts at the top";
+}
+
+// The viewer shows the display denoised by default: its EXR screenshot (what the window shows,
+// in linear radiance) is `hipr render --denoise` of the same samples, bit for bit, and differs
+// from the plain display.
+TEST(ViewerCli, TheDenoisedWindowIsTheDenoisedRender) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
+  const fs::path dir = test::temp_dir("viewer-denoised");
+  const fs::path shown = dir / "shown.exr", plain = dir / "plain.exr", render = dir / "render.exr";
+  for (const auto& [shot, denoised] : {std::pair{shown, true}, std::pair{plain, false}}) {
+    const test::CommandResult result = run_in_xvfb(
+        view_arguments("--exit-after-frames 3 --screenshot " + quoted(shot), false, denoised));
+    ASSERT_EQ(result.exit_code, kExitOk) << result.output;
+  }
+  const test::CommandResult rendered =
+      test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) +
+                     " --width 128 --height 128 --tile 16 --spp 2 --max-depth 4 --denoise -q -o " +
+                     quoted(render));
+  ASSERT_EQ(rendered.exit_code, kExitOk) << rendered.output;
+  EXPECT_EQ(read_image(shown).rgb, read_image(render).rgb);
+  EXPECT_NE(read_image(shown).rgb, read_image(plain).rgb);
 }
 
 TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {

@@ -392,7 +392,9 @@ int Viewer::run() {
       log::info("glTF has no environment: reopen with " + environment_flags(m_session->scene()));
   }
   if (!m_options.screenshot.empty())
-    attempt([&] { save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->displayed()); });
+    attempt([&] {
+      save_screenshot(m_options.screenshot, m_ctx, m_frame, m_session->shown(m_state.denoise));
+    });
   if (!m_options.stats_json.empty()) attempt([&] { write_stats(seconds); });
   if (!m_options.frames_dir.empty()) attempt([&] { write_frame_log(); });
   app::check_validation(m_ctx);
