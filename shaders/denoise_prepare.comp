@@ -11,8 +11,10 @@
 // a pixel showing the edited scene takes its samples' variance over the samples behind what it
 // shows (DisplayTexel::shownSamples: more than its fresh samples where a converged stale estimate
 // still weighs). Without it (the ablation: a denoiser that knows only the accumulation), the
-// accumulation's own count. A pixel with fewer than two samples behind it, or one showing the
-// scene before the edit, takes the spatial variance of its 3 x 3 neighbours of the same key.
+// accumulation's own count. A pixel still showing its stale estimate takes the variance of the
+// samples that made it (sampled_variance); one with fewer than two samples behind it, the
+// spatial variance of its 3 x 3 neighbours of the same key. The environment seen directly is
+// shown as it is (its only noise is antialiasing).
 // Keys: neighbours mix only when they show the same surface (the G-buffer record their guide
 // ray hit) and, with the display state, values of the same scene state (a stale pixel and a fresh
 // one never mix: the filter does not spread a change, or the absence of one, across the line the
@@ -82,7 +84,9 @@ uint pixel_key(uint index) {
       any(isinf(unpack_emission(b_guides[index]))))
     return kDenoiseKept;
   if (u_push.displayState != 0u && texel.shownRecord != kRecordUnknown && texel.shownRecord != seen) return kDenoiseKept;
-  const uint surface = seen == kInvalidIndex ? 0u : (seen + 1u) & kDenoiseSurfaceMask;
+  // The environment seen directly has no noise but its antialiasing: nothing to filter.
+  if (seen == kInvalidIndex) return kDenoiseKept;
+  const uint surface = (seen + 1u) & kDenoiseSurfaceMask;
   const uvec2 pixel = uvec2(index % u_push.width, index / u_push.width);
   return surface | (shows_current(texel) ? kDenoiseCurrent : 0u) |
          (beside_edge(pixel, b_guides[index]) ? kDenoiseBoundary : 0u);
@@ -96,13 +100,17 @@ float demodulated_luminance(uint index) {
 uint samples_behind(DisplayTexel texel, uint n) { return u_push.displayState != 0u ? max(texel.shownSamples, n) : n; }
 
 // The samples' variance of the demodulated luminance, over the samples behind what is shown, or
-// -1 where the pixel cannot tell (fewer than two samples, or a value of the scene before).
+// -1 where the pixel cannot tell (fewer than two samples). Whose samples: a pixel showing the
+// scene since the edit has its fresh ones; one still showing its stale estimate has the samples
+// that made it, in the accumulation until its next visit drops them (owed: mark_owed.comp); a
+// relit pixel (the edited scene, from owed samples of the scene before) has neither.
 float sampled_variance(uint index, vec3 albedo, out uint behind) {
   const DisplayTexel texel = b_display[index];
   const PixelAccum accum = b_accum[index];
-  const uint n = (accum.count & kPixelOwed) != 0u ? 0u : accum.count & kPixelCountMask;
+  const bool owed = (accum.count & kPixelOwed) != 0u;
+  const uint n = accum.count & kPixelCountMask;
   behind = 1u;
-  if (n < 2u || !shows_current(texel)) return -1.0;
+  if (n < 2u || (owed && shows_current(texel))) return -1.0;
   const vec3 mean = accum.sum / float(n);
   const vec3 spread = sqrt(max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u)) / albedo;
   // The channels' noise is of the same paths: their deviations add up in the luminance.

@@ -545,7 +545,7 @@ struct DenoiseGuide {
 };
 
 // A pixel's key in the filter (denoise_prepare.comp): neighbours mix only with equal keys.
-HIPR_CONST uint kDenoiseSurfaceMask = 0x1fffffffu;  // the surface shown, + 1 (0: background)
+HIPR_CONST uint kDenoiseSurfaceMask = 0x1fffffffu;  // the surface shown, + 1
 HIPR_CONST uint kDenoiseBoundary = 0x20000000u;     // a neighbour sees another surface, normal or albedo
 HIPR_CONST uint kDenoiseCurrent = 0x40000000u;      // what is shown is of the scene since the last edit
 HIPR_CONST uint kDenoiseKept = 0x80000000u;         // shown as it is, read by no neighbour
