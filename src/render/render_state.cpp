@@ -58,9 +58,11 @@ const GBufferPass& RenderState::rendered_gbuffers() {
 }
 
 DenoisePass& RenderState::denoise_pass() {
-  if (!denoiser)
+  if (!denoiser) {
     denoiser = std::make_unique<DenoisePass>(ctx, gpu, film, resolve.display, settings.width,
                                              settings.height);
+    if (settings.compile_kernels_early) denoiser->run(DenoiseSettings{.enabled = true});
+  }
   return *denoiser;
 }
 

@@ -8,10 +8,12 @@ const vk::Buffer& display_texels(const Renderer& renderer) {
   return renderer.state().resolve.display;
 }
 
-const vk::Buffer& denoised_display(Renderer& renderer, const DenoiseSettings& settings) {
-  DenoisePass& denoiser = renderer.render_state()->denoise_pass();
-  denoiser.run(settings);
-  return denoiser.result;
+const vk::Buffer& denoised_display(Renderer& renderer) {
+  return renderer.render_state()->denoise_pass().result;
+}
+
+void record_denoise(Renderer& renderer, VkCommandBuffer cmd, const DenoiseSettings& settings) {
+  renderer.render_state()->denoise_pass().record(cmd, settings);
 }
 
 void render_overlay(Renderer& renderer, DebugOverlay overlay, uint32_t selected_node,

@@ -12,9 +12,13 @@ namespace hipr {
 // the renderer.
 const vk::Buffer& display_texels(const Renderer& renderer);
 
-// What the display shows now, denoised by `settings` into the denoiser's result (a vec3 per
-// pixel, DisplayPass::show_radiance), on the device; waits. Lives as long as the renderer.
-const vk::Buffer& denoised_display(Renderer& renderer, const DenoiseSettings& settings);
+// The denoiser's result (a vec3 per pixel, DisplayPass::show_radiance), its pass made on the
+// first call (compiled then where the renderer compiles kernels early). Lives as long as the
+// renderer.
+const vk::Buffer& denoised_display(Renderer& renderer);
+// Records the denoiser over what the display shows now into that buffer, in the viewer's own
+// frame: no submission of its own.
+void record_denoise(Renderer& renderer, VkCommandBuffer cmd, const DenoiseSettings& settings);
 
 // The viewer's overlays, made on the device into `output` (one RGBA8 word per pixel: the
 // display pass's overlay buffer) from what the renderer holds there: object ids of the G-buffer,

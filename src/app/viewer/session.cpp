@@ -181,8 +181,10 @@ void Session::render_overlay(DebugOverlay overlay, uint32_t selected_node,
   hipr::render_overlay(*m_renderer, overlay, selected_node, output);
 }
 
-const vk::Buffer& Session::denoised_display(const DenoiseSettings& settings) {
-  return hipr::denoised_display(*m_renderer, settings);
+const vk::Buffer& Session::denoised_display() { return hipr::denoised_display(*m_renderer); }
+
+void Session::record_denoise(VkCommandBuffer cmd, const DenoiseSettings& settings) {
+  hipr::record_denoise(*m_renderer, cmd, settings);
 }
 
 void Session::ensure_gbuffer() {

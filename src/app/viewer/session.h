@@ -105,8 +105,10 @@ class Session {
   // Makes an overlay on the device into `output` (Renderer::render_overlay), the G-buffer
   // brought up to date first where ids or an outline need it.
   void render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output);
-  // What the display shows now, denoised on the device (hipr::denoised_display).
-  const vk::Buffer& denoised_display(const DenoiseSettings& settings);
+  // The denoiser's result and its recording into a frame (hipr::denoised_display,
+  // hipr::record_denoise).
+  const vk::Buffer& denoised_display();
+  void record_denoise(VkCommandBuffer cmd, const DenoiseSettings& settings);
   // The G-buffer of the scene as it is now: instance per pixel, and one pixel's hit.
   const std::vector<uint32_t>& instance_ids();
   Renderer::PixelHit pick(uint32_t x, uint32_t y);

@@ -100,6 +100,8 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
                ":\ncompiling the path tracer (the first start with a scene can take a minute or "
                "two on a CPU)");
   m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
+  // The denoiser's pass made (and compiled) now, not in the first frame that renders.
+  if (m_state.denoise.enabled) m_session->denoised_display();
   log::info("viewer on " + m_ctx.device_name() + " (" + m_ctx.traversal_name() + " traversal), " +
             m_presenter->description());
 }
@@ -258,8 +260,9 @@ void Viewer::update_overlay() {
 }
 
 // The display pass reads the renderer's display buffer itself: only a new renderer needs
-// telling. Denoised, it reads the denoiser's copy, made again when the display changed.
-void Viewer::update_source() {
+// telling. Denoised, it reads the denoiser's copy, recorded again into the frame (before the
+// display pass) when the display or the settings changed.
+void Viewer::update_source(VkCommandBuffer cmd) {
   const bool denoised = m_state.denoise.enabled;
   const SourceKey key{m_session->renderer_id(), denoised ? m_session->display_version() : 0,
                       denoised ? m_state.denoise : DenoiseSettings{}};
@@ -268,8 +271,8 @@ void Viewer::update_source() {
       m_source_key.renderer == key.renderer && m_source_key.denoise.enabled == key.denoise.enabled;
   m_source_key = key;
   if (denoised) {
-    const vk::Buffer& copy = m_session->denoised_display(m_state.denoise);
-    if (!same_buffer) m_display.show_radiance(copy);
+    if (!same_buffer) m_display.show_radiance(m_session->denoised_display());
+    m_session->record_denoise(cmd, m_state.denoise);
   } else if (!same_buffer) {
     m_display.show(display_texels(m_session->renderer()));
   }
@@ -283,7 +286,7 @@ bool Viewer::present(const ViewLayout& layout) {
     return false;
   }
   // The previous frame is done (begin_frame waited): its inputs may change now.
-  update_source();
+  update_source(frame->cmd);
   update_overlay();
   DisplayView view;
   view.output_width = m_frame.extent().width;

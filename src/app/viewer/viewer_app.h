@@ -66,7 +66,7 @@ class Viewer {
   // Auto exposure: meters the displayed radiance on the first frames, then every 8th.
   void meter_exposure(uint32_t frame_index);
   void update_overlay();
-  void update_source();
+  void update_source(VkCommandBuffer cmd);
   bool present(const ViewLayout& layout);
   bool draw_and_present(const vk::PresentFrame& frame, const DisplayView& view);
   ViewLayout layout() const;
