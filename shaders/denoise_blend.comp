@@ -3,9 +3,12 @@
 // filter trades noise for bias (a shading gradient averaged over its footprint): where the
 // pixel's own estimate is precise, the bias is the larger error. As hipr's display rules weigh a
 // stale estimate against a fresh one (resolve_display.comp), over the 7 x 7 pixels of the same
-// key around it, with r the shown value and f the filtered one (demodulated luminances),
-//   D = sum (f - r)^2   (E[D] ~ B + V: the filter's squared bias, and r's noise)
-//   V = sum Var(r)
+// key around it, with r the shown value and f the filtered one (luminances of radiance), each
+// pixel weighed as relMSE weighs errors, w = 1 / (r^2 + 0.01), as the display rules do:
+//   D = sum w (f - r)^2   (E[D] ~ B + V: the filter's squared bias, and r's noise)
+//   V = sum w Var(r)
+// (In radiance, not in the demodulated values the filter works on: there a dark texel's noise,
+// divided by its small albedo, outweighed its whole window and let the filter blur bright detail.)
 // and the pixel shows r + a (f - r), a = min(1, V / D): the mix whose expected error is least
 // when f's own noise is small next to r's. A precise pixel (V = 0) shows r as it is; a 2-spp
 // pixel, whose noise dwarfs any bias, shows f. (f and r are correlated, so V / D over-weighs f
@@ -49,10 +52,15 @@ void main() {
       if (q.x < 0 || q.y < 0 || q.x >= int(u_push.width) || q.y >= int(u_push.height)) continue;
       const uint neighbour = uint(q.y) * u_push.width + uint(q.x);
       if (b_keys[neighbour] != key) continue;
-      const float raw = denoise_luminance(demodulated(b_display[neighbour].shown, b_guides[neighbour]));
-      const float d = denoise_luminance(b_filtered[neighbour].rgb) - raw;
-      difference += d * d;
-      noise += b_variance[neighbour];
+      const DenoiseGuide other = b_guides[neighbour];
+      const vec3 albedo = unpack_albedo(other.albedo);
+      const vec3 shownThere = b_display[neighbour].shown;
+      const float d = denoise_luminance((b_filtered[neighbour].rgb - demodulated(shownThere, other)) * albedo);
+      const float l = denoise_luminance(shownThere);
+      const float w = 1.0 / (l * l + 0.01);
+      const float a = denoise_luminance(albedo);
+      difference += w * d * d;
+      noise += w * b_variance[neighbour] * a * a;
     }
   const float weight = difference > noise ? noise / difference : 1.0;
   const DenoiseGuide guide = b_guides[index];
