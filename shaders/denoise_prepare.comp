@@ -1,7 +1,7 @@
 #version 460
 // The display denoiser's first kernel: what each pixel shows, less its surface's emission and
-// demodulated by its albedo (common/denoise.glsl), with
-// the variance of its luminance, and the key that says which neighbours it may mix with.
+// demodulated by its albedo (common/denoise.glsl), with the variance of its luminance, and the
+// key that says which neighbours it may mix with.
 // Reads: the guides, the display (shown value, its samples, record and scene state), the
 // accumulation (sum, sum of squares, count), FrameParams. Writes: the input of the first a-trous
 // pass (vec4: demodulated radiance, variance), the variance again (for denoise_blend.comp), the
