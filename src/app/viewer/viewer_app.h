@@ -96,12 +96,11 @@ class Viewer {
       nlohmann::json::array();  // --frames-dir: what each dumped frame shows
   uint64_t m_frames = 0;
   uint64_t m_steps = 0;
-  // The renderer whose display buffer the display pass reads (a new session or settings that
-  // rebuild the renderer bring another).
   // What the display pass reads: the renderer's display, or the denoiser's copy of it (made
   // again whenever the display or the denoiser's settings change).
   struct SourceKey {
-    uint64_t renderer = 0;          // Session::renderer_id()
+    uint64_t renderer = 0;          // Session::renderer_id() (from 1: a new session or settings
+                                    // that rebuild the renderer bring another)
     uint64_t version = UINT64_MAX;  // Session::display_version() the copy was made at
     DenoiseSettings denoise;
     bool operator==(const SourceKey&) const = default;
