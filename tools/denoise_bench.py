@@ -20,20 +20,12 @@ import os
 import subprocess
 import sys
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
-HIPR = os.path.join(ROOT, "build", "hipr")
-SHARED = os.path.join(ROOT, "..", "shared", "scenes")
-STUDIO = os.path.join(SHARED, "EnvMaps", "studio_small_03_1k.hdr")
+# The sampler benchmark's paths and scenes (the real ones need their environment), and a
+# textured asset with an emissive map besides.
+from sampler_bench import HIPR, ROOT, SCENES as SAMPLER_SCENES, SHARED, STUDIO
 
-# name, scene, extra flags
-SCENES = [
-    ("cornell_box", os.path.join(ROOT, "assets/scenes/cornell_box.gltf"), []),
-    ("cornell_sphere", os.path.join(ROOT, "assets/scenes/cornell_sphere.glb"), []),
-    ("CornellBox", os.path.join(SHARED, "CornellBox/cornellBox.gltf"), []),
-    ("SheenChair", os.path.join(SHARED, "SheenChair/SheenChair.gltf"), ["--env", STUDIO]),
+SCENES = SAMPLER_SCENES + [
     ("DamagedHelmet", os.path.join(SHARED, "DamagedHelmet/DamagedHelmet.glb"), ["--env", STUDIO]),
-    ("LightsPunctualLamp", os.path.join(SHARED, "LightsPunctualLamp/LightsPunctualLamp.gltf"), []),
-    ("GlassVaseFlowers", os.path.join(SHARED, "GlassVaseFlowers/GlassVaseFlowers.glb"), ["--env", STUDIO]),
 ]
 
 
