@@ -111,13 +111,16 @@ vec3 camera_ray_direction(uvec2 pixel, vec2 jitter) {
   return normalize(u_frame.cameraForward + x * u_frame.cameraRight + y * u_frame.cameraUp);
 }
 
-// MIS weight for radiance found by BSDF sampling on an emissive triangle.
-float emitter_hit_weight(SurfaceHit surface, float distance, vec3 direction, float bsdfPdf) {
+// MIS weight for radiance found by BSDF sampling on an emissive triangle, from the vertex at
+// `from` with shading normal `fromNormal` (light selection depends on where it is made).
+float emitter_hit_weight(SurfaceHit surface, float distance, vec3 direction, float bsdfPdf, vec3 from,
+                         vec3 fromNormal) {
   const uint lightOffset = b_geometries[surface.geometry].lightOffset;
   if (lightOffset == kInvalidIndex) return 1.0;  // not in the light table: BSDF sampling only
   const uint index = lightOffset + surface.primitive;
   const float cosAtLight = abs(dot(surface.geometricNormal, direction));
-  const float lightPdf = light_selection_pdf(index) * triangle_light_pdf(b_lights[index], distance, cosAtLight);
+  const float lightPdf =
+      light_selection_pdf(index, from, fromNormal) * triangle_light_pdf(b_lights[index], distance, cosAtLight);
   return bsdf_hit_weight(bsdfPdf, lightPdf);
 }
 
@@ -129,7 +132,7 @@ vec3 leave_surface(vec3 position, vec3 geometricNormal, vec3 direction) {
 
 // Rays traced, by kind: x camera, y extension (a path's later segments), z shadow.
 vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWeight, inout uvec3 rays, out uint group) {
-  const LightSample ls = sample_light(surface.position, u);
+  const LightSample ls = sample_light(surface.position, surface.shadingNormal, u);
   group = ls.group;
   if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
   const vec3 f = bsdf_eval(bsdf, ls.direction);
@@ -174,6 +177,8 @@ struct PathState {
   vec3 throughput;
   float previousPdf;
   bool previousDelta;  // the camera ray, and delta events, found radiance without MIS
+  vec3 previousPosition;  // the last vertex and its shading normal (where MIS's light pick was made)
+  vec3 previousNormal;
   uint depth;
   uint firstLobe;             // lobe sampled at x_0 (discovery path classes)
   bool specularSinceFirst;    // every lobe after x_0 so far was specular or transmission
@@ -212,6 +217,8 @@ PathState start_path(uvec2 pixel, uint sampleIndex) {
   p.throughput = vec3(1.0);
   p.previousPdf = 0.0;
   p.previousDelta = true;
+  p.previousPosition = p.origin;
+  p.previousNormal = p.direction;
   p.depth = 0u;
   p.firstLobe = kLobeDiffuse;
   p.specularSinceFirst = true;
@@ -245,7 +252,9 @@ bool path_step(inout PathState p, bool backgroundTile, inout uvec3 rays) {
     if (HIPR_FEATURE_ENVIRONMENT != 0 && u_frame.environmentLight != kInvalidIndex) {
       float weight = 1.0;
       if (!p.previousDelta)
-        weight = bsdf_hit_weight(p.previousPdf, light_selection_pdf(u_frame.environmentLight) * env_pdf(p.direction));
+        weight = bsdf_hit_weight(p.previousPdf,
+                                 light_selection_pdf(u_frame.environmentLight, p.previousPosition, p.previousNormal) *
+                                     env_pdf(p.direction));
       add_radiance(p, b_lights[u_frame.environmentLight].group, p.throughput * env_radiance(p.direction) * weight);
     }
     return true;
@@ -264,7 +273,9 @@ bool path_step(inout PathState p, bool backgroundTile, inout uvec3 rays) {
   // (Media are not nested: a segment inside one solid that ends on another is not absorbed.)
   if (!surface.frontFacing && max3(shading.absorption) > 0.0) p.throughput *= exp(-shading.absorption * hit.t);
   if (HIPR_FEATURE_EMISSION != 0 && max3(shading.emission) > 0.0) {
-    const float weight = p.previousDelta ? 1.0 : emitter_hit_weight(surface, hit.t, p.direction, p.previousPdf);
+    const float weight = p.previousDelta ? 1.0
+                                         : emitter_hit_weight(surface, hit.t, p.direction, p.previousPdf,
+                                                              p.previousPosition, p.previousNormal);
     add_radiance(p, b_material_groups[b_geometries[surface.geometry].materialIndex],
                  p.throughput * shading.emission * weight);
   }
@@ -295,6 +306,8 @@ bool path_step(inout PathState p, bool backgroundTile, inout uvec3 rays) {
   p.throughput *= bs.weight;
   p.previousPdf = bs.pdf;
   p.previousDelta = bs.isDelta;
+  p.previousPosition = surface.position;
+  p.previousNormal = surface.shadingNormal;
 
   // Russian roulette from the second vertex on; unbiased because survivors are reweighted.
   // Starting it this early measured ~18% less error per second than after three bounces on

@@ -611,7 +611,16 @@ TEST(Replay, GeometryEditsSaveAndRenderAsTheEditedScene) {
                            quoted(dir / "imported.exr") + size)
                 .exit_code,
             kExitOk);
-  EXPECT_EQ(read_image(dir / "imported.exr").rgb, read_image(dir / "imported" / "final.exr").rgb);
+  // Within float rounding rather than bit for bit: the saved file composes the import's
+  // translation with the imported nodes' transforms in another order than the edit did, so
+  // points on the imported objects sit a rounding apart, and the light tree's probabilities
+  // (docs/method.md#many-light-sampling) depend on the shading point.
+  const ImageRGB imported = read_image(dir / "imported.exr");
+  const ImageRGB replayed = read_image(dir / "imported" / "final.exr");
+  ASSERT_EQ(imported.rgb.size(), replayed.rgb.size());
+  for (size_t i = 0; i < imported.rgb.size(); ++i)
+    ASSERT_NEAR(imported.rgb[i], replayed.rgb[i], 1e-6f * std::max(1.0f, std::abs(replayed.rgb[i])))
+        << i;
 
   // A save the writer refuses (here a format it does not write) is bad input, before any render.
   test::CommandResult result = test::run_hipr(import_base + " -o " + quoted(dir / "no") +

@@ -14,6 +14,7 @@
 #include "hipr/hipr_stages.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
+#include "hipr/scene_loader.h"
 #include "render/render_readback.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
@@ -195,6 +196,29 @@ TEST(LightReach, MovedLightScheduleEndsOnTheFullFrameImage) {
   Renderer full(test::context(), after, settings());
   full.add_samples_full_frame(3);
   EXPECT_EQ(renderer.image().rgb, full.image().rgb);
+}
+
+// The light tree is built again at a light edit (docs/method.md#many-light-sampling): a lamp of
+// lamp_hall moved and another recoloured, the schedule still ends on the full-frame render of the
+// edited hall, whose tree sends each point's shadow rays elsewhere than the old one did.
+TEST(LightReach, LampHallEditsEndOnTheFullFrameImageWithTheLightTree) {
+  const Scene before = load_scene(test::asset("lamp_hall.glb"));
+  Scene after = before;
+  apply_edit(after, TransformEdit{"lamp_1_1_1", glm::vec3(0.0f, 0.0f, 0.6f), std::nullopt});
+  apply_edit(after, LightEdit{.node = "lamp_2_1_0", .color = glm::vec3(0.2f, 0.5f, 1.0f)});
+  Staged s = stage_one(before, after, 3);
+  Renderer& renderer = *s.renderer;
+  test::discover_all(renderer, 1);
+  hipr_stages(renderer).build_schedule();
+  for (uint32_t offset = 0; offset < renderer.tile_count(); offset += 5)
+    renderer.render_schedule(offset, 5, 1, true);
+  renderer.render_schedule(0, renderer.tile_count(), 2, false);
+  Renderer full(test::context(), after, settings());
+  full.add_samples_full_frame(3);
+  EXPECT_EQ(renderer.image().rgb, full.image().rgb);
+  Renderer stale(test::context(), before, settings());
+  stale.add_samples_full_frame(3);
+  EXPECT_NE(stale.image().rgb, full.image().rgb);
 }
 
 TEST(LightReach, MoreChangedLightsThanItFollowsActivateEveryTile) {

@@ -22,13 +22,19 @@ ROOT = Path(__file__).resolve().parent.parent
 SCRIPT = ROOT / "tools" / "make_scenes.py"
 COMMITTED_DIR = ROOT / "assets" / "scenes"
 
-SCENE_FILES = ["cornell_box.gltf", "cornell_box_moved.gltf", "cornell_sphere.glb", "furnace_sphere.gltf"]
+SCENE_FILES = ["cornell_box.gltf", "cornell_box_moved.gltf", "cornell_sphere.glb", "furnace_sphere.gltf",
+               "lamp_hall.glb"]
 CORNELL_NODES = {"floor", "ceiling", "back_wall", "left_wall", "right_wall", "tall_block", "light", "camera"}
 EXPECTED_NODES = {
     "cornell_box.gltf": CORNELL_NODES | {"short_block"},
     "cornell_box_moved.gltf": CORNELL_NODES | {"short_block"},
     "cornell_sphere.glb": CORNELL_NODES | {"sphere", "lamp"},
     "furnace_sphere.gltf": {"sphere", "camera"},
+    "lamp_hall.glb": {"floor", "ceiling", "wall_east", "wall_west", "wall_north", "wall_south", "camera"}
+    | {"pillar_%d_%d" % (i, j) for i in range(5) for j in range(3)}
+    | {"lamp_%d_%d_%d" % (i, j, k) for i in range(5) for j in range(3) for k in range(2)}
+    | {"wall_lamp_%s_%d" % (side, i) for side in ("north", "south") for i in range(9)}
+    | {"panels_" + colour for colour in ("warm", "cool", "white", "amber")},
 }
 BOX_CENTER = (0.556 / 2, 0.5488 / 2, 0.5592 / 2)
 WALLS = ["floor", "ceiling", "back_wall", "left_wall", "right_wall"]
@@ -359,6 +365,18 @@ class TestCornellSphere(unittest.TestCase):
         self.assertEqual(light, {"name": "lamp", "type": "point", "color": [1.0, 1.0, 1.0], "intensity": 0.5})
         self.assertEqual(lamp["translation"], [0.278, 0.45, 0.28])
 
+    def test_lamp_hall_has_many_small_lights_inside_the_hall(self):
+        doc, buffers = load_scene(COMMITTED_DIR / "lamp_hall.glb")
+        self.assertEqual(len(doc["extensions"]["KHR_lights_punctual"]["lights"]), 48)
+        panels = [mesh for name, mesh in world_meshes(doc, buffers).items() if name.startswith("panels_")]
+        self.assertEqual(sum(len(mesh.positions) for mesh in panels), 96 * 4)
+        for mesh in panels:
+            for normal in mesh.normals:
+                self.assertEqual(tuple(normal), (0.0, -1.0, 0.0))
+        for node in doc["nodes"]:
+            x, y, z = node.get("translation", [0.0, 0.0, 0.0])
+            self.assertTrue(-12.0 <= x <= 12.0 and 0.0 <= y <= 4.0 and -8.0 <= z <= 8.0, node["name"])
+
 
 class TestEditScripts(unittest.TestCase):
     def check_targets(self, edits_name, scene_name):
@@ -378,6 +396,10 @@ class TestEditScripts(unittest.TestCase):
     def test_cornell_sphere_edits(self):
         edits = self.check_targets("cornell_sphere.edits.json", "cornell_sphere.glb")
         self.assertEqual([edit["op"] for edit in edits], ["transform", "light", "emission", "visibility"])
+
+    def test_lamp_hall_edits(self):
+        edits = self.check_targets("lamp_hall.edits.json", "lamp_hall.glb")
+        self.assertEqual([edit["op"] for edit in edits], ["light", "transform", "emission"])
 
 
 if __name__ == "__main__":

@@ -24,6 +24,14 @@ namespace hipr {
 // tests can show that each estimator alone converges to the same image.
 enum class LightSampling { Mis = 0, BsdfOnly = 1, LightOnly = 2 };
 
+// How next-event estimation picks a light. Tree: the lights at finite distance through the
+// light tree, by how much each could send the shading point (render/light_tree.h); the
+// environment and suns by power. Power: one CDF over every light by its estimated power (the
+// selection before the tree, kept for comparison).
+enum class LightSelection { Tree = 0, Power = 1 };
+const char* light_selection_name(LightSelection selection);                  // "tree", "power"
+std::optional<LightSelection> parse_light_selection(std::string_view name);  // nullopt: unknown
+
 // The random numbers of paths. Sobol: Owen-scrambled, shuffled 4D Sobol blocks (lower error
 // per sample). Random: independent hashes, the sampler before Sobol, kept for comparison.
 enum class Sampler { Sobol = 0, Random = 1 };
@@ -38,6 +46,7 @@ struct RenderSettings {
   uint32_t tile_size = 16;
   LightSampling light_sampling = LightSampling::Mis;
   Sampler sampler = Sampler::Sobol;
+  LightSelection light_selection = LightSelection::Tree;
   // Compile the path-tracing kernel with only the features the scene uses (kernel features;
   // false: the uber kernel with every feature, for comparison).
   bool specialize_kernel = true;

@@ -1,10 +1,12 @@
-// Light selection (CDF over all lights, proportional to estimated power) and next-event
-// sampling of emissive triangles, punctual lights and the environment. Needs cutout.glsl: a
-// cut-out emitter emits only where it is there.
+// Light selection (the light tree for lights at finite distance, a CDF by estimated power for
+// the rest; or one CDF over all, --light-selection power) and next-event sampling of emissive
+// triangles, punctual lights and the environment. Needs cutout.glsl: a cut-out emitter emits
+// only where it is there.
 #ifndef HIPR_LIGHTS_GLSL
 #define HIPR_LIGHTS_GLSL
 
 #include "features.glsl"
+#include "light_tree.glsl"
 
 struct LightSample {
   vec3 direction;   // from the shading point toward the light, unit
@@ -16,16 +18,38 @@ struct LightSample {
   uint group;       // the light's group (Light::group)
 };
 
-float light_selection_pdf(uint index) { return b_light_cdf[index + 1u] - b_light_cdf[index]; }
+// The probability of picking light `index` at a point (position, shading normal).
+float light_selection_pdf(uint index, vec3 position, vec3 normal) {
+  const uint leaf = b_lights[index].treeLeaf;
+  if (u_frame.lightTreeProbability > 0.0 && leaf != kInvalidIndex)
+    return u_frame.lightTreeProbability * light_tree_pmf(leaf, position, normal);
+  const uint at = u_frame.lightCdfOffset + index;
+  return (1.0 - u_frame.lightTreeProbability) * (b_light_cdf[at + 1u] - b_light_cdf[at]);
+}
 
-uint select_light(float u) {
+// Binary search of the CDF the frame names.
+uint select_light_by_power(float u) {
   uint lo = 0u, hi = u_frame.lightCount - 1u;
   while (lo < hi) {
     const uint mid = (lo + hi) >> 1u;
-    if (b_light_cdf[mid + 1u] > u) hi = mid;
+    if (b_light_cdf[u_frame.lightCdfOffset + mid + 1u] > u) hi = mid;
     else lo = mid + 1u;
   }
   return lo;
+}
+
+// Picks a light for a point with u in [0, 1) and gives its probability (0: none).
+uint select_light(float u, vec3 position, vec3 normal, out float selection) {
+  const float pTree = u_frame.lightTreeProbability;
+  if (u < pTree) {
+    const uint index = light_tree_pick(position, normal, min(u / pTree, 0.99999994), selection);
+    selection *= pTree;
+    return index;
+  }
+  // (With no tree pTree is 0 and u stays as it is: the selection before the tree, bit for bit.)
+  const uint index = select_light_by_power(pTree > 0.0 ? min((u - pTree) / (1.0 - pTree), 0.99999994) : u);
+  selection = light_selection_pdf(index, position, normal);
+  return index;
 }
 
 // glTF's recommended range falloff: smooth window to zero at `range`.
@@ -61,7 +85,7 @@ float triangle_light_pdf(Light light, float distance, float cosAtLight) {
   return distance * distance / (light.area * cosAtLight);
 }
 
-LightSample sample_light(vec3 position, vec4 u) {
+LightSample sample_light(vec3 position, vec3 normal, vec4 u) {
   LightSample s;
   s.pdf = 0.0;
   s.isDelta = false;
@@ -70,9 +94,9 @@ LightSample sample_light(vec3 position, vec4 u) {
   s.lightNormal = vec3(0.0);
   s.group = kInvalidIndex;
   if (u_frame.lightCount == 0u) return s;
-  const uint index = select_light(u.x);
-  const float selection = light_selection_pdf(index);
-  if (selection <= 0.0) return s;
+  float selection;
+  const uint index = select_light(u.x, position, normal, selection);
+  if (!(selection > 0.0)) return s;
   const Light light = b_lights[index];
   s.group = light.group;
 

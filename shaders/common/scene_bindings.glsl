@@ -26,6 +26,7 @@ layout(scalar, set = kSceneSet, binding = kSceneTextures) readonly buffer Textur
 layout(scalar, set = kSceneSet, binding = kSceneTexels) readonly buffer Texels { uint b_texels[]; };
 layout(scalar, set = kSceneSet, binding = kSceneLights) readonly buffer Lights { Light b_lights[]; };
 layout(scalar, set = kSceneSet, binding = kSceneLightCdf) readonly buffer LightCdf { float b_light_cdf[]; };
+layout(scalar, set = kSceneSet, binding = kSceneLightTree) readonly buffer LightTree { LightTreeNode b_light_tree[]; };
 // Environment: RGB texels (3 floats each), then the marginal CDF over rows (height + 1), then
 // one conditional CDF per row (width + 1 each).
 layout(scalar, set = kSceneSet, binding = kSceneEnvironment) readonly buffer Environment { float b_env[]; };

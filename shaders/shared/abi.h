@@ -249,7 +249,23 @@ struct Light {
   vec3 direction;       // spot/directional: direction the light travels
   uint group;           // light group its contribution is kept in, kInvalidIndex: pooled
   vec3 intensity;       // point/spot: candela * colour; directional: lux * colour
-  float padding2;
+  uint treeLeaf;        // its leaf in the light tree (LightTreeNode), kInvalidIndex: not in it
+};
+
+// Many-light sampling (src/render/light_tree.h, common/light_tree.glsl): a node of the binary
+// tree over the lights at finite distance. An inner node's children are `child` and `child + 1`.
+HIPR_CONST uint kLightTreeLeaf = 0x80000000u;  // in `child`: a leaf; the low bits are its light
+struct LightTreeNode {
+  vec3 lo;           // bounds of its lights
+  float power;       // the sum of its lights' intensity toward a point in front (luminance)
+  vec3 hi;
+  uint child;        // inner: its first child; leaf: light index | kLightTreeLeaf
+  vec3 axis;         // unit; every emitting normal or spot axis is within cosSpread of it
+  float cosSpread;   // cos theta_o
+  float cosReach;    // cos theta_e: how far past an emitting normal light leaves (90 deg: a surface)
+  uint parent;       // kInvalidIndex at the root
+  uint twoSided;     // 1: some light emits on both sides (the cone then holds both ways)
+  uint padding;
 };
 
 // count's top bit (kPixelOwed) marks a pixel that still holds radiance from before the last
@@ -391,6 +407,11 @@ struct FrameParams {
   uint sampleSequence;   // kSamplerSobol or kSamplerRandom (common/rng.glsl)
   float lensRadius;      // thin lens (world units); 0: a pinhole (Camera::aperture_radius)
   float focusDistance;   // along the view axis: the plane that stays sharp
+  // Light selection (common/lights.glsl): with this probability the light tree picks a light at
+  // finite distance (0: a power CDF over every light picks them all, --light-selection power);
+  // otherwise the CDF at b_light_cdf[lightCdfOffset] picks among the rest (the lights at infinity).
+  float lightTreeProbability;
+  uint lightCdfOffset;
 };
 
 // Software traversal: one BVH node (bounds in the space of the level it belongs to).

@@ -18,6 +18,10 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
                  "Random numbers of paths: sobol (scrambled Sobol, lower error) or random "
                  "(independent hashes)")
       ->capture_default_str();
+  app.add_option("--light-selection", o.light_selection,
+                 "How a point picks the light it samples: tree (the light tree: the lights that "
+                 "can reach it) or power (every light by its power alone)")
+      ->capture_default_str();
   app.add_option("--max-depth", o.render.max_depth, "Maximum number of bounces (0 = emitters only)")
       ->capture_default_str();
   app.add_option("--tile", o.render.tile_size, "Tile size n (tiles are n x n pixels)")
@@ -91,6 +95,10 @@ void validate_common_options(CommonOptions& o) {
   const std::optional<Sampler> sampler = parse_sampler(o.sampler);
   require(sampler.has_value(), "--sampler must be sobol or random, not '" + o.sampler + "'");
   o.render.sampler = *sampler;
+  const std::optional<LightSelection> selection = parse_light_selection(o.light_selection);
+  require(selection.has_value(),
+          "--light-selection must be tree or power, not '" + o.light_selection + "'");
+  o.render.light_selection = *selection;
   require(o.render.max_depth <= 1024, "--max-depth must be at most 1024");
   require(o.render.tile_size >= 1 && o.render.tile_size <= 256, "--tile must be between 1 and 256");
   require(std::isfinite(o.load.environment_intensity) && o.load.environment_intensity >= 0.0f,

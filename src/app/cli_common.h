@@ -19,6 +19,7 @@ struct CommonOptions {
   std::vector<float> w_lobe, w_path;
   std::string preset;
   std::string sampler = "sobol";
+  std::string light_selection = "tree";
   uint32_t spp = 64;
   SceneLoadOptions load;
   bool validate = false;
@@ -32,7 +33,8 @@ struct CommonOptions {
       -1;  // --light-groups; -1: the command's default (RenderSettings' 8; render: 0)
 };
 
-// Adds --width --height --spp --seed --sampler --max-depth --tile --env --env-intensity
+// Adds --width --height --spp --seed --sampler --light-selection --max-depth --tile --env
+// --env-intensity
 // --env-rotation
 // --uber-kernel --trace-background-tiles --validate --device --traversal --quiet.
 void add_common_options(CLI::App& app, CommonOptions& options);

@@ -112,6 +112,7 @@ int run_render(RenderOptions& o) {
       {"hipr:spp", std::to_string(o.common.spp)},
       {"hipr:seed", std::to_string(o.common.render.seed)},
       {"hipr:sampler", sampler_name(o.common.render.sampler)},
+      {"hipr:light_selection", light_selection_name(o.common.render.light_selection)},
       {"hipr:scene_hash", scene.content_hash},
       {"hipr:render_seconds", std::to_string(render_seconds)},
       {"hipr:max_depth", std::to_string(o.common.render.max_depth)},
@@ -164,6 +165,7 @@ int run_render(RenderOptions& o) {
         {"tile", o.common.render.tile_size},
         {"max_depth", o.common.render.max_depth},
         {"sampler", sampler_name(o.common.render.sampler)},
+        {"light_selection", light_selection_name(o.common.render.light_selection)},
     };
     write_text_atomically(o.stats_json, stats.dump(2) + "\n");
   }

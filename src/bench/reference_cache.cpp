@@ -45,6 +45,7 @@ std::string reference_key(const vk::Context& ctx, const Scene& scene, const std:
                               settings.max_depth,
                               uint32_t(settings.light_sampling),
                               uint32_t(settings.sampler),
+                              uint32_t(settings.light_selection),
                               spp};
   hasher.add(numbers, sizeof numbers);
   for (const vk::EmbeddedShaderFile& file : vk::embedded_shader_files())

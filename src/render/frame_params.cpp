@@ -42,6 +42,10 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu,
   f.maxDepth = s.max_depth;
   f.lightCount = uint32_t(gpu.light_tables().lights.size());
   f.environmentLight = gpu.light_tables().environment_index;
+  if (s.light_selection == LightSelection::Tree) {
+    f.lightTreeProbability = gpu.light_tables().tree_probability;
+    f.lightCdfOffset = gpu.light_tables().tree_cdf_offset();
+  }
   if (scene.environment) {
     f.environmentWidth = scene.environment->width;
     f.environmentHeight = scene.environment->height;

@@ -46,6 +46,7 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
   if (!ctx.software_traversal())
     slots.push_back({abi::kSceneTlas, vk::BindingKind::AccelerationStructure});
   for (uint32_t b = abi::kScenePositions; b <= abi::kSceneFrame; ++b) slots.push_back({b});
+  slots.push_back({abi::kSceneLightTree});
   if (ctx.software_traversal())
     for (uint32_t b = abi::kSceneBlasNodes; b <= abi::kSceneTlasInstances; ++b)
       slots.push_back({b});
@@ -171,6 +172,7 @@ void GpuScene::bind_set() {
       {abi::kSceneTexels, &texels},          {abi::kSceneLights, &lights},
       {abi::kSceneLightCdf, &light_cdf},     {abi::kSceneEnvironment, &environment},
       {abi::kSceneBsdfTables, &bsdf_tables}, {abi::kSceneFrame, &frame_buffer},
+      {abi::kSceneLightTree, &light_tree},
   };
   for (const auto& [binding, buffer] : buffers) m_set->bind_buffer(binding, *buffer);
 }
@@ -403,6 +405,7 @@ void GpuScene::update_lights(const Scene& scene) {
   m_info.light_count = m_lights.lights.size();
   vk::write_storage_buffer(m_ctx, lights, m_lights.lights);
   vk::write_storage_buffer(m_ctx, light_cdf, m_lights.cdf);
+  vk::write_storage_buffer(m_ctx, light_tree, m_lights.tree);
   bind_set();
 }
 

@@ -80,7 +80,7 @@ class GpuScene {
 
   vk::Buffer positions, normals, tangents, uvs, indices;
   vk::Buffer geometries, materials, textures, texels;
-  vk::Buffer lights, light_cdf, environment;
+  vk::Buffer lights, light_cdf, light_tree, environment;
   vk::Buffer bsdf_tables, frame_buffer;
 
   // How the buffers other passes bind besides the set (material_groups) and the record count

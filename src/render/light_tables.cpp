@@ -1,4 +1,5 @@
 #include "render/light_tables.h"
+#include "render/light_tree.h"
 #include "shaders/shared/abi.h"
 
 #include <cmath>
@@ -19,6 +20,21 @@ glm::vec3 light_direction(const glm::mat4& world) {
   const glm::vec3 d = glm::vec3(world * glm::vec4(0, 0, -1, 0));
   const float len = glm::length(d);
   return len > 0.0f ? d / len : glm::vec3(0, 0, -1);
+}
+
+// Cumulative shares of `power` (non-negative): power.size() + 1 entries from 0 to 1; equal
+// shares when nothing has power.
+std::vector<float> power_cdf(const std::vector<double>& power) {
+  double total = 0.0;
+  for (double p : power) total += p;
+  std::vector<float> cdf(power.size() + 1, 0.0f);
+  double running = 0.0;
+  for (size_t i = 0; i < power.size(); ++i) {
+    running += power[i];
+    cdf[i + 1] = total > 0.0 ? float(running / total) : float(i + 1) / float(power.size());
+  }
+  cdf.back() = 1.0f;
+  return cdf;
 }
 
 }  // namespace
@@ -65,6 +81,7 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
   LightTables t;
   t.record_light_offset.assign(record_count, abi::kInvalidIndex);
   std::vector<double> power;
+  std::vector<LightBounds> bounds;
 
   for (size_t i = 0; i < instances.size(); ++i) {
     const Instance& instance = instances[i];
@@ -96,6 +113,8 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
         light.edge2 = c - a;
         light.area = 0.5f * glm::length(glm::cross(b - a, c - a));
         if (!std::isfinite(light.area)) light.area = 0.0f;
+        bounds.push_back(light_bounds(light, radiance, two_sided));
+        bounds.back().light = uint32_t(t.lights.size());
         t.lights.push_back(light);
         power.push_back(double(radiance) * light.area * kPi * (two_sided ? 2.0 : 1.0));
       }
@@ -119,6 +138,8 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
         power.push_back(lum * kPi * scene_radius * scene_radius);
         break;  // directional
     }
+    bounds.push_back(light_bounds(light, 0.0f, false));
+    bounds.back().light = uint32_t(t.lights.size());
     t.lights.push_back(light);
   }
 
@@ -132,15 +153,24 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
     power.push_back(4.0 * kPi * kPi * scene_radius * scene_radius * mean);
   }
 
-  double total = 0.0;
-  for (double p : power) total += (std::isfinite(p) && p > 0.0) ? p : 0.0;
-  t.cdf.assign(t.lights.size() + 1, 0.0f);
-  double running = 0.0;
+  t.tree = build_light_tree(std::move(bounds), t.lights);
+  for (double& p : power) p = (std::isfinite(p) && p > 0.0) ? p : 0.0;
+  t.cdf = power_cdf(power);
+  // The tree's lights leave the second CDF to the lights at infinity; the tree picks with the
+  // share of the power it holds.
+  double tree_power = 0.0, total = 0.0;
   for (size_t i = 0; i < power.size(); ++i) {
-    running += (std::isfinite(power[i]) && power[i] > 0.0) ? power[i] : 0.0;
-    t.cdf[i + 1] = total > 0.0 ? float(running / total) : float(i + 1) / float(power.size());
+    total += power[i];
+    if (t.lights[i].treeLeaf != abi::kInvalidIndex) {
+      tree_power += power[i];
+      power[i] = 0.0;
+    }
   }
-  if (!t.cdf.empty()) t.cdf.back() = 1.0f;
+  const std::vector<float> rest = power_cdf(power);
+  t.cdf.insert(t.cdf.end(), rest.begin(), rest.end());
+  t.tree_probability = t.tree.empty() ? 0.0f : total > 0.0 ? float(tree_power / total) : 1.0f;
+  // Nothing else emits: the tree always picks (whatever rounding left of the rest).
+  if (tree_power == total && !t.tree.empty()) t.tree_probability = 1.0f;
   return t;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The light table the kernels sample from: every emissive triangle (world space), punctual
-// light and the environment, with a CDF proportional to each light's estimated power.
+// light and the environment, with a CDF proportional to each light's estimated power and the
+// light tree over the lights at finite distance (light_tree.h).
 #include <vector>
 
 #include "hipr/scene.h"
@@ -11,7 +12,13 @@ namespace hipr {
 
 struct LightTables {
   std::vector<abi::Light> lights;
-  std::vector<float> cdf;                     // lights.size() + 1 entries, cdf[0] = 0, last = 1
+  // Two CDFs of lights.size() + 1 entries each (first 0, last 1): over every light by power
+  // (--light-selection power), then over the lights the tree does not hold (tree_cdf_offset).
+  std::vector<float> cdf;
+  std::vector<abi::LightTreeNode> tree;  // root first; empty when no light at finite distance emits
+  // The share of the estimated power the tree's lights hold: how often the tree picks.
+  float tree_probability = 0.0f;
+  uint32_t tree_cdf_offset() const { return uint32_t(lights.size() + 1); }
   std::vector<uint32_t> record_light_offset;  // per GeometryRecord: first Light, or kInvalidIndex
   uint32_t environment_index = abi::kInvalidIndex;
 };

@@ -23,6 +23,16 @@ std::optional<Sampler> parse_sampler(std::string_view name) {
   return std::nullopt;
 }
 
+const char* light_selection_name(LightSelection selection) {
+  return selection == LightSelection::Power ? "power" : "tree";
+}
+
+std::optional<LightSelection> parse_light_selection(std::string_view name) {
+  if (name == "tree") return LightSelection::Tree;
+  if (name == "power") return LightSelection::Power;
+  return std::nullopt;
+}
+
 struct Renderer::Impl : RenderState {
   Impl(const vk::Context& c, const Scene& scene, const RenderSettings& s)
       : RenderState(c, scene, s), background(scene) {

@@ -22,7 +22,7 @@ HIPR_CONST uint kSceneMaterials = 7u;     // MaterialBlock
 HIPR_CONST uint kSceneTextures = 8u;      // TextureInfo
 HIPR_CONST uint kSceneTexels = 9u;        // packed RGBA8 texels of all textures
 HIPR_CONST uint kSceneLights = 10u;       // Light
-HIPR_CONST uint kSceneLightCdf = 11u;     // float, lightCount + 1 entries
+HIPR_CONST uint kSceneLightCdf = 11u;     // float: two CDFs of lightCount + 1 entries (light_tables.h)
 HIPR_CONST uint kSceneEnvironment = 12u;  // RGB texels, then marginal and conditional CDFs (floats)
 HIPR_CONST uint kSceneBsdfTables = 13u;   // float: generated BSDF tables (bsdf/ggx_energy_table.glsl)
 HIPR_CONST uint kSceneFrame = 14u;        // FrameParams: camera, image and tiles, HiPR weights
@@ -31,6 +31,7 @@ HIPR_CONST uint kSceneBlasNodes = 15u;      // BvhNode: every mesh's BVH, object
 HIPR_CONST uint kSceneBlasTriangles = 16u;  // BvhTriangle: their leaves' triangles
 HIPR_CONST uint kSceneTlasNodes = 17u;      // BvhNode: the BVH over visible instances, world space
 HIPR_CONST uint kSceneTlasInstances = 18u;  // BvhInstance: its leaves' instances
+HIPR_CONST uint kSceneLightTree = 19u;      // LightTreeNode: the tree over lights, root first
 
 #ifdef __cplusplus
 }  // namespace hipr::abi

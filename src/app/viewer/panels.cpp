@@ -158,7 +158,16 @@ void hipr_section(Session& session, ViewerState& state) {
         state.request_sampler = s;
     ImGui::EndCombo();
   }
-  ImGui::TextDisabled("n and the sampler restart the image;");
+  if (ImGui::BeginCombo("light selection", light_selection_name(settings.render.light_selection))) {
+    for (LightSelection s : {LightSelection::Tree, LightSelection::Power})
+      if (ImGui::Selectable(light_selection_name(s), s == settings.render.light_selection))
+        state.request_light_selection = s;
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "tree: each point samples the lights that can reach it; power: by power alone");
+  ImGui::TextDisabled("n, the sampler and the light selection restart the image;");
   ImGui::TextDisabled("weights apply from the next edit");
 
   bool changed = false;

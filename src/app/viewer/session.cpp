@@ -259,6 +259,13 @@ void Session::set_sampler(Sampler sampler) {
   rebuild_with(next);
 }
 
+void Session::set_light_selection(LightSelection selection) {
+  if (selection == m_settings.render.light_selection) return;
+  SessionSettings next = m_settings;
+  next.render.light_selection = selection;
+  rebuild_with(next);
+}
+
 void Session::rebuild_with(const SessionSettings& settings) {
   const SessionSettings previous = m_settings;
   m_settings = settings;

@@ -121,7 +121,8 @@ class Session {
   // weights apply from the next stage 2.
   void set_schedule(const ScheduleSettings& schedule);
   void set_tile_size(uint32_t tile_size);
-  void set_sampler(Sampler sampler);  // rebuilds the renderer: the image restarts
+  void set_sampler(Sampler sampler);                   // rebuilds the renderer: the image restarts
+  void set_light_selection(LightSelection selection);  // the same
   void set_hipr_parameters(const HiprParameters& parameters);
 
  private:

@@ -202,6 +202,8 @@ void Viewer::handle_requests() {
                        [&](uint32_t n) { m_session->set_tile_size(n); });
   take_setting_request(m_state.request_sampler, "sampler",
                        [&](Sampler s) { m_session->set_sampler(s); });
+  take_setting_request(m_state.request_light_selection, "light selection",
+                       [&](LightSelection s) { m_session->set_light_selection(s); });
 }
 
 template <class T, class Apply>

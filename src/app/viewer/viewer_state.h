@@ -65,6 +65,7 @@ struct ViewerState {
   std::optional<ScheduleSettings> request_schedule;  // the HiPR panel's scheduling settings
   std::optional<uint32_t> request_tile_size;
   std::optional<Sampler> request_sampler;
+  std::optional<LightSelection> request_light_selection;
   int tile_size_input = 16;
   std::string preset = "default";
   HiprParameters hipr_sliders;  // as the sliders hold them; normalised when applied

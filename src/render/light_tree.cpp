@@ -1,0 +1,236 @@
+#include "render/light_tree.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace hipr {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+constexpr int kBuckets = 12;
+constexpr int kMaxCostDepth = 48;
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+// A cone of directions: every direction within `angle` (radians) of `axis`; pi holds them all.
+struct Cone {
+  glm::vec3 axis{0.0f, 0.0f, 1.0f};
+  float angle = 0.0f;
+};
+
+// The smallest cone around both (for two cones that do not nest: the one whose edge touches
+// both far edges, its axis turned from a's toward b's).
+Cone cone_union(const Cone& a, const Cone& b) {
+  if (a.angle >= kPi || b.angle >= kPi) return {a.axis, kPi};
+  const float between = std::acos(std::clamp(glm::dot(a.axis, b.axis), -1.0f, 1.0f));
+  if (between + b.angle <= a.angle) return a;
+  if (between + a.angle <= b.angle) return b;
+  const float angle = 0.5f * (a.angle + between + b.angle);
+  if (angle >= kPi) return {a.axis, kPi};
+  const glm::vec3 toward = b.axis - a.axis * glm::dot(a.axis, b.axis);
+  const float length = glm::length(toward);
+  if (!(length > 1e-7f)) return {a.axis, kPi};  // opposite axes: every direction
+  const float turn = angle - a.angle;
+  return {glm::normalize(a.axis * std::cos(turn) + (toward / length) * std::sin(turn)), angle};
+}
+
+// Bounds of a group of lights while the tree is built.
+struct Group {
+  glm::vec3 lo{INFINITY}, hi{-INFINITY};
+  float power = 0.0f;
+  Cone cone;
+  float reach = 0.0f;  // theta_e
+  bool two_sided = false;
+  bool empty = true;
+
+  void add(const LightBounds& l) {
+    const Cone c{l.axis, std::acos(std::clamp(l.cos_spread, -1.0f, 1.0f))};
+    const float r = std::acos(std::clamp(l.cos_reach, -1.0f, 1.0f));
+    add(Group{l.lo, l.hi, l.power, c, r, l.two_sided, false});
+  }
+  void add(const Group& g) {
+    if (g.empty) return;
+    lo = glm::min(lo, g.lo);
+    hi = glm::max(hi, g.hi);
+    power += g.power;
+    cone = empty ? g.cone : cone_union(cone, g.cone);
+    reach = std::max(reach, g.reach);
+    two_sided = two_sided || g.two_sided;
+    empty = false;
+  }
+};
+
+// How much a group's light spreads over directions: the solid angle its cone of normals and
+// reach sweep, weighed by cosine (Conty Estevez and Kulla 2018, eq. 1).
+float orientation_measure(const Group& g) {
+  const float o = g.cone.angle;
+  const float w = std::min(o + g.reach, kPi);
+  return 2.0f * kPi * (1.0f - std::cos(o)) + 0.5f * kPi *
+                                                 (2.0f * w * std::sin(o) - std::cos(o - 2.0f * w) -
+                                                  2.0f * o * std::sin(o) + std::cos(o));
+}
+
+// The cost of a child in a split: power x orientation x surface area, the box padded by a
+// fraction of the parent's size (points and flat boxes would cost nothing otherwise).
+float split_cost(const Group& g, float pad) {
+  if (g.empty) return 0.0f;
+  const glm::vec3 d = g.hi - g.lo + glm::vec3(pad);
+  const float area = 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
+  return g.power * orientation_measure(g) * area;
+}
+
+glm::vec3 centre(const LightBounds& l) { return 0.5f * (l.lo + l.hi); }
+
+class Builder {
+ public:
+  Builder(std::vector<LightBounds>& bounds, std::vector<abi::Light>& lights)
+      : m_bounds(bounds), m_lights(lights) {}
+
+  std::vector<abi::LightTreeNode> build() {
+    if (m_bounds.empty()) return {};
+    m_nodes.emplace_back();
+    fill(0, 0, m_bounds.size(), abi::kInvalidIndex, 0);
+    return std::move(m_nodes);
+  }
+
+ private:
+  void fill(uint32_t node, size_t begin, size_t end, uint32_t parent, int depth) {
+    Group group;
+    for (size_t i = begin; i < end; ++i) group.add(m_bounds[i]);
+    abi::LightTreeNode n{};
+    n.lo = group.lo;
+    n.hi = group.hi;
+    n.power = group.power;
+    n.axis = group.cone.axis;
+    n.cosSpread = std::cos(group.cone.angle);
+    n.cosReach = std::cos(group.reach);
+    n.parent = parent;
+    n.twoSided = group.two_sided ? 1u : 0u;
+    if (end - begin == 1) {
+      const uint32_t light = m_bounds[begin].light;
+      n.child = light | abi::kLightTreeLeaf;
+      m_lights[light].treeLeaf = node;
+      m_nodes[node] = n;
+      return;
+    }
+    const size_t middle = split(begin, end, group, depth < kMaxCostDepth);
+    n.child = uint32_t(m_nodes.size());
+    m_nodes[node] = n;
+    m_nodes.emplace_back();
+    m_nodes.emplace_back();
+    fill(n.child, begin, middle, node, depth + 1);
+    fill(n.child + 1, middle, end, node, depth + 1);
+  }
+
+  // Partitions [begin, end) at the returned index: the cheapest of 11 planes on each axis of
+  // the centres' bounds, or the median of the longest axis where no plane separates them (and
+  // below kMaxCostDepth, so that no tree grows deeper than that plus log2 of its lights).
+  size_t split(size_t begin, size_t end, const Group& all, bool by_cost) {
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (size_t i = begin; i < end; ++i) {
+      lo = glm::min(lo, centre(m_bounds[i]));
+      hi = glm::max(hi, centre(m_bounds[i]));
+    }
+    const glm::vec3 extent = hi - lo;
+    const float size = std::max({all.hi.x - all.lo.x, all.hi.y - all.lo.y, all.hi.z - all.lo.z});
+    const float pad = 1e-3f * size;
+    float best_cost = INFINITY;
+    int best_axis = -1, best_plane = 0;
+    for (int axis = 0; by_cost && axis < 3; ++axis) {
+      if (!(extent[axis] > 0.0f)) continue;
+      std::array<Group, kBuckets> buckets;
+      for (size_t i = begin; i < end; ++i)
+        buckets[bucket_of(m_bounds[i], axis, lo, extent)].add(m_bounds[i]);
+      // Long thin groups split across their length: the cost is scaled by how far this axis
+      // falls short of the longest one.
+      const float stretch = std::max({extent.x, extent.y, extent.z}) / extent[axis];
+      for (int plane = 0; plane + 1 < kBuckets; ++plane) {
+        Group below, above;
+        for (int b = 0; b <= plane; ++b) below.add(buckets[b]);
+        for (int b = plane + 1; b < kBuckets; ++b) above.add(buckets[b]);
+        if (below.empty || above.empty) continue;
+        const float cost = stretch * (split_cost(below, pad) + split_cost(above, pad));
+        if (cost < best_cost) {
+          best_cost = cost;
+          best_axis = axis;
+          best_plane = plane;
+        }
+      }
+    }
+    const auto first = m_bounds.begin() + std::ptrdiff_t(begin);
+    const auto last = m_bounds.begin() + std::ptrdiff_t(end);
+    if (best_axis >= 0) {
+      const auto middle = std::partition(first, last, [&](const LightBounds& l) {
+        return bucket_of(l, best_axis, lo, extent) <= best_plane;
+      });
+      if (middle != first && middle != last) return size_t(middle - m_bounds.begin());
+    }
+    const int axis = int(std::max_element(&extent.x, &extent.x + 3) - &extent.x);
+    const auto middle = first + (last - first) / 2;
+    std::nth_element(first, middle, last, [&](const LightBounds& a, const LightBounds& b) {
+      return centre(a)[axis] < centre(b)[axis];
+    });
+    return size_t(middle - m_bounds.begin());
+  }
+
+  static int bucket_of(const LightBounds& l, int axis, const glm::vec3& lo,
+                       const glm::vec3& extent) {
+    const int b = int(float(kBuckets) * (centre(l)[axis] - lo[axis]) / extent[axis]);
+    return std::clamp(b, 0, kBuckets - 1);
+  }
+
+  std::vector<LightBounds>& m_bounds;
+  std::vector<abi::Light>& m_lights;
+  std::vector<abi::LightTreeNode> m_nodes;
+};
+
+}  // namespace
+
+LightBounds light_bounds(const abi::Light& light, float emitted_luminance, bool two_sided) {
+  LightBounds b;
+  switch (light.type) {
+    case abi::kLightTriangle: {
+      const glm::vec3 v1 = light.position + light.edge1, v2 = light.position + light.edge2;
+      b.lo = glm::min(light.position, glm::min(v1, v2));
+      b.hi = glm::max(light.position, glm::max(v1, v2));
+      const glm::vec3 n = glm::cross(light.edge1, light.edge2);
+      const float length = glm::length(n);
+      if (!(length > 0.0f) || !std::isfinite(length)) return b;  // degenerate: no power
+      b.axis = n / length;
+      b.cos_spread = 1.0f;  // one normal
+      b.cos_reach = 0.0f;   // a surface emits up to 90 degrees from it
+      b.two_sided = two_sided;
+      b.power = emitted_luminance * light.area;
+      break;
+    }
+    case abi::kLightPoint:
+      b.lo = b.hi = light.position;
+      b.cos_spread = -1.0f;  // every direction
+      b.power = luminance(light.intensity);
+      break;
+    case abi::kLightSpot:
+      b.lo = b.hi = light.position;
+      b.axis = light.direction;
+      b.cos_spread = light.spotCosOuter;  // nothing leaves past the outer cone
+      b.cos_reach = 1.0f;
+      b.power = luminance(light.intensity);
+      break;
+    default:
+      return b;  // at infinity: not in the tree
+  }
+  if (!std::isfinite(b.power) || b.power < 0.0f ||
+      !std::isfinite(b.lo.x + b.lo.y + b.lo.z + b.hi.x + b.hi.y + b.hi.z))
+    b.power = 0.0f;
+  return b;
+}
+
+std::vector<abi::LightTreeNode> build_light_tree(std::vector<LightBounds> bounds,
+                                                 std::vector<abi::Light>& lights) {
+  for (abi::Light& light : lights) light.treeLeaf = abi::kInvalidIndex;
+  std::erase_if(bounds, [](const LightBounds& b) { return !(b.power > 0.0f); });
+  return Builder(bounds, lights).build();
+}
+
+}  // namespace hipr

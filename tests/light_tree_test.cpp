@@ -1,0 +1,212 @@
+// The light tree's builder: every light with power in exactly one leaf that points back at it,
+// nodes that bound their children (space, power, emission cone), a bounded depth, lights at
+// infinity and black ones left out, the same tree every time.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <random>
+
+#include "render/light_tree.h"
+
+namespace hipr {
+namespace {
+
+abi::Light triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  abi::Light l{};
+  l.type = abi::kLightTriangle;
+  l.position = a;
+  l.edge1 = b - a;
+  l.edge2 = c - a;
+  l.area = 0.5f * glm::length(glm::cross(b - a, c - a));
+  return l;
+}
+
+struct Lights {
+  std::vector<abi::Light> table;
+  std::vector<LightBounds> bounds;
+
+  void add(const abi::Light& light, float radiance = 1.0f, bool two_sided = false) {
+    bounds.push_back(light_bounds(light, radiance, two_sided));
+    bounds.back().light = uint32_t(table.size());
+    table.push_back(light);
+  }
+};
+
+// Triangles facing every way, point and spot lights, a sun and an environment, spread over a
+// clustered space (lamps come in groups in real scenes).
+Lights random_lights(size_t count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f), small(0.0f, 0.2f);
+  Lights lights;
+  for (size_t i = 0; i < count; ++i) {
+    const glm::vec3 cluster = 10.0f * glm::vec3(float(i % 5), 0.0f, float(i % 3));
+    const glm::vec3 p = cluster + glm::vec3(unit(rng), unit(rng), unit(rng));
+    switch (i % 4) {
+      case 0:
+      case 1:
+        lights.add(triangle(p, p + glm::vec3(small(rng), small(rng), 0.0f),
+                            p + glm::vec3(0.0f, small(rng), small(rng))),
+                   1.0f + small(rng), i % 8 == 1);
+        break;
+      case 2: {
+        abi::Light l{};
+        l.type = abi::kLightPoint;
+        l.position = p;
+        l.intensity = glm::vec3(2.0f);
+        lights.add(l);
+        break;
+      }
+      default: {
+        abi::Light l{};
+        l.type = abi::kLightSpot;
+        l.position = p;
+        l.direction = glm::normalize(glm::vec3(unit(rng), -1.0f, unit(rng)));
+        l.spotCosOuter = 0.7f;
+        l.spotCosInner = 0.9f;
+        l.intensity = glm::vec3(5.0f);
+        lights.add(l);
+      }
+    }
+  }
+  abi::Light sun{};
+  sun.type = abi::kLightDirectional;
+  sun.direction = glm::vec3(0, -1, 0);
+  sun.intensity = glm::vec3(3.0f);
+  lights.add(sun);
+  abi::Light env{};
+  env.type = abi::kLightEnvironment;
+  lights.add(env);
+  lights.add(triangle(glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f),
+                      glm::vec3(2.0f, 0.0f, 0.0f)));  // degenerate
+  lights.add(triangle(glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)),
+             0.0f);  // black
+  return lights;
+}
+
+float angle_between(const glm::vec3& a, const glm::vec3& b) {
+  return std::acos(std::clamp(glm::dot(a, b), -1.0f, 1.0f));
+}
+
+TEST(LightTree, EveryLightWithPowerHasOneLeafAndNodesBoundTheirChildren) {
+  Lights lights = random_lights(600, 7);
+  const std::vector<abi::LightTreeNode> tree = build_light_tree(lights.bounds, lights.table);
+  ASSERT_FALSE(tree.empty());
+  EXPECT_EQ(tree[0].parent, abi::kInvalidIndex);
+  std::vector<int> reached(lights.table.size(), 0);
+  uint32_t deepest = 0;
+  std::function<void(uint32_t, uint32_t)> walk = [&](uint32_t index, uint32_t depth) {
+    ASSERT_LT(index, tree.size());
+    deepest = std::max(deepest, depth);
+    const abi::LightTreeNode& node = tree[index];
+    EXPECT_GT(node.power, 0.0f);
+    if (node.child & abi::kLightTreeLeaf) {
+      const uint32_t light = node.child & ~abi::kLightTreeLeaf;
+      ASSERT_LT(light, lights.table.size());
+      ++reached[light];
+      EXPECT_EQ(lights.table[light].treeLeaf, index);
+      // Every ancestor's cone holds the light's own: each direction it emits toward.
+      const LightBounds& own = lights.bounds[light];
+      const float own_spread = std::acos(std::clamp(own.cos_spread, -1.0f, 1.0f));
+      for (uint32_t a = index; a != abi::kInvalidIndex; a = tree[a].parent) {
+        const float spread = std::acos(std::clamp(tree[a].cosSpread, -1.0f, 1.0f));
+        if (spread < 3.14159f) {
+          EXPECT_LE(angle_between(tree[a].axis, own.axis) + own_spread, spread + 1e-3f);
+        }
+      }
+      return;
+    }
+    float power = 0.0f;
+    for (uint32_t c : {node.child, node.child + 1}) {
+      ASSERT_LT(c, tree.size());
+      const abi::LightTreeNode& child = tree[c];
+      EXPECT_EQ(child.parent, index);
+      EXPECT_TRUE(glm::all(glm::lessThanEqual(node.lo, child.lo)));
+      EXPECT_TRUE(glm::all(glm::greaterThanEqual(node.hi, child.hi)));
+      EXPECT_LE(node.cosReach, child.cosReach + 1e-6f);
+      if (child.twoSided) {
+        EXPECT_TRUE(node.twoSided);
+      }
+      power += child.power;
+      walk(c, depth + 1);
+    }
+    EXPECT_NEAR(node.power, power, 1e-4f * power);
+  };
+  walk(0, 0);
+  const size_t n = lights.table.size();
+  for (size_t i = 0; i + 4 < n; ++i) EXPECT_EQ(reached[i], 1) << "light " << i;
+  // The sun, the environment, the degenerate and the black triangle are not in it.
+  for (size_t i = n - 4; i < n; ++i) {
+    EXPECT_EQ(reached[i], 0) << "light " << i;
+    EXPECT_EQ(lights.table[i].treeLeaf, abi::kInvalidIndex);
+  }
+  EXPECT_LE(deepest, 48u + 10u);
+}
+
+TEST(LightTree, ASpotConeAndATriangleSideAreTheirBounds) {
+  Lights lights;
+  lights.add(triangle(glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)),
+             2.0f);
+  const LightBounds& b = lights.bounds[0];
+  EXPECT_NEAR(b.axis.y, -1.0f, 1e-6f);  // (x cross z) = -y: counter-clockwise seen from below
+  EXPECT_FLOAT_EQ(b.cos_spread, 1.0f);
+  EXPECT_FLOAT_EQ(b.cos_reach, 0.0f);
+  EXPECT_FLOAT_EQ(b.power, 2.0f * 0.5f);
+  abi::Light spot{};
+  spot.type = abi::kLightSpot;
+  spot.direction = glm::vec3(0, 0, -1);
+  spot.spotCosOuter = 0.5f;
+  spot.intensity = glm::vec3(1.0f, 2.0f, 3.0f);
+  const LightBounds s = light_bounds(spot, 0.0f, false);
+  EXPECT_FLOAT_EQ(s.cos_spread, 0.5f);
+  EXPECT_FLOAT_EQ(s.cos_reach, 1.0f);
+  EXPECT_NEAR(s.power, 0.2126f + 2.0f * 0.7152f + 3.0f * 0.0722f, 1e-5f);
+}
+
+TEST(LightTree, OneLightIsALeafRootAndNoLightNoTree) {
+  Lights one;
+  abi::Light point{};
+  point.type = abi::kLightPoint;
+  point.intensity = glm::vec3(1.0f);
+  one.add(point);
+  const auto tree = build_light_tree(one.bounds, one.table);
+  ASSERT_EQ(tree.size(), 1u);
+  EXPECT_EQ(tree[0].child, 0u | abi::kLightTreeLeaf);
+  EXPECT_EQ(one.table[0].treeLeaf, 0u);
+  Lights none;
+  abi::Light env{};
+  env.type = abi::kLightEnvironment;
+  none.add(env);
+  EXPECT_TRUE(build_light_tree(none.bounds, none.table).empty());
+  EXPECT_EQ(none.table[0].treeLeaf, abi::kInvalidIndex);
+}
+
+TEST(LightTree, LightsAtOnePointStillMakeAShallowTree) {
+  // No plane separates them: the builder halves the list instead of recursing forever.
+  Lights lights;
+  abi::Light point{};
+  point.type = abi::kLightPoint;
+  point.intensity = glm::vec3(1.0f);
+  for (int i = 0; i < 1000; ++i) lights.add(point);
+  const auto tree = build_light_tree(lights.bounds, lights.table);
+  EXPECT_EQ(tree.size(), 2u * 1000u - 1u);
+  uint32_t deepest = 0;
+  for (const abi::Light& l : lights.table) {
+    uint32_t depth = 0;
+    for (uint32_t n = l.treeLeaf; tree[n].parent != abi::kInvalidIndex; n = tree[n].parent) ++depth;
+    deepest = std::max(deepest, depth);
+  }
+  EXPECT_LE(deepest, 11u);
+}
+
+TEST(LightTree, TheSameLightsGiveTheSameTree) {
+  Lights a = random_lights(300, 3), b = random_lights(300, 3);
+  const auto ta = build_light_tree(a.bounds, a.table), tb = build_light_tree(b.bounds, b.table);
+  ASSERT_EQ(ta.size(), tb.size());
+  EXPECT_EQ(std::memcmp(ta.data(), tb.data(), ta.size() * sizeof(abi::LightTreeNode)), 0);
+}
+
+}  // namespace
+}  // namespace hipr
