@@ -547,8 +547,11 @@ TEST(Session, ViewerSettingsKeepTheScene) {
   EXPECT_EQ(session.renderer().settings().hipr.depth_epsilon, 0.05f);
   session.set_sampler(Sampler::Random);
   EXPECT_EQ(session.renderer().settings().sampler, Sampler::Random);
+  session.set_light_selection(LightSelection::Power);
+  EXPECT_EQ(session.renderer().settings().light_selection, LightSelection::Power);
   EXPECT_FALSE(session.scene().nodes[node_index(session.scene(), "short_block")].visible);
-  // Ends on the fresh render with the random sampler (fresh_render takes the session's settings).
+  // Ends on the fresh render with the random sampler and lights picked by power (fresh_render
+  // takes the session's settings).
   converge(session);
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), session.settings()).rgb);
 }
