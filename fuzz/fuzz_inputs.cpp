@@ -97,9 +97,25 @@ void derive_gpu_scene(const Scene& scene) {
       scene.environment ? environment_mean_luminance(*scene.environment) : 0.0f;
   const LightTables tables = build_light_tables(scene, instances, record_base, records, radius,
                                                 environment_mean, assign_light_groups(scene, 8));
-  require(tables.cdf.size() == tables.lights.size() + 1);
-  for (size_t i = 1; i < tables.cdf.size(); ++i)
-    require(std::isfinite(tables.cdf[i]) && tables.cdf[i] >= tables.cdf[i - 1]);
+  // Two CDFs (over every light; over the lights the tree does not hold), each from 0 to 1.
+  const size_t n = tables.lights.size() + 1;
+  require(tables.cdf.size() == 2 * n && tables.tree_cdf_offset() == n);
+  for (size_t c = 0; c < 2; ++c)
+    for (size_t i = 1; i < n; ++i)
+      require(std::isfinite(tables.cdf[c * n + i]) &&
+              tables.cdf[c * n + i] >= tables.cdf[c * n + i - 1]);
+  require(tables.tree_probability >= 0.0f && tables.tree_probability <= 1.0f);
+  // The light tree: every leaf names a light that names it back, children within the tree.
+  for (size_t node = 0; node < tables.tree.size(); ++node) {
+    const abi::LightTreeNode& t = tables.tree[node];
+    require(std::isfinite(t.power) && t.power > 0.0f);
+    if (t.child & abi::kLightTreeLeaf) {
+      const uint32_t light = t.child & ~abi::kLightTreeLeaf;
+      require(light < tables.lights.size() && tables.lights[light].treeLeaf == node);
+    } else {
+      require(t.child > node && size_t(t.child) + 1 < tables.tree.size());
+    }
+  }
   const Camera camera = resolve_camera(scene);
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) require(std::isfinite(camera.camera_to_world[c][r]));

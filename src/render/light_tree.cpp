@@ -223,6 +223,8 @@ LightBounds light_bounds(const abi::Light& light, float emitted_luminance, bool 
   if (!std::isfinite(b.power) || b.power < 0.0f ||
       !std::isfinite(b.lo.x + b.lo.y + b.lo.z + b.hi.x + b.hi.y + b.hi.z))
     b.power = 0.0f;
+  // Hostile emitters: capped so that the sums of up to 2^32 of them stay finite in the nodes.
+  b.power = std::min(b.power, 1e25f);
   return b;
 }
 
