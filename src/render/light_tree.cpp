@@ -81,7 +81,8 @@ float split_cost(const Group& g, float pad) {
   return g.power * orientation_measure(g) * area;
 }
 
-glm::vec3 centre(const LightBounds& l) { return 0.5f * (l.lo + l.hi); }
+// (Halves first: lo + hi of finite extremes could overflow.)
+glm::vec3 centre(const LightBounds& l) { return 0.5f * l.lo + 0.5f * l.hi; }
 
 class Builder {
  public:
@@ -177,8 +178,9 @@ class Builder {
 
   static int bucket_of(const LightBounds& l, int axis, const glm::vec3& lo,
                        const glm::vec3& extent) {
-    const int b = int(float(kBuckets) * (centre(l)[axis] - lo[axis]) / extent[axis]);
-    return std::clamp(b, 0, kBuckets - 1);
+    // Clamped as a float: an extent that overflowed to infinity gives NaN, which no int holds.
+    const float b = float(kBuckets) * (centre(l)[axis] - lo[axis]) / extent[axis];
+    return b >= 0.0f ? int(std::min(b, float(kBuckets - 1))) : 0;
   }
 
   std::vector<LightBounds>& m_bounds;
