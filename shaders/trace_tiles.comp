@@ -43,6 +43,7 @@ layout(scalar, binding = kTraceMaterialGroups) readonly buffer MaterialGroups { 
 #include "common/shading.glsl"
 #include "common/environment.glsl"
 #include "common/lights.glsl"
+#include "common/guiding.glsl"
 #include "common/tile_pixels.glsl"
 
 layout(push_constant, scalar) uniform Push { TracePush u_push; };
@@ -130,8 +131,54 @@ vec3 leave_surface(vec3 position, vec3 geometricNormal, vec3 direction) {
   return offset_ray_origin(position, dot(direction, geometricNormal) >= 0.0 ? geometricNormal : -geometricNormal);
 }
 
+// The density with which a path leaves a vertex in `direction`: the BSDF's, mixed with the
+// guide's where it guides (one-sample MIS with the balance heuristic between the two). The
+// guide counts only where the BSDF's sampling reaches too: a direction that the BSDF has a value
+// for but never samples (light sampling alone finds what arrives there) would otherwise weigh
+// f / guide density, unbounded; so both strategies keep the support BSDF sampling has alone.
+float scatter_pdf(BsdfPoint bsdf, GuideSite site, vec3 direction) {
+  const float bsdfPdf = bsdf_pdf(bsdf, direction);
+  if (site.probability <= 0.0 || !(bsdfPdf > 0.0)) return bsdfPdf;
+  return site.probability * guide_pdf(site, direction) + (1.0 - site.probability) * bsdfPdf;
+}
+
+// The next direction of a path: from the guide with the site's probability (u.x picks, u.yz
+// place it), else from the BSDF (v). Weights are f |cos| over the mixed density; a delta event,
+// which only the BSDF draws, is weighed by the chance that the BSDF drew it.
+BsdfSample scatter_sample(BsdfPoint bsdf, GuideSite site, vec3 v, vec3 u) {
+  if (site.probability <= 0.0) return bsdf_sample(bsdf, v);
+  if (u.x < site.probability) {
+    BsdfSample b;
+    b.lobe = kLobeDiffuse;
+    b.isDelta = false;
+    float guidePdf;
+    b.direction = guide_sample(site, u.yz, guidePdf);
+    const float bsdfPdf = bsdf_pdf(bsdf, b.direction);
+    b.pdf = site.probability * guidePdf + (1.0 - site.probability) * bsdfPdf;
+    const vec3 f = bsdf_eval(bsdf, b.direction);
+    if (!(bsdfPdf > 0.0) || !(b.pdf > 0.0) || max3(f) <= 0.0) {  // outside BSDF sampling's support
+      b.pdf = 0.0;
+      b.weight = vec3(0.0);
+      return b;
+    }
+    b.weight = f / b.pdf;
+    return b;
+  }
+  BsdfSample b = bsdf_sample(bsdf, v);
+  if (b.pdf <= 0.0) return b;
+  if (b.isDelta) {
+    b.weight /= 1.0 - site.probability;
+    return b;
+  }
+  const vec3 f = b.weight * b.pdf;
+  b.pdf = site.probability * guide_pdf(site, b.direction) + (1.0 - site.probability) * b.pdf;
+  b.weight = f / b.pdf;
+  return b;
+}
+
 // Rays traced, by kind: x camera, y extension (a path's later segments), z shadow.
-vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWeight, inout uvec3 rays, out uint group) {
+vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, GuideSite site, vec4 u, float occlusionWeight, inout uvec3 rays,
+                  out uint group) {
   const LightSample ls = sample_light(surface.position, surface.shadingNormal, u);
   group = ls.group;
   if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
@@ -163,7 +210,7 @@ vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, vec4 u, float occlusionWei
 #endif
   const float weight = (ls.isDelta || HIPR_LIGHT_SAMPLING == kLightSamplingLightOnly)
                            ? 1.0
-                           : power_heuristic(ls.pdf, bsdf_pdf(bsdf, ls.direction));
+                           : power_heuristic(ls.pdf, scatter_pdf(bsdf, site, ls.direction));
   return f * ls.radiance * (weight / ls.pdf);
 }
 
@@ -199,9 +246,22 @@ void add_radiance(inout PathState p, uint group, vec3 value) {
 #endif
 }
 
-PathState start_path(uvec2 pixel, uint sampleIndex) {
+#if HIPR_GUIDE_TRAINING
+// The training path's vertices (up to kTrainVertices): where it left each, in which bin, with
+// what density, the radiance it had gathered by then and its throughput onward. What it gathers
+// later, divided by that throughput, is the radiance that arrived from that direction.
+const uint kTrainVertices = 8u;
+uint g_trainCount;
+uint g_trainCell[kTrainVertices];
+uint g_trainBin[kTrainVertices];
+vec3 g_trainWeight[kTrainVertices];
+vec3 g_trainRadiance[kTrainVertices];
+vec3 g_trainThroughput[kTrainVertices];
+#endif
+
+PathState start_path(uvec2 pixel, uint sampleIndex, uint seed) {
   PathState p;
-  p.rng = PathRng(pixel.y * u_frame.width + pixel.x, pixel, sampleIndex, u_frame.seed, u_frame.sampleSequence);
+  p.rng = PathRng(pixel.y * u_frame.width + pixel.x, pixel, sampleIndex, seed, u_frame.sampleSequence);
   const vec4 u = rng_uniform4(p.rng, 0u, 2u);  // xy: where in the pixel, zw: where on the lens
   p.origin = u_frame.cameraPosition;
   p.direction = camera_ray_direction(pixel, u.xy);
@@ -225,6 +285,9 @@ PathState start_path(uvec2 pixel, uint sampleIndex) {
   p.channel = kNoChannel;
 #if HIPR_LIGHT_GROUPS > 0
   for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g) g_sampleGroups[g] = vec3(0.0);
+#endif
+#if HIPR_GUIDE_TRAINING
+  g_trainCount = 0u;
 #endif
   return p;
 }
@@ -282,15 +345,22 @@ bool path_step(inout PathState p, bool backgroundTile, inout uvec3 rays) {
   if (p.depth >= u_frame.maxDepth) return true;
 
   const BsdfPoint bsdf = bsdf_point(params, BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent), wo);
+  const GuideSite site = guide_site(surface.position, bsdf);
   if (HIPR_HAS_LIGHTS && u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly) {
     // sample_light takes the choice of light in x and the point in y,z (rng_uniform4's layout).
     uint group;
-    const vec3 direct = direct_light(surface, bsdf, rng_uniform4(p.rng, p.depth, 1u).zxyw, luminance(p.throughput), rays, group);
+    const vec3 direct =
+        direct_light(surface, bsdf, site, rng_uniform4(p.rng, p.depth, 1u).zxyw, luminance(p.throughput), rays, group);
     add_radiance(p, group, p.throughput * direct);
   }
 
   const vec4 u = rng_uniform4(p.rng, p.depth, 0u);
+#if HIPR_GUIDING
+  const BsdfSample bs =
+      scatter_sample(bsdf, site, u.xyz, site.probability > 0.0 ? rng_uniform4(p.rng, p.depth, 4u).xyz : vec3(1.0));
+#else
   const BsdfSample bs = bsdf_sample(bsdf, u.xyz);
+#endif
 #if HIPR_DISCOVERY
   if (p.depth >= 1u) {
     const uint pathClass = p.depth == 1u ? kPathDirect
@@ -321,12 +391,47 @@ bool path_step(inout PathState p, bool backgroundTile, inout uvec3 rays) {
     p.throughput /= survive;
   }
   if (max3(p.throughput) <= 0.0) return true;
+#if HIPR_GUIDE_TRAINING
+  if (!bs.isDelta && g_trainCount < kTrainVertices) {
+    g_trainCell[g_trainCount] = guide_cell(surface.position);
+    g_trainBin[g_trainCount] = guide_bin(bs.direction);
+    g_trainWeight[g_trainCount] = bs.weight;
+    g_trainRadiance[g_trainCount] = p.radiance;
+    g_trainThroughput[g_trainCount] = p.throughput;
+    g_trainCount += 1u;
+  }
+#endif
   p.origin = leave_surface(surface.position, surface.geometricNormal, bs.direction);
   p.direction = bs.direction;
   p.depth += 1u;
   return false;
 }
 
+#if HIPR_GUIDE_TRAINING
+// Training (GuidePass): each pixel of the frame traces `samplesPerPixel` paths with the seed
+// salted (the render's own samples stay independent of what the guide learnt) and splats what
+// each vertex received into its cell. Nothing is accumulated. Every splat is an integer atomic
+// add, so the guide is the same whatever order the paths run in.
+void main() {
+  const uint pixelIndex = gl_GlobalInvocationID.x;
+  if (pixelIndex >= u_frame.width * u_frame.height) return;
+  const uvec2 pixel = uvec2(pixelIndex % u_frame.width, pixelIndex / u_frame.width);
+  const uint seed = u_frame.seed ^ 0x6a09e667u;
+  uvec3 rays = uvec3(0u);
+  for (uint s = 0u; s < u_push.samplesPerPixel; ++s) {
+    PathState path = start_path(pixel, s, seed);
+    while (!path_step(path, false, rays)) {}
+    for (uint k = 0u; k < g_trainCount; ++k) {
+      const vec3 t = g_trainThroughput[k];
+      const vec3 gathered = path.radiance - g_trainRadiance[k];
+      const vec3 arrived = vec3(t.x > 0.0 ? gathered.x / t.x : 0.0, t.y > 0.0 ? gathered.y / t.y : 0.0,
+                                t.z > 0.0 ? gathered.z / t.z : 0.0);
+      guide_splat(g_trainCell[k], g_trainBin[k], luminance(max(arrived * g_trainWeight[k], vec3(0.0))));
+    }
+  }
+  atomicAdd(b_stats.guideRays, uint64_t(rays.x + rays.y + rays.z));
+}
+#else
 void main() {
   uvec2 pixel;
   if (!tile_pixel(u_push.listOffset, u_push.tileCount, u_push.tileStride, u_push.groupsPerTile, u_push.requireFlags,
@@ -376,7 +481,7 @@ void main() {
   uint nonFinite = 0u;
   // Samples finish in index order, so the sum is the same whatever the dispatch size.
   uint finished = 0u;
-  PathState path = start_path(pixel, accum.count);
+  PathState path = start_path(pixel, accum.count, u_frame.seed);
   while (finished < samples) {
     if (!path_step(path, backgroundTile, rays)) continue;
     const vec3 value = path.radiance;
@@ -395,7 +500,7 @@ void main() {
 #endif
     }
     finished += 1u;
-    if (finished < samples) path = start_path(pixel, accum.count + finished);
+    if (finished < samples) path = start_path(pixel, accum.count + finished, u_frame.seed);
   }
   accum.count += samples;
   b_accum[pixelIndex] = accum;
@@ -412,3 +517,4 @@ void main() {
   atomicAdd(b_stats.samples, uint64_t(samples));
   if (nonFinite > 0u) atomicAdd(b_stats.nonFiniteSamples, nonFinite);
 }
+#endif

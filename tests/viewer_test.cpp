@@ -549,9 +549,11 @@ TEST(Session, ViewerSettingsKeepTheScene) {
   EXPECT_EQ(session.renderer().settings().sampler, Sampler::Random);
   session.set_light_selection(LightSelection::Power);
   EXPECT_EQ(session.renderer().settings().light_selection, LightSelection::Power);
+  session.set_guiding(true);
+  EXPECT_TRUE(session.renderer().settings().guiding);
   EXPECT_FALSE(session.scene().nodes[node_index(session.scene(), "short_block")].visible);
-  // Ends on the fresh render with the random sampler and lights picked by power (fresh_render
-  // takes the session's settings).
+  // Ends on the fresh render with the random sampler, lights picked by power and path guiding
+  // (fresh_render takes the session's settings).
   converge(session);
   EXPECT_EQ(session.displayed().rgb, fresh_render(session.scene(), session.settings()).rgb);
 }

@@ -38,6 +38,17 @@ SCENES = [
     ("GlassVaseFlowers", os.path.join(SHARED, "GlassVaseFlowers/GlassVaseFlowers.glb"), ["--env", STUDIO]),
 ]
 SAMPLERS = ["random", "sobol"]
+
+
+def scenes_to_run(scenes, wanted):
+    """The (name, scene, flags) of `scenes` named in `wanted` (all when None) whose files are there."""
+    for name, scene, flags in scenes:
+        if wanted and name not in wanted:
+            continue
+        if not os.path.exists(scene) or any(f.endswith(".hdr") and not os.path.exists(f) for f in flags):
+            print("(skipped %s: %s is not there)" % (name, scene))
+            continue
+        yield name, scene, flags
 BLUE_NOISE_SPP = [1, 4]  # 1 must be there (the ratio column)
 BOX = 8
 
@@ -82,12 +93,7 @@ def main():
     work = os.path.join(args.outdir, "sampler")
     os.makedirs(work, exist_ok=True)
     results = []
-    for name, scene, flags in SCENES:
-        if wanted and name not in wanted:
-            continue
-        if not os.path.exists(scene) or any(f.endswith(".hdr") and not os.path.exists(f) for f in flags):
-            print("(skipped %s: %s is not there)" % (name, scene))
-            continue
+    for name, scene, flags in scenes_to_run(SCENES, wanted):
         print("== %s" % name, flush=True)
         reference = os.path.join(work, "%s_reference.exr" % name)
         ref_stats = render(scene, flags, args.size, args.ref_spp, "sobol", 1000, reference, args.max_depth)

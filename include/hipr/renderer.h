@@ -65,6 +65,13 @@ struct RenderSettings {
   // show the converged image plus the change, estimated with the same random numbers
   // (DisplayRule::Difference). Radiance is the same bit for bit with or without.
   bool difference_estimate = true;
+  // Path guiding (docs/method.md#path-guiding): at every scene state (load, each edit) a
+  // training pass of `guide_training_spp` paths per pixel learns where light comes from, per
+  // cell of a grid over the scene; paths then sample directions from it in MIS with the BSDF.
+  // The training depends on the scene state and the seed alone, so every schedule still ends on
+  // the same image. false: BSDF sampling alone (the kernels and images as without it).
+  bool guiding = false;
+  uint32_t guide_training_spp = 4;
   HiprParameters hipr;
 };
 
@@ -74,6 +81,7 @@ struct RenderCounters {
   uint32_t non_finite_samples = 0;
   uint64_t camera_rays = 0;  // a path's first segment (skipped where the camera sees nothing)
   uint64_t shadow_rays = 0;  // toward a light sample (next-event estimation)
+  uint64_t guide_rays = 0;   // traced by the path guide's training (not in `rays`)
 };
 
 // What the renderer holds of the scene.

@@ -77,6 +77,17 @@ HIPR_CONST uint kPathDirect = 0u;    // x_k is the first vertex after the camera
 HIPR_CONST uint kPathIndirect = 1u;  // an earlier diffuse/glossy bounce after x_0 (E D D+ ...)
 HIPR_CONST uint kPathCaustic = 2u;   // x_0 diffuse, then only specular/transmission (E D S+ ...)
 HIPR_CONST uint kWorkgroupSize = 64u;
+
+// Path guiding (common/guiding.glsl): directions fall in kGuidePhiBins x kGuideCosBins bins of
+// equal solid angle (azimuth about +Y x the cosine to +Y). Per cell the guide keeps kGuideSlots
+// floats (the bins' CDF, then the guide's probability) and the training kGuideSumSlots integers
+// (each bin's sum, each bin's largest splat, then the cell's number of splats).
+HIPR_CONST uint kGuidePhiBins = 16u;
+HIPR_CONST uint kGuideCosBins = 8u;
+HIPR_CONST uint kGuideBins = kGuidePhiBins * kGuideCosBins;
+HIPR_CONST uint kGuideSlots = kGuideBins + 1u;
+HIPR_CONST uint kGuideSumSlots = 2u * kGuideBins + 1u;
+HIPR_CONST uint kGuideMaxCells = 4096u;
 HIPR_CONST uint kInvalidIndex = 0xffffffffu;
 HIPR_CONST uint kRecordUnknown = 0xfffffffeu;  // DisplayTexel: no G-buffer said which surface it shows
 // DisplayTexel: reprojected from the view before a camera edit and rejected (off-screen,
@@ -375,6 +386,7 @@ struct RenderStats {
   uint64_t samples;
   uint nonFiniteSamples;
   uint padding;
+  uint64_t guideRays;   // traced by the guide's training paths (all kinds; not in `rays`)
 };
 
 struct FrameParams {
@@ -412,6 +424,14 @@ struct FrameParams {
   // otherwise the CDF at b_light_cdf[lightCdfOffset] picks among the rest (the lights at infinity).
   float lightTreeProbability;
   uint lightCdfOffset;
+  // Path guiding (common/guiding.glsl; 0 cells: none): a grid of guideResolution cells over the
+  // scene's bounds from guideLo, guideInvCell cells per world unit along each axis.
+  vec3 guideLo;
+  uint guideCells;
+  vec3 guideInvCell;
+  uint guideResolutionX;
+  uint guideResolutionY;
+  uint guideResolutionZ;
 };
 
 // Software traversal: one BVH node (bounds in the space of the level it belongs to).

@@ -291,6 +291,8 @@ int run_bench(BenchOptions& o) {
       {"seed", settings.seed},
       {"sampler", sampler_name(settings.sampler)},
       {"light_selection", light_selection_name(settings.light_selection)},
+      {"guiding", settings.guiding},
+      {"guide_training_spp", settings.guide_training_spp},
       {"device", ctx.device_name()},
       {"traversal", ctx.traversal_name()}};
   BenchReport report(o.common.scene.filename().string(), recorded, o.output, o.display);

@@ -22,6 +22,12 @@ void add_common_options(CLI::App& app, CommonOptions& o) {
                  "How a point picks the light it samples: tree (the light tree: the lights that "
                  "can reach it) or power (every light by its power alone)")
       ->capture_default_str();
+  app.add_flag("--guiding", o.render.guiding,
+               "Path guiding: learn where light comes from at each scene state (a training pass) "
+               "and sample directions from it too");
+  app.add_option("--guide-training-spp", o.render.guide_training_spp,
+                 "--guiding: training paths per pixel at each scene state")
+      ->capture_default_str();
   app.add_option("--max-depth", o.render.max_depth, "Maximum number of bounces (0 = emitters only)")
       ->capture_default_str();
   app.add_option("--tile", o.render.tile_size, "Tile size n (tiles are n x n pixels)")
@@ -99,6 +105,8 @@ void validate_common_options(CommonOptions& o) {
   require(selection.has_value(),
           "--light-selection must be tree or power, not '" + o.light_selection + "'");
   o.render.light_selection = *selection;
+  require(o.render.guide_training_spp >= 1 && o.render.guide_training_spp <= 1024,
+          "--guide-training-spp must be between 1 and 1024");
   require(o.render.max_depth <= 1024, "--max-depth must be at most 1024");
   require(o.render.tile_size >= 1 && o.render.tile_size <= 256, "--tile must be between 1 and 256");
   require(std::isfinite(o.load.environment_intensity) && o.load.environment_intensity >= 0.0f,

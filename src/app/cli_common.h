@@ -33,7 +33,8 @@ struct CommonOptions {
       -1;  // --light-groups; -1: the command's default (RenderSettings' 8; render: 0)
 };
 
-// Adds --width --height --spp --seed --sampler --light-selection --max-depth --tile --env
+// Adds --width --height --spp --seed --sampler --light-selection --guiding --guide-training-spp
+// --max-depth --tile --env
 // --env-intensity
 // --env-rotation
 // --uber-kernel --trace-background-tiles --validate --device --traversal --quiet.

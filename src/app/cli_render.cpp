@@ -113,6 +113,9 @@ int run_render(RenderOptions& o) {
       {"hipr:seed", std::to_string(o.common.render.seed)},
       {"hipr:sampler", sampler_name(o.common.render.sampler)},
       {"hipr:light_selection", light_selection_name(o.common.render.light_selection)},
+      {"hipr:guiding", o.common.render.guiding
+                           ? std::to_string(o.common.render.guide_training_spp) + " training spp"
+                           : "off"},
       {"hipr:scene_hash", scene.content_hash},
       {"hipr:render_seconds", std::to_string(render_seconds)},
       {"hipr:max_depth", std::to_string(o.common.render.max_depth)},
@@ -158,6 +161,7 @@ int run_render(RenderOptions& o) {
         {"camera_rays", counters.camera_rays},
         {"extension_rays", counters.rays - counters.camera_rays - counters.shadow_rays},
         {"shadow_rays", counters.shadow_rays},
+        {"guide_rays", counters.guide_rays},  // the guide's training (not in `rays`)
         {"device", ctx.device_name()},
         {"traversal", ctx.traversal_name()},
         {"scene_hash", scene.content_hash},
@@ -166,6 +170,8 @@ int run_render(RenderOptions& o) {
         {"max_depth", o.common.render.max_depth},
         {"sampler", sampler_name(o.common.render.sampler)},
         {"light_selection", light_selection_name(o.common.render.light_selection)},
+        {"guiding", o.common.render.guiding},
+        {"guide_training_spp", o.common.render.guide_training_spp},
     };
     write_text_atomically(o.stats_json, stats.dump(2) + "\n");
   }

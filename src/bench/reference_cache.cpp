@@ -46,6 +46,8 @@ std::string reference_key(const vk::Context& ctx, const Scene& scene, const std:
                               uint32_t(settings.light_sampling),
                               uint32_t(settings.sampler),
                               uint32_t(settings.light_selection),
+                              uint32_t(settings.guiding),
+                              settings.guide_training_spp,
                               spp};
   hasher.add(numbers, sizeof numbers);
   for (const vk::EmbeddedShaderFile& file : vk::embedded_shader_files())

@@ -99,7 +99,7 @@ std::vector<bool> Film::owed_pixels() const {
 RenderCounters Film::counters() const {
   abi::RenderStats s{};
   stats.download(&s, sizeof s);
-  return {s.rays, s.samples, s.nonFiniteSamples, s.cameraRays, s.shadowRays};
+  return {s.rays, s.samples, s.nonFiniteSamples, s.cameraRays, s.shadowRays, s.guideRays};
 }
 
 void Film::clear() {

@@ -40,6 +40,9 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
   build_blases(scene);
   upload_environment(scene);
   bsdf_tables = vk::make_storage_buffer(ctx, bsdf_table_data());
+  // No guide until a GuidePass asks for one (reserve_guide): one slot each, never read.
+  guide_counts = vk::make_storage_buffer(ctx, std::vector<uint64_t>(1));
+  guide = vk::make_storage_buffer(ctx, std::vector<float>(1));
   frame_buffer =
       vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1), 0, vk::MemoryUse::Shared);
   std::vector<vk::BindingSlot> slots;
@@ -47,6 +50,8 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
     slots.push_back({abi::kSceneTlas, vk::BindingKind::AccelerationStructure});
   for (uint32_t b = abi::kScenePositions; b <= abi::kSceneFrame; ++b) slots.push_back({b});
   slots.push_back({abi::kSceneLightTree});
+  slots.push_back({abi::kSceneGuideCounts});
+  slots.push_back({abi::kSceneGuide});
   if (ctx.software_traversal())
     for (uint32_t b = abi::kSceneBlasNodes; b <= abi::kSceneTlasInstances; ++b)
       slots.push_back({b});
@@ -165,14 +170,23 @@ void GpuScene::bind_set() {
     m_set->bind_acceleration_structure(abi::kSceneTlas, m_tlas.structure.handle());
   }
   const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
-      {abi::kScenePositions, &positions},    {abi::kSceneNormals, &normals},
-      {abi::kSceneTangents, &tangents},      {abi::kSceneUvs, &uvs},
-      {abi::kSceneIndices, &indices},        {abi::kSceneGeometries, &geometries},
-      {abi::kSceneMaterials, &materials},    {abi::kSceneTextures, &textures},
-      {abi::kSceneTexels, &texels},          {abi::kSceneLights, &lights},
-      {abi::kSceneLightCdf, &light_cdf},     {abi::kSceneEnvironment, &environment},
-      {abi::kSceneBsdfTables, &bsdf_tables}, {abi::kSceneFrame, &frame_buffer},
+      {abi::kScenePositions, &positions},
+      {abi::kSceneNormals, &normals},
+      {abi::kSceneTangents, &tangents},
+      {abi::kSceneUvs, &uvs},
+      {abi::kSceneIndices, &indices},
+      {abi::kSceneGeometries, &geometries},
+      {abi::kSceneMaterials, &materials},
+      {abi::kSceneTextures, &textures},
+      {abi::kSceneTexels, &texels},
+      {abi::kSceneLights, &lights},
+      {abi::kSceneLightCdf, &light_cdf},
+      {abi::kSceneEnvironment, &environment},
+      {abi::kSceneBsdfTables, &bsdf_tables},
+      {abi::kSceneFrame, &frame_buffer},
       {abi::kSceneLightTree, &light_tree},
+      {abi::kSceneGuideCounts, &guide_counts},
+      {abi::kSceneGuide, &guide},
   };
   for (const auto& [binding, buffer] : buffers) m_set->bind_buffer(binding, *buffer);
 }
@@ -406,6 +420,15 @@ void GpuScene::update_lights(const Scene& scene) {
   vk::write_storage_buffer(m_ctx, lights, m_lights.lights);
   vk::write_storage_buffer(m_ctx, light_cdf, m_lights.cdf);
   vk::write_storage_buffer(m_ctx, light_tree, m_lights.tree);
+  bind_set();
+}
+
+void GpuScene::reserve_guide() {
+  const size_t slots = size_t(abi::kGuideMaxCells) * abi::kGuideSlots;
+  if (guide.size() >= slots * sizeof(float)) return;
+  guide_counts = vk::make_storage_buffer(
+      m_ctx, std::vector<uint64_t>(size_t(abi::kGuideMaxCells) * abi::kGuideSumSlots));
+  guide = vk::make_storage_buffer(m_ctx, std::vector<float>(slots));
   bind_set();
 }
 

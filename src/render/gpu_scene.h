@@ -82,6 +82,11 @@ class GpuScene {
   vk::Buffer geometries, materials, textures, texels;
   vk::Buffer lights, light_cdf, light_tree, environment;
   vk::Buffer bsdf_tables, frame_buffer;
+  // Path guiding (render/guide_pass.h): the training's sums (kGuideSumSlots per cell) and the
+  // guide (kGuideSlots per cell).
+  vk::Buffer guide_counts, guide;
+  // Makes the guide's buffers large enough for kGuideMaxCells cells (a render that guides).
+  void reserve_guide();
 
   // How the buffers other passes bind besides the set (material_groups) and the record count
   // changed: a counter that grows when they are replaced, so passes know to bind them again.

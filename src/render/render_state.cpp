@@ -25,7 +25,18 @@ RenderState::RenderState(const vk::Context& c, const Scene& scene, const RenderS
       gbuffers(c, gpu, s.width, s.height),
       resolve(c, gpu, tiles, film, gbuffers, s.width, s.height),
       relight(c, film, resolve, gpu.light_groups().count, s.width, s.height),
-      trace(c, gpu, tiles, film, resolve.display, s, features) {}
+      trace(c, gpu, tiles, film, resolve.display, s, features) {
+  if (s.guiding) {
+    guide = std::make_unique<GuidePass>(c, gpu, tiles, film, resolve.display, s, features);
+    guide->warm_up();
+  }
+}
+
+void RenderState::ensure_guide() const {
+  if (!guide || !guide_stale) return;
+  guide->train();
+  guide_stale = false;
+}
 
 RenderState::~RenderState() = default;
 
@@ -46,6 +57,7 @@ void RenderState::trace_entries(const TracePass& pass, uint32_t offset, uint32_t
   push.sampleTarget = sample_target.round;
   push.focusTarget = sample_target.focus;
   push.leadTarget = sample_target.lead;
+  ensure_guide();
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     pass.record(cmd, push);
     if (then_resolve) resolve.record(cmd, {offset, count, require, skip}, *then_resolve);

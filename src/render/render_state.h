@@ -12,6 +12,7 @@
 #include "render/film.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
+#include "render/guide_pass.h"
 #include "render/overlay_pass.h"
 #include "render/relight_pass.h"
 #include "render/resolve_pass.h"
@@ -72,6 +73,12 @@ class RenderState {
   ResolvePass resolve;
   RelightPass relight;
   TracePass trace;
+  // Path guiding's training (RenderSettings::guiding; null without it). The guide of a new
+  // scene state is learnt just before its first samples (ensure_guide, from trace_entries and
+  // every other way samples are added), so its cost counts where a render's time is measured.
+  std::unique_ptr<GuidePass> guide;
+  mutable bool guide_stale = true;
+  void ensure_guide() const;
   SampleTarget sample_target;
   // The viewer's overlays (viewer_sources.h), made on first use, and the GpuScene::
   // records_generation they show.

@@ -53,6 +53,7 @@ struct Renderer::Impl : RenderState {
     if ((needed & ~features) == 0) return;
     features |= needed;
     trace.set_features(features);
+    if (guide) guide->set_features(features);
     warm_up_trace();
     if (extension) extension->kernel_features_changed(features);
   }
@@ -66,6 +67,7 @@ struct Renderer::Impl : RenderState {
     if (gpu.layout_generation() == layout_seen) return;
     layout_seen = gpu.layout_generation();
     trace.rebind();
+    if (guide) guide->rebind();
     if (extension) extension->scene_buffers_replaced();
   }
 
@@ -110,6 +112,7 @@ void Renderer::add_samples(std::span<const uint32_t> tiles, uint32_t samples_per
   for (uint32_t t : tiles)
     if (t >= tile_count()) throw InternalError("tile id out of range");
   m->tiles.schedule.upload(tiles.data(), tiles.size_bytes());
+  m->ensure_guide();
   const abi::TracePush push = m->trace.push(0, uint32_t(tiles.size()), samples_per_pixel);
   m->ctx.submit_and_wait([&](VkCommandBuffer cmd) { m->trace.record(cmd, push); });
 }
@@ -139,6 +142,9 @@ void Renderer::update_scene(const Scene& scene, const ChangeSet& changes) {
     if (m->denoiser) m->denoiser->set_guides_stale();
   }
   m->gpu.set_frame(make_frame_params(scene, m->gpu, m->settings));
+  // A new scene state gets its own guide before any of its samples (every schedule then renders
+  // it with the same one).
+  if (!changes.empty()) m->guide_stale = true;
 }
 
 void Renderer::set_schedule(std::span<const uint32_t> order) { m->tiles.set_schedule(order); }

@@ -20,10 +20,11 @@ class TracePass {
   // `features`: the kernel features (render/kernel_features.h) to compile with. `discovery`:
   // stage 2's extra buffers (shaders/shared/bindings/trace.h), empty for plain progressive tracing.
   // `display`: the display texels (DisplayTexel per pixel), whose stale estimates weigh the
-  // difference records' sums.
+  // difference records' sums. `guide_training`: the kernel variant that trains the path guide
+  // (render/guide_pass.h) instead of adding samples.
   TracePass(const vk::Context& ctx, const GpuScene& scene, const TileState& tiles, const Film& film,
             const vk::Buffer& display, const RenderSettings& settings, uint32_t features,
-            std::vector<vk::BufferBinding> discovery = {});
+            std::vector<vk::BufferBinding> discovery = {}, bool guide_training = false);
 
   // Recompiles the kernel with other features (an edit brought in a new one).
   void set_features(uint32_t features);
@@ -33,6 +34,8 @@ class TracePass {
   // Parameters of a dispatch over schedule entries [offset, offset + count).
   abi::TracePush push(uint32_t offset, uint32_t count, uint32_t samples_per_pixel) const;
   void record(VkCommandBuffer cmd, const abi::TracePush& push) const;
+  // The training variant: `samples_per_pixel` training paths from every pixel of the frame.
+  void record_training(VkCommandBuffer cmd, uint32_t samples_per_pixel) const;
 
  private:
   void compile();
@@ -44,6 +47,7 @@ class TracePass {
   std::vector<vk::BufferBinding> m_bindings;
   bool m_difference;
   bool m_discovery;
+  bool m_guide_training;
   std::unique_ptr<vk::ComputePipeline> m_pipeline;
 };
 

@@ -32,6 +32,9 @@ HIPR_CONST uint kSceneBlasTriangles = 16u;  // BvhTriangle: their leaves' triang
 HIPR_CONST uint kSceneTlasNodes = 17u;      // BvhNode: the BVH over visible instances, world space
 HIPR_CONST uint kSceneTlasInstances = 18u;  // BvhInstance: its leaves' instances
 HIPR_CONST uint kSceneLightTree = 19u;      // LightTreeNode: the tree over lights, root first
+// Path guiding (common/guiding.glsl), per grid cell:
+HIPR_CONST uint kSceneGuideCounts = 20u;  // uint64 x kGuideSumSlots: the training's sums and largest splats per bin
+HIPR_CONST uint kSceneGuide = 21u;        // float x kGuideSlots: the bins' CDF, then the guide's probability
 
 #ifdef __cplusplus
 }  // namespace hipr::abi

@@ -167,7 +167,13 @@ void hipr_section(Session& session, ViewerState& state) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "tree: each point samples the lights that can reach it; power: by power alone");
-  ImGui::TextDisabled("n, the sampler and the light selection restart the image;");
+  bool guiding = settings.render.guiding;
+  if (ImGui::Checkbox("path guiding", &guiding)) state.request_guiding = guiding;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "learn where light comes from at each edit (a short training pass) and "
+        "aim paths there too");
+  ImGui::TextDisabled("n, the sampler, lights and guiding restart the image;");
   ImGui::TextDisabled("weights apply from the next edit");
 
   bool changed = false;

@@ -266,6 +266,13 @@ void Session::set_light_selection(LightSelection selection) {
   rebuild_with(next);
 }
 
+void Session::set_guiding(bool guiding) {
+  if (guiding == m_settings.render.guiding) return;
+  SessionSettings next = m_settings;
+  next.render.guiding = guiding;
+  rebuild_with(next);
+}
+
 void Session::rebuild_with(const SessionSettings& settings) {
   const SessionSettings previous = m_settings;
   m_settings = settings;

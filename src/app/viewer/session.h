@@ -123,6 +123,7 @@ class Session {
   void set_tile_size(uint32_t tile_size);
   void set_sampler(Sampler sampler);                   // rebuilds the renderer: the image restarts
   void set_light_selection(LightSelection selection);  // the same
+  void set_guiding(bool guiding);                      // the same
   void set_hipr_parameters(const HiprParameters& parameters);
 
  private:

@@ -204,6 +204,8 @@ void Viewer::handle_requests() {
                        [&](Sampler s) { m_session->set_sampler(s); });
   take_setting_request(m_state.request_light_selection, "light selection",
                        [&](LightSelection s) { m_session->set_light_selection(s); });
+  take_setting_request(m_state.request_guiding, "path guiding",
+                       [&](bool on) { m_session->set_guiding(on); });
 }
 
 template <class T, class Apply>

@@ -66,6 +66,7 @@ struct ViewerState {
   std::optional<uint32_t> request_tile_size;
   std::optional<Sampler> request_sampler;
   std::optional<LightSelection> request_light_selection;
+  std::optional<bool> request_guiding;
   int tile_size_input = 16;
   std::string preset = "default";
   HiprParameters hipr_sliders;  // as the sliders hold them; normalised when applied
