@@ -605,22 +605,25 @@ TEST(ViewerHeadless, RunsWithoutADisplay) {
 // On a discrete GPU's path (HIPR_DEVICE_MEMORY=staged: device memory reached through copies), a
 // frame that re-renders allocates no device memory and waits for one submission per step (the
 // step's trace and resolve), the edit's own stages aside: the counters each step reads are
-// mapped, staged copies reuse one staging buffer.
+// mapped, staged copies reuse one staging buffer. 80 frames (16 spp, so all of them render):
+// the one edit's stages (about 20 submissions, a few more when a loaded machine splits them
+// over more frames) stay a small share of the average (40 frames failed at 1.525 in a full CI
+// run).
 TEST(ViewerHeadless, ReRenderingAllocatesNothingOnADiscreteGpusPath) {
   const fs::path dir = test::temp_dir("viewer-headless-staged");
   const fs::path stats = dir / "stats.json";
   const test::CommandResult result = test::run_command(
       "env -u DISPLAY -u WAYLAND_DISPLAY HIPR_DEVICE_MEMORY=staged " + quoted(test::hipr_binary()) +
       " view " + quoted(test::asset("cornell_box.gltf")) +
-      " --size 128x128 --tile 16 --spp 8 --max-depth 4 --tiles-per-step 16 --steps-per-frame 1 "
+      " --size 128x128 --tile 16 --spp 16 --max-depth 4 --tiles-per-step 16 --steps-per-frame 1 "
       "--script-every 20"
-      " --headless --exit-after-frames 40 -q --stats-json " +
+      " --headless --exit-after-frames 80 -q --stats-json " +
       quoted(stats) + " --script " + quoted(write_script(dir, "recolour.json", kRecolour)));
   ASSERT_EQ(result.exit_code, kExitOk) << result.output;
   std::ifstream in(stats);
   const nlohmann::json json = nlohmann::json::parse(in);
   const nlohmann::json& rendering = json["rendering"];
-  ASSERT_EQ(rendering["frames"].get<int>(), 40) << json.dump();
+  ASSERT_EQ(rendering["frames"].get<int>(), 80) << json.dump();
   EXPECT_EQ(rendering["allocations_per_frame"].get<double>(), 0.0) << json.dump();
   EXPECT_LT(rendering["submissions_per_frame"].get<double>(), 1.5) << json.dump();
 }
