@@ -248,8 +248,9 @@ void add_radiance(inout PathState p, uint group, vec3 value) {
 
 #if HIPR_GUIDE_TRAINING
 // The training path's vertices (up to kTrainVertices): where it left each, in which bin, with
-// what density, the radiance it had gathered by then and its throughput onward. What it gathers
-// later, divided by that throughput, is the radiance that arrived from that direction.
+// what BSDF weight (f |cos| / pdf), the radiance it had gathered by then and its throughput
+// onward. What it gathers later, divided by that throughput, is the radiance that arrived from
+// that direction; times the weight, what the vertex reflected of it.
 const uint kTrainVertices = 8u;
 uint g_trainCount;
 uint g_trainCell[kTrainVertices];
