@@ -537,7 +537,8 @@ TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {
         quoted(dir / "missing.gltf"), base + " --visit-spp 0", base + " --policy oracle",
         base + " --display fast", base + " --save " + quoted(dir / "scene.obj"),
         base + " --save " + quoted(dir / "no/such/folder/a.gltf"), base + " --select teapot",
-        base + " --frames-dir " + quoted(dir / "no/such/folder"), base + " --headless"}) {
+        base + " --frames-dir " + quoted(dir / "no/such/folder"), base + " --headless",
+        base + " --converge-relmse 2", base + " --converge-seconds -1"}) {
     const test::CommandResult result = test::run_command(
         "env -u DISPLAY -u WAYLAND_DISPLAY " + quoted(test::hipr_binary()) + " view " + arguments);
     EXPECT_EQ(result.exit_code, kExitBadInput) << arguments << "\n" << result.output;

@@ -433,6 +433,54 @@ TEST(Session, UndoReRendersToTheOriginalImageBitForBit) {
   EXPECT_EQ(session.edit_records()[1].what, "undo material red");
 }
 
+// A noise target pauses rendering long before --spp once the image is clean: at a round's end
+// (every pixel the same samples), where the film's own estimate meets it, on the image a full
+// frame render of those samples makes. An edit resumes; a stricter target resumes too.
+TEST(Session, ANoiseTargetPausesAtAnImageThatClean) {
+  SessionSettings s = small_settings();
+  s.spp = 4096;
+  s.converge.relmse = 0.01;
+  Session session(test::context(), cornell(), s);
+  converge(session);
+  ASSERT_TRUE(session.noise());
+  EXPECT_TRUE(session.noise()->within(0.01)) << session.noise()->relmse;
+  const auto [fewest, most] = session.renderer().sample_count_range();
+  EXPECT_EQ(fewest, most) << "paused between rounds";
+  EXPECT_LT(most, 256u);
+  EXPECT_GE(most, 2u);
+  EXPECT_EQ(session.displayed().rgb, test::full_frame_display(session.scene(), s.render, most).rgb);
+
+  session.edit(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}});
+  EXPECT_FALSE(session.converged());
+  EXPECT_FALSE(session.noise()) << "an estimate of the scene before";
+  converge(session);
+  EXPECT_TRUE(session.noise()->within(0.01));
+  EXPECT_LT(session.work_since_edit(), 256.0);
+
+  const double paused_at = session.work_since_edit();
+  session.set_convergence(4096, ConvergenceTarget{0.0, 0.0025});
+  EXPECT_FALSE(session.converged()) << "a stricter target resumes";
+  converge(session);
+  EXPECT_TRUE(session.noise()->within(0.0025));
+  EXPECT_GT(session.work_since_edit(), 2.0 * paused_at) << "relMSE falls as 1/samples";
+}
+
+// A time target pauses at the first round's end after it has passed, never before every pixel
+// shows the scene as it is now: an edit is never left half rendered.
+TEST(Session, ATimeTargetWaitsForEveryPixelToShowTheScene) {
+  SessionSettings s = small_settings();
+  s.spp = 4096;
+  s.converge.seconds = 1e-6;
+  Session session(test::context(), cornell(), s);
+  converge(session);
+  EXPECT_EQ(session.scheduler().rounds_since_edit(), 1u);
+  session.edit(TransformEdit{"tall_block", glm::vec3(0.1f, 0.0f, 0.0f), std::nullopt});
+  EXPECT_FALSE(session.converged()) << "the time is up, the edit not yet shown everywhere";
+  converge(session);
+  EXPECT_EQ(session.scheduler().rounds_since_edit(), 1u);
+  for (uint32_t owed : read_owed_tiles(session.renderer())) EXPECT_EQ(owed, 0u);
+}
+
 // The Environment panel's switch and sun sliders are session edits: re-rendered to the image of
 // the new light, a slider drag is one undo step, and undo comes back to the studio bit for bit.
 TEST(Session, EnvironmentSwitchAndSunDragUndo) {

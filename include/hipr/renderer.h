@@ -84,6 +84,21 @@ struct RenderCounters {
   uint64_t guide_rays = 0;   // traced by the path guide's training (not in `rays`)
 };
 
+// How far the film's image still is from its converged limit, as its own samples tell
+// (Renderer::noise): what a noise target stops rendering at.
+struct FilmNoise {
+  // The expected relMSE (src/image/error_metrics.h) of each pixel's mean against the mean of
+  // infinitely many samples, from the pixel's sample variance, averaged over the pixels whose
+  // noise can be told. Like any sample variance it underestimates paths too rare to have been
+  // sampled yet (fireflies still to come).
+  double relmse = 0.0;
+  uint64_t unknown_pixels = 0;  // owed (still holding samples from before an edit) or < 2 samples
+  uint64_t pixels = 0;
+
+  // Every pixel's noise is known and the estimate is at most `target`.
+  bool within(double target) const { return unknown_pixels == 0 && relmse <= target; }
+};
+
 // What the renderer holds of the scene.
 struct SceneStats {
   size_t instance_count = 0;
@@ -132,6 +147,8 @@ class Renderer final : public ProgressiveRenderer {
   ImageRGB image() const;                                             // per-pixel mean radiance
   std::vector<uint32_t> sample_counts() const;                        // per pixel
   uint64_t total_samples() const;  // their sum, added up on the GPU (8 bytes read back)
+  // The accumulation's noise, estimated on the GPU (8 bytes per 64 pixels read back).
+  FilmNoise noise() const;
   RenderCounters counters() const;
   uint64_t samples_since_reset() const override { return counters().samples; }
   void reset_counters() override;  // on the GPU, no read-back

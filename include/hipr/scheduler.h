@@ -83,6 +83,13 @@ class Scheduler {
   // Samples rendered since the last edit, in full-frame 1-spp passes (the work unit of
   // docs/method.md, "Measuring run time against error"). The counters restart at each edit.
   double work_since_edit() const;
+  // Rounds over the whole schedule completed since the last edit (since this scheduler started,
+  // before any): from one on, every tile has been visited, so every pixel shows the scene as it
+  // is now (the noise and time targets of the viewer wait for that).
+  uint32_t rounds_since_edit() const { return m_rounds_since_edit; }
+  // The last step ended a round: every tile has had the round's visit, so a render paused here
+  // leaves no tile a visit behind the others.
+  bool at_round_end() const { return m_at_round_end; }
   // Seconds spent since the last edit in scheduling rather than path tracing: the policy's
   // planning (stage 1, sorting, the oracle's ranking) and capturing the stale display. (The
   // display pass that follows each step's rendering in the same submission counts as
@@ -141,7 +148,9 @@ class Scheduler {
   bool m_relight = true;
   bool m_reproject = true;
   bool m_relit = false;
-  bool m_first_round = false;     // still in the first pass over the schedule since the edit
+  bool m_first_round = false;  // still in the first pass over the schedule since the edit
+  uint32_t m_rounds_since_edit = 0;
+  bool m_at_round_end = false;
   uint32_t m_leading = 0;         // schedule entries [0, m_leading) are the policy's own steps
   uint32_t m_leading_cursor = 0;  // the next of them
   EditTimes m_times;              // since the last edit

@@ -152,6 +152,9 @@ int run_render(RenderOptions& o) {
         {"samples_per_second", samples / render_seconds},
         {"rays_per_second", double(counters.rays) / render_seconds},
         {"nonfinite_samples", counters.non_finite_samples},
+        // The image's expected relMSE against its converged limit, from its own sample
+        // variances (FilmNoise): what the viewer's noise target stops at.
+        {"noise_relmse", renderer.noise().relmse},
         {"spp", o.common.spp},
         {"width", o.common.render.width},
         {"height", o.common.render.height},

@@ -65,6 +65,8 @@ void Scheduler::on_edit(const Scene& scene, const ChangeSet& changes) {
   m_edited = true;
   m_cursor = 0;
   m_first_round = true;
+  m_rounds_since_edit = 0;
+  m_at_round_end = false;
   m_round_target =
       m_policy->whole_passes() ? m_visit_spp : m_first_visit_spp;  // handed over by planned()
   // Planned while the pixels' owed bits still say which tiles earlier edits left unrendered
@@ -101,6 +103,7 @@ RoundState Scheduler::round_state() const {
 
 void Scheduler::step() {
   const Timer step_timer;
+  m_at_round_end = false;
   // A step of the policy's own first (HiPR: the focus's or the edit's lead), when it has one.
   if (m_policy->lead_step(m_renderer, round_state())) {
     m_times.step_seconds += step_timer.seconds();
@@ -142,6 +145,8 @@ void Scheduler::step() {
 void Scheduler::end_round() {
   m_cursor = 0;
   m_first_round = false;
+  ++m_rounds_since_edit;
+  m_at_round_end = true;
   m_policy->round_ended();
   if (m_round_target) set_round_target(*m_round_target + m_visit_spp);
   // A whole-pass policy shows a whole pass when it completes, as a full-frame progressive viewer

@@ -42,7 +42,13 @@ Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t lig
       m_total(ctx, sizeof(uint64_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Shared),
       m_sum_samples(ctx, "sum_samples.comp", {},
                     {{abi::kSumAccumulation, &accumulation}, {abi::kSumTotal, &m_total}},
-                    sizeof(uint32_t)) {
+                    sizeof(uint32_t)),
+      m_noise_partials(ctx, size_t(groups_for(width * height)) * sizeof(abi::NoisePartial),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Shared),
+      m_film_noise(
+          ctx, "film_noise.comp", {},
+          {{abi::kNoiseAccumulation, &accumulation}, {abi::kNoisePartials, &m_noise_partials}},
+          sizeof(uint32_t)) {
   clear();
 }
 
@@ -87,6 +93,23 @@ uint64_t Film::total_samples() const {
   uint64_t total = 0;
   m_total.download(&total, sizeof total);
   return total;
+}
+
+FilmNoise Film::noise() const {
+  const uint32_t pixels = m_width * m_height;
+  m_ctx.submit_and_wait(
+      [&](VkCommandBuffer cmd) { m_film_noise.dispatch(cmd, &pixels, groups_for(pixels)); });
+  FilmNoise noise;
+  noise.pixels = pixels;
+  double sum = 0.0;
+  for (const abi::NoisePartial& partial : m_noise_partials.download_all<abi::NoisePartial>()) {
+    sum += double(partial.relmse);
+    noise.unknown_pixels += partial.unknown;
+  }
+  const uint64_t known = noise.pixels - noise.unknown_pixels;
+  // relmse() averages over channels as well as pixels.
+  noise.relmse = known ? sum / (3.0 * double(known)) : 0.0;
+  return noise;
 }
 
 std::vector<bool> Film::owed_pixels() const {

@@ -32,6 +32,8 @@ class Film {
   std::vector<uint32_t> sample_counts() const;
   // The sum of sample_counts(), added up on the GPU (8 bytes read back).
   uint64_t total_samples() const;
+  // film_noise.comp's estimate, its workgroups' partial sums added up here in a fixed order.
+  FilmNoise noise() const;
   // Per pixel: whether it still holds samples from before the last edit.
   std::vector<bool> owed_pixels() const;
   RenderCounters counters() const;
@@ -49,6 +51,8 @@ class Film {
   vk::ComputePipeline m_mark_owed;
   vk::Buffer m_total;  // sum_samples.comp's output
   vk::ComputePipeline m_sum_samples;
+  vk::Buffer m_noise_partials;  // film_noise.comp's output: abi::NoisePartial per workgroup
+  vk::ComputePipeline m_film_noise;
 };
 
 // Workgroups of abi::kWorkgroupSize invocations covering `items`.

@@ -183,6 +183,7 @@ void Renderer::mark_all_owed() {
 ImageRGB Renderer::image() const { return m->film.image(); }
 std::vector<uint32_t> Renderer::sample_counts() const { return m->film.sample_counts(); }
 uint64_t Renderer::total_samples() const { return m->film.total_samples(); }
+FilmNoise Renderer::noise() const { return m->film.noise(); }
 RenderCounters Renderer::counters() const { return m->film.counters(); }
 void Renderer::reset_counters() { m->film.reset_counters(); }
 

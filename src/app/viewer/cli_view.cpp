@@ -36,6 +36,22 @@ void apply_size(const std::string& size, RenderSettings& render) {
   render.height = uint32_t(std::stoul(match[2]));
 }
 
+// The viewer's convergence: a GPU renders 64 samples per pixel of most scenes in well under a
+// second, so --spp is only the limit (kViewerSpp) and a noise target pauses rendering when the
+// image is clean (kViewerRelmse: about 3 % RMS relative error, where the pixel noise of a diffuse
+// scene stops being visible on screen; measured in BENCHMARKS.md, "Viewer convergence").
+constexpr uint32_t kViewerSpp = 4096;
+constexpr double kViewerRelmse = 5e-4;
+
+void add_convergence_flags(CLI::App& cmd, ConvergenceTarget& target) {
+  target.relmse = kViewerRelmse;
+  for_each_convergence_setting(target, [&cmd](const ConvergenceSettingInfo& info, double& value) {
+    cmd.add_option(info.flag, value, info.help)
+        ->capture_default_str()
+        ->check(CLI::Range(info.min, info.max));
+  });
+}
+
 int run_view(ViewCommandOptions& o) {
   viewer::ViewerOptions& v = o.viewer;
   apply_size(o.size, v.common.render);
@@ -123,6 +139,7 @@ Command add_view_command(CLI::App& app) {
                   "Exactly N scheduling steps per frame instead of a time budget");
   add_display_flags(*cmd, v.display, "the window (auto: metered as it converges, until set)");
   add_denoise_flags(*cmd, v.denoise);
+  add_convergence_flags(*cmd, v.converge);
   cmd->add_flag("--no-ui", options->no_ui,
                 "No panels or status line: the window shows the render alone");
   cmd->add_flag(
@@ -140,6 +157,7 @@ Command add_view_command(CLI::App& app) {
   cmd->add_flag_function(
       "--no-focus", [&v](int64_t) { v.focus_selection = false; },
       "hipr does not start from the selected object (the HiPR panel's \"focus: selection\")");
+  v.common.spp = kViewerSpp;
   add_common_options(*cmd, v.common);
   return {cmd, [options] { return run_view(*options); }};
 }

@@ -230,6 +230,41 @@ struct DenoiseWidgets {
   }
 };
 
+// The convergence targets' widgets, one per setting of their declaration (hipr/convergence.h).
+struct ConvergenceWidgets {
+  bool& changed;
+  void operator()(const ConvergenceSettingInfo& info, double& value) const {
+    // Logarithmic sliders reach the small values that matter (a relMSE of 1e-4, a second);
+    // 0, the slider's far left, turns the target off.
+    float v = float(value);
+    if (ImGui::SliderFloat(info.name, &v, float(info.min), float(std::min(info.max, 600.0)),
+                           v == 0.0f ? "off" : "%.3g", ImGuiSliderFlags_Logarithmic)) {
+      value = v;
+      changed = true;
+    }
+    tooltip(info.help);
+  }
+};
+
+void convergence_section(Session& session, ViewerState& state) {
+  if (!ImGui::CollapsingHeader("Convergence")) return;
+  uint32_t spp = session.settings().spp;
+  ConvergenceTarget target = session.settings().converge;
+  bool changed = false;
+  int n = int(std::min(spp, 1u << 20));
+  if (ImGui::SliderInt("spp (at most)", &n, 1, 1 << 16, "%d", ImGuiSliderFlags_Logarithmic)) {
+    spp = uint32_t(std::max(n, 1));
+    changed = true;
+  }
+  tooltip("Rendering pauses at this many samples per pixel since the last change (--spp)");
+  for_each_convergence_setting(target, ConvergenceWidgets{changed});
+  if (changed) state.request_convergence = std::pair{spp, target};
+  if (const auto& noise = session.noise())
+    ImGui::Text("noise: relMSE %.3g (%s)", noise->relmse,
+                noise->unknown_pixels ? "some pixels unknown" : "estimated");
+  ImGui::TextDisabled("the time and noise targets wait for every pixel to show the scene");
+}
+
 void display_section(ViewerState& state) {
   if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
   int overlay = int(state.overlay);
@@ -309,6 +344,7 @@ void draw_side_panel(Session& session, ViewerState& state, float x, float height
   lights_section(session, state);
   environment_section(session, state);
   hipr_section(session, state);
+  convergence_section(session, state);
   ImGui::PopItemWidth();
   ImGui::End();
 }
@@ -323,6 +359,8 @@ void draw_status_line(const Session& session, const ViewerState& state, float x,
   };
   add("%s", policy_name(session.settings().schedule.policy).c_str());
   add("%.1f/%u spp", state.mean_spp, session.settings().spp);
+  if (const auto& noise = session.noise())
+    add("relMSE %.2g/%.2g", noise->relmse, session.settings().converge.relmse);
   add("work %.2f", session.work_since_edit());
   add("%.1f s since edit", session.seconds_since_edit());
   add("%.2f Msamples/s", session.samples_per_second() * 1e-6);

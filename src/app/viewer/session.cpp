@@ -61,6 +61,7 @@ void Session::rebuild() {
   m_ids_stale = true;
   m_gbuffer_stale = false;  // a new renderer's G-buffer is made from the scene as it is now
   m_since_edit = Timer();
+  restart_noise_checks();
   update_focus();
 }
 
@@ -78,6 +79,7 @@ void Session::changed(const std::function<void(Scene&)>& change, const std::stri
   m_awaiting_change = true;
   m_steps_since_edit = 0;
   m_since_edit = started;
+  restart_noise_checks();
   display_changed();
   m_ids_stale = true;
   // HiPR's on_edit runs stage 1, which renders the G-buffer of the edited scene; the other
@@ -120,7 +122,49 @@ bool Session::redo() {
   return redone;
 }
 
-bool Session::converged() const { return m_scheduler->work_since_edit() >= double(m_settings.spp); }
+bool Session::converged() const {
+  if (m_scheduler->work_since_edit() >= double(m_settings.spp)) return true;
+  // The time and noise targets pause between rounds, once every pixel shows the scene as it is
+  // now: no tile is left a visit behind.
+  if (m_scheduler->rounds_since_edit() == 0 || !m_scheduler->at_round_end()) return false;
+  const ConvergenceTarget& target = m_settings.converge;
+  if (target.seconds > 0.0 && m_since_edit.seconds() >= target.seconds) return true;
+  return m_noise_met;
+}
+
+void Session::restart_noise_checks() {
+  m_noise.reset();
+  m_noise_met = false;
+  m_next_noise_check = 2.0;  // no pixel has two samples before two passes' work
+}
+
+void Session::check_noise() {
+  const double target = m_settings.converge.relmse;
+  if (target <= 0.0 || m_noise_met || m_scheduler->rounds_since_edit() == 0 ||
+      !m_scheduler->at_round_end())
+    return;
+  const double work = m_scheduler->work_since_edit();
+  if (work < m_next_noise_check) return;
+  m_noise = m_renderer->noise();
+  m_noise_met = m_noise->within(target);
+  if (m_noise->unknown_pixels > 0) {  // a pixel with one sample: look again a pass later
+    m_next_noise_check = work + 1.0;
+    return;
+  }
+  // The relMSE of a mean falls as 1/samples: the next look is where this estimate meets the
+  // target, a little early (a sample variance of few samples misses rare paths), at least 10 %
+  // later and at most 4x (an early estimate can also be too high).
+  const double needed = work * m_noise->relmse / target;
+  m_next_noise_check = std::clamp(0.9 * needed, 1.1 * work, 4.0 * work);
+}
+
+void Session::set_convergence(uint32_t spp, const ConvergenceTarget& target) {
+  const ScheduleSettings schedule = resolved_schedule();
+  m_settings.spp = std::max({spp, schedule.visit_spp, schedule.first_visit_spp, 1u});
+  m_settings.converge = target;
+  m_scheduler->configure(resolved_schedule(), m_settings.spp);
+  restart_noise_checks();
+}
 
 uint32_t Session::render(double budget_seconds, uint32_t max_steps) {
   const Timer timer;
@@ -131,6 +175,7 @@ uint32_t Session::render(double budget_seconds, uint32_t max_steps) {
     ++steps;
     ++m_steps_since_edit;
     display_changed();
+    check_noise();
     // Stop before a step that would overrun the budget, not after: on a GPU a step takes a few
     // milliseconds, and overrunning a 60 fps frame by one drops the frame rate below 60.
     const double elapsed = timer.seconds();
@@ -237,6 +282,7 @@ void Session::set_schedule(const ScheduleSettings& schedule) {
     m_settings.schedule = previous;
     throw;
   }
+  restart_noise_checks();  // the new scheduler's work starts at zero
   update_focus();
   // A HiPR scheduler starts with stage 1 of the scene as it is now.
   if (schedule.policy == Policy::Hipr) m_gbuffer_stale = false;

@@ -11,6 +11,7 @@
 
 #include "app/viewer/edit_history.h"
 #include "core/timer.h"
+#include "hipr/convergence.h"
 #include "hipr/focus.h"
 #include "hipr/renderer.h"
 #include "hipr/schedule_settings.h"
@@ -25,7 +26,8 @@ struct SessionSettings {
   // tiles_per_step 0: 1/64 of the frame, so a frame's time budget is spent finely;
   // first_visit_spp 0: default_first_visit_spp.
   ScheduleSettings schedule;
-  uint32_t spp = 64;  // samples per pixel to converge to; rendering pauses there
+  uint32_t spp = 64;  // samples per pixel to converge to; rendering pauses there at the latest
+  ConvergenceTarget converge;  // what may pause it earlier
 };
 
 // How one change reached the screen: the feedback latency of the measurements.
@@ -73,10 +75,19 @@ class Session {
   void mark_saved() { m_history.mark_saved(); }
 
   // Runs scheduling steps while another one still fits in `budget_seconds` (judged by the last
-  // step's time; at least one step runs) or until the image has `spp` samples per pixel again;
-  // returns how many ran.
+  // step's time; at least one step runs) or until the image has converged; returns how many ran.
   uint32_t render(double budget_seconds, uint32_t max_steps = UINT32_MAX);
+  // The image is done and rendering pauses: `spp` samples per pixel since the last change, or,
+  // once every pixel shows the scene as it is now, the time or noise target (hipr/convergence.h).
   bool converged() const;
+  // The last noise estimate of a noise target (none before the first, nor without a target).
+  // Estimated where the work since the change is about to meet the target by the last estimate
+  // (relMSE falls as 1/samples), so a change costs a few read-backs, not one a frame.
+  const std::optional<FilmNoise>& noise() const { return m_noise; }
+  // The samples to converge to and the targets that may pause rendering earlier; takes over at
+  // once (a paused image resumes when a stricter target is set). spp is raised to the schedule's
+  // visit counts where it is below them.
+  void set_convergence(uint32_t spp, const ConvergenceTarget& target);
   double work_since_edit() const { return m_scheduler->work_since_edit(); }
   double seconds_since_edit() const { return m_since_edit.seconds(); }
   // Samples per second since the last edit (0 before any sample).
@@ -140,6 +151,10 @@ class Session {
   // Hands the scheduler the script's and the view's seeds when they differ from what it follows.
   void update_focus();
   void display_changed() { ++m_display_version; }
+  // The noise target's estimates start over (a change, a new scheduler, a new target).
+  void restart_noise_checks();
+  // Estimates the noise when a noise target is set and the work has reached the next check.
+  void check_noise();
 
   const vk::Context& m_ctx;
   SessionSettings m_settings;
@@ -149,6 +164,9 @@ class Session {
   uint64_t m_renderer_id = 0;
   std::unique_ptr<Scheduler> m_scheduler;
   Timer m_since_edit;
+  std::optional<FilmNoise> m_noise;
+  bool m_noise_met = false;
+  double m_next_noise_check = 0.0;  // in work since the last change
   uint64_t m_display_version = 0;
   uint64_t m_displayed_version = UINT64_MAX;  // the version m_displayed was read at
   ImageRGB m_displayed;

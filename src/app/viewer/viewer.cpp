@@ -78,6 +78,7 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
   settings.render = options.common.render;
   settings.schedule = options.schedule;
   settings.spp = options.common.spp;
+  settings.converge = options.converge;
   m_state.open_path = scene.source.string();
   m_state.save_path = default_save_path(scene.source);
   m_state.screenshot_path =
@@ -206,6 +207,10 @@ void Viewer::handle_requests() {
                        [&](LightSelection s) { m_session->set_light_selection(s); });
   take_setting_request(m_state.request_guiding, "path guiding",
                        [&](bool on) { m_session->set_guiding(on); });
+  take_setting_request(m_state.request_convergence, "convergence",
+                       [&](const std::pair<uint32_t, ConvergenceTarget>& request) {
+                         m_session->set_convergence(request.first, request.second);
+                       });
 }
 
 template <class T, class Apply>

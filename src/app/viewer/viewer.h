@@ -10,6 +10,7 @@
 #include "app/cli_common.h"
 #include "app/display_flags.h"
 #include "app/viewer/overlays.h"
+#include "hipr/convergence.h"
 #include "hipr/denoise.h"
 #include "hipr/edits.h"
 #include "hipr/schedule_settings.h"
@@ -33,6 +34,9 @@ struct ViewerOptions {
   app::DisplayFlags display{std::nullopt, ToneMapper::PbrNeutral};
   bool show_ui = true;
   DenoiseSettings denoise{.enabled = true};  // the window shows the display denoised (N)
+  // What may pause rendering before --spp (hipr/convergence.h); the view command sets its own
+  // defaults.
+  ConvergenceTarget converge;
   // No window (machines without a display): frames are drawn off screen, as fast as the device
   // renders them, until exit_after_frames (which headless runs need).
   bool headless = false;

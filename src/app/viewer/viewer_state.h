@@ -10,6 +10,7 @@
 
 #include "app/viewer/gizmo.h"
 #include "app/viewer/overlays.h"
+#include "hipr/convergence.h"
 #include "hipr/denoise.h"
 #include "hipr/focus.h"
 #include "hipr/renderer.h"
@@ -67,6 +68,8 @@ struct ViewerState {
   std::optional<Sampler> request_sampler;
   std::optional<LightSelection> request_light_selection;
   std::optional<bool> request_guiding;
+  // The Convergence panel's samples per pixel and targets (Session::set_convergence).
+  std::optional<std::pair<uint32_t, ConvergenceTarget>> request_convergence;
   int tile_size_input = 16;
   std::string preset = "default";
   HiprParameters hipr_sliders;  // as the sliders hold them; normalised when applied
