@@ -115,6 +115,15 @@ TEST(LightTree, EveryLightWithPowerHasOneLeafAndNodesBoundTheirChildren) {
         if (spread < 3.14159f) {
           EXPECT_LE(angle_between(tree[a].axis, own.axis) + own_spread, spread + 1e-3f);
         }
+        // A plane bound holds only one-sided triangles facing its way, each in front of it.
+        if (std::isfinite(tree[a].front)) {
+          const abi::Light& l = lights.table[light];
+          ASSERT_EQ(l.type, abi::kLightTriangle);
+          EXPECT_FALSE(own.two_sided);
+          EXPECT_EQ(own.axis, tree[a].axis);
+          for (const glm::vec3& v : {l.position, l.position + l.edge1, l.position + l.edge2})
+            EXPECT_GE(glm::dot(tree[a].axis, v), tree[a].front);
+        }
       }
       return;
     }
@@ -163,6 +172,42 @@ TEST(LightTree, ASpotConeAndATriangleSideAreTheirBounds) {
   EXPECT_FLOAT_EQ(s.cos_spread, 0.5f);
   EXPECT_FLOAT_EQ(s.cos_reach, 1.0f);
   EXPECT_NEAR(s.power, 0.2126f + 2.0f * 0.7152f + 3.0f * 0.0722f, 1e-5f);
+}
+
+// A ceiling light of two triangles facing down is bounded by its plane: a point above the
+// ceiling (behind it) is told apart from one just below, which the cone bound cannot do from
+// inside the node's sphere. A point light or a two-sided triangle among them has no plane.
+TEST(LightTree, OneSidedLightsFacingOneWayAreBoundedByTheirPlane) {
+  Lights ceiling;
+  const float h = 5.48f;
+  ceiling.add(triangle(glm::vec3(2.1f, h, 2.3f), glm::vec3(3.4f, h, 2.3f), glm::vec3(3.4f, h, 3.3f)));
+  ceiling.add(triangle(glm::vec3(2.1f, h, 2.3f), glm::vec3(3.4f, h, 3.3f), glm::vec3(2.1f, h, 3.3f)));
+  ASSERT_EQ(ceiling.bounds[0].axis, glm::vec3(0.0f, -1.0f, 0.0f));
+  const std::vector<abi::LightTreeNode> tree = build_light_tree(ceiling.bounds, ceiling.table);
+  ASSERT_EQ(tree.size(), 3u);
+  for (const abi::LightTreeNode& node : tree) {
+    ASSERT_TRUE(std::isfinite(node.front));
+    EXPECT_NEAR(node.front, -h, 1e-3f);
+    EXPECT_LT(glm::dot(node.axis, glm::vec3(0.0f, h + 0.01f, 0.0f)), node.front) << "above";
+    EXPECT_GT(glm::dot(node.axis, glm::vec3(2.5f, h - 0.01f, 2.5f)), node.front) << "below";
+    EXPECT_LT(glm::dot(node.axis, glm::vec3(2.5f, h, 2.5f)), node.front + 1e-3f);
+  }
+
+  Lights mixed = ceiling;
+  abi::Light point{};
+  point.type = abi::kLightPoint;
+  point.position = glm::vec3(1.0f, 1.0f, 1.0f);
+  point.intensity = glm::vec3(1.0f);
+  mixed.add(point);
+  const std::vector<abi::LightTreeNode> with_point = build_light_tree(mixed.bounds, mixed.table);
+  EXPECT_EQ(with_point[0].front, -INFINITY);
+  size_t planes = 0;
+  for (const abi::LightTreeNode& node : with_point) planes += std::isfinite(node.front);
+  EXPECT_EQ(planes, 3u) << "the ceiling's subtree keeps its plane";
+
+  Lights two_sided;
+  two_sided.add(ceiling.table[0], 1.0f, true);
+  EXPECT_EQ(build_light_tree(two_sided.bounds, two_sided.table)[0].front, -INFINITY);
 }
 
 TEST(LightTree, OneLightIsALeafRootAndNoLightNoTree) {

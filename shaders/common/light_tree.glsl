@@ -14,10 +14,13 @@ float cos_of_gap(float cosA, float sinA, float cosB, float sinB) {
 // How much light a node's lights could send to `position` on a surface with normal `normal`:
 // power x the best cosine at the lights (their cone widened by the angle the node's bounding
 // sphere subtends) x the best cosine at the surface / squared distance. Zero only where no light
-// of the node can emit toward the point (behind one-sided emitters, outside spot cones); the
+// of the node can emit toward the point (behind one-sided emitters, outside spot cones, behind
+// the plane of a node of one-sided surfaces facing one way); the
 // surface cosine is floored so that a grazing light is unlikely but never impossible.
 float light_tree_importance(LightTreeNode node, vec3 position, vec3 normal) {
   if (!(node.power > 0.0)) return 0.0;
+  // Behind every light of a node of one-sided surfaces facing one way (LightTreeNode::front).
+  if (dot(node.axis, position) < node.front) return 0.0;
   const vec3 centre = 0.5 * (node.lo + node.hi);
   const vec3 fromCentre = position - centre;
   const float d2 = dot(fromCentre, fromCentre);

@@ -276,7 +276,11 @@ struct LightTreeNode {
   float cosReach;    // cos theta_e: how far past an emitting normal light leaves (90 deg: a surface)
   uint parent;       // kInvalidIndex at the root
   uint twoSided;     // 1: some light emits on both sides (the cone then holds both ways)
-  uint padding;
+  // Every light is a one-sided surface facing exactly `axis` and lies where dot(axis, y) >= front:
+  // a point x with dot(axis, x) < front is behind all of them and gets no light. -inf: no such
+  // plane (other lights, or normals that differ). The cone bound cannot say so for a point
+  // inside the node's bounding sphere (a ceiling point beside a ceiling light).
+  float front;
 };
 
 // count's top bit (kPixelOwed) marks a pixel that still holds radiance from before the last

@@ -43,15 +43,19 @@ struct Group {
   Cone cone;
   float reach = 0.0f;  // theta_e
   bool two_sided = false;
+  // Every light is a one-sided surface facing exactly cone.axis (bit for bit: a plane bound
+  // with normals a rounding apart would not hold far from the lights).
+  bool one_facing = false;
   bool empty = true;
 
   void add(const LightBounds& l) {
     const Cone c{l.axis, std::acos(std::clamp(l.cos_spread, -1.0f, 1.0f))};
     const float r = std::acos(std::clamp(l.cos_reach, -1.0f, 1.0f));
-    add(Group{l.lo, l.hi, l.power, c, r, l.two_sided, false});
+    add(Group{l.lo, l.hi, l.power, c, r, l.two_sided, l.one_sided_surface && !l.two_sided, false});
   }
   void add(const Group& g) {
     if (g.empty) return;
+    one_facing = (empty || (one_facing && cone.axis == g.cone.axis)) && g.one_facing;
     lo = glm::min(lo, g.lo);
     hi = glm::max(hi, g.hi);
     power += g.power;
@@ -59,6 +63,21 @@ struct Group {
     reach = std::max(reach, g.reach);
     two_sided = two_sided || g.two_sided;
     empty = false;
+  }
+
+  // abi::LightTreeNode::front: the lowest dot(axis, y) over the corners of the box (so over
+  // every point of its lights), less a rounding's slack, so that a point on the lights' plane
+  // keeps the bound it had without the plane.
+  float front() const {
+    if (!one_facing) return -INFINITY;
+    const glm::vec3& a = cone.axis;
+    float lowest = 0.0f, scale = 0.0f;
+    for (int k = 0; k < 3; ++k) {
+      lowest += a[k] * (a[k] >= 0.0f ? lo[k] : hi[k]);
+      scale += std::abs(a[k]) * std::max(std::abs(lo[k]), std::abs(hi[k]));
+    }
+    const float front = lowest - 1e-5f * scale;
+    return std::isfinite(front) ? front : -INFINITY;
   }
 };
 
@@ -109,6 +128,7 @@ class Builder {
     n.cosReach = std::cos(group.reach);
     n.parent = parent;
     n.twoSided = group.two_sided ? 1u : 0u;
+    n.front = group.front();
     if (end - begin == 1) {
       const uint32_t light = m_bounds[begin].light;
       n.child = light | abi::kLightTreeLeaf;
@@ -204,6 +224,7 @@ LightBounds light_bounds(const abi::Light& light, float emitted_luminance, bool 
       b.cos_spread = 1.0f;  // one normal
       b.cos_reach = 0.0f;   // a surface emits up to 90 degrees from it
       b.two_sided = two_sided;
+      b.one_sided_surface = !two_sided;
       b.power = emitted_luminance * light.area;
       break;
     }

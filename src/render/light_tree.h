@@ -21,6 +21,10 @@ struct LightBounds {
   float cos_spread = 1.0f;  // cos theta_o
   float cos_reach = 0.0f;   // cos theta_e
   bool two_sided = false;
+  // A one-sided surface light (a triangle): it emits only toward dot(axis, x) > dot(axis, y) of
+  // its points y. The tree bounds a group of such lights facing the same way by a plane
+  // (abi::LightTreeNode::front).
+  bool one_sided_surface = false;
   uint32_t light = 0;
 };
 
