@@ -180,8 +180,10 @@ TEST(LightTree, ASpotConeAndATriangleSideAreTheirBounds) {
 TEST(LightTree, OneSidedLightsFacingOneWayAreBoundedByTheirPlane) {
   Lights ceiling;
   const float h = 5.48f;
-  ceiling.add(triangle(glm::vec3(2.1f, h, 2.3f), glm::vec3(3.4f, h, 2.3f), glm::vec3(3.4f, h, 3.3f)));
-  ceiling.add(triangle(glm::vec3(2.1f, h, 2.3f), glm::vec3(3.4f, h, 3.3f), glm::vec3(2.1f, h, 3.3f)));
+  ceiling.add(
+      triangle(glm::vec3(2.1f, h, 2.3f), glm::vec3(3.4f, h, 2.3f), glm::vec3(3.4f, h, 3.3f)));
+  ceiling.add(
+      triangle(glm::vec3(2.1f, h, 2.3f), glm::vec3(3.4f, h, 3.3f), glm::vec3(2.1f, h, 3.3f)));
   ASSERT_EQ(ceiling.bounds[0].axis, glm::vec3(0.0f, -1.0f, 0.0f));
   const std::vector<abi::LightTreeNode> tree = build_light_tree(ceiling.bounds, ceiling.table);
   ASSERT_EQ(tree.size(), 3u);
