@@ -1,9 +1,9 @@
 #version 460
 // Estimates how far the film's image still is from its converged limit, from each pixel's own
 // samples: the expected relMSE of the pixel's mean, Var(sample) / n per channel over
-// (mean^2 + 0.01), halved as relmse() halves it (src/image/error_metrics.h). Summed per workgroup
-// in a fixed order, so that one image always gets one estimate (the viewer stops rendering at a
-// noise target: the stopping point must not depend on the GPU's timing).
+// (mean^2 - Var / n) + 0.01, halved as relmse() halves it (src/image/error_metrics.h). Summed
+// per workgroup in a fixed order, so that one image always gets one estimate (the viewer stops
+// rendering at a noise target: the stopping point must not depend on the GPU's timing).
 // Reads: every pixel's accumulation. Writes: one NoisePartial per workgroup.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require

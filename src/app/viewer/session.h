@@ -166,7 +166,7 @@ class Session {
   Timer m_since_edit;
   std::optional<FilmNoise> m_noise;
   bool m_noise_met = false;
-  double m_next_noise_check = 0.0;  // in work since the last change
+  double m_next_noise_check = 2.0;  // in work since the last change
   uint64_t m_display_version = 0;
   uint64_t m_displayed_version = UINT64_MAX;  // the version m_displayed was read at
   ImageRGB m_displayed;
