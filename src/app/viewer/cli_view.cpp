@@ -38,8 +38,9 @@ void apply_size(const std::string& size, RenderSettings& render) {
 
 // The viewer's convergence: a GPU renders 64 samples per pixel of most scenes in well under a
 // second, so --spp is only the limit (kViewerSpp) and a noise target pauses rendering when the
-// image is clean (kViewerRelmse: about 3 % RMS relative error, where the pixel noise of a diffuse
-// scene stops being visible on screen; measured in BENCHMARKS.md, "Viewer convergence").
+// image is clean (kViewerRelmse: about 3 % RMS relative error per channel; the samples it takes
+// per scene are in BENCHMARKS.md, "Viewer convergence"; whether it is where noise stops being
+// visible to artists is not measured).
 constexpr uint32_t kViewerSpp = 4096;
 constexpr double kViewerRelmse = 5e-4;
 

@@ -124,12 +124,14 @@ bool Session::redo() {
 
 bool Session::converged() const {
   if (m_scheduler->work_since_edit() >= double(m_settings.spp)) return true;
-  // The time and noise targets pause between rounds, once every pixel shows the scene as it is
-  // now: no tile is left a visit behind.
-  if (m_scheduler->rounds_since_edit() == 0 || !m_scheduler->at_round_end()) return false;
+  if (!may_pause_early()) return false;
   const ConvergenceTarget& target = m_settings.converge;
   if (target.seconds > 0.0 && m_since_edit.seconds() >= target.seconds) return true;
   return m_noise_met;
+}
+
+bool Session::may_pause_early() const {
+  return m_scheduler->rounds_since_edit() > 0 && m_scheduler->at_round_end();
 }
 
 void Session::restart_noise_checks() {
@@ -140,9 +142,7 @@ void Session::restart_noise_checks() {
 
 void Session::check_noise() {
   const double target = m_settings.converge.relmse;
-  if (target <= 0.0 || m_noise_met || m_scheduler->rounds_since_edit() == 0 ||
-      !m_scheduler->at_round_end())
-    return;
+  if (target <= 0.0 || m_noise_met || !may_pause_early()) return;
   const double work = m_scheduler->work_since_edit();
   if (work < m_next_noise_check) return;
   m_noise = m_renderer->noise();

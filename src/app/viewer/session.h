@@ -151,6 +151,9 @@ class Session {
   // Hands the scheduler the script's and the view's seeds when they differ from what it follows.
   void update_focus();
   void display_changed() { ++m_display_version; }
+  // The time and noise targets pause only between rounds, once a whole round has run since the
+  // last change: every pixel shows the scene as it is now, no tile is left a visit behind.
+  bool may_pause_early() const;
   // The noise target's estimates start over (a change, a new scheduler, a new target).
   void restart_noise_checks();
   // Estimates the noise when a noise target is set and the work has reached the next check.
