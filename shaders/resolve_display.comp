@@ -6,7 +6,7 @@
 //         accumulation (sum, sum of squares, count + owed bit), the tiles' flags, the display
 //         texels (stale and shown values, their records), the G-buffer (which surface each pixel
 //         sees now), the difference records, FrameParams.
-// Writes: each tile's TileJudgement (its gate and regression weight; the capture clears it); in
+// Writes: each tile's TileJudgement (its gate and regression sums; the capture clears it); in
 //         the tile flags kTileShown once the tile's own measure shows its fresh estimate at
 //         weight 1/2 or more, kTileSettled once it shows it alone, and kTileReshow on the tile
 //         and (but for immediate) the tiles around it whose pixels' windows reach into it
@@ -43,7 +43,8 @@
 //    d_i = new_i - old_i (same random numbers),
 //      C  = s + sum_i d_i / n           (unbiased: s and the kept samples estimate the old scene)
 //      C' = C + a (f - C)               a per channel = -sum w d (old - s) / sum w (old - s)^2 over
-//                                       the tile's changed pixels, clamped to [-7, 1]: how much
+//                                       the tile's other changed pixels (held out: the pixel's
+//                                       own samples do not fit it), clamped to [-7, 1]: how much
 //                                       of the old samples' noise the new ones replaced (0: an
 //                                       added change, C is best; 1: paths replaced, f is best; a
 //                                       recolour by k: 1 - k); the mix with the least variance
@@ -55,7 +56,7 @@
 //    and for pixels without (relit, never rendered, or showing an older scene at the capture),
 //    blend.
 // Weights per pixel: the tile's own sums decide its flags (shown, settled), its gate and its
-// regression weight a, but the weights that mix what a pixel shows (blend's a, switch's choice,
+// regression sums, but the weights that mix what a pixel shows (blend's a, switch's choice,
 // the difference rule's b) are judged from the same terms summed over the 9 x 9 pixels around it
 // (kDisplayWindowRadius; show_display.comp). A weight that jumps from tile to tile drew the tile
 // grid on screen (8-pixel blocks of old shadow beside new); a window that moves with the pixel
@@ -82,9 +83,6 @@ shared uint s_judged[64];        // pixels D and V judge (blend's pixels)
 shared uint s_differenced[64];   // difference rule: pixels shown by their difference estimate
 shared vec3 s_cross[64];         // difference rule: sum of w d (old - s) over changed pixels
 shared vec3 s_old[64];           // difference rule: sum of w (old - s)^2 over changed pixels
-shared vec3 s_regression;        // difference rule: the tile's weight a of f against C, per channel
-shared float s_change[64];       // difference rule: Dd, sum of w (C' - s)^2
-shared float s_change_noise[64]; // difference rule: Vd, sum of w var(r) / c
 
 void capture(uvec2 origin, uint tilePixels) {
   for (uint local = gl_LocalInvocationIndex; local < tilePixels; local += gl_WorkGroupSize.x) {
@@ -128,38 +126,6 @@ uint tile_state(float alpha, bool settled) {
   return kJudgeWeighed;
 }
 
-// Difference rule, once the tile's regression weight is known: Dd and Vd over the changed pixels
-// shown by their difference estimate.
-void judge_change(uvec2 origin, uint tilePixels) {
-  const uint lane = gl_LocalInvocationIndex;
-  float change = 0.0, noise = 0.0;
-  for (uint local = lane; local < tilePixels; local += gl_WorkGroupSize.x) {
-    const uint index = tile_pixel_index(origin, local);
-    if (index == kInvalidIndex) continue;
-    const PixelAccum accum = b_accum[index];
-    if (!has_fresh_samples(accum)) continue;
-    const uint n = accum.count & kPixelCountMask;
-    const DisplayTexel texel = b_display[index];
-    const uint c = differenced_samples(texel, n);
-    if (c == 0u || resurfaced(index, texel)) continue;
-    const DifferenceRecord record = b_difference[index];
-    if (!record_judges(record)) continue;
-    const vec2 terms = change_terms(record, texel, accum.sum / float(n), c, s_regression);
-    change += terms.x;
-    noise += terms.y;
-  }
-  s_change[lane] = change;
-  s_change_noise[lane] = noise;
-  barrier();
-  for (uint stride = gl_WorkGroupSize.x / 2u; stride > 0u; stride /= 2u) {
-    if (lane < stride) {
-      s_change[lane] += s_change[lane + stride];
-      s_change_noise[lane] += s_change_noise[lane + stride];
-    }
-    barrier();
-  }
-}
-
 // The tile and the tiles with a pixel whose window reaches into it are shown again (only the
 // tile for immediate, which shows each pixel by itself).
 void mark_reshow(uint tile) {
@@ -185,7 +151,7 @@ void main() {
   const uint tilePixels = u_frame.tileSize * u_frame.tileSize;
   if (u_push.rule == kDisplayCapture) {
     capture(origin, tilePixels);
-    if (gl_LocalInvocationIndex == 0u) b_judgements[tile] = TileJudgement(vec3(0.0), kJudgeNone, 0u);
+    if (gl_LocalInvocationIndex == 0u) b_judgements[tile] = TileJudgement(vec3(0.0), vec3(0.0), kJudgeNone, 0u);
     return;
   }
 
@@ -253,11 +219,8 @@ void main() {
     }
     barrier();
   }
-  if (lane == 0u) s_regression = regression_weight(s_cross[0], s_old[0]);
-  barrier();
-  const bool anyDifferenced = s_differenced[0] > 0u;
-  if (anyDifferenced) judge_change(origin, tilePixels);
   if (lane != 0u) return;
+  const bool anyDifferenced = s_differenced[0] > 0u;
   const float alpha = tile_alpha(flags);
   // Pixels shown by their difference estimate show the edited scene: they count as shown, and
   // settle when every pixel caught up in samples.
@@ -266,6 +229,6 @@ void main() {
   // where a moved surface appeared counts as shown: the change is on screen.
   if (s_unrendered[0] == 0u && (alpha >= 0.5 || s_resurfaced[0] > 0u || (anyDifferenced && s_judged[0] == 0u)))
     atomicOr(b_tile_flags[tile], kTileShown | (settled ? kTileSettled : 0u));
-  b_judgements[tile] = TileJudgement(s_regression, tile_state(alpha, settled), u_push.epoch);
+  b_judgements[tile] = TileJudgement(s_cross[0], s_old[0], tile_state(alpha, settled), u_push.epoch);
   mark_reshow(tile);
 }

@@ -34,8 +34,8 @@ shared vec4 s_rows[kRegion * kBlock];     // the terms summed along rows, by the
 // The rule's terms of the pixel at `at` (zero where it takes no part: outside the image, no
 // fresh sample, a changed surface, a relit value, one fresh sample, an unchanged or too bright
 // difference pixel),
-// as resolve_display.comp sums them over a tile; difference terms with the regression weight of
-// the pixel's own tile.
+// as resolve_display.comp sums them over a tile; difference terms with the regression weight
+// fitted on the pixel's own tile without it (held_out_regression).
 vec4 gather(ivec2 at) {
   if (at.x < 0 || at.y < 0 || at.x >= int(u_frame.width) || at.y >= int(u_frame.height)) return vec4(0.0);
   const uint index = uint(at.y) * u_frame.width + uint(at.x);
@@ -48,7 +48,7 @@ vec4 gather(ivec2 at) {
   if (c == 0u) return n >= 2u ? vec4(blend_terms(accum, n, texel), 0.0, 0.0) : vec4(0.0);
   const DifferenceRecord record = b_difference[index];
   if (!record_judges(record)) return vec4(0.0);
-  return vec4(0.0, 0.0, change_terms(record, texel, accum.sum / float(n), c, b_judgements[tile_of_pixel(uvec2(at))].regression));
+  return vec4(0.0, 0.0, change_terms(record, texel, accum.sum / float(n), c, held_out_regression(b_judgements[tile_of_pixel(uvec2(at))], record)));
 }
 
 // The tent's weight at an offset d along one axis, r + 1 - |d|: the pixels nearest count most,
@@ -97,11 +97,12 @@ uint mixed_samples(float a, uint n, uint staleSamples) {
   return clamp(uint(samples), min(n, staleSamples), max(staleSamples, 1u));
 }
 
-// Difference rule: a changed pixel shows X = s + b (C' - s), C' = C + a (f - C), a its tile's
-// regression weight, b judged over its window (Dd, Vd in `sums`); an unchanged one (C = s
+// Difference rule: a changed pixel shows X = s + b (C' - s), C' = C + a (f - C), a fitted on its
+// tile's other changed pixels, b judged over its window (Dd, Vd in `sums`); an unchanged one (C = s
 // exactly) or one with a sample too bright to judge shows s.
-void show_difference(inout DisplayTexel texel, uint index, vec2 sums, vec3 regression, vec3 fresh, uint n, uint c) {
+void show_difference(inout DisplayTexel texel, uint index, vec2 sums, TileJudgement judgement, vec3 fresh, uint n, uint c) {
   const DifferenceRecord record = b_difference[index];
+  const vec3 regression = held_out_regression(judgement, record);
   const float shrink = record_judges(record) ? change_weight(sums.x, sums.y) : 0.0;
   texel.shown = shrink == 0.0 ? texel.stale
                               : max(texel.stale + shrink * (corrected_estimate(record, texel.stale, fresh, c, regression) - texel.stale), vec3(0.0));
@@ -123,7 +124,7 @@ void show_pixel(uint index, vec4 sums, TileJudgement judgement) {
   if (!surfaceChanged && keeps_current_stale(texel, n)) return;
   const uint c = differenced_samples(texel, n);
   if (judgement.state != kJudgeSettled && !surfaceChanged && c > 0u) {
-    show_difference(texel, index, sums.zw, judgement.regression, fresh, n, c);
+    show_difference(texel, index, sums.zw, judgement, fresh, n, c);
     b_display[index] = texel;
     return;
   }

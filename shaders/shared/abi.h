@@ -336,9 +336,11 @@ struct DifferenceRecord {
 
 // What resolve_display.comp judged of a tile at its last resolve since the last edit (the
 // capture clears it), for show_display.comp: the gate of its pixels and, for the difference rule,
-// its regression weight.
+// the sums its pixels' regression weights are fitted on.
 struct TileJudgement {
-  vec3 regression;  // difference rule: the weight a of f against C, per channel
+  vec3 cross;       // difference rule: sum w d (old - s) over the tile's changed pixels, per channel
+  vec3 spread;      // difference rule: sum w (old - s)^2 over them; a pixel's regression weight
+                    // is fitted on the others' sums (held_out_regression)
   uint state;       // kJudge*
   uint epoch;       // ResolvePush::epoch of the resolve that judged it (0: the capture)
 };

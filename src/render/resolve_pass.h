@@ -41,7 +41,7 @@ class ResolvePass {
 
   vk::Buffer display;  // DisplayTexel per pixel
   vk::Buffer
-      judgements;  // TileJudgement per tile: its gate and regression weight, for showing its pixels
+      judgements;  // TileJudgement per tile: its gate and regression sums, for showing its pixels
 
  private:
   void record_pass(VkCommandBuffer cmd, const Tiles& tiles, uint32_t rule) const;
