@@ -141,20 +141,23 @@ TEST(DifferenceEstimate, PixelsWhosePathsMissTheEditShowTheStaleValueBitForBit) 
   EXPECT_GT(moved, 1.0) << "the recoloured wall is on screen";
 }
 
-// Relative errors against `reference` of what is shown after one 2-spp visit of every tile
-// following `edit`, and of the stale image before it, summed over seeds 1..`seeds`.
+// relMSE, against a `reference_spp` render of the edited scene, of what is shown after one 2-spp
+// visit of every tile following `edit` and of the stale image (`stale_spp`) before it, summed
+// over seeds 1..`seeds`.
 struct SubtleEditErrors {
   double shown = 0.0, stale = 0.0;
 };
 SubtleEditErrors subtle_edit_errors(const Scene& original, const Edit& edit,
                                     const RenderSettings& base, uint32_t stale_spp,
                                     uint32_t reference_spp, uint32_t seeds) {
-  std::vector<ImageRGB> shown, stale;
   Scene edited = original;
   apply_edit(edited, edit);
+  RenderSettings s = base;
+  s.seed = 99;
+  const ImageRGB reference = render(edited, s, reference_spp);
+  SubtleEditErrors errors;
   for (uint32_t seed = 1; seed <= seeds; ++seed) {
     Scene scene = original;
-    RenderSettings s = base;
     s.seed = seed;
     Renderer renderer(test::context(), scene, s);
     Scheduler scheduler(renderer, Policy::Scanline, renderer.tile_count());
@@ -162,20 +165,12 @@ SubtleEditErrors subtle_edit_errors(const Scene& original, const Edit& edit,
     scheduler.set_first_visit_spp(2);
     renderer.add_samples_full_frame(stale_spp);
     renderer.resolve_display_all(DisplayRule::Immediate);
-    stale.push_back(renderer.displayed_image());
+    errors.stale += relmse(renderer.displayed_image(), reference);
     const Scene before = scene;
     apply_edit(scene, edit);
     scheduler.on_edit(scene, diff_scenes(before, scene));
     scheduler.step();  // every tile, two samples
-    shown.push_back(scheduler.displayed_image());
-  }
-  RenderSettings s = base;
-  s.seed = 99;
-  const ImageRGB reference = render(edited, s, reference_spp);
-  SubtleEditErrors errors;
-  for (size_t i = 0; i < shown.size(); ++i) {
-    errors.shown += relmse(shown[i], reference);
-    errors.stale += relmse(stale[i], reference);
+    errors.shown += relmse(scheduler.displayed_image(), reference);
   }
   return errors;
 }
