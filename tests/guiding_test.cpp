@@ -149,6 +149,13 @@ TEST(Guiding, AnEditIsRenderedWithItsOwnGuide) {
   fresh.add_samples_full_frame(4);
   EXPECT_EQ(edited.image().rgb, fresh.image().rgb);
   EXPECT_NE(old_image.rgb, fresh.image().rgb) << "the edit changes the image";
+  // One training per scene state, its time counted; the guide's buffers are the same size.
+  EXPECT_EQ(edited.guide_cost().trainings, 2u);
+  EXPECT_EQ(fresh.guide_cost().trainings, 1u);
+  EXPECT_GT(edited.guide_cost().training_seconds, 0.0);
+  EXPECT_GT(edited.guide_cost().bytes, 0u);
+  EXPECT_EQ(edited.guide_cost().bytes, fresh.guide_cost().bytes);
+  EXPECT_EQ(Renderer(test::context(), before, settings(32, false)).guide_cost().bytes, 0u);
 }
 
 TEST(Guiding, HiprScheduleEndsOnTheFullFrameImageOfTheEdit) {

@@ -500,11 +500,12 @@ TEST_F(ViewerWindow, TheSelectedObjectIsRenderedFirst) {
 
 // The viewer shows the display denoised by default: its EXR screenshot (what the window shows,
 // in linear radiance) is `hipr render --denoise` of the same samples, bit for bit, and differs
-// from the plain display.
+// from the plain display. The render's --stats-json states what the filter costs.
 TEST(ViewerCli, TheDenoisedWindowIsTheDenoisedRender) {
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (package xvfb)";
   const fs::path dir = test::temp_dir("viewer-denoised");
   const fs::path shown = dir / "shown.exr", plain = dir / "plain.exr", render = dir / "render.exr";
+  const fs::path stats = dir / "stats.json";
   for (const auto& [shot, denoised] : {std::pair{shown, true}, std::pair{plain, false}}) {
     const test::CommandResult result = run_in_xvfb(
         view_arguments("--exit-after-frames 3 --screenshot " + quoted(shot), false, denoised));
@@ -513,10 +514,14 @@ TEST(ViewerCli, TheDenoisedWindowIsTheDenoisedRender) {
   const test::CommandResult rendered =
       test::run_hipr("render " + quoted(test::asset("cornell_box.gltf")) +
                      " --width 128 --height 128 --tile 16 --spp 2 --max-depth 4 --denoise -q -o " +
-                     quoted(render));
+                     quoted(render) + " --stats-json " + quoted(stats));
   ASSERT_EQ(rendered.exit_code, kExitOk) << rendered.output;
   EXPECT_EQ(read_image(shown).rgb, read_image(render).rgb);
   EXPECT_NE(read_image(shown).rgb, read_image(plain).rgb);
+  std::ifstream in(stats);
+  const nlohmann::json json = nlohmann::json::parse(in);
+  EXPECT_GT(json.at("denoise_filter_seconds").get<double>(), 0.0);
+  EXPECT_GT(json.at("denoise_seconds").get<double>(), 0.0);
 }
 
 TEST(ViewerCli, BadInputExitsTwoWithoutADisplay) {

@@ -84,6 +84,13 @@ struct RenderCounters {
   uint64_t guide_rays = 0;   // traced by the path guide's training (not in `rays`)
 };
 
+// What the path guide (RenderSettings::guiding) has cost so far; zeros without one.
+struct GuideCost {
+  uint32_t trainings = 0;         // one per scene state samples were added to
+  double training_seconds = 0.0;  // their wall time, the device's work waited for
+  uint64_t bytes = 0;             // the guide and its training sums, on the device
+};
+
 // How far the film's image still is from its converged limit, as its own samples tell
 // (Renderer::noise): what a noise target stops rendering at.
 struct FilmNoise {
@@ -150,6 +157,7 @@ class Renderer final : public ProgressiveRenderer {
   // The accumulation's noise, estimated on the GPU (8 bytes per 64 pixels read back).
   FilmNoise noise() const;
   RenderCounters counters() const;
+  GuideCost guide_cost() const;
   uint64_t samples_since_reset() const override { return counters().samples; }
   void reset_counters() override;  // on the GPU, no read-back
   void reset();
@@ -161,6 +169,8 @@ class Renderer final : public ProgressiveRenderer {
   // What the display shows, denoised by `settings` (enabled or not: disabled, or strength 0,
   // gives displayed_image() as it is). The display and the accumulation are left unchanged.
   ImageRGB denoised_image(const DenoiseSettings& settings);
+  // The filter alone, its result left on the device (what a frame of the viewer pays for it).
+  void run_denoiser(const DenoiseSettings& settings);
   bool relight(const std::vector<EmitterScale>& scales) override;
 
   // ---- The device state (methods attach their passes to it: HiPR's stages; the library's

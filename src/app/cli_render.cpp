@@ -30,6 +30,19 @@ struct RenderOptions {
   DenoiseSettings denoise;
 };
 
+// The median wall time of `runs` calls of `work`.
+template <typename Work>
+double median_seconds(int runs, Work&& work) {
+  std::vector<double> seconds;
+  for (int i = 0; i < runs; ++i) {
+    const Timer timer;
+    work();
+    seconds.push_back(timer.seconds());
+  }
+  std::nth_element(seconds.begin(), seconds.begin() + runs / 2, seconds.end());
+  return seconds[runs / 2];
+}
+
 int run_render(RenderOptions& o) {
   validate_common_options(o.common);
   log::set_quiet(o.common.quiet);
@@ -90,7 +103,7 @@ int run_render(RenderOptions& o) {
   const ImageRGB raw = renderer.image();
   // The denoised image is a copy made from the display: the accumulation stays as rendered.
   ImageRGB denoised;
-  double denoise_first_seconds = 0.0, denoise_seconds = 0.0;
+  double denoise_first_seconds = 0.0, denoise_seconds = 0.0, denoise_filter_seconds = 0.0;
   if (o.denoise.enabled) {
     renderer.resolve_display_all(DisplayRule::Immediate);
     const Timer first_timer;
@@ -100,10 +113,12 @@ int run_render(RenderOptions& o) {
       const Timer timer;
       denoised = renderer.denoised_image(o.denoise);
       denoise_seconds = timer.seconds();
+      denoise_filter_seconds = median_seconds(5, [&] { renderer.run_denoiser(o.denoise); });
     }
   }
   const ImageRGB& image = o.denoise.enabled ? denoised : raw;
   const RenderCounters counters = renderer.counters();
+  const GuideCost guide = renderer.guide_cost();
   check_validation(ctx);
   if (counters.non_finite_samples > 0)
     log::warn(std::to_string(counters.non_finite_samples) + " non-finite samples were dropped");
@@ -144,6 +159,9 @@ int run_render(RenderOptions& o) {
         // its guides traced) and again (what each later image costs); 0 without.
         {"denoise_first_seconds", denoise_first_seconds},
         {"denoise_seconds", denoise_seconds},
+        // The filter alone, as a viewer's frame pays it: no read-back (median of 5, each waited
+        // for: a submission's own overhead included).
+        {"denoise_filter_seconds", denoise_filter_seconds},
         {"setup_seconds", setup_seconds},
         // Of the set-up: building the meshes' acceleration structures, device wait included.
         {"blas_build_seconds", renderer.scene_stats().blas_build_seconds},
@@ -165,6 +183,9 @@ int run_render(RenderOptions& o) {
         {"extension_rays", counters.rays - counters.camera_rays - counters.shadow_rays},
         {"shadow_rays", counters.shadow_rays},
         {"guide_rays", counters.guide_rays},  // the guide's training (not in `rays`)
+        {"guide_trainings", guide.trainings},
+        {"guide_training_seconds", guide.training_seconds},  // inside render_seconds
+        {"guide_bytes", guide.bytes},
         {"device", ctx.device_name()},
         {"traversal", ctx.traversal_name()},
         {"scene_hash", scene.content_hash},

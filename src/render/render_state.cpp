@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/timer.h"
 #include "render/kernel_features.h"
 
 namespace hipr {
@@ -34,8 +35,11 @@ RenderState::RenderState(const vk::Context& c, const Scene& scene, const RenderS
 
 void RenderState::ensure_guide() const {
   if (!guide || !guide_stale) return;
+  const Timer timer;
   guide->train();
   guide_stale = false;
+  guide_cost.trainings += 1;
+  guide_cost.training_seconds += timer.seconds();
 }
 
 RenderState::~RenderState() = default;

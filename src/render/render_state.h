@@ -78,6 +78,7 @@ class RenderState {
   // every other way samples are added), so its cost counts where a render's time is measured.
   std::unique_ptr<GuidePass> guide;
   mutable bool guide_stale = true;
+  mutable GuideCost guide_cost;  // trainings and their time (bytes: Renderer::guide_cost)
   void ensure_guide() const;
   SampleTarget sample_target;
   // The viewer's overlays (viewer_sources.h), made on first use, and the GpuScene::

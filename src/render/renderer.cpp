@@ -185,6 +185,12 @@ std::vector<uint32_t> Renderer::sample_counts() const { return m->film.sample_co
 uint64_t Renderer::total_samples() const { return m->film.total_samples(); }
 FilmNoise Renderer::noise() const { return m->film.noise(); }
 RenderCounters Renderer::counters() const { return m->film.counters(); }
+
+GuideCost Renderer::guide_cost() const {
+  GuideCost cost = m->guide_cost;
+  if (m->guide) cost.bytes = m->gpu.guide.size() + m->gpu.guide_counts.size();
+  return cost;
+}
 void Renderer::reset_counters() { m->film.reset_counters(); }
 
 void Renderer::reset() {
@@ -215,10 +221,11 @@ void Renderer::capture_stale_display() {
 ImageRGB Renderer::displayed_image() const { return m->resolve.displayed_image(); }
 
 ImageRGB Renderer::denoised_image(const DenoiseSettings& settings) {
-  DenoisePass& denoiser = m->denoise_pass();
-  denoiser.run(settings);
-  return denoiser.result_image();
+  run_denoiser(settings);
+  return m->denoise_pass().result_image();
 }
+
+void Renderer::run_denoiser(const DenoiseSettings& settings) { m->denoise_pass().run(settings); }
 
 RenderState* Renderer::render_state() { return m.get(); }
 const RenderState& Renderer::state() const { return *m; }
