@@ -48,6 +48,17 @@ void edit_renderer(Renderer& renderer, Scene& scene, const Edit& edit) {
   renderer.mark_all_owed();
 }
 
+// A scanline scheduler showing the difference rule, 2-spp first visits, over `renderer`'s
+// converged image (`stale_spp` samples, shown): what the next edit's stale image will be.
+std::unique_ptr<Scheduler> difference_scheduler(Renderer& renderer, uint32_t stale_spp) {
+  auto scheduler = std::make_unique<Scheduler>(renderer, Policy::Scanline, renderer.tile_count());
+  scheduler->set_display_rule(DisplayRule::Difference);
+  scheduler->set_first_visit_spp(2);
+  renderer.add_samples_full_frame(stale_spp);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  return scheduler;
+}
+
 // A converged box (kStaleSpp samples, shown), edited, then two samples per pixel.
 std::unique_ptr<Renderer> converged_then_edited(Scene& scene, const Edit& edit, uint32_t seed) {
   auto renderer = std::make_unique<Renderer>(test::context(), scene, settings(seed));
@@ -110,17 +121,13 @@ TEST(DifferenceEstimate, PixelsWhosePathsMissTheEditShowTheStaleValueBitForBit) 
   Scene scene = box();
   const RenderSettings s = settings(3, 1);
   Renderer renderer(test::context(), scene, s);
-  Scheduler scheduler(renderer, Policy::Scanline, renderer.tile_count());
-  scheduler.set_display_rule(DisplayRule::Difference);
-  scheduler.set_first_visit_spp(2);
-  renderer.add_samples_full_frame(kStaleSpp);
-  renderer.resolve_display_all(DisplayRule::Immediate);
+  const auto scheduler = difference_scheduler(renderer, kStaleSpp);
   const ImageRGB stale = renderer.displayed_image();
   const Scene before = scene;
   apply_edit(scene, kRecolourRedWall);
-  scheduler.on_edit(scene, diff_scenes(before, scene));
-  scheduler.step();  // every tile, two samples
-  const ImageRGB shown = scheduler.displayed_image();
+  scheduler->on_edit(scene, diff_scenes(before, scene));
+  scheduler->step();  // every tile, two samples
+  const ImageRGB shown = scheduler->displayed_image();
   const DifferenceEstimates d = read_difference_estimates(renderer);
   // Which pixels' first two samples changed, from two plain renders with the same seed.
   const ImageRGB old_two = render(before, s, 2), new_two = render(scene, s, 2);
@@ -160,17 +167,13 @@ SubtleEditErrors subtle_edit_errors(const Scene& original, const Edit& edit,
     Scene scene = original;
     s.seed = seed;
     Renderer renderer(test::context(), scene, s);
-    Scheduler scheduler(renderer, Policy::Scanline, renderer.tile_count());
-    scheduler.set_display_rule(DisplayRule::Difference);
-    scheduler.set_first_visit_spp(2);
-    renderer.add_samples_full_frame(stale_spp);
-    renderer.resolve_display_all(DisplayRule::Immediate);
+    const auto scheduler = difference_scheduler(renderer, stale_spp);
     errors.stale += relmse(renderer.displayed_image(), reference);
     const Scene before = scene;
     apply_edit(scene, edit);
-    scheduler.on_edit(scene, diff_scenes(before, scene));
-    scheduler.step();  // every tile, two samples
-    errors.shown += relmse(scheduler.displayed_image(), reference);
+    scheduler->on_edit(scene, diff_scenes(before, scene));
+    scheduler->step();  // every tile, two samples
+    errors.shown += relmse(scheduler->displayed_image(), reference);
   }
   return errors;
 }
