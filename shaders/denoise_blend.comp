@@ -13,6 +13,8 @@
 // when f's own noise is small next to r's. A precise pixel (V = 0) shows r as it is; a 2-spp
 // pixel, whose noise dwarfs any bias, shows f. (f and r are correlated, so V / D over-weighs f
 // a little; the window keeps a from following one pixel's noise.)
+// A pixel the filter keeps shows what denoise_prepare.comp chose (its value, or the environment's
+// mean over its footprint).
 // Reads: the guides, keys, the display, the variance of each shown value, the last a-trous
 // pass's output. Writes: the denoised radiance.
 #extension GL_GOOGLE_include_directive : require
@@ -40,8 +42,8 @@ void main() {
   if (index >= u_push.width * u_push.height) return;
   const uint key = b_keys[index];
   const vec3 shown = b_display[index].shown;
-  if (key == kDenoiseKept) {
-    b_result[index] = shown;
+  if (key == kDenoiseKept) {  // what denoise_prepare.comp says it shows, through every pass
+    b_result[index] = b_filtered[index].rgb;
     return;
   }
   const ivec2 p = ivec2(index % u_push.width, index / u_push.width);

@@ -4,8 +4,8 @@
 // key that says which neighbours it may mix with.
 // Reads: the guides, the display (shown value, its samples, record and scene state), the
 // accumulation (sum, sum of squares, count), FrameParams. Writes: the input of the first a-trous
-// pass (vec4: demodulated radiance, variance), the variance again (for denoise_blend.comp), the
-// samples behind each value and the keys.
+// pass (vec4: demodulated radiance, variance; a kept pixel: the radiance it shows, kept_value),
+// the variance again (for denoise_blend.comp), the samples behind each value and the keys.
 //
 // The variance is the shown value's own: with hipr's display state (DenoisePush::displayState),
 // a pixel showing the edited scene takes its samples' variance over the samples behind what it
@@ -139,6 +139,34 @@ float spatial_variance(uvec2 pixel, uint key, float own) {
   return max(squares / float(count) - mean * mean, 0.0) * float(count) / float(count - 1u);
 }
 
+// What a pixel the filter keeps shows: its value, but for one whose footprint the guide saw
+// see only the environment (denoise_guides.comp) and that has fewer samples than the guide's
+// kFootprintLookups lookups, the environment's mean over the footprint: what its samples
+// converge to, known better than they tell it. Unless its own samples say otherwise: a sliver of
+// a surface (a cushion's rim) can lie between the guide's rays, and a sample that found it is
+// far from the environment's mean. The pixel's samples of the scene as it is now (not owed)
+// must then agree with the environment's mean within four standard errors (the environment's
+// spread over the footprint, over the samples and over the lookups) and spread no more than four
+// times the environment's own spread.
+vec3 kept_value(uint index) {
+  const vec3 shown = b_display[index].shown;
+  vec3 environment;
+  float deviation;
+  if (u_push.strength <= 0.0 || !footprint_environment(b_guides[index], environment, deviation)) return shown;
+  const PixelAccum accum = b_accum[index];
+  const uint n = accum.count & kPixelCountMask;
+  if (n == 0u || n >= kFootprintLookups || (accum.count & kPixelOwed) != 0u) return shown;
+  const vec3 mean = accum.sum / float(n);
+  const float floor = 1.0e-3 * denoise_luminance(environment) + kFootprintDeviationFloor;
+  const float error = abs(denoise_luminance(mean) - denoise_luminance(environment));
+  if (error > 4.0 * deviation * sqrt(1.0 / float(n) + 1.0 / float(kFootprintLookups)) + floor) return shown;
+  if (n >= 2u) {
+    const vec3 spread = sqrt(max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u));
+    if (denoise_luminance(spread) > 4.0 * deviation + floor) return shown;
+  }
+  return environment;
+}
+
 void main() {
   const uint index = dispatch_index();
   if (index >= u_push.width * u_push.height) return;
@@ -149,7 +177,7 @@ void main() {
   b_keys[index] = key;
   uint behind = 1u;
   if (key == kDenoiseKept) {
-    b_input[index] = vec4(radiance, 0.0);
+    b_input[index] = vec4(kept_value(index), 0.0);
     b_samples[index] = behind;
     b_variance[index] = 0.0;
     return;

@@ -42,6 +42,7 @@ layout(scalar, binding = kTraceMaterialGroups) readonly buffer MaterialGroups { 
 #include "common/dispersion.glsl"
 #include "common/shading.glsl"
 #include "common/environment.glsl"
+#include "common/pixel_ray.glsl"
 #include "common/lights.glsl"
 #include "common/guiding.glsl"
 #include "common/tile_pixels.glsl"
@@ -103,13 +104,6 @@ float bsdf_hit_weight(float bsdfPdf, float lightPdf) {
   if (HIPR_LIGHT_SAMPLING == kLightSamplingBsdfOnly) return 1.0;
   if (HIPR_LIGHT_SAMPLING == kLightSamplingLightOnly) return lightPdf > 0.0 ? 0.0 : 1.0;
   return power_heuristic(bsdfPdf, lightPdf);
-}
-
-vec3 camera_ray_direction(uvec2 pixel, vec2 jitter) {
-  const vec2 ndc = (vec2(pixel) + jitter) / vec2(u_frame.width, u_frame.height) * 2.0 - 1.0;
-  const float x = ndc.x * u_frame.tanHalfFovY * u_frame.aspect;
-  const float y = -ndc.y * u_frame.tanHalfFovY;  // image rows go down, camera +Y goes up
-  return normalize(u_frame.cameraForward + x * u_frame.cameraRight + y * u_frame.cameraUp);
 }
 
 // MIS weight for radiance found by BSDF sampling on an emissive triangle, from the vertex at

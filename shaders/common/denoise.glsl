@@ -38,6 +38,16 @@ vec3 demodulated(vec3 shown, DenoiseGuide guide) { return (shown - unpack_emissi
 // The inverse: the filtered value as radiance again.
 vec3 remodulated(vec3 value, DenoiseGuide guide) { return max(value * unpack_albedo(guide.albedo) + unpack_emission(guide), vec3(0.0)); }
 
+// A background pixel whose whole footprint sees the environment, as far as the guide's rays
+// tell: the environment's mean there and the standard deviation of its luminance
+// (denoise_guides.comp), where finite.
+bool footprint_environment(DenoiseGuide guide, out vec3 radiance, out float deviation) {
+  radiance = unpack_emission(guide);
+  deviation = unpackHalf2x16(guide.emissionB).y;
+  return guide.record == kInvalidIndex && deviation > 0.0 && !isinf(deviation) && !any(isinf(radiance)) &&
+         !any(isnan(radiance));
+}
+
 float denoise_luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 #endif

@@ -588,8 +588,16 @@ struct DenoiseGuide {
   uint normal;     // shading normal facing the camera, octahedral, two snorm16
   uint albedo;     // what the radiance is demodulated by: unorm8 RGB (A unused)
   uint emissionRG; // what the surface emits toward the camera, set apart before the filter:
-  uint emissionB;  // three halfs (infinite past half's range: such a pixel is shown as it is)
+  uint emissionB;  // three halfs (infinite past half's range: such a pixel is shown as it is);
+                   // background: the environment's mean over the pixel's footprint, where the
+                   // fourth half (emissionB's high half) is positive: the standard deviation of
+                   // its luminance there, at least kFootprintDeviationFloor (footprint_environment)
 };
+
+HIPR_CONST float kFootprintDeviationFloor = 1.0e-4;
+// The environment's mean over a pixel is that of this many stratified lookups: shown while the
+// pixel has fewer samples (denoise_prepare.comp: kept_value).
+HIPR_CONST uint kFootprintLookups = 128u;
 
 // A pixel's key in the filter (denoise_prepare.comp): neighbours mix only with equal keys.
 HIPR_CONST uint kDenoiseSurfaceMask = 0x1fffffffu;  // the surface shown, + 1
