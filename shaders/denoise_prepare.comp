@@ -155,7 +155,8 @@ vec3 kept_value(uint index) {
   if (u_push.strength <= 0.0 || !footprint_environment(b_guides[index], environment, deviation)) return shown;
   const PixelAccum accum = b_accum[index];
   const uint n = accum.count & kPixelCountMask;
-  if (n == 0u || n >= kFootprintLookups || (accum.count & kPixelOwed) != 0u) return shown;
+  if (n >= kFootprintLookups || (accum.count & kPixelOwed) != 0u) return shown;
+  if (n == 0u) return environment;  // nothing rendered yet since the start, nothing to disagree
   const vec3 mean = accum.sum / float(n);
   const float floor = 1.0e-3 * denoise_luminance(environment) + kFootprintDeviationFloor;
   const float error = abs(denoise_luminance(mean) - denoise_luminance(environment));

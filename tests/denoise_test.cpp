@@ -253,7 +253,8 @@ TEST(Denoise, ShowsTheEnvironmentSeenDirectlyAsItsMeanOverEachPixel) {
 }
 
 // A pixel whose samples saw something the guide's rays did not (a sliver of a surface between
-// them) is shown as it is: its samples disagree with the environment's mean.
+// them) is shown as it is: its samples disagree with the environment's mean. One whose samples
+// agree, or that has none yet, shows the environment's mean.
 TEST(Denoise, AnEnvironmentPixelWhoseSamplesSawASurfaceIsShownAsItIs) {
   Renderer renderer(test::context(), card_under_checked_environment(),
                     test::render_settings(kSize, kSize, 8, 4, 0));
@@ -271,6 +272,12 @@ TEST(Denoise, AnEnvironmentPixelWhoseSamplesSawASurfaceIsShownAsItIs) {
   // give or take what the pixel's few lookups of it differ by), shows the environment's mean.
   EXPECT_NE(denoised.rgb[3 * (corner + 1)], 0.5f);
   EXPECT_NEAR(denoised.rgb[3 * (corner + 1)], 0.525f, 0.1f);
+  // One with no samples yet (the render has just begun) shows it too.
+  pixels[corner + 2].samples = 0;
+  write_display(renderer, pixels);
+  const ImageRGB started = renderer.denoised_image(denoise_on());
+  EXPECT_NEAR(started.rgb[3 * (corner + 2)], 0.525f, 0.1f);
+  EXPECT_NE(started.rgb[3 * (corner + 2)], 0.5f);
 }
 
 }  // namespace
