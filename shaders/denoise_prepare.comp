@@ -158,12 +158,13 @@ vec3 kept_value(uint index) {
   if (n >= kFootprintLookups || (accum.count & kPixelOwed) != 0u) return shown;
   if (n == 0u) return environment;  // nothing rendered yet since the start, nothing to disagree
   const vec3 mean = accum.sum / float(n);
-  const float floor = 1.0e-3 * denoise_luminance(environment) + kFootprintDeviationFloor;
+  // Half's rounding of the mean, and a floor for an environment of one colour.
+  const float margin = 1.0e-3 * denoise_luminance(environment) + kFootprintDeviationFloor;
   const float error = abs(denoise_luminance(mean) - denoise_luminance(environment));
-  if (error > 4.0 * deviation * sqrt(1.0 / float(n) + 1.0 / float(kFootprintLookups)) + floor) return shown;
+  if (error > 4.0 * deviation * sqrt(1.0 / float(n) + 1.0 / float(kFootprintLookups)) + margin) return shown;
   if (n >= 2u) {
     const vec3 spread = sqrt(max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u));
-    if (denoise_luminance(spread) > 4.0 * deviation + floor) return shown;
+    if (denoise_luminance(spread) > 4.0 * deviation + margin) return shown;
   }
   return environment;
 }
