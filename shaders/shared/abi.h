@@ -311,7 +311,7 @@ struct DisplayTexel {
 // the old one. Values are kept as floats rounded to a half's precision (11 significant bits, no
 // clamp to its range): a value the edit did not change rounds the same on both sides, so its
 // difference is exactly zero, and the sun's nits are kept as they are.
-HIPR_CONST uint kDifferenceSamples = 4u;
+HIPR_CONST uint kDifferenceSamples = 2u;
 // DifferenceRecord::values, three per colour: the kept samples (slot j at 3j), then since the
 // last edit, for the differenced samples i (d_i = new_i - old_i; w = 1 / (stale^2 + 0.01), the
 // weights relMSE gives errors): the sum of d_i, the sums of w d_i (old_i - stale) and of
@@ -319,17 +319,17 @@ HIPR_CONST uint kDifferenceSamples = 4u;
 // noise the new ones replaced) and, last, one value: the sum over channels of w d_i^2. A sum that
 // overflows (beyond any radiance a scene may hold, scene/scene_limits.h) marks a sample too bright
 // to judge (resolve_display.comp keeps the pixel's stale value).
-HIPR_CONST uint kDifferenceSum = 12u;
-HIPR_CONST uint kDifferenceCross = 15u;
-HIPR_CONST uint kDifferenceOld = 18u;
-HIPR_CONST uint kDifferenceSquares = 21u;
-HIPR_CONST uint kDifferenceValues = 22u;
-// DisplayTexel::flags bits 7-9: how many kept samples are of the scene state the stale estimate
+HIPR_CONST uint kDifferenceSum = 6u;
+HIPR_CONST uint kDifferenceCross = 9u;
+HIPR_CONST uint kDifferenceOld = 12u;
+HIPR_CONST uint kDifferenceSquares = 15u;
+HIPR_CONST uint kDifferenceValues = 16u;
+// DisplayTexel::flags bits 4-5: how many kept samples are of the scene state the stale estimate
 // is of (0: no difference estimate). Set by the capture, cleared by a relight.
-HIPR_CONST uint kDifferenceValidShift = 7u;
-HIPR_CONST uint kDifferenceValidMask = 7u;
+HIPR_CONST uint kDifferenceValidShift = 4u;
+HIPR_CONST uint kDifferenceValidMask = 3u;
 
-// 88 bytes per pixel (resolve_display.comp reads it; trace_tiles.comp writes it).
+// 64 bytes per pixel (resolve_display.comp reads it; trace_tiles.comp writes it).
 struct DifferenceRecord {
   float values[kDifferenceValues];
 };
