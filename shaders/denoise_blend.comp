@@ -2,7 +2,7 @@
 // The display denoiser's last kernel: how much of the filtered value each pixel shows. The
 // filter trades noise for bias (a shading gradient averaged over its footprint): where the
 // pixel's own estimate is precise, the bias is the larger error. As hipr's display rules weigh a
-// stale estimate against a fresh one (resolve_display.comp), over the 7 x 7 pixels of the same
+// stale estimate against a fresh one (resolve_display.comp), over the 11 x 11 pixels of the same
 // key around it, with r the shown value and f the filtered one (luminances of radiance), each
 // pixel weighed as relMSE weighs errors, w = 1 / (r^2 + 0.01), as the display rules do:
 //   D = sum w (f - r)^2   (E[D] ~ B + V: the filter's squared bias, and r's noise)
@@ -13,6 +13,14 @@
 // when f's own noise is small next to r's. A precise pixel (V = 0) shows r as it is; a 2-spp
 // pixel, whose noise dwarfs any bias, shows f. (f and r are correlated, so V / D over-weighs f
 // a little; the window keeps a from following one pixel's noise.)
+// What is mixed in is f scaled to the window's own mean, 1 + s (R / F - 1), R and F the window's
+// sums of r and f, s = G / (G + Var R) with G = (R - F)^2: how far the difference stands out
+// of R's noise. The a-trous passes weigh a neighbour by how alike its value is, and a few
+// samples are skewed (most paths miss the light, a few find it): the many dim pixels take little
+// from the rare bright ones, and the filtered image is darker than its samples (the Cornell
+// box's walls 2-4 % at 4 spp, its small block's dark face 24 %). R is unbiased; the ratio of
+// two sums of about a hundred pixels is close to its limit, and where a firefly makes R differ,
+// its variance makes s small.
 // A pixel the filter keeps shows what denoise_prepare.comp chose (its value, or the environment's
 // mean over its footprint).
 // Reads: the guides, keys, the display, the variance of each shown value, the last a-trous
@@ -35,7 +43,9 @@ layout(scalar, binding = kDenoiseVariance) readonly buffer Variance { float b_va
 layout(scalar, binding = kDenoiseResult) writeonly buffer Result { vec3 b_result[]; };
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
-const int kWindowRadius = 3;
+const int kWindowRadius = 5;
+// Beyond this the window's sums differ by a firefly, not by the weights' lean.
+const float kMaxMeanRatio = 2.0;
 
 void main() {
   const uint index = dispatch_index();
@@ -47,7 +57,9 @@ void main() {
     return;
   }
   const ivec2 p = ivec2(index % u_push.width, index / u_push.width);
-  float difference = 0.0, noise = 0.0;
+  float difference = 0.0, noise = 0.0;     // D and V, weighed as relMSE weighs errors
+  float rawSum = 0.0, filteredSum = 0.0;  // the window's luminance, shown and filtered
+  float rawVariance = 0.0;                 // the variance of rawSum
   for (int dy = -kWindowRadius; dy <= kWindowRadius; ++dy)
     for (int dx = -kWindowRadius; dx <= kWindowRadius; ++dx) {
       const ivec2 q = p + ivec2(dx, dy);
@@ -57,16 +69,25 @@ void main() {
       const DenoiseGuide other = b_guides[neighbour];
       const vec3 albedo = unpack_albedo(other.albedo);
       const vec3 shownThere = b_display[neighbour].shown;
-      const float d = denoise_luminance((b_filtered[neighbour].rgb - demodulated(shownThere, other)) * albedo);
+      const float r = denoise_luminance(demodulated(shownThere, other) * albedo);
+      const float f = denoise_luminance(b_filtered[neighbour].rgb * albedo);
       const float l = denoise_luminance(shownThere);
       const float w = 1.0 / (l * l + 0.01);
       const float a = denoise_luminance(albedo);
-      difference += w * d * d;
-      noise += w * b_variance[neighbour] * a * a;
+      const float variance = b_variance[neighbour] * a * a;
+      difference += w * (f - r) * (f - r);
+      noise += w * variance;
+      rawSum += r;
+      filteredSum += f;
+      rawVariance += variance;
     }
   const float weight = difference > noise ? noise / difference : 1.0;
+  const float gap = (rawSum - filteredSum) * (rawSum - filteredSum);
+  const float significance = gap > 0.0 ? gap / (gap + rawVariance) : 0.0;
+  const float ratio = filteredSum > 0.0 ? clamp(rawSum / filteredSum, 1.0 / kMaxMeanRatio, kMaxMeanRatio) : 1.0;
+  const float restore = 1.0 + significance * (ratio - 1.0);
   const DenoiseGuide guide = b_guides[index];
   const vec3 raw = demodulated(shown, guide);
-  const vec3 radiance = remodulated(raw + weight * (b_filtered[index].rgb - raw), guide);
+  const vec3 radiance = remodulated(raw + weight * (restore * b_filtered[index].rgb - raw), guide);
   b_result[index] = any(isinf(radiance)) || any(isnan(radiance)) ? shown : radiance;
 }
