@@ -465,6 +465,51 @@ TEST(Session, ANoiseTargetPausesAtAnImageThatClean) {
   EXPECT_GT(session.work_since_edit(), 2.0 * paused_at) << "relMSE falls as 1/samples";
 }
 
+// The denoiser hides noise while the image converges; once a noise target of
+// kRawIsCleanerRelmse or less is met the window shows the raw image, the full-frame render of its
+// samples bit for bit, unless the target keeps it denoised. Met at a looser target, or paused at
+// the sample limit, noise is left: it stays denoised.
+TEST(Session, OnceTheImageIsCleanTheWindowShowsTheRawImage) {
+  DenoiseSettings denoise;
+  denoise.enabled = true;
+  SessionSettings s = small_settings();
+  s.spp = 4096;
+  s.converge.relmse = 0.01;
+  Session session(test::context(), cornell(), s);
+  session.render(1e9, 4);
+  EXPECT_TRUE(session.shows_denoised(denoise));
+  EXPECT_NE(session.shown(denoise).rgb, session.displayed().rgb);
+  converge(session);
+  EXPECT_TRUE(session.shows_denoised(denoise)) << "a loose target leaves noise";
+
+  ConvergenceTarget clean = s.converge;
+  clean.relmse = kRawIsCleanerRelmse;
+  session.set_convergence(s.spp, clean);
+  converge(session);
+  EXPECT_FALSE(session.shows_denoised(denoise));
+  const uint32_t samples = session.renderer().sample_count_range().second;
+  EXPECT_EQ(session.shown(denoise).rgb,
+            test::full_frame_display(session.scene(), s.render, samples).rgb);
+
+  ConvergenceTarget keep = clean;
+  keep.keep_denoised = true;
+  session.set_convergence(s.spp, keep);
+  EXPECT_TRUE(session.converged()) << "no target changed: the met one stays met";
+  EXPECT_TRUE(session.shows_denoised(denoise));
+  EXPECT_NE(session.shown(denoise).rgb, session.displayed().rgb);
+
+  session.set_convergence(s.spp, clean);
+  session.edit(MaterialEdit{"red", {{"base_color", {0.05f, 0.1f, 0.65f}}}});
+  EXPECT_TRUE(session.shows_denoised(denoise)) << "an edit is noisy again";
+
+  SessionSettings limited = small_settings();
+  limited.spp = 4;
+  limited.converge.relmse = 1e-6;
+  Session at_limit(test::context(), cornell(), limited);
+  converge(at_limit);
+  EXPECT_TRUE(at_limit.shows_denoised(denoise)) << "paused by --spp, not clean";
+}
+
 // A time target pauses at the first round's end after it has passed, never before every pixel
 // shows the scene as it is now: an edit is never left half rendered.
 TEST(Session, ATimeTargetWaitsForEveryPixelToShowTheScene) {

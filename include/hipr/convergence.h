@@ -15,15 +15,29 @@ struct ConvergenceTarget {
   // Rendering pauses once the image's expected relMSE against its own limit (FilmNoise, from the
   // pixels' sample variances) is at most this (0: no noise target).
   double relmse = 0.0;
+  // Once a noise target at or below kRawIsCleanerRelmse is met, the window shows the raw image
+  // (false), the full-frame render of its samples bit for bit, or keeps the denoised one (true).
+  // Paused by the sample limit, the time target or a looser noise target, noise may remain: the
+  // denoised image stays.
+  bool keep_denoised = false;
 
   bool operator==(const ConvergenceTarget&) const = default;
 };
+
+// The image's expected relMSE below which the raw image is closer to the truth than the
+// denoised one: the denoiser hides noise while the image converges, but its bias does not fade
+// as fast as the noise. Measured (FLIP against 2048-spp references, 128x128; in brackets the raw
+// image's relMSE): the Cornell box at 64 spp (1.1e-3) 0.0336 denoised against 0.0353 raw, at 268
+// spp (2.5e-4) 0.0233 against 0.0211; SheenChair at 16 spp (3.4e-3) 0.0206 against 0.0228, at 64
+// spp (7.8e-4) 0.0138 against 0.0120 (BENCHMARKS.md, "What the viewer shows when the image is
+// clean"). The viewer's default noise target is this level too.
+inline constexpr double kRawIsCleanerRelmse = 5e-4;
 
 struct ConvergenceSettingInfo {
   const char* name;  // the viewer panel's label
   const char* flag;
   const char* help;
-  double min, max;  // the range the flag accepts and the panel offers
+  double min = 0.0, max = 0.0;  // numbers: the range the flag accepts and the panel offers
 };
 
 // Calls `visit(info, field)` for every setting, in the order help and panel list them.
@@ -40,6 +54,11 @@ void for_each_convergence_setting(Settings& s, Visitor&& visit) {
                                "at most this (0: none; --spp still applies)",
                                0.0, 1.0},
         s.relmse);
+  visit(ConvergenceSettingInfo{"keep denoised", "--keep-denoised",
+                               "Keep showing the denoised image once a noise target of 5e-4 or "
+                               "less is met (by default the window then shows the raw image: the "
+                               "full-frame render of its samples, bit for bit)"},
+        s.keep_denoised);
 }
 
 }  // namespace hipr

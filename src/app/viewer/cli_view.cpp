@@ -46,11 +46,18 @@ constexpr double kViewerRelmse = 5e-4;
 
 void add_convergence_flags(CLI::App& cmd, ConvergenceTarget& target) {
   target.relmse = kViewerRelmse;
-  for_each_convergence_setting(target, [&cmd](const ConvergenceSettingInfo& info, double& value) {
-    cmd.add_option(info.flag, value, info.help)
-        ->capture_default_str()
-        ->check(CLI::Range(info.min, info.max));
-  });
+  struct FlagBinder {
+    CLI::App& cmd;
+    void operator()(const ConvergenceSettingInfo& info, double& value) const {
+      cmd.add_option(info.flag, value, info.help)
+          ->capture_default_str()
+          ->check(CLI::Range(info.min, info.max));
+    }
+    void operator()(const ConvergenceSettingInfo& info, bool& value) const {
+      cmd.add_flag(info.flag, value, info.help);
+    }
+  };
+  for_each_convergence_setting(target, FlagBinder{cmd});
 }
 
 int run_view(ViewCommandOptions& o) {

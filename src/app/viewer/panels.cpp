@@ -244,6 +244,10 @@ struct ConvergenceWidgets {
     }
     tooltip(info.help);
   }
+  void operator()(const ConvergenceSettingInfo& info, bool& value) const {
+    changed |= ImGui::Checkbox(info.name, &value);
+    tooltip(info.help);
+  }
 };
 
 void convergence_section(Session& session, ViewerState& state) {
@@ -263,6 +267,8 @@ void convergence_section(Session& session, ViewerState& state) {
     ImGui::Text("noise: relMSE %.3g (%s)", noise->relmse,
                 noise->unknown_pixels ? "some pixels unknown" : "estimated");
   ImGui::TextDisabled("the time and noise targets wait for every pixel to show the scene");
+  if (state.denoise.enabled && !session.shows_denoised(state.denoise))
+    ImGui::Text("clean: the window shows the raw image");
 }
 
 void display_section(ViewerState& state) {

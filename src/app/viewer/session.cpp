@@ -161,9 +161,12 @@ void Session::check_noise() {
 void Session::set_convergence(uint32_t spp, const ConvergenceTarget& target) {
   const ScheduleSettings schedule = resolved_schedule();
   m_settings.spp = std::max({spp, schedule.visit_spp, schedule.first_visit_spp, 1u});
+  const bool targets_changed =
+      m_settings.converge.seconds != target.seconds || m_settings.converge.relmse != target.relmse;
   m_settings.converge = target;
   m_scheduler->configure(resolved_schedule(), m_settings.spp);
-  restart_noise_checks();
+  // What is shown once clean changes no target: a met one stays met.
+  if (targets_changed) restart_noise_checks();
 }
 
 uint32_t Session::render(double budget_seconds, uint32_t max_steps) {
@@ -199,8 +202,14 @@ const ImageRGB& Session::displayed() {
   return m_displayed;
 }
 
+bool Session::shows_denoised(const DenoiseSettings& denoise) const {
+  if (!denoise.enabled) return false;
+  if (m_settings.converge.keep_denoised) return true;
+  return !(converged() && m_noise_met && m_noise->relmse <= kRawIsCleanerRelmse);
+}
+
 ImageRGB Session::shown(const DenoiseSettings& denoise) {
-  return denoise.enabled ? m_renderer->denoised_image(denoise) : displayed();
+  return shows_denoised(denoise) ? m_renderer->denoised_image(denoise) : displayed();
 }
 
 bool Session::edit_shown_unpresented() const {

@@ -97,7 +97,10 @@ class Session {
   // since the last call): screenshots and tests. The viewer's frames show the renderer's display
   // buffer directly (display_texels, render/viewer_sources.h).
   const ImageRGB& displayed();
-  // What the window shows: displayed(), or its denoised copy when `denoise` is enabled.
+  // Whether the window shows the denoised copy: `denoise` is enabled, and the noise target is
+  // not met yet or the target keeps it denoised (ConvergenceTarget::keep_denoised).
+  bool shows_denoised(const DenoiseSettings& denoise) const;
+  // What the window shows: displayed(), or its denoised copy (shows_denoised).
   ImageRGB shown(const DenoiseSettings& denoise);
   // Increments whenever the display may have changed (steps, edits, a new renderer).
   uint64_t display_version() const { return m_display_version; }

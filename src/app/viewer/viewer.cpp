@@ -270,9 +270,10 @@ void Viewer::update_overlay() {
 
 // The display pass reads the renderer's display buffer itself: only a new renderer needs
 // telling. Denoised, it reads the denoiser's copy, recorded again into the frame (before the
-// display pass) when the display or the settings changed.
+// display pass) when the display or the settings changed; once the noise target is met, the
+// display itself again (Session::shows_denoised).
 void Viewer::update_source(VkCommandBuffer cmd) {
-  const bool denoised = m_state.denoise.enabled;
+  const bool denoised = m_session->shows_denoised(m_state.denoise);
   const SourceKey key{m_session->renderer_id(), denoised ? m_session->display_version() : 0,
                       denoised ? m_state.denoise : DenoiseSettings{}};
   if (key == m_source_key) return;
