@@ -6,6 +6,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
+#include <random>
 
 #include "core/error.h"
 #include "image/auto_exposure.h"
@@ -129,6 +130,24 @@ TEST(AutoExposure, IgnoresBlackAndNonFinitePixelsAndStaysInRange) {
               std::log2(0.8f / 2.0f), 1e-5f);
   EXPECT_EQ(metered_exposure_ev({1e-30f, 1e-30f, 1e-30f}), kMaxExposureEv);
   EXPECT_EQ(metered_exposure_ev({1e30f, 1e30f, 1e30f}), kMinExposureEv);
+}
+
+// The device's meter (render/exposure_meter.h) bins log2 luminances by 1/16 of a stop; read
+// from the bins, the rule meters within half a bin of the pixels' own percentile.
+TEST(AutoExposure, AHistogramOfLog2LuminancesMetersAsThePixelsDo) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> stops(-12.0f, 6.0f);
+  for (int image = 0; image < 20; ++image) {
+    LuminanceHistogram histogram{std::vector<uint32_t>(1024, 0u), -40.0f, 16.0f};
+    std::vector<float> rgb;
+    for (int i = 0; i < 500; ++i) {
+      const float y = std::exp2(stops(rng));
+      rgb.insert(rgb.end(), {y, y, y});
+      ++histogram.counts[size_t(std::floor((std::log2(y) + 40.0f) * 16.0f))];
+    }
+    EXPECT_NEAR(histogram_exposure_ev(histogram), metered_exposure_ev(rgb), 0.5f / 16.0f + 1e-5f);
+  }
+  EXPECT_EQ(histogram_exposure_ev({std::vector<uint32_t>(1024, 0u), -40.0f, 16.0f}), 0.0f);
 }
 
 // A white (0.8) diffuse floor reaching to the horizon under each built-in environment, the

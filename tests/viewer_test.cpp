@@ -18,6 +18,7 @@
 #include "hipr/hipr_stages.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
+#include "image/auto_exposure.h"
 #include "image/debug_images.h"
 #include "image/tonemap.h"
 #include "render/display_pass.h"
@@ -463,6 +464,16 @@ TEST(Session, ANoiseTargetPausesAtAnImageThatClean) {
   converge(session);
   EXPECT_TRUE(session.noise()->within(0.0025));
   EXPECT_GT(session.work_since_edit(), 2.0 * paused_at) << "relMSE falls as 1/samples";
+}
+
+// The viewer's automatic exposure is metered on the device from a histogram (4 KB read back):
+// the exposure the host meters from the whole display, within half a bin (1/32 of a stop).
+TEST(Session, TheDevicesExposureMeterIsTheHostsMeterOfTheDisplay) {
+  Session session(test::context(), cornell(), small_settings());
+  session.render(1e9, 6);
+  const float host = metered_exposure_ev(session.displayed().rgb);
+  EXPECT_NEAR(session.metered_exposure(), host, 0.5f / 16.0f + 1e-5f);
+  EXPECT_NE(host, 0.0f) << "a lit image";
 }
 
 // The denoiser hides noise while the image converges; once a noise target of

@@ -4,6 +4,14 @@
 #include <cmath>
 
 namespace hipr {
+namespace {
+
+float exposure_for(float luminance) {
+  const float ev = std::log2(kMeteredDisplayValue / luminance);
+  return std::isfinite(ev) ? std::clamp(ev, kMinExposureEv, kMaxExposureEv) : 0.0f;
+}
+
+}  // namespace
 
 float metered_exposure_ev(const std::vector<float>& rgb) {
   std::vector<float> lit;
@@ -15,8 +23,20 @@ float metered_exposure_ev(const std::vector<float>& rgb) {
   if (lit.empty()) return 0.0f;
   const size_t rank = std::min(lit.size() - 1, size_t(kMeteredPercentile * float(lit.size())));
   std::nth_element(lit.begin(), lit.begin() + std::ptrdiff_t(rank), lit.end());
-  const float ev = std::log2(kMeteredDisplayValue / lit[rank]);
-  return std::isfinite(ev) ? std::clamp(ev, kMinExposureEv, kMaxExposureEv) : 0.0f;
+  return exposure_for(lit[rank]);
+}
+
+float histogram_exposure_ev(const LuminanceHistogram& histogram) {
+  uint64_t lit = 0;
+  for (uint32_t count : histogram.counts) lit += count;
+  if (lit == 0) return 0.0f;
+  // The same rank as above: the first bin whose running count passes it.
+  const uint64_t rank = std::min(lit - 1, uint64_t(kMeteredPercentile * float(lit)));
+  uint64_t below = 0;
+  size_t bin = 0;
+  while (below + histogram.counts[bin] <= rank) below += histogram.counts[bin++];
+  const float stop = histogram.lowest_stop + (float(bin) + 0.5f) / histogram.bins_per_stop;
+  return exposure_for(std::exp2(stop));
 }
 
 }  // namespace hipr

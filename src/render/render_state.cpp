@@ -82,4 +82,11 @@ DenoisePass& RenderState::denoise_pass() {
   return *denoiser;
 }
 
+ExposureMeter& RenderState::exposure_meter() {
+  if (!exposure)
+    exposure =
+        std::make_unique<ExposureMeter>(ctx, resolve.display, settings.width, settings.height);
+  return *exposure;
+}
+
 }  // namespace hipr

@@ -9,6 +9,7 @@
 
 #include "hipr/renderer.h"
 #include "render/denoise_pass.h"
+#include "render/exposure_meter.h"
 #include "render/film.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
@@ -89,6 +90,9 @@ class RenderState {
   // denoised image never compile its kernels.
   std::unique_ptr<DenoisePass> denoiser;
   DenoisePass& denoise_pass();
+  // The viewer's exposure meter over the display (exposure_meter.h), made on first use.
+  std::unique_ptr<ExposureMeter> exposure;
+  ExposureMeter& exposure_meter();
   // The method's passes (made by the method on first use; declared last: they refer to the
   // members above and go first).
   std::unique_ptr<RenderExtension> extension;

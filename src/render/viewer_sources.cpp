@@ -12,6 +12,10 @@ const vk::Buffer& denoised_display(Renderer& renderer) {
   return renderer.render_state()->denoise_pass().result;
 }
 
+float metered_display_exposure(Renderer& renderer) {
+  return renderer.render_state()->exposure_meter().metered_ev();
+}
+
 void record_denoise(Renderer& renderer, VkCommandBuffer cmd, const DenoiseSettings& settings) {
   renderer.render_state()->denoise_pass().record(cmd, settings);
 }

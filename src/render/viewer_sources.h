@@ -20,6 +20,10 @@ const vk::Buffer& denoised_display(Renderer& renderer);
 // frame: no submission of its own.
 void record_denoise(Renderer& renderer, VkCommandBuffer cmd, const DenoiseSettings& settings);
 
+// The exposure in stops for what the display shows (image/auto_exposure.h's rule, to 1/16 of a
+// stop), metered on the device: 4 KB read back, not the display.
+float metered_display_exposure(Renderer& renderer);
+
 // The viewer's overlays, made on the device into `output` (one RGBA8 word per pixel: the
 // display pass's overlay buffer) from what the renderer holds there: object ids of the G-buffer,
 // stage 2's tile weights, the tiles still owed a restart; and the outline of `selected_node` on

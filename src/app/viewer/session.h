@@ -119,6 +119,9 @@ class Session {
   // Makes an overlay on the device into `output` (Renderer::render_overlay), the G-buffer
   // brought up to date first where ids or an outline need it.
   void render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output);
+  // The exposure in stops for what the display shows, metered on the device
+  // (hipr::metered_display_exposure: 4 KB read back).
+  float metered_exposure() { return metered_display_exposure(*m_renderer); }
   // The denoiser's result and its recording into a frame (hipr::denoised_display,
   // hipr::record_denoise).
   const vk::Buffer& denoised_display();

@@ -101,8 +101,10 @@ Viewer::Viewer(const ViewerOptions& options, Scene scene)
                ":\ncompiling the path tracer (the first start with a scene can take a minute or "
                "two on a CPU)");
   m_session = std::make_unique<Session>(m_ctx, std::move(scene), settings);
-  // The denoiser's pass made (and compiled) now, not in the first frame that renders.
+  // The denoiser's pass and the exposure meter made (and compiled) now, not in the first frame
+  // that renders.
   if (m_state.denoise.enabled) m_session->denoised_display();
+  if (m_state.auto_exposure) m_session->metered_exposure();
   log::info("viewer on " + m_ctx.device_name() + " (" + m_ctx.traversal_name() + " traversal), " +
             m_presenter->description());
 }
