@@ -15,10 +15,10 @@ struct ConvergenceTarget {
   // Rendering pauses once the image's expected relMSE against its own limit (FilmNoise, from the
   // pixels' sample variances) is at most this (0: no noise target).
   double relmse = 0.0;
-  // Once a noise target at or below kRawIsCleanerRelmse is met, the window shows the raw image
-  // (false), the full-frame render of its samples bit for bit, or keeps the denoised one (true).
-  // Paused by the sample limit, the time target or a looser noise target, noise may remain: the
-  // denoised image stays.
+  // Once the noise target is met with the image's estimated relMSE at most kRawIsCleanerRelmse
+  // (the default target meets it), the window shows the raw image (false), the full-frame render
+  // of its samples bit for bit, or keeps the denoised one (true). Paused by the sample limit, the
+  // time target or a looser noise target's estimate, noise may remain: the denoised image stays.
   bool keep_denoised = false;
 
   bool operator==(const ConvergenceTarget&) const = default;
@@ -55,9 +55,10 @@ void for_each_convergence_setting(Settings& s, Visitor&& visit) {
                                0.0, 1.0},
         s.relmse);
   visit(ConvergenceSettingInfo{"keep denoised", "--keep-denoised",
-                               "Keep showing the denoised image once a noise target of 5e-4 or "
-                               "less is met (by default the window then shows the raw image: the "
-                               "full-frame render of its samples, bit for bit)"},
+                               "Keep showing the denoised image once the noise target is met with "
+                               "an estimated relMSE of 5e-4 or less (by default the window then "
+                               "shows the raw image: the full-frame render of its samples, bit "
+                               "for bit)"},
         s.keep_denoised);
 }
 

@@ -97,8 +97,9 @@ class Session {
   // since the last call): screenshots and tests. The viewer's frames show the renderer's display
   // buffer directly (display_texels, render/viewer_sources.h).
   const ImageRGB& displayed();
-  // Whether the window shows the denoised copy: `denoise` is enabled, and the noise target is
-  // not met yet or the target keeps it denoised (ConvergenceTarget::keep_denoised).
+  // Whether the window shows the denoised copy: `denoise` is enabled, and the image is not clean
+  // yet (the noise target met with an estimate of at most kRawIsCleanerRelmse) or the target
+  // keeps it denoised (ConvergenceTarget::keep_denoised).
   bool shows_denoised(const DenoiseSettings& denoise) const;
   // What the window shows: displayed(), or its denoised copy (shows_denoised).
   ImageRGB shown(const DenoiseSettings& denoise);
