@@ -20,11 +20,13 @@
 // from the rare bright ones, and the filtered image is darker than its samples (the Cornell
 // box's walls 2-4 % at 4 spp, its small block's dark face 24 %). R is unbiased; the ratio of
 // two sums of about a hundred pixels is close to its limit, and where a firefly makes R differ,
-// its variance makes s small.
+// its variance makes s small. The correction is for what the pixel took from its neighbours:
+// it is scaled by their mean samples over the pixel's own (at most 1), so a precise pixel among
+// noisy ones, which the filter left as it was, keeps its value.
 // A pixel the filter keeps shows what denoise_prepare.comp chose (its value, or the environment's
 // mean over its footprint).
-// Reads: the guides, keys, the display, the variance of each shown value, the last a-trous
-// pass's output. Writes: the denoised radiance.
+// Reads: the guides, keys, samples and the variance of each shown value, the display, the last
+// a-trous pass's output. Writes: the denoised radiance.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -40,6 +42,7 @@ layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel
 layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) readonly buffer Filtered { vec4 b_filtered[]; };
 layout(scalar, binding = kDenoiseVariance) readonly buffer Variance { float b_variance[]; };
+layout(scalar, binding = kDenoiseSamples) readonly buffer Samples { uint b_samples[]; };
 layout(scalar, binding = kDenoiseResult) writeonly buffer Result { vec3 b_result[]; };
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
@@ -60,6 +63,7 @@ void main() {
   float difference = 0.0, noise = 0.0;     // D and V, weighed as relMSE weighs errors
   float rawSum = 0.0, filteredSum = 0.0;  // the window's luminance, shown and filtered
   float rawVariance = 0.0;                 // the variance of rawSum
+  float neighbourSamples = 0.0, neighbours = 0.0;
   for (int dy = -kWindowRadius; dy <= kWindowRadius; ++dy)
     for (int dx = -kWindowRadius; dx <= kWindowRadius; ++dx) {
       const ivec2 q = p + ivec2(dx, dy);
@@ -80,12 +84,18 @@ void main() {
       rawSum += r;
       filteredSum += f;
       rawVariance += variance;
+      if (neighbour != index) {
+        neighbourSamples += float(b_samples[neighbour]);
+        neighbours += 1.0;
+      }
     }
   const float weight = difference > noise ? noise / difference : 1.0;
   const float gap = (rawSum - filteredSum) * (rawSum - filteredSum);
   const float significance = gap > 0.0 ? gap / (gap + rawVariance) : 0.0;
   const float ratio = filteredSum > 0.0 ? clamp(rawSum / filteredSum, 1.0 / kMaxMeanRatio, kMaxMeanRatio) : 1.0;
-  const float restore = 1.0 + significance * (ratio - 1.0);
+  const float ownSamples = max(float(b_samples[index]), 1.0);
+  const float share = neighbours > 0.0 ? min(neighbourSamples / (neighbours * ownSamples), 1.0) : 0.0;
+  const float restore = 1.0 + share * significance * (ratio - 1.0);
   const DenoiseGuide guide = b_guides[index];
   const vec3 raw = demodulated(shown, guide);
   const vec3 radiance = remodulated(raw + weight * (restore * b_filtered[index].rgb - raw), guide);

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "card_scene.h"
+#include "core/timer.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
 #include "image/error_metrics.h"
@@ -172,14 +173,9 @@ TEST(Denoise, NeverMixesTheSceneBeforeAnEditWithTheSceneAfter) {
   EXPECT_GT(mixed.rgb[3 * ((kSize / 2 - 1) * kSize + 4) + 1], 0.2f + 1e-3f);
 }
 
-// A render's few samples per pixel are skewed: most paths miss the light, a few find it. An
-// edge-stopping filter weighs a neighbour by how alike its value is, so the many dim pixels
-// take little from the rare bright ones, and the image grows darker than its samples (measured
-// on this image: 2.7 % darker before the blend restored the local mean, 0.8 % since; the Cornell
-// box's walls were 2-4 % darker at 4 spp).
-TEST(Denoise, KeepsTheMeanOfSkewedSamples) {
-  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
-  std::mt19937 rng(11);
+// Pixels of 4 skewed samples each (10 % of them 13x brighter), seeded.
+std::vector<SyntheticPixel> skewed(uint32_t seed) {
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   std::vector<SyntheticPixel> pixels(kSize * kSize);
   for (SyntheticPixel& p : pixels) {
@@ -193,7 +189,17 @@ TEST(Denoise, KeepsTheMeanOfSkewedSamples) {
     p.shown = glm::vec3(sum / n);
     p.deviation = std::sqrt(std::max(squares - sum * sum / n, 0.0f) / (n - 1.0f));
   }
-  write_display(renderer, pixels);
+  return pixels;
+}
+
+// A render's few samples per pixel are skewed: most paths miss the light, a few find it. An
+// edge-stopping filter weighs a neighbour by how alike its value is, so the many dim pixels
+// take little from the rare bright ones, and the image grows darker than its samples (measured
+// on this image: 2.7 % darker before the blend restored the local mean, 0.8 % since; the Cornell
+// box's walls were 2-4 % darker at 4 spp).
+TEST(Denoise, KeepsTheMeanOfSkewedSamples) {
+  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+  write_display(renderer, skewed(11));
   const ImageRGB shown = renderer.displayed_image();
   const ImageRGB denoised = renderer.denoised_image(denoise_on());
   const double raw_mean = test::mean(shown, 1), denoised_mean = test::mean(denoised, 1);
@@ -206,6 +212,45 @@ TEST(Denoise, KeepsTheMeanOfSkewedSamples) {
     denoised_scatter += std::pow(denoised.rgb[i] - denoised_mean, 2.0);
   }
   EXPECT_LT(denoised_scatter, 0.8 * raw_scatter);
+}
+
+// The blend brings the filtered values back to their window's mean; a precise pixel among
+// skewed noisy ones, which the filter left alone, must not be moved by that correction (it
+// took nothing from its neighbours, so it has no lean to correct).
+TEST(Denoise, APrecisePixelAmongSkewedNoiseIsLeftAsItIs) {
+  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+  std::vector<SyntheticPixel> pixels = skewed(5);
+  const size_t precise = 12 * kSize + 7;  // on the left card
+  pixels[precise].shown = glm::vec3(0.6f, 0.5f, 0.4f);
+  pixels[precise].samples = 1u << 20;
+  write_display(renderer, pixels);
+  const ImageRGB shown = renderer.displayed_image();
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  for (size_t c = 0; c < 3; ++c)
+    EXPECT_NEAR(denoised.rgb[3 * precise + c], shown.rgb[3 * precise + c], 1e-4f) << c;
+  EXPECT_NE(denoised.rgb[3 * (precise + 1)], shown.rgb[3 * (precise + 1)]);
+}
+
+// The filter's cost as the device timed it (GPU timestamps): what `--stats-json` states as
+// denoise_filter_gpu_seconds. Each kernel's part is positive and the whole fits inside the wall
+// time around the submission; the guides are traced at the first run only.
+TEST(Denoise, TheDeviceTimesEachKernelOfTheFilter) {
+  const Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, test::render_settings(48, 48, 8, 4, 1));
+  renderer.add_samples_full_frame(2);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  const std::optional<DenoiseGpuSeconds> first = renderer.run_denoiser(denoise_on());
+  const Timer timer;
+  const std::optional<DenoiseGpuSeconds> again = renderer.run_denoiser(denoise_on());
+  const double wall = timer.seconds();
+  ASSERT_TRUE(first.has_value()) << "lavapipe and NVIDIA's queues have timestamps";
+  ASSERT_TRUE(again.has_value());
+  EXPECT_GT(first->guides, 0.0);
+  EXPECT_EQ(again->guides, 0.0);
+  EXPECT_GT(again->prepare, 0.0);
+  EXPECT_GT(again->atrous, 0.0);
+  EXPECT_GT(again->blend, 0.0);
+  EXPECT_LE(again->total(), wall);
 }
 
 TEST(Denoise, NothingNonFiniteComesOut) {

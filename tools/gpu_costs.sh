@@ -62,9 +62,10 @@ def stats(path):
 
 for size in sizes:
     print(f"\n{size}:\n")
-    print("| scene | device | filter (ms) | filter + read-back (ms) | guide training (ms per state) | guide (MiB) | "
+    print("| scene | device | filter on the device (ms: prepare + a-trous + blend) | filter, wall (ms) | "
+          "filter + read-back (ms) | guide training (ms per state) | guide (MiB) | "
           "32 spp, tree (ms, two runs) | power / tree | guided / tree |")
-    print("|---|---|---:|---:|---:|---:|---|---:|---:|")
+    print("|---|---|---|---:|---:|---:|---:|---|---:|---:|")
     for denoise in sorted(out.glob(f"*.{size}.denoise.json")):
         name = denoise.name[: -len(f".{size}.denoise.json")]
         d = stats(denoise)
@@ -74,7 +75,10 @@ for size in sizes:
             continue
         tree = min(t1["render_seconds"], t2["render_seconds"])
         training = 1000 * g["guide_training_seconds"] / max(g["guide_trainings"], 1)
-        print(f'| {name} | {d["device"]} | {1000 * d["denoise_filter_seconds"]:.2f} | '
+        gpu = d.get("denoise_filter_gpu_seconds")
+        on_device = (f'{1000 * gpu["total"]:.2f} ({1000 * gpu["prepare"]:.2f} + {1000 * gpu["atrous"]:.2f} + '
+                     f'{1000 * gpu["blend"]:.2f})' if gpu else "-")
+        print(f'| {name} | {d["device"]} | {on_device} | {1000 * d["denoise_filter_seconds"]:.2f} | '
               f'{1000 * d["denoise_seconds"]:.2f} | {training:.1f} | {g["guide_bytes"] / 2**20:.1f} | '
               f'{1000 * t1["render_seconds"]:.1f}, {1000 * t2["render_seconds"]:.1f} | '
               f'{p["render_seconds"] / tree:.2f} | {g["render_seconds"] / tree:.2f} |')

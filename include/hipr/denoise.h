@@ -22,6 +22,14 @@ struct DenoiseSettings {
 
 inline constexpr uint32_t kMaxDenoisePasses = 8;
 
+// One run of the filter as the device timed it (GPU timestamps between its kernels): what a
+// viewer's frame pays for it, without the host's submission and wait. The guides are traced
+// only after an edit or a camera move (0 otherwise).
+struct DenoiseGpuSeconds {
+  double guides = 0.0, prepare = 0.0, atrous = 0.0, blend = 0.0;
+  double total() const { return guides + prepare + atrous + blend; }
+};
+
 struct DenoiseSettingInfo {
   const char* name;  // the field, and the viewer panel's label
   const char* flag;  // the commands' flag; a bool's flag turns it on, or off with "--no-"

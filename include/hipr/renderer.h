@@ -169,8 +169,9 @@ class Renderer final : public ProgressiveRenderer {
   // What the display shows, denoised by `settings` (enabled or not: disabled, or strength 0,
   // gives displayed_image() as it is). The display and the accumulation are left unchanged.
   ImageRGB denoised_image(const DenoiseSettings& settings);
-  // The filter alone, its result left on the device (what a frame of the viewer pays for it).
-  void run_denoiser(const DenoiseSettings& settings);
+  // The filter alone, its result left on the device (what a frame of the viewer pays for it);
+  // the device's own time of it where its queue has timestamps.
+  std::optional<DenoiseGpuSeconds> run_denoiser(const DenoiseSettings& settings);
   bool relight(const std::vector<EmitterScale>& scales) override;
 
   // ---- The device state (methods attach their passes to it: HiPR's stages; the library's

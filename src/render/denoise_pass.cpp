@@ -43,7 +43,8 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
       m_blend_ping(ctx, "denoise_blend.comp", {}, blend_bindings(display, m_ping),
                    sizeof(abi::DenoisePush), &scene.descriptor_set()),
       m_blend_pong(ctx, "denoise_blend.comp", {}, blend_bindings(display, m_pong),
-                   sizeof(abi::DenoisePush), &scene.descriptor_set()) {}
+                   sizeof(abi::DenoisePush), &scene.descriptor_set()),
+      m_stopwatch(ctx, kMarks) {}
 
 std::vector<vk::BufferBinding> DenoisePass::atrous_bindings(const vk::Buffer& input,
                                                             const vk::Buffer& output) const {
@@ -58,35 +59,60 @@ std::vector<vk::BufferBinding> DenoisePass::blend_bindings(const vk::Buffer& dis
                                                            const vk::Buffer& filtered) const {
   return {{abi::kDenoiseGuides, &m_guides},     {abi::kDenoiseKeys, &m_keys},
           {abi::kDenoiseDisplay, &display},     {abi::kDenoiseInput, &filtered},
-          {abi::kDenoiseVariance, &m_variance}, {abi::kDenoiseResult, &result}};
+          {abi::kDenoiseVariance, &m_variance}, {abi::kDenoiseSamples, &m_samples},
+          {abi::kDenoiseResult, &result}};
 }
 
 void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings) {
+  record(cmd, settings, nullptr);
+}
+
+void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings,
+                         const vk::GpuStopwatch* watch) {
+  const auto mark = [&](Mark m) {
+    if (watch) watch->mark(cmd, m);
+  };
   const uint32_t groups = groups_for(m_width * m_height);
+  if (watch) watch->reset(cmd);
   vk::compute_to_compute_barrier(cmd);
+  mark(kStart);
   if (!m_guides_current) {
     m_trace_guides.dispatch(cmd, nullptr, groups);
     vk::compute_to_compute_barrier(cmd);
     m_guides_current = true;
   }
+  mark(kGuidesDone);
   abi::DenoisePush push{};
   push.width = m_width;
   push.height = m_height;
   push.strength = settings.enabled ? std::max(settings.strength, 0.0f) : 0.0f;
   push.displayState = settings.display_state ? 1u : 0u;
   m_prepare.dispatch(cmd, &push, groups);
+  mark(kPrepareDone);
   const uint32_t passes = std::clamp(settings.passes, 1u, kMaxDenoisePasses);
   for (uint32_t pass = 0; pass < passes; ++pass) {
     vk::compute_to_compute_barrier(cmd);
     push.step = 1u << pass;
     (pass % 2 == 0 ? m_ping_to_pong : m_pong_to_ping).dispatch(cmd, &push, groups);
   }
+  mark(kAtrousDone);
   vk::compute_to_compute_barrier(cmd);
   (passes % 2 == 0 ? m_blend_ping : m_blend_pong).dispatch(cmd, &push, groups);
+  mark(kBlendDone);
 }
 
-void DenoisePass::run(const DenoiseSettings& settings) {
-  m_ctx.submit_and_wait([&](VkCommandBuffer cmd) { record(cmd, settings); });
+std::optional<DenoiseGpuSeconds> DenoisePass::run(const DenoiseSettings& settings) {
+  const bool traces_guides = !m_guides_current;
+  m_ctx.submit_and_wait([&](VkCommandBuffer cmd) { record(cmd, settings, &m_stopwatch); });
+  const auto at = m_stopwatch.read();
+  if (!at) return std::nullopt;
+  const std::vector<double>& t = *at;
+  // Without guides to trace, the time between the first two marks is the queue's, not a kernel's.
+  const double guides = traces_guides ? t[kGuidesDone] - t[kStart] : 0.0;
+  return DenoiseGpuSeconds{.guides = guides,
+                           .prepare = t[kPrepareDone] - t[kStart] - guides,
+                           .atrous = t[kAtrousDone] - t[kPrepareDone],
+                           .blend = t[kBlendDone] - t[kAtrousDone]};
 }
 
 ImageRGB DenoisePass::result_image() const {

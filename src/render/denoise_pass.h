@@ -5,6 +5,7 @@
 // surface its centre sees and the scene state of its value. It writes a copy (`result`):
 // the accumulation and the display stay as they are (docs/method.md, "The denoised display").
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "hipr/denoise.h"
@@ -13,6 +14,7 @@
 #include "render/gpu_scene.h"
 #include "vk/buffer.h"
 #include "vk/compute_pipeline.h"
+#include "vk/gpu_stopwatch.h"
 
 namespace hipr {
 
@@ -26,13 +28,16 @@ class DenoisePass {
   // Records the filter of what `display` shows now into `result` (after whatever the command
   // buffer wrote before).
   void record(VkCommandBuffer cmd, const DenoiseSettings& settings);
-  // Records, submits and waits.
-  void run(const DenoiseSettings& settings);
+  // Records, submits and waits; the device's time of each kernel where it has timestamps.
+  std::optional<DenoiseGpuSeconds> run(const DenoiseSettings& settings);
   ImageRGB result_image() const;
 
   vk::Buffer result;  // vec3 per pixel: the denoised radiance
 
  private:
+  // Marks of the stopwatch: the start, then the end of each kernel's part (DenoiseGpuSeconds).
+  enum Mark : uint32_t { kStart, kGuidesDone, kPrepareDone, kAtrousDone, kBlendDone, kMarks };
+  void record(VkCommandBuffer cmd, const DenoiseSettings& settings, const vk::GpuStopwatch* watch);
   std::vector<vk::BufferBinding> atrous_bindings(const vk::Buffer& input,
                                                  const vk::Buffer& output) const;
   std::vector<vk::BufferBinding> blend_bindings(const vk::Buffer& display,
@@ -48,6 +53,7 @@ class DenoisePass {
   vk::ComputePipeline m_pong_to_ping;
   vk::ComputePipeline m_blend_ping;  // denoise_blend.comp, after an even number of passes
   vk::ComputePipeline m_blend_pong;  // after an odd number
+  vk::GpuStopwatch m_stopwatch;      // run() only: a viewer's frame records without it
 };
 
 }  // namespace hipr

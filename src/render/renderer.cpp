@@ -225,7 +225,9 @@ ImageRGB Renderer::denoised_image(const DenoiseSettings& settings) {
   return m->denoise_pass().result_image();
 }
 
-void Renderer::run_denoiser(const DenoiseSettings& settings) { m->denoise_pass().run(settings); }
+std::optional<DenoiseGpuSeconds> Renderer::run_denoiser(const DenoiseSettings& settings) {
+  return m->denoise_pass().run(settings);
+}
 
 RenderState* Renderer::render_state() { return m.get(); }
 const RenderState& Renderer::state() const { return *m; }
