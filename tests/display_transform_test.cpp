@@ -12,6 +12,7 @@
 #include "image/auto_exposure.h"
 #include "image/builtin_environments.h"
 #include "image/tonemap.h"
+#include "shaders/shared/bindings/exposure.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -138,16 +139,21 @@ TEST(AutoExposure, AHistogramOfLog2LuminancesMetersAsThePixelsDo) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> stops(-12.0f, 6.0f);
   for (int image = 0; image < 20; ++image) {
-    LuminanceHistogram histogram{std::vector<uint32_t>(1024, 0u), -40.0f, 16.0f};
+    LuminanceHistogram histogram{std::vector<uint32_t>(abi::kMeterBins, 0u),
+                                 float(abi::kMeterLowestStop), float(abi::kMeterBinsPerStop)};
     std::vector<float> rgb;
     for (int i = 0; i < 500; ++i) {
       const float y = std::exp2(stops(rng));
       rgb.insert(rgb.end(), {y, y, y});
-      ++histogram.counts[size_t(std::floor((std::log2(y) + 40.0f) * 16.0f))];
+      ++histogram.counts[size_t(
+          std::floor((std::log2(y) - histogram.lowest_stop) * histogram.bins_per_stop))];
     }
-    EXPECT_NEAR(histogram_exposure_ev(histogram), metered_exposure_ev(rgb), 0.5f / 16.0f + 1e-5f);
+    EXPECT_NEAR(histogram_exposure_ev(histogram), metered_exposure_ev(rgb),
+                0.5f / histogram.bins_per_stop + 1e-5f);
   }
-  EXPECT_EQ(histogram_exposure_ev({std::vector<uint32_t>(1024, 0u), -40.0f, 16.0f}), 0.0f);
+  EXPECT_EQ(histogram_exposure_ev({std::vector<uint32_t>(abi::kMeterBins, 0u),
+                                   float(abi::kMeterLowestStop), float(abi::kMeterBinsPerStop)}),
+            0.0f);
 }
 
 // A white (0.8) diffuse floor reaching to the horizon under each built-in environment, the

@@ -24,7 +24,9 @@
 #include "render/display_pass.h"
 #include "render/light_tables.h"
 #include "render/render_readback.h"
+#include "shaders/shared/bindings/exposure.h"
 #include "test_support.h"
+#include "vk/context.h"
 
 namespace hipr::viewer {
 namespace {
@@ -472,8 +474,29 @@ TEST(Session, TheDevicesExposureMeterIsTheHostsMeterOfTheDisplay) {
   Session session(test::context(), cornell(), small_settings());
   session.render(1e9, 6);
   const float host = metered_exposure_ev(session.displayed().rgb);
-  EXPECT_NEAR(session.metered_exposure(), host, 0.5f / 16.0f + 1e-5f);
+  EXPECT_NEAR(session.metered_exposure(), host, 0.5f / float(abi::kMeterBinsPerStop) + 1e-5f);
   EXPECT_NE(host, 0.0f) << "a lit image";
+  // Metered once per display version: an idle viewer submits nothing for it.
+  const uint64_t submissions = vk::queue_submissions();
+  EXPECT_EQ(session.metered_exposure(), session.metered_exposure());
+  EXPECT_EQ(vk::queue_submissions(), submissions);
+  session.render(1e9, 1);
+  const uint64_t after_step = vk::queue_submissions();
+  session.metered_exposure();
+  EXPECT_GT(vk::queue_submissions(), after_step) << "a new display is metered again";
+}
+
+// A new renderer (light selection, guiding) gets the denoiser and the exposure meter the window
+// had made on the old one at once, not inside its first frame (which then allocated them).
+TEST(Session, ARebuiltRendererHasTheWindowsPassesBeforeItsFirstFrame) {
+  Session session(test::context(), cornell(), small_settings());
+  session.denoised_display();
+  session.metered_exposure();
+  const uint64_t before = session.renderer_id();
+  session.set_light_selection(LightSelection::Power);
+  ASSERT_NE(session.renderer_id(), before);
+  EXPECT_TRUE(has_denoiser(session.renderer()));
+  EXPECT_TRUE(has_exposure_meter(session.renderer()));
 }
 
 // The denoiser hides noise while the image converges; once a noise target of

@@ -12,6 +12,10 @@ const vk::Buffer& denoised_display(Renderer& renderer) {
   return renderer.render_state()->denoise_pass().result;
 }
 
+bool has_denoiser(const Renderer& renderer) { return renderer.state().denoiser != nullptr; }
+
+bool has_exposure_meter(const Renderer& renderer) { return renderer.state().exposure != nullptr; }
+
 float metered_display_exposure(Renderer& renderer) {
   return renderer.render_state()->exposure_meter().metered_ev();
 }

@@ -20,6 +20,11 @@ const vk::Buffer& denoised_display(Renderer& renderer);
 // frame: no submission of its own.
 void record_denoise(Renderer& renderer, VkCommandBuffer cmd, const DenoiseSettings& settings);
 
+// Whether the denoiser's pass and the exposure meter were made (a new renderer of the same
+// window makes them again at once: Session::rebuild).
+bool has_denoiser(const Renderer& renderer);
+bool has_exposure_meter(const Renderer& renderer);
+
 // The exposure in stops for what the display shows (image/auto_exposure.h's rule, to 1/16 of a
 // stop), metered on the device: 4 KB read back, not the display.
 float metered_display_exposure(Renderer& renderer);

@@ -40,9 +40,10 @@ void apply_size(const std::string& size, RenderSettings& render) {
 // second, so --spp is only the limit (kViewerSpp) and a noise target pauses rendering when the
 // image is clean (kViewerRelmse: about 3 % RMS relative error per channel; the samples it takes
 // per scene are in BENCHMARKS.md, "Viewer convergence"; whether it is where noise stops being
-// visible to artists is not measured).
+// visible to artists is not measured). It is the level below which the raw image is closer to
+// the truth than the denoised one, so by default the window ends on the raw image.
 constexpr uint32_t kViewerSpp = 4096;
-constexpr double kViewerRelmse = 5e-4;
+constexpr double kViewerRelmse = kRawIsCleanerRelmse;
 
 void add_convergence_flags(CLI::App& cmd, ConvergenceTarget& target) {
   target.relmse = kViewerRelmse;

@@ -49,6 +49,10 @@ void Session::rebuild() {
   render.compile_kernels_early = true;
   auto renderer = std::make_unique<Renderer>(m_ctx, m_scene, render);
   auto scheduler = make_scheduler(*renderer);
+  // What the window had made on the old renderer (the denoiser, the exposure meter) is made on
+  // the new one here too, not inside its first frame: a frame allocates nothing.
+  const bool had_denoiser = m_renderer && has_denoiser(*m_renderer);
+  const bool had_meter = m_renderer && has_exposure_meter(*m_renderer);
   // A frame in flight may still read the old renderer's display buffer (the viewer's display
   // pass shows it in place).
   if (m_renderer) vkDeviceWaitIdle(m_ctx.device());
@@ -63,6 +67,8 @@ void Session::rebuild() {
   m_since_edit = Timer();
   restart_noise_checks();
   update_focus();
+  if (had_denoiser) denoised_display();
+  if (had_meter) metered_exposure();
 }
 
 void Session::changed(const std::function<void(Scene&)>& change, const std::string& what) {
@@ -161,11 +167,12 @@ void Session::check_noise() {
 void Session::set_convergence(uint32_t spp, const ConvergenceTarget& target) {
   const ScheduleSettings schedule = resolved_schedule();
   m_settings.spp = std::max({spp, schedule.visit_spp, schedule.first_visit_spp, 1u});
-  const bool targets_changed =
-      m_settings.converge.seconds != target.seconds || m_settings.converge.relmse != target.relmse;
+  // What is shown once clean changes no target: a met one stays met.
+  ConvergenceTarget before = m_settings.converge, after = target;
+  before.keep_denoised = after.keep_denoised = false;
+  const bool targets_changed = !(before == after);
   m_settings.converge = target;
   m_scheduler->configure(resolved_schedule(), m_settings.spp);
-  // What is shown once clean changes no target: a met one stays met.
   if (targets_changed) restart_noise_checks();
 }
 
@@ -200,6 +207,12 @@ const ImageRGB& Session::displayed() {
     m_displayed_version = m_display_version;
   }
   return m_displayed;
+}
+
+float Session::metered_exposure() {
+  if (m_metering.renderer != m_renderer_id || m_metering.version != m_display_version)
+    m_metering = {m_renderer_id, m_display_version, metered_display_exposure(*m_renderer)};
+  return m_metering.ev;
 }
 
 bool Session::shows_denoised(const DenoiseSettings& denoise) const {

@@ -121,8 +121,9 @@ class Session {
   // brought up to date first where ids or an outline need it.
   void render_overlay(DebugOverlay overlay, uint32_t selected_node, const vk::Buffer& output);
   // The exposure in stops for what the display shows, metered on the device
-  // (hipr::metered_display_exposure: 4 KB read back).
-  float metered_exposure() { return metered_display_exposure(*m_renderer); }
+  // (hipr::metered_display_exposure: 4 KB read back) once per display version: an idle viewer
+  // meters nothing.
+  float metered_exposure();
   // The denoiser's result and its recording into a frame (hipr::denoised_display,
   // hipr::record_denoise).
   const vk::Buffer& denoised_display();
@@ -179,6 +180,10 @@ class Session {
   double m_next_noise_check = 2.0;  // in work since the last change
   uint64_t m_display_version = 0;
   uint64_t m_displayed_version = UINT64_MAX;  // the version m_displayed was read at
+  struct Metering {
+    uint64_t renderer = 0, version = UINT64_MAX;  // what the exposure was metered at
+    float ev = 0.0f;
+  } m_metering;
   ImageRGB m_displayed;
   bool m_awaiting_change = false;  // the last change has not been presented yet
   uint32_t m_steps_since_edit = 0;
