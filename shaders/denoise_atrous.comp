@@ -11,7 +11,8 @@
 //   plane     exp(-|n_p . (x_q - x_p)| / (0.05 |x_q - x_p|)): q lies in p's tangent plane
 // and the variance is carried through as Var' = sum w^2 Var / (sum w)^2. Passes double the step
 // (1, 2, 4, 8, 16): a 125-pixel footprint for 25 taps a pass.
-// Reads: the guides, keys, samples, the pass's input, FrameParams (the pixel rays). Writes: the
+// Reads: the guides (the pixel's own; its neighbours' normals and distances packed), keys,
+// samples, the pass's input, FrameParams (the pixel rays). Writes: the
 // pass's output (denoise_blend.comp takes the last one).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
@@ -29,6 +30,7 @@ layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) readonly buffer Input { vec4 b_input[]; };
 layout(scalar, binding = kDenoiseOutput) writeonly buffer Output { vec4 b_output[]; };
 layout(scalar, binding = kDenoiseSamples) readonly buffer Samples { uint b_samples[]; };
+layout(scalar, binding = kDenoiseGeometry) readonly buffer Geometry { uvec2 b_geometry[]; };  // normal, distance
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
 const float kSpline[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
@@ -38,8 +40,8 @@ const float kPlaneTolerance = 0.05;
 bool inside(ivec2 q) { return q.x >= 0 && q.y >= 0 && q.x < int(u_push.width) && q.y < int(u_push.height); }
 uint pixel_index(ivec2 q) { return uint(q.y) * u_push.width + uint(q.x); }
 
-vec3 guide_position(uvec2 pixel, DenoiseGuide guide) {
-  return u_frame.cameraPosition + pixel_centre_ray(pixel) * guide.distance;
+vec3 guide_position(uvec2 pixel, float distance) {
+  return u_frame.cameraPosition + pixel_centre_ray(pixel) * distance;
 }
 
 // The pixel's variance blurred over its 3 x 3 neighbours of the same key (weights 1/4, 1/2, 1/4
@@ -73,7 +75,7 @@ void main() {
   const DenoiseGuide guide = b_guides[index];
   const bool surface = guide.record != kInvalidIndex;
   const vec3 normal = surface ? unpack_normal(guide.normal) : vec3(0.0);
-  const vec3 position = surface ? guide_position(uvec2(p), guide) : vec3(0.0);
+  const vec3 position = surface ? guide_position(uvec2(p), guide.distance) : vec3(0.0);
   const float tolerance = 4.0 * u_push.strength * sqrt(blurred_variance(p, key));
   const int step = int(u_push.step);
 
@@ -92,9 +94,9 @@ void main() {
         const float difference = denoise_luminance(abs(value.rgb - centre.rgb));
         w *= tolerance > 0.0 ? exp(-difference / tolerance) : 0.0;
         if (surface) {
-          const DenoiseGuide other = b_guides[neighbour];
-          w *= pow(max(dot(normal, unpack_normal(other.normal)), 0.0), kNormalPower);
-          const vec3 offset = guide_position(uvec2(q), other) - position;
+          const uvec2 other = b_geometry[neighbour];
+          w *= pow(max(dot(normal, unpack_normal(other.x)), 0.0), kNormalPower);
+          const vec3 offset = guide_position(uvec2(q), uintBitsToFloat(other.y)) - position;
           const float span = length(offset);
           if (span > 0.0) w *= exp(-abs(dot(normal, offset)) / (kPlaneTolerance * span));
         }

@@ -31,11 +31,11 @@
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 
-layout(local_size_x = 64) in;
-
 #include "common/frame.glsl"
 #include "common/denoise.glsl"
 #include "common/dispatch.glsl"
+
+layout(local_size_x = kDenoiseBlendTile * kDenoiseBlendTile) in;
 
 layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
 layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel b_display[]; };
@@ -50,51 +50,80 @@ const int kWindowRadius = 5;
 // Beyond this the window's sums differ by a firefly, not by the weights' lean.
 const float kMaxMeanRatio = 2.0;
 
+// A workgroup is a tile of pixels; what each pixel adds to a window depends on that pixel alone,
+// so the tile and its margin compute it once into shared memory and every window sums from there
+// (121 reads of the guides, display and filtered values per pixel were most of this kernel).
+const int kTile = int(kDenoiseBlendTile);
+const int kSpan = kTile + 2 * kWindowRadius;
+const uint kOutside = 0xffffffffu;  // the key of a place past the image's edge: equal to none
+shared uint s_keys[kSpan * kSpan];
+shared vec3 s_weighed[kSpan * kSpan];  // w (f - r)^2, w Var(r), Var(r)
+shared vec3 s_sums[kSpan * kSpan];     // r, f, samples
+
+bool inside(ivec2 q) { return q.x >= 0 && q.y >= 0 && q.x < int(u_push.width) && q.y < int(u_push.height); }
+
+void load(int slot, ivec2 q) {
+  uint key = kOutside;
+  if (inside(q)) {
+    const uint i = uint(q.y) * u_push.width + uint(q.x);
+    key = b_keys[i];
+    if (key != kDenoiseKept) {  // a kept pixel is read by no neighbour
+      const DenoiseGuide guide = b_guides[i];
+      const vec3 albedo = unpack_albedo(guide.albedo);
+      const vec3 shown = b_display[i].shown;
+      const float r = denoise_luminance(demodulated(shown, guide) * albedo);
+      const float f = denoise_luminance(b_filtered[i].rgb * albedo);
+      const float l = denoise_luminance(shown);
+      const float w = 1.0 / (l * l + 0.01);
+      const float a = denoise_luminance(albedo);
+      const float variance = b_variance[i] * a * a;
+      s_weighed[slot] = vec3(w * (f - r) * (f - r), w * variance, variance);
+      s_sums[slot] = vec3(r, f, float(b_samples[i]));
+    }
+  }
+  s_keys[slot] = key;
+}
+
 void main() {
-  const uint index = dispatch_index();
-  if (index >= u_push.width * u_push.height) return;
-  const uint key = b_keys[index];
+  const uint tilesX = (u_push.width + uint(kTile) - 1u) / uint(kTile);
+  const uint group = dispatch_group();
+  const ivec2 origin = ivec2(group % tilesX, group / tilesX) * kTile;
+  for (uint slot = gl_LocalInvocationIndex; slot < uint(kSpan * kSpan); slot += gl_WorkGroupSize.x)
+    load(int(slot), origin - kWindowRadius + ivec2(slot % uint(kSpan), slot / uint(kSpan)));
+  barrier();
+
+  const ivec2 local = ivec2(gl_LocalInvocationIndex % uint(kTile), gl_LocalInvocationIndex / uint(kTile));
+  const ivec2 p = origin + local;
+  if (!inside(p)) return;
+  const uint index = uint(p.y) * u_push.width + uint(p.x);
+  const int centre = (local.y + kWindowRadius) * kSpan + local.x + kWindowRadius;
+  const uint key = s_keys[centre];
   const vec3 shown = b_display[index].shown;
   if (key == kDenoiseKept) {  // what denoise_prepare.comp says it shows, through every pass
     b_result[index] = b_filtered[index].rgb;
     return;
   }
-  const ivec2 p = ivec2(index % u_push.width, index / u_push.width);
-  float difference = 0.0, noise = 0.0;     // D and V, weighed as relMSE weighs errors
-  float rawSum = 0.0, filteredSum = 0.0;  // the window's luminance, shown and filtered
-  float rawVariance = 0.0;                 // the variance of rawSum
-  float neighbourSamples = 0.0, neighbours = 0.0;
+  vec3 weighed = vec3(0.0);  // D and V, weighed as relMSE weighs errors; the variance of R
+  vec3 sums = vec3(0.0);     // R and F, the window's luminance shown and filtered; its samples
+  float count = 0.0;
   for (int dy = -kWindowRadius; dy <= kWindowRadius; ++dy)
     for (int dx = -kWindowRadius; dx <= kWindowRadius; ++dx) {
-      const ivec2 q = p + ivec2(dx, dy);
-      if (q.x < 0 || q.y < 0 || q.x >= int(u_push.width) || q.y >= int(u_push.height)) continue;
-      const uint neighbour = uint(q.y) * u_push.width + uint(q.x);
-      if (b_keys[neighbour] != key) continue;
-      const DenoiseGuide other = b_guides[neighbour];
-      const vec3 albedo = unpack_albedo(other.albedo);
-      const vec3 shownThere = b_display[neighbour].shown;
-      const float r = denoise_luminance(demodulated(shownThere, other) * albedo);
-      const float f = denoise_luminance(b_filtered[neighbour].rgb * albedo);
-      const float l = denoise_luminance(shownThere);
-      const float w = 1.0 / (l * l + 0.01);
-      const float a = denoise_luminance(albedo);
-      const float variance = b_variance[neighbour] * a * a;
-      difference += w * (f - r) * (f - r);
-      noise += w * variance;
-      rawSum += r;
-      filteredSum += f;
-      rawVariance += variance;
-      if (neighbour != index) {
-        neighbourSamples += float(b_samples[neighbour]);
-        neighbours += 1.0;
-      }
+      const int slot = centre + dy * kSpan + dx;
+      if (s_keys[slot] != key) continue;
+      weighed += s_weighed[slot];
+      sums += s_sums[slot];
+      count += 1.0;
     }
+  const float difference = weighed.x, noise = weighed.y, rawVariance = weighed.z;
+  const float rawSum = sums.x, filteredSum = sums.y;
   const float weight = difference > noise ? noise / difference : 1.0;
   const float gap = (rawSum - filteredSum) * (rawSum - filteredSum);
   const float significance = gap > 0.0 ? gap / (gap + rawVariance) : 0.0;
   const float ratio = filteredSum > 0.0 ? clamp(rawSum / filteredSum, 1.0 / kMaxMeanRatio, kMaxMeanRatio) : 1.0;
-  const float ownSamples = max(float(b_samples[index]), 1.0);
-  const float share = neighbours > 0.0 ? min(neighbourSamples / (neighbours * ownSamples), 1.0) : 0.0;
+  const float ownSamples = s_sums[centre].z;
+  const float neighbourSamples = sums.z - ownSamples, neighbours = count - 1.0;
+  const float share =
+      neighbours > 0.0 ? min(neighbourSamples / (neighbours * max(ownSamples, 1.0)), 1.0) : 0.0;
   const float restore = 1.0 + share * significance * (ratio - 1.0);
   const DenoiseGuide guide = b_guides[index];
   const vec3 raw = demodulated(shown, guide);

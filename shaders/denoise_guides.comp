@@ -27,6 +27,8 @@ layout(local_size_x = 64) in;
 #include "common/environment.glsl"
 
 layout(scalar, binding = kDenoiseGuides) writeonly buffer Guides { DenoiseGuide b_guides[]; };
+// What the a-trous passes read of a neighbour's guide, packed: 8 bytes a tap, not 24.
+layout(scalar, binding = kDenoiseGeometry) writeonly buffer Geometry { uvec2 b_geometry[]; };
 
 // A pixel whose centre sees the environment: when no ray of a kFootprintRays x kFootprintRays
 // grid over the pixel hits a surface either, its samples are all environment lookups (the
@@ -112,4 +114,5 @@ void main() {
     guide.emissionB = packHalf2x16(vec2(emission.b, 0.0));
   }
   b_guides[index] = guide;
+  b_geometry[index] = uvec2(guide.normal, floatBitsToUint(guide.distance));
 }

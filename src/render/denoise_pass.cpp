@@ -20,12 +20,14 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
       m_width(width),
       m_height(height),
       m_guides(ctx, pixels(width, height) * sizeof(abi::DenoiseGuide), kStorage),
+      m_geometry(ctx, pixels(width, height) * 2 * sizeof(uint32_t), kStorage),
       m_keys(ctx, pixels(width, height) * sizeof(uint32_t), kStorage),
       m_samples(ctx, pixels(width, height) * sizeof(uint32_t), kStorage),
       m_variance(ctx, pixels(width, height) * sizeof(float), kStorage),
       m_ping(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
       m_pong(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
-      m_trace_guides(ctx, "denoise_guides.comp", {}, {{abi::kDenoiseGuides, &m_guides}}, 0,
+      m_trace_guides(ctx, "denoise_guides.comp", {},
+                     {{abi::kDenoiseGuides, &m_guides}, {abi::kDenoiseGeometry, &m_geometry}}, 0,
                      &scene.descriptor_set()),
       m_prepare(ctx, "denoise_prepare.comp", {},
                 {{abi::kDenoiseGuides, &m_guides},
@@ -48,11 +50,9 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
 
 std::vector<vk::BufferBinding> DenoisePass::atrous_bindings(const vk::Buffer& input,
                                                             const vk::Buffer& output) const {
-  return {{abi::kDenoiseGuides, &m_guides},
-          {abi::kDenoiseKeys, &m_keys},
-          {abi::kDenoiseSamples, &m_samples},
-          {abi::kDenoiseInput, &input},
-          {abi::kDenoiseOutput, &output}};
+  return {{abi::kDenoiseGuides, &m_guides}, {abi::kDenoiseGeometry, &m_geometry},
+          {abi::kDenoiseKeys, &m_keys},     {abi::kDenoiseSamples, &m_samples},
+          {abi::kDenoiseInput, &input},     {abi::kDenoiseOutput, &output}};
 }
 
 std::vector<vk::BufferBinding> DenoisePass::blend_bindings(const vk::Buffer& display,
@@ -97,7 +97,9 @@ void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings,
   }
   mark(kAtrousDone);
   vk::compute_to_compute_barrier(cmd);
-  (passes % 2 == 0 ? m_blend_ping : m_blend_pong).dispatch(cmd, &push, groups);
+  const uint32_t tile = abi::kDenoiseBlendTile;
+  const uint32_t tiles = ((m_width + tile - 1) / tile) * ((m_height + tile - 1) / tile);
+  (passes % 2 == 0 ? m_blend_ping : m_blend_pong).dispatch(cmd, &push, tiles);
   mark(kBlendDone);
 }
 

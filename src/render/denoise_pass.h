@@ -46,7 +46,7 @@ class DenoisePass {
   const vk::Context& m_ctx;
   uint32_t m_width, m_height;
   bool m_guides_current = false;
-  vk::Buffer m_guides, m_keys, m_samples, m_variance, m_ping, m_pong;
+  vk::Buffer m_guides, m_geometry, m_keys, m_samples, m_variance, m_ping, m_pong;
   vk::ComputePipeline m_trace_guides;  // denoise_guides.comp
   vk::ComputePipeline m_prepare;       // denoise_prepare.comp: display -> ping
   vk::ComputePipeline m_ping_to_pong;  // denoise_atrous.comp

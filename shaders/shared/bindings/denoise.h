@@ -20,6 +20,11 @@ HIPR_CONST uint kDenoiseOutput = 5u;        // vec4 per pixel: the same after a 
 HIPR_CONST uint kDenoiseResult = 6u;        // vec3 per pixel: the denoised radiance
 HIPR_CONST uint kDenoiseSamples = 7u;       // uint per pixel: samples behind the value (prepare writes)
 HIPR_CONST uint kDenoiseVariance = 8u;      // float per pixel: the shown value's variance (prepare writes)
+HIPR_CONST uint kDenoiseGeometry = 9u;      // uvec2 per pixel: a guide's normal and distance (guides write)
+
+// denoise_blend.comp's workgroup: a square tile of this many pixels a side (its windows' sums
+// are read from shared memory).
+HIPR_CONST uint kDenoiseBlendTile = 16u;
 
 #ifdef __cplusplus
 }  // namespace hipr::abi
