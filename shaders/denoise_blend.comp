@@ -35,7 +35,7 @@
 #include "common/denoise.glsl"
 #include "common/dispatch.glsl"
 
-layout(local_size_x = kDenoiseBlendTile * kDenoiseBlendTile) in;
+layout(local_size_x = kDenoiseBlendTileWidth * kDenoiseBlendTileHeight) in;
 
 layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
 layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel b_display[]; };
@@ -50,15 +50,16 @@ const int kWindowRadius = 5;
 // Beyond this the window's sums differ by a firefly, not by the weights' lean.
 const float kMaxMeanRatio = 2.0;
 
-// A workgroup is a tile of pixels; what each pixel adds to a window depends on that pixel alone,
+// A workgroup is a tile of pixels (kDenoiseBlendTileWidth x Height); what each pixel adds to a window depends on that pixel alone,
 // so the tile and its margin compute it once into shared memory and every window sums from there
 // (121 reads of the guides, display and filtered values per pixel were most of this kernel).
-const int kTile = int(kDenoiseBlendTile);
-const int kSpan = kTile + 2 * kWindowRadius;
+const ivec2 kTile = ivec2(kDenoiseBlendTileWidth, kDenoiseBlendTileHeight);
+const ivec2 kSpan = kTile + 2 * kWindowRadius;
+const int kPlaces = kSpan.x * kSpan.y;
 const uint kOutside = 0xffffffffu;  // the key of a place past the image's edge: equal to none
-shared uint s_keys[kSpan * kSpan];
-shared vec3 s_weighed[kSpan * kSpan];  // w (f - r)^2, w Var(r), Var(r)
-shared vec3 s_sums[kSpan * kSpan];     // r, f, samples
+shared uint s_keys[kPlaces];
+shared vec3 s_weighed[kPlaces];  // w (f - r)^2, w Var(r), Var(r)
+shared vec3 s_sums[kPlaces];     // r, f, samples
 
 bool inside(ivec2 q) { return q.x >= 0 && q.y >= 0 && q.x < int(u_push.width) && q.y < int(u_push.height); }
 
@@ -85,18 +86,18 @@ void load(int slot, ivec2 q) {
 }
 
 void main() {
-  const uint tilesX = (u_push.width + uint(kTile) - 1u) / uint(kTile);
+  const uint tilesX = (u_push.width + uint(kTile.x) - 1u) / uint(kTile.x);
   const uint group = dispatch_group();
   const ivec2 origin = ivec2(group % tilesX, group / tilesX) * kTile;
-  for (uint slot = gl_LocalInvocationIndex; slot < uint(kSpan * kSpan); slot += gl_WorkGroupSize.x)
-    load(int(slot), origin - kWindowRadius + ivec2(slot % uint(kSpan), slot / uint(kSpan)));
+  for (uint slot = gl_LocalInvocationIndex; slot < uint(kPlaces); slot += gl_WorkGroupSize.x)
+    load(int(slot), origin - kWindowRadius + ivec2(slot % uint(kSpan.x), slot / uint(kSpan.x)));
   barrier();
 
-  const ivec2 local = ivec2(gl_LocalInvocationIndex % uint(kTile), gl_LocalInvocationIndex / uint(kTile));
+  const ivec2 local = ivec2(gl_LocalInvocationIndex % uint(kTile.x), gl_LocalInvocationIndex / uint(kTile.x));
   const ivec2 p = origin + local;
   if (!inside(p)) return;
   const uint index = uint(p.y) * u_push.width + uint(p.x);
-  const int centre = (local.y + kWindowRadius) * kSpan + local.x + kWindowRadius;
+  const int centre = (local.y + kWindowRadius) * kSpan.x + local.x + kWindowRadius;
   const uint key = s_keys[centre];
   const vec3 shown = b_display[index].shown;
   if (key == kDenoiseKept) {  // what denoise_prepare.comp says it shows, through every pass
@@ -108,7 +109,7 @@ void main() {
   float count = 0.0;
   for (int dy = -kWindowRadius; dy <= kWindowRadius; ++dy)
     for (int dx = -kWindowRadius; dx <= kWindowRadius; ++dx) {
-      const int slot = centre + dy * kSpan + dx;
+      const int slot = centre + dy * kSpan.x + dx;
       if (s_keys[slot] != key) continue;
       weighed += s_weighed[slot];
       sums += s_sums[slot];

@@ -22,9 +22,11 @@ HIPR_CONST uint kDenoiseSamples = 7u;       // uint per pixel: samples behind th
 HIPR_CONST uint kDenoiseVariance = 8u;      // float per pixel: the shown value's variance (prepare writes)
 HIPR_CONST uint kDenoiseGeometry = 9u;      // uvec2 per pixel: a guide's normal and distance (guides write)
 
-// denoise_blend.comp's workgroup: a square tile of this many pixels a side (its windows' sums
-// are read from shared memory).
-HIPR_CONST uint kDenoiseBlendTile = 16u;
+// denoise_blend.comp's workgroup: a tile of pixels whose windows' sums are read from shared
+// memory. 16 x 8 (and the windows' margin: 26 x 18 places of 28 bytes, 13 KB) keeps within what
+// every Vulkan device allows (128 invocations, 16 KB of shared memory).
+HIPR_CONST uint kDenoiseBlendTileWidth = 16u;
+HIPR_CONST uint kDenoiseBlendTileHeight = 8u;
 
 #ifdef __cplusplus
 }  // namespace hipr::abi
