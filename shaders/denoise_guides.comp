@@ -5,7 +5,8 @@
 // sees only the environment, the environment's mean over its footprint. Run when the scene or the
 // camera changed.
 // Reads: TLAS (or the software BVH), FrameParams, geometry, materials and textures.
-// Writes: DenoiseGuide per pixel.
+// Writes: DenoiseGuide per pixel, and its normal and distance packed (what the a-trous passes
+// read of a neighbour).
 #extension GL_GOOGLE_include_directive : require
 #include "common/traversal.glsl"
 #extension GL_EXT_scalar_block_layout : require

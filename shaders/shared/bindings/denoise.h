@@ -1,5 +1,5 @@
 // Set 0 of the display denoiser (DenoisePass: denoise_guides.comp, denoise_prepare.comp,
-// denoise_atrous.comp).
+// denoise_atrous.comp, denoise_blend.comp).
 // Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
 // binding numbers, named by the kernels' GLSL layouts and by their C++ pass.
 #ifndef HIPR_BINDINGS_DENOISE_H
