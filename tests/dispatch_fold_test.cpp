@@ -13,6 +13,7 @@
 #include "hipr/scheduler.h"
 #include "render/radix_sorter.h"
 #include "render/render_readback.h"
+#include "render/viewer_sources.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -87,6 +88,37 @@ TEST(FoldedDispatch, TheRadixSortStaysStable) {
   std::stable_sort(order.begin(), order.end(),
                    [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });
   EXPECT_EQ(sorter.values.download_all<uint32_t>(), order);
+  EXPECT_EQ(folding_context().validation_errors(), 0u);
+}
+
+// The denoiser's blend works in tiles of 16 x 8 pixels and the exposure meter in workgroups of
+// 128 with shared memory: folded, their workgroups map to the same tiles and pixels.
+struct DisplayPasses {
+  std::vector<float> denoised;
+  float exposure = 0.0f;
+};
+
+DisplayPasses run_display_passes(const vk::Context& ctx) {
+  RenderSettings s;
+  s.width = 70;  // 5 x 7 blend tiles (the last column and row partial), 20 meter workgroups
+  s.height = 50;
+  s.tile_size = 8;
+  s.max_depth = 4;
+  s.seed = 2;
+  Renderer renderer(ctx, load_scene(test::asset("cornell_box.gltf")), s);
+  renderer.add_samples_full_frame(2);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  DenoiseSettings denoise;
+  denoise.enabled = true;
+  return {renderer.denoised_image(denoise).rgb, metered_display_exposure(renderer)};
+}
+
+TEST(FoldedDispatch, TheDenoiserAndTheExposureMeterSeeTheSamePixels) {
+  const DisplayPasses folded = run_display_passes(folding_context());
+  const DisplayPasses plain = run_display_passes(test::context());
+  EXPECT_EQ(folded.denoised, plain.denoised);
+  EXPECT_EQ(folded.exposure, plain.exposure);
+  EXPECT_NE(plain.exposure, 0.0f) << "a lit image";
   EXPECT_EQ(folding_context().validation_errors(), 0u);
 }
 
