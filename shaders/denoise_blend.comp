@@ -33,9 +33,10 @@
 
 #include "common/frame.glsl"
 #include "common/denoise.glsl"
-#include "common/dispatch.glsl"
 
+// Declared before dispatch.glsl: its gl_WorkGroupSize is this size only after the declaration.
 layout(local_size_x = kDenoiseBlendTileWidth * kDenoiseBlendTileHeight) in;
+#include "common/dispatch.glsl"
 
 layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
 layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel b_display[]; };
@@ -50,9 +51,10 @@ const int kWindowRadius = 5;
 // Beyond this the window's sums differ by a firefly, not by the weights' lean.
 const float kMaxMeanRatio = 2.0;
 
-// A workgroup is a tile of pixels (kDenoiseBlendTileWidth x Height); what each pixel adds to a window depends on that pixel alone,
-// so the tile and its margin compute it once into shared memory and every window sums from there
-// (121 reads of the guides, display and filtered values per pixel were most of this kernel).
+// A workgroup is a tile of pixels (kDenoiseBlendTileWidth x kDenoiseBlendTileHeight). What each
+// pixel adds to a window depends on that pixel alone, so the tile and its margin compute it once
+// into shared memory and every window sums from there (121 reads of the guides, display and
+// filtered values per pixel were most of this kernel).
 const ivec2 kTile = ivec2(kDenoiseBlendTileWidth, kDenoiseBlendTileHeight);
 const ivec2 kSpan = kTile + 2 * kWindowRadius;
 const int kPlaces = kSpan.x * kSpan.y;

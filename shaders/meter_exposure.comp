@@ -10,6 +10,7 @@
 
 #include "shared/bindings/exposure.h"
 
+// Declared before dispatch.glsl: its gl_WorkGroupSize is this size only after the declaration.
 layout(local_size_x = kMeterWorkgroupSize) in;
 #include "common/dispatch.glsl"
 

@@ -97,9 +97,8 @@ void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings,
   }
   mark(kAtrousDone);
   vk::compute_to_compute_barrier(cmd);
-  const uint32_t tiles =
-      ((m_width + abi::kDenoiseBlendTileWidth - 1) / abi::kDenoiseBlendTileWidth) *
-      ((m_height + abi::kDenoiseBlendTileHeight - 1) / abi::kDenoiseBlendTileHeight);
+  const uint32_t tiles = groups_for(m_width, abi::kDenoiseBlendTileWidth) *
+                         groups_for(m_height, abi::kDenoiseBlendTileHeight);
   (passes % 2 == 0 ? m_blend_ping : m_blend_pong).dispatch(cmd, &push, tiles);
   mark(kBlendDone);
 }

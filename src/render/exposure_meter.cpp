@@ -21,8 +21,7 @@ std::vector<uint32_t> ExposureMeter::histogram() const {
   m_ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     vkCmdFillBuffer(cmd, m_histogram.handle(), 0, VK_WHOLE_SIZE, 0);
     vk::transfer_to_compute_barrier(cmd);
-    m_meter.dispatch(cmd, &m_pixels,
-                     (m_pixels + abi::kMeterWorkgroupSize - 1) / abi::kMeterWorkgroupSize);
+    m_meter.dispatch(cmd, &m_pixels, groups_for(m_pixels, abi::kMeterWorkgroupSize));
   });
   return m_histogram.download_all<uint32_t>();
 }

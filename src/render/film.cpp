@@ -15,8 +15,8 @@ vk::Buffer storage(const vk::Context& ctx, size_t bytes) {
 
 }  // namespace
 
-uint32_t groups_for(uint32_t items) {
-  return (items + abi::kWorkgroupSize - 1) / abi::kWorkgroupSize;
+uint32_t groups_for(uint32_t items, uint32_t group_size) {
+  return (items + group_size - 1) / group_size;
 }
 
 Film::Film(const vk::Context& ctx, uint32_t width, uint32_t height, uint32_t light_groups,

@@ -55,8 +55,8 @@ class Film {
   vk::ComputePipeline m_film_noise;
 };
 
-// Workgroups of abi::kWorkgroupSize invocations covering `items`.
-uint32_t groups_for(uint32_t items);
+// Workgroups of `group_size` invocations (or pixels) covering `items`.
+uint32_t groups_for(uint32_t items, uint32_t group_size = abi::kWorkgroupSize);
 
 // The image whose pixel i is radiance_of(texels[i]) (a read-back of per-pixel GPU state).
 template <typename Texel, typename RadianceOf>

@@ -18,11 +18,11 @@ HIPR_CONST uint kMeterHistogram = 1u;  // uint per bin: the lit pixels of each l
 // stop is finer than the viewer's metering follows), over 64 stops; luminances beyond either end
 // count in the end bins.
 HIPR_CONST uint kMeterBins = 1024u;
+HIPR_CONST uint kMeterBinsPerStop = 16u;
+HIPR_CONST int kMeterLowestStop = -40;
 // Pixels a workgroup counts in its own shared histogram before adding it to the device's (128:
 // what every Vulkan device allows).
 HIPR_CONST uint kMeterWorkgroupSize = 128u;
-HIPR_CONST uint kMeterBinsPerStop = 16u;
-HIPR_CONST int kMeterLowestStop = -40;
 
 #ifdef __cplusplus
 }  // namespace hipr::abi
