@@ -26,7 +26,7 @@
 // A pixel the filter keeps shows what denoise_prepare.comp chose (its value, or the environment's
 // mean over its footprint).
 // Reads: the guides, keys, samples and the variance of each shown value, the display, the last
-// a-trous pass's output. Writes: the denoised radiance.
+// a-trous pass's output. Writes: this frame's denoised radiance (denoise_temporal.comp steadies it).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -44,7 +44,7 @@ layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) readonly buffer Filtered { vec4 b_filtered[]; };
 layout(scalar, binding = kDenoiseVariance) readonly buffer Variance { float b_variance[]; };
 layout(scalar, binding = kDenoiseSamples) readonly buffer Samples { uint b_samples[]; };
-layout(scalar, binding = kDenoiseResult) writeonly buffer Result { vec3 b_result[]; };
+layout(scalar, binding = kDenoiseFrame) writeonly buffer ThisFrame { vec3 b_frame[]; };
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
 const int kWindowRadius = 5;
@@ -103,7 +103,7 @@ void main() {
   const uint key = s_keys[centre];
   const vec3 shown = b_display[index].shown;
   if (key == kDenoiseKept) {  // what denoise_prepare.comp says it shows, through every pass
-    b_result[index] = b_filtered[index].rgb;
+    b_frame[index] = b_filtered[index].rgb;
     return;
   }
   vec3 weighed = vec3(0.0);  // D and V, weighed as relMSE weighs errors; the variance of R
@@ -131,5 +131,5 @@ void main() {
   const DenoiseGuide guide = b_guides[index];
   const vec3 raw = demodulated(shown, guide);
   const vec3 radiance = remodulated(raw + weight * (restore * b_filtered[index].rgb - raw), guide);
-  b_result[index] = any(isinf(radiance)) || any(isnan(radiance)) ? shown : radiance;
+  b_frame[index] = any(isinf(radiance)) || any(isnan(radiance)) ? shown : radiance;
 }

@@ -9,6 +9,7 @@
 
 #include "card_scene.h"
 #include "core/timer.h"
+#include "denoise_support.h"
 #include "hipr/renderer.h"
 #include "hipr/scene_loader.h"
 #include "image/error_metrics.h"
@@ -18,68 +19,12 @@
 namespace hipr {
 namespace {
 
-constexpr uint32_t kSize = 32;
-
-DenoiseSettings denoise_on() {
-  DenoiseSettings s;
-  s.enabled = true;
-  return s;
-}
-
-// Two cards side by side filling the view, each its own surface (G-buffer record): the left
-// one on x < 0, the right one on x > 0.
-Scene two_cards() {
-  Scene scene = test::make_card_camera_scene(1.0f);
-  const glm::mat4 half = glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 1.0f, 1.0f));
-  test::add_card(scene, "left", glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0, 0)) * half,
-                 default_material_params());
-  test::add_card(scene, "right", glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0, 0)) * half,
-                 default_material_params());
-  return scene;
-}
-
-// A display written directly: per pixel the value shown, whether it is of the scene since the
-// last edit, and behind it `samples` samples of standard deviation `deviation` (the
-// accumulation's sums say so, as if they had been rendered).
-struct SyntheticPixel {
-  glm::vec3 shown{0.0f};
-  bool current = true;
-  uint32_t samples = 4;
-  float deviation = 0.5f;
-};
-
-void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels) {
-  RenderState& state = *renderer.render_state();
-  std::vector<abi::DisplayTexel> texels(pixels.size());
-  std::vector<abi::PixelAccum> accum(pixels.size());
-  for (size_t i = 0; i < pixels.size(); ++i) {
-    const SyntheticPixel& p = pixels[i];
-    abi::DisplayTexel& t = texels[i];
-    t.shown = t.stale = p.shown;
-    t.shownSamples = t.staleSamples = p.samples;
-    t.shownRecord = t.staleRecord = abi::kRecordUnknown;
-    t.flags = p.current ? abi::kShownCurrent : 0u;
-    const float n = float(p.samples);
-    accum[i].sum = p.shown * n;
-    accum[i].count = p.current ? p.samples : 0u;
-    // sum of squares = n (mean^2 + variance (n - 1) / n): the sample variance is deviation^2.
-    accum[i].sumSquares = n * p.shown * p.shown + glm::vec3((n - 1.0f) * p.deviation * p.deviation);
-  }
-  state.resolve.display.upload(texels.data(), texels.size() * sizeof(abi::DisplayTexel));
-  state.film.accumulation.upload(accum.data(), accum.size() * sizeof(abi::PixelAccum));
-}
-
-// White noise around `value` (seeded), as a render's pixels scatter around their mean.
-std::vector<SyntheticPixel> noisy(float value, float deviation, uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<float> normal(0.0f, deviation / 2.0f);  // 4 samples: sd / 2
-  std::vector<SyntheticPixel> pixels(kSize * kSize);
-  for (SyntheticPixel& p : pixels) {
-    p.shown = glm::vec3(std::max(value + normal(rng), 0.0f));
-    p.deviation = deviation;
-  }
-  return pixels;
-}
+using test::denoise_on;
+using test::kSize;
+using test::noisy;
+using test::SyntheticPixel;
+using test::two_cards;
+using test::write_display;
 
 TEST(Denoise, FiltersACopyAndLeavesAccumulationAndDisplayAlone) {
   const Scene scene = load_scene(test::asset("cornell_box.gltf"));
@@ -245,6 +190,7 @@ TEST(Denoise, TheDeviceTimesEachKernelOfTheFilter) {
   EXPECT_GT(again->prepare, 0.0);
   EXPECT_GT(again->atrous, 0.0);
   EXPECT_GT(again->blend, 0.0);
+  EXPECT_GT(again->temporal, 0.0);
   EXPECT_LE(again->total(), wall);
 }
 

@@ -6,7 +6,9 @@ For each scene: a high-spp reference (hipr, its own seed, cached in OUTDIR), the
 the reference (`hipr compare`, FLIP at exposure 0 and the clamp tone mapper, as `hipr bench`
 measures, and relMSE). The issue's target reads off the table: the denoised 4-spp image's FLIP
 against the raw 64-spp image's. Temporal stability as a converging view shows it: FLIP between the
-images at n and n + 1 spp (the same first n samples), raw and denoised. Also the filter's cost (`denoise_seconds` of --stats-json, its
+images at n and n + 1 spp (the same first n samples), raw, denoised, and denoised a frame per
+sample as the viewer shows them (`--denoise-frames`: each frame keeps part of the last, within
+its noise), whose FLIP against the reference is reported too (what the steadiness costs). Also the filter's cost (`denoise_seconds` of --stats-json, its
 kernels compiled) at --cost-size. Writes OUTDIR/denoise.json and OUTDIR/denoise.md (the table of
 BENCHMARKS.md, "Denoised display").
 
@@ -80,6 +82,11 @@ def main():
             denoised_next = os.path.join(a.outdir, f"{name}_{spp + 1}_denoised.exr")
             run(["render", scene, *extra, *size, "--spp", str(spp + 1), "--denoise", "--raw-output", raw_next,
                  "-o", denoised_next, "-q"])
+            # The same two frames as a viewer converging a sample a frame shows them.
+            frames = [os.path.join(a.outdir, f"{name}_{n}_frames.exr") for n in (spp, spp + 1)]
+            for n, image in zip((spp, spp + 1), frames):
+                run(["render", scene, *extra, *size, "--spp", str(n), "--denoise", "--denoise-frames",
+                     "-o", image, "-q"])
             rows[spp] = {
                 "raw_flip": compare(raw, reference, "flip"),
                 "denoised_flip": compare(denoised, reference, "flip"),
@@ -87,6 +94,8 @@ def main():
                 "denoised_relmse": compare(denoised, reference, "relmse"),
                 "raw_flicker": compare(raw_next, raw, "flip"),
                 "denoised_flicker": compare(denoised_next, denoised, "flip"),
+                "frames_flip": compare(frames[0], reference, "flip"),
+                "frames_flicker": compare(frames[1], frames[0], "flip"),
                 "render_seconds": seconds["render_seconds"],
                 "denoise_seconds": seconds["denoise_seconds"],
             }
@@ -117,10 +126,20 @@ def main():
     for name, rows in results.items():
         cells = [f"{rows[s]['raw_relmse']:.4g}" for s in spps] + [f"{rows[s]['denoised_relmse']:.4g}" for s in spps]
         lines.append(f"| {name} | " + " | ".join(cells) + " |")
-    lines += ["", "Frame to frame (FLIP between n and n + 1 spp), raw / denoised:", "",
+    lines += ["", "Frame to frame (FLIP between n and n + 1 spp), raw / denoised / denoised a frame per "
+              "sample (the viewer); steadier than raw, the viewer's frames:", "",
+              "| scene | " + " | ".join(f"{s} spp" for s in spps) + " | " +
+              " | ".join(f"raw / frames {s} spp" for s in spps) + " |",
+              "|---|" + "---:|" * (2 * len(spps))]
+    for name, rows in results.items():
+        cells = [f"{rows[s]['raw_flicker']:.4f} / {rows[s]['denoised_flicker']:.4f} / "
+                 f"{rows[s]['frames_flicker']:.4f}" for s in spps]
+        cells += [f"{rows[s]['raw_flicker'] / rows[s]['frames_flicker']:.2f}x" for s in spps]
+        lines.append(f"| {name} | " + " | ".join(cells) + " |")
+    lines += ["", "FLIP against the reference, denoised at once / a frame per sample (the viewer):", "",
               "| scene | " + " | ".join(f"{s} spp" for s in spps) + " |", "|---|" + "---:|" * len(spps)]
     for name, rows in results.items():
-        cells = [f"{rows[s]['raw_flicker']:.4f} / {rows[s]['denoised_flicker']:.4f}" for s in spps]
+        cells = [f"{rows[s]['denoised_flip']:.4f} / {rows[s]['frames_flip']:.4f}" for s in spps]
         lines.append(f"| {name} | " + " | ".join(cells) + " |")
     if cost:
         lines += ["", f"Filter at {cost['size']}x{cost['size']} on {cost['device']}: "

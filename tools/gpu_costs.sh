@@ -62,7 +62,7 @@ def stats(path):
 
 for size in sizes:
     print(f"\n{size}:\n")
-    print("| scene | device | filter on the device (ms: prepare + a-trous + blend) | filter, wall (ms) | "
+    print("| scene | device | filter on the device (ms: prepare + a-trous + blend + temporal) | filter, wall (ms) | "
           "filter + read-back (ms) | guide training (ms per state) | guide (MiB) | "
           "32 spp, tree (ms, two runs) | power / tree | guided / tree |")
     print("|---|---|---|---:|---:|---:|---:|---|---:|---:|")
@@ -77,7 +77,7 @@ for size in sizes:
         training = 1000 * g["guide_training_seconds"] / max(g["guide_trainings"], 1)
         gpu = d.get("denoise_filter_gpu_seconds")
         on_device = (f'{1000 * gpu["total"]:.2f} ({1000 * gpu["prepare"]:.2f} + {1000 * gpu["atrous"]:.2f} + '
-                     f'{1000 * gpu["blend"]:.2f})' if gpu else "-")
+                     f'{1000 * gpu["blend"]:.2f} + {1000 * gpu.get("temporal", 0.0):.2f})' if gpu else "-")
         print(f'| {name} | {d["device"]} | {on_device} | {1000 * d["denoise_filter_seconds"]:.2f} | '
               f'{1000 * d["denoise_seconds"]:.2f} | {training:.1f} | {g["guide_bytes"] / 2**20:.1f} | '
               f'{1000 * t1["render_seconds"]:.1f}, {1000 * t2["render_seconds"]:.1f} | '

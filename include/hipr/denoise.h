@@ -16,18 +16,23 @@ struct DenoiseSettings {
   // The filter knows what the display shows (samples behind each value, stale or fresh, which
   // surface): false is the ablation that knows only the accumulation.
   bool display_state = true;
+  // The share of the last frame shown that the next keeps, per sample the pixel gained (SVGF's
+  // temporal filter of its output, denoise_temporal.comp): a converging view stops shimmering.
+  // Never kept across a change; 0: every frame shows its own filter alone.
+  float history = 0.8f;
 
   bool operator==(const DenoiseSettings&) const = default;
 };
 
 inline constexpr uint32_t kMaxDenoisePasses = 8;
+inline constexpr float kMaxDenoiseHistory = 0.95f;
 
 // One run of the filter as the device timed it (GPU timestamps between its kernels): what a
 // viewer's frame pays for it, without the host's submission and wait. The guides are traced
 // only after an edit or a camera move (0 otherwise).
 struct DenoiseGpuSeconds {
-  double guides = 0.0, prepare = 0.0, atrous = 0.0, blend = 0.0;
-  double total() const { return guides + prepare + atrous + blend; }
+  double guides = 0.0, prepare = 0.0, atrous = 0.0, blend = 0.0, temporal = 0.0;
+  double total() const { return guides + prepare + atrous + blend + temporal; }
 };
 
 struct DenoiseSettingInfo {
@@ -59,6 +64,11 @@ void for_each_denoise_setting(Settings& s, Visitor&& visit) {
                            "Ablation: the denoiser ignores what hipr's display knows (samples "
                            "behind each value, stale or fresh) and reads the accumulation only"},
         s.display_state);
+  visit(DenoiseSettingInfo{"history", "--denoise-history",
+                           "Share of the last frame shown that the denoised display keeps per new "
+                           "sample, within the pixel's noise (0: none); never kept across a change",
+                           0.0f, kMaxDenoiseHistory},
+        s.history);
 }
 
 }  // namespace hipr

@@ -609,9 +609,10 @@ struct DenoisePush {
   uint width;
   uint height;
   uint step;           // a-trous pass: the taps' spacing (1, 2, 4, ...)
-  uint unused;
+  uint historyReset;   // temporal: 1 starts the history over (an edit, a camera move, settings)
   float strength;      // scales the luminance edge's tolerance (0: nothing moves)
   uint displayState;   // prepare: 1 uses the display's sample counts and scene states
+  float historyKeep;   // temporal: the share of the last frame kept per sample (0: none)
 };
 
 #ifdef __cplusplus

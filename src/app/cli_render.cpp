@@ -30,6 +30,9 @@ struct RenderOptions {
   std::filesystem::path stats_json;
   DisplayFlags display;
   DenoiseSettings denoise;
+  // Filter after every sample, each frame keeping part of the last (DenoiseSettings::history):
+  // what a viewer converging a sample a frame shows.
+  bool denoise_frames = false;
 };
 
 // The filter alone, run `runs` times: the median wall time of each run (submission and wait
@@ -66,7 +69,8 @@ nlohmann::json gpu_seconds_json(const std::optional<DenoiseGpuSeconds>& gpu) {
   return {{"total", gpu->total()},
           {"prepare", gpu->prepare},
           {"atrous", gpu->atrous},
-          {"blend", gpu->blend}};
+          {"blend", gpu->blend},
+          {"temporal", gpu->temporal}};
 }
 
 int run_render(RenderOptions& o) {
@@ -81,6 +85,7 @@ int run_render(RenderOptions& o) {
   };
   if (!o.raw_outputs.empty() && !o.denoise.enabled)
     throw InputError("--raw-output needs --denoise (without it -o writes the raw image)");
+  if (o.denoise_frames && !o.denoise.enabled) throw InputError("--denoise-frames needs --denoise");
   std::vector<std::filesystem::path> all_outputs = o.outputs;
   all_outputs.insert(all_outputs.end(), o.raw_outputs.begin(), o.raw_outputs.end());
   for (const auto& output : all_outputs) {
@@ -114,9 +119,13 @@ int run_render(RenderOptions& o) {
   ProgressBar progress(o.common.spp, !o.common.quiet);
   uint32_t done = 0, batch = 1;
   while (done < o.common.spp) {
-    const uint32_t now = std::min(batch, o.common.spp - done);
+    const uint32_t now = o.denoise_frames ? 1 : std::min(batch, o.common.spp - done);
     const Timer batch_timer;
     renderer.add_samples_full_frame(now);
+    if (o.denoise_frames) {
+      renderer.resolve_display_all(DisplayRule::Immediate);
+      renderer.run_denoiser(o.denoise);
+    }
     done += now;
     progress.update(done, timer.seconds());
     const double seconds = batch_timer.seconds();
@@ -257,6 +266,10 @@ Command add_render_command(CLI::App& app) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--stats-json", options->stats_json, "Write render statistics as JSON");
   add_denoise_flags(*cmd, options->denoise);
+  cmd->add_flag("--denoise-frames", options->denoise_frames,
+                "With --denoise: filter after every sample, as a viewer converging a sample a "
+                "frame shows it (each frame keeps part of the last: --denoise-history); -o "
+                "writes the last frame");
   add_display_flags(*cmd, options->display, "PNG output");
   add_common_options(*cmd, options->common);
   return {cmd, [options] { return run_render(*options); }};

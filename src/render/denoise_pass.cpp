@@ -26,6 +26,8 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
       m_variance(ctx, pixels(width, height) * sizeof(float), kStorage),
       m_ping(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
       m_pong(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
+      m_frame(ctx, pixels(width, height) * sizeof(abi::vec3), kStorage),
+      m_history(ctx, pixels(width, height) * 2 * sizeof(uint32_t), kStorage),
       m_trace_guides(ctx, "denoise_guides.comp", {},
                      {{abi::kDenoiseGuides, &m_guides}, {abi::kDenoiseGeometry, &m_geometry}}, 0,
                      &scene.descriptor_set()),
@@ -46,6 +48,15 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
                    sizeof(abi::DenoisePush), &scene.descriptor_set()),
       m_blend_pong(ctx, "denoise_blend.comp", {}, blend_bindings(display, m_pong),
                    sizeof(abi::DenoisePush), &scene.descriptor_set()),
+      m_temporal(ctx, "denoise_temporal.comp", {},
+                 {{abi::kDenoiseGuides, &m_guides},
+                  {abi::kDenoiseKeys, &m_keys},
+                  {abi::kDenoiseSamples, &m_samples},
+                  {abi::kDenoiseVariance, &m_variance},
+                  {abi::kDenoiseFrame, &m_frame},
+                  {abi::kDenoiseResult, &result},
+                  {abi::kDenoiseHistory, &m_history}},
+                 sizeof(abi::DenoisePush), &scene.descriptor_set()),
       m_stopwatch(ctx, kMarks) {}
 
 std::vector<vk::BufferBinding> DenoisePass::atrous_bindings(const vk::Buffer& input,
@@ -60,7 +71,7 @@ std::vector<vk::BufferBinding> DenoisePass::blend_bindings(const vk::Buffer& dis
   return {{abi::kDenoiseGuides, &m_guides},     {abi::kDenoiseKeys, &m_keys},
           {abi::kDenoiseDisplay, &display},     {abi::kDenoiseInput, &filtered},
           {abi::kDenoiseVariance, &m_variance}, {abi::kDenoiseSamples, &m_samples},
-          {abi::kDenoiseResult, &result}};
+          {abi::kDenoiseFrame, &m_frame}};
 }
 
 void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings) {
@@ -76,6 +87,9 @@ void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings,
   if (watch) watch->reset(cmd);
   vk::compute_to_compute_barrier(cmd);
   mark(kStart);
+  // What the last frame showed is of another scene, view or filter: nothing of it is kept.
+  const bool history_reset = !m_guides_current || m_last_settings != settings;
+  m_last_settings = settings;
   if (!m_guides_current) {
     m_trace_guides.dispatch(cmd, nullptr, groups);
     vk::compute_to_compute_barrier(cmd);
@@ -87,6 +101,8 @@ void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings,
   push.height = m_height;
   push.strength = settings.enabled ? std::max(settings.strength, 0.0f) : 0.0f;
   push.displayState = settings.display_state ? 1u : 0u;
+  push.historyReset = history_reset ? 1u : 0u;
+  push.historyKeep = std::clamp(settings.history, 0.0f, kMaxDenoiseHistory);
   m_prepare.dispatch(cmd, &push, groups);
   mark(kPrepareDone);
   const uint32_t passes = std::clamp(settings.passes, 1u, kMaxDenoisePasses);
@@ -101,6 +117,9 @@ void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings,
                          groups_for(m_height, abi::kDenoiseBlendTileHeight);
   (passes % 2 == 0 ? m_blend_ping : m_blend_pong).dispatch(cmd, &push, tiles);
   mark(kBlendDone);
+  vk::compute_to_compute_barrier(cmd);
+  m_temporal.dispatch(cmd, &push, groups);
+  mark(kTemporalDone);
 }
 
 std::optional<DenoiseGpuSeconds> DenoisePass::run(const DenoiseSettings& settings) {
@@ -114,7 +133,8 @@ std::optional<DenoiseGpuSeconds> DenoisePass::run(const DenoiseSettings& setting
   return DenoiseGpuSeconds{.guides = guides,
                            .prepare = t[kPrepareDone] - t[kStart] - guides,
                            .atrous = t[kAtrousDone] - t[kPrepareDone],
-                           .blend = t[kBlendDone] - t[kAtrousDone]};
+                           .blend = t[kBlendDone] - t[kAtrousDone],
+                           .temporal = t[kTemporalDone] - t[kBlendDone]};
 }
 
 ImageRGB DenoisePass::result_image() const {

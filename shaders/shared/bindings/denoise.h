@@ -1,5 +1,5 @@
 // Set 0 of the display denoiser (DenoisePass: denoise_guides.comp, denoise_prepare.comp,
-// denoise_atrous.comp, denoise_blend.comp).
+// denoise_atrous.comp, denoise_blend.comp, denoise_temporal.comp).
 // Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
 // binding numbers, named by the kernels' GLSL layouts and by their C++ pass.
 #ifndef HIPR_BINDINGS_DENOISE_H
@@ -17,10 +17,12 @@ HIPR_CONST uint kDenoiseAccumulation = 2u;  // PixelAccum per pixel: the samples
 HIPR_CONST uint kDenoiseKeys = 3u;          // uint per pixel: kDenoise* key (prepare writes)
 HIPR_CONST uint kDenoiseInput = 4u;         // vec4 per pixel: demodulated radiance, its variance
 HIPR_CONST uint kDenoiseOutput = 5u;        // vec4 per pixel: the same after a pass
-HIPR_CONST uint kDenoiseResult = 6u;        // vec3 per pixel: the denoised radiance
+HIPR_CONST uint kDenoiseResult = 6u;        // vec3 per pixel: the denoised radiance shown (temporal writes)
 HIPR_CONST uint kDenoiseSamples = 7u;       // uint per pixel: samples behind the value (prepare writes)
 HIPR_CONST uint kDenoiseVariance = 8u;      // float per pixel: the shown value's variance (prepare writes)
 HIPR_CONST uint kDenoiseGeometry = 9u;      // uvec2 per pixel: a guide's normal and distance (guides write)
+HIPR_CONST uint kDenoiseFrame = 10u;        // vec3 per pixel: this frame's filtered radiance (blend writes)
+HIPR_CONST uint kDenoiseHistory = 11u;      // uvec2 per pixel: key and samples last shown (temporal)
 
 // denoise_blend.comp's workgroup: a tile of pixels whose windows' sums are read from shared
 // memory. 16 x 8 (and the windows' margin: 26 x 18 places of 28 bytes, 13 KB) keeps within what

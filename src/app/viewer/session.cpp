@@ -222,7 +222,13 @@ bool Session::shows_denoised(const DenoiseSettings& denoise) const {
 }
 
 ImageRGB Session::shown(const DenoiseSettings& denoise) {
-  return shows_denoised(denoise) ? m_renderer->denoised_image(denoise) : displayed();
+  return shows_denoised(denoise) ? m_renderer->denoised_image(frame_denoise(denoise)) : displayed();
+}
+
+DenoiseSettings Session::frame_denoise(const DenoiseSettings& denoise) const {
+  DenoiseSettings settings = denoise;
+  if (converged()) settings.history = 0.0f;
+  return settings;
 }
 
 bool Session::edit_shown_unpresented() const {
@@ -251,7 +257,7 @@ void Session::render_overlay(DebugOverlay overlay, uint32_t selected_node,
 const vk::Buffer& Session::denoised_display() { return hipr::denoised_display(*m_renderer); }
 
 void Session::record_denoise(VkCommandBuffer cmd, const DenoiseSettings& settings) {
-  hipr::record_denoise(*m_renderer, cmd, settings);
+  hipr::record_denoise(*m_renderer, cmd, frame_denoise(settings));
 }
 
 void Session::ensure_gbuffer() {

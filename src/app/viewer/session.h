@@ -103,6 +103,11 @@ class Session {
   bool shows_denoised(const DenoiseSettings& denoise) const;
   // What the window shows: displayed(), or its denoised copy (shows_denoised).
   ImageRGB shown(const DenoiseSettings& denoise);
+  // The denoiser's settings for the frame shown now: while the image converges each frame keeps
+  // part of the last (DenoiseSettings::history: steady, not shimmering); once rendering has
+  // paused, none: the last frame is the filter of the final samples alone, what
+  // `hipr render --denoise` writes of them.
+  DenoiseSettings frame_denoise(const DenoiseSettings& denoise) const;
   // Increments whenever the display may have changed (steps, edits, a new renderer).
   uint64_t display_version() const { return m_display_version; }
   // The last edit is on the display already and no frame has shown it yet: a light edit relit
@@ -125,7 +130,7 @@ class Session {
   // meters nothing.
   float metered_exposure();
   // The denoiser's result and its recording into a frame (hipr::denoised_display,
-  // hipr::record_denoise).
+  // hipr::record_denoise), with frame_denoise's settings.
   const vk::Buffer& denoised_display();
   void record_denoise(VkCommandBuffer cmd, const DenoiseSettings& settings);
   // The G-buffer of the scene as it is now: instance per pixel, and one pixel's hit.

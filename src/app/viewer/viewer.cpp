@@ -277,14 +277,14 @@ void Viewer::update_overlay() {
 void Viewer::update_source(VkCommandBuffer cmd) {
   const bool denoised = m_session->shows_denoised(m_state.denoise);
   const SourceKey key{m_session->renderer_id(), denoised ? m_session->display_version() : 0,
-                      denoised ? m_state.denoise : DenoiseSettings{}};
+                      denoised ? m_session->frame_denoise(m_state.denoise) : DenoiseSettings{}};
   if (key == m_source_key) return;
   const bool same_buffer =
       m_source_key.renderer == key.renderer && m_source_key.denoise.enabled == key.denoise.enabled;
   m_source_key = key;
   if (denoised) {
     if (!same_buffer) m_display.show_radiance(m_session->denoised_display());
-    m_session->record_denoise(cmd, m_state.denoise);
+    m_session->record_denoise(cmd, key.denoise);
   } else if (!same_buffer) {
     m_display.show(display_texels(m_session->renderer()));
   }

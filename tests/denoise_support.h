@@ -1,0 +1,37 @@
+#pragma once
+// What the display denoiser's tests share: a view of two cards, displays written directly
+// (values, their samples and noise, stale or fresh), noisy and settings helpers.
+#include <cstdint>
+#include <vector>
+
+#include "hipr/denoise.h"
+#include "hipr/renderer.h"
+#include "hipr/scene.h"
+
+namespace hipr::test {
+
+inline constexpr uint32_t kSize = 32;  // the synthetic displays' width and height
+
+DenoiseSettings denoise_on();
+
+// Two cards side by side filling the view, each its own surface (G-buffer record): the left
+// one on x < 0, the right one on x > 0.
+Scene two_cards();
+
+// A display written directly: per pixel the value shown, whether it is of the scene since the
+// last edit, and behind it `samples` samples of standard deviation `deviation` (the
+// accumulation's sums say so, as if they had been rendered).
+struct SyntheticPixel {
+  glm::vec3 shown{0.0f};
+  bool current = true;
+  uint32_t samples = 4;
+  float deviation = 0.5f;
+};
+
+void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels);
+
+// kSize x kSize pixels of white noise around `value` (seeded), as a render's 4-sample pixels
+// scatter around their mean.
+std::vector<SyntheticPixel> noisy(float value, float deviation, uint32_t seed);
+
+}  // namespace hipr::test
