@@ -22,12 +22,6 @@ using test::SyntheticPixel;
 using test::two_cards;
 using test::write_display;
 
-DenoiseSettings without_history() {
-  DenoiseSettings s = denoise_on();
-  s.history = 0.0f;
-  return s;
-}
-
 // Mean absolute difference of two images' luminance: how much a frame moved from the last.
 double mean_change(const ImageRGB& a, const ImageRGB& b) {
   double sum = 0.0;
@@ -55,7 +49,7 @@ TEST(DenoiseHistory, AConvergingViewIsSteadierFromFrameToFrame) {
       renderer->resolve_display_all(DisplayRule::Immediate);
     }
     ImageRGB now_steady = steady.denoised_image(denoise_on());
-    ImageRGB now_plain = plain.denoised_image(without_history());
+    ImageRGB now_plain = plain.denoised_image(without_history(denoise_on()));
     if (frame > 4) {
       steady_change += mean_change(now_steady, last_steady);
       plain_change += mean_change(now_plain, last_plain);

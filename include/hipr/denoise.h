@@ -24,6 +24,13 @@ struct DenoiseSettings {
   bool operator==(const DenoiseSettings&) const = default;
 };
 
+// A still image: the filter of the samples alone, nothing of earlier frames (what a render
+// writes, what a view shows once it has converged).
+inline DenoiseSettings without_history(DenoiseSettings settings) {
+  settings.history = 0.0f;
+  return settings;
+}
+
 inline constexpr uint32_t kMaxDenoisePasses = 8;
 inline constexpr float kMaxDenoiseHistory = 0.95f;
 

@@ -72,12 +72,14 @@ void write_pair(const fs::path& dir, const std::string& stem, const ImageRGB& im
   write_image(dir / (stem + ".png"), image, {}, display);
 }
 
-// The display as `stem`, and with --denoise its denoised copy as `stem`_denoised.
+// The display as `stem`, and with --denoise its denoised copy as `stem`_denoised: a still of
+// each (the steps written are not a view's frames: no history of them is kept).
 void write_shown(const ReplayOptions& o, const std::string& stem, Renderer& renderer,
                  const DisplayTransform& display) {
   write_pair(o.output, stem, renderer.displayed_image(), display);
   if (o.denoise.enabled)
-    write_pair(o.output, stem + "_denoised", renderer.denoised_image(o.denoise), display);
+    write_pair(o.output, stem + "_denoised", renderer.denoised_image(without_history(o.denoise)),
+               display);
 }
 
 void write_debug_images(const fs::path& dir, size_t edit, const Renderer& renderer) {

@@ -42,10 +42,11 @@ CurvePoint measured(uint32_t step, double work, double wall_seconds, const Image
 }
 
 // What the screen shows: the display, or a denoised copy of it when the run asks (the display
-// the scheduler judges stays as it is).
-ImageRGB shown_image(Renderer& renderer, const PolicyRunOptions& options) {
-  return options.denoise.enabled ? renderer.denoised_image(options.denoise)
-                                 : renderer.displayed_image();
+// the scheduler judges stays as it is): a frame of the denoiser's history while the image
+// converges, the final samples' filter alone once it has, as the viewer shows them.
+ImageRGB shown_image(Renderer& renderer, const PolicyRunOptions& options, bool converged) {
+  if (!options.denoise.enabled) return renderer.displayed_image();
+  return renderer.denoised_image(converged ? without_history(options.denoise) : options.denoise);
 }
 
 // Adds the point measured at `step` to the curve, and `shown` as each capture its work reaches.
@@ -107,7 +108,7 @@ PolicyRun run_policy(Renderer& renderer, const Scene& after, const ChangeSet& ch
   // Measures what the screen shows; returns the display (what feedback is judged by).
   const auto evaluate = [&](uint32_t step, double wall_seconds) {
     record(run, step, step == 0 ? 0.0 : scheduler.work_since_edit(), wall_seconds,
-           shown_image(renderer, options), reference, options);
+           shown_image(renderer, options, run.converged), reference, options);
     return scheduler.displayed_image();
   };
   double wall = 0.0;  // only scheduling and rendering: evaluation and read-backs are left out
@@ -152,8 +153,8 @@ PolicyRun run_cold_start(Renderer& renderer, const ImageRGB& reference,
   PolicyRun run;
   double wall = 0.0;
   const auto evaluate = [&](uint32_t step) {
-    record(run, step, scheduler.work_since_edit(), wall, shown_image(renderer, options), reference,
-           options);
+    record(run, step, scheduler.work_since_edit(), wall,
+           shown_image(renderer, options, run.converged), reference, options);
   };
   if (!options.focus.empty()) {
     const Timer timer;
@@ -191,7 +192,8 @@ PolicyRun run_drag(Renderer& renderer, const std::vector<Scene>& states,
   uint32_t non_finite = 0;   // the counters restart at every edit
   uint32_t step = 0;
   const auto evaluate = [&](double work) {
-    record(run, step, work, wall, shown_image(renderer, options), reference, options);
+    record(run, step, work, wall, shown_image(renderer, options, run.converged), reference,
+           options);
   };
   for (size_t e = 0; e < changes.size(); ++e) {
     if (e > 0) {

@@ -226,9 +226,7 @@ ImageRGB Session::shown(const DenoiseSettings& denoise) {
 }
 
 DenoiseSettings Session::frame_denoise(const DenoiseSettings& denoise) const {
-  DenoiseSettings settings = denoise;
-  if (converged()) settings.history = 0.0f;
-  return settings;
+  return converged() ? without_history(denoise) : denoise;
 }
 
 bool Session::edit_shown_unpresented() const {
