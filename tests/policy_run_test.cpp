@@ -12,31 +12,51 @@
 namespace hipr {
 namespace {
 
+// The Cornell box's tall block moved, rendered at 8 spp before it: what a bench run starts from,
+// with steps of 4 tiles whose first visits take 2 samples, converged at 8.
+struct TallBlockMove {
+  Scene before = load_scene(test::asset("cornell_box.gltf"));
+  Scene after = moved(before);
+  ChangeSet changes = diff_scenes(before, after);
+  RenderSettings settings = test::render_settings(48, 40, 8, 6, 13);
+  ImageRGB reference = test::full_frame_display(after, settings, 16);
+  Renderer renderer{test::context(), before, settings};
+  RenderSnapshot start = rendered(renderer);
+  bench::PolicyRunOptions options = run_options();
+
+  static Scene moved(Scene scene) {
+    apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt});
+    return scene;
+  }
+  static RenderSnapshot rendered(Renderer& renderer) {
+    renderer.add_samples_full_frame(8);
+    return snapshot_render(renderer);
+  }
+  static bench::PolicyRunOptions run_options() {
+    bench::PolicyRunOptions options;
+    options.schedule.tiles_per_step = 4;
+    options.schedule.first_visit_spp = 2;
+    options.target_spp = 8;
+    options.dense_until = 1e9;  // every step evaluated
+    return options;
+  }
+  bench::PolicyRun run() {
+    bench::PolicyRun result =
+        bench::run_policy(renderer, after, changes, start, reference, {}, options);
+    renderer.update_scene(before, diff_scenes(after, before));  // ready for the next run
+    return result;
+  }
+};
+
 // A drag of one edit is that edit: measured point by point as run_policy measures it. (The drag
 // once set neither the converged count nor the leads: its hipr ran without the edit's lead.)
 TEST(PolicyRun, ADragOfOneEditIsScheduledAsThatEdit) {
-  const Scene before = load_scene(test::asset("cornell_box.gltf"));
-  Scene after = before;
-  apply_edit(after, TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt});
-  const ChangeSet changes = diff_scenes(before, after);
-  const RenderSettings settings = test::render_settings(48, 40, 8, 6, 13);
-  const ImageRGB reference = test::full_frame_display(after, settings, 16);
-
-  Renderer renderer(test::context(), before, settings);
-  renderer.add_samples_full_frame(8);
-  const RenderSnapshot start = snapshot_render(renderer);
-  bench::PolicyRunOptions options;
-  options.schedule.tiles_per_step = 4;
-  options.schedule.first_visit_spp = 2;
-  options.target_spp = 8;
-  options.dense_until = 1e9;  // both evaluate after every step
-  ASSERT_GT(options.schedule.edit_lead, 0u);
-
-  const bench::PolicyRun single =
-      bench::run_policy(renderer, after, changes, start, reference, {}, options);
-  renderer.update_scene(before, diff_scenes(after, before));
+  TallBlockMove move;
+  ASSERT_GT(move.options.schedule.edit_lead, 0u);
+  const bench::PolicyRun single = move.run();
   const bench::PolicyRun drag =
-      bench::run_drag(renderer, {before, after}, {changes}, start, {reference}, 0.25, options);
+      bench::run_drag(move.renderer, {move.before, move.after}, {move.changes}, move.start,
+                      {move.reference}, 0.25, move.options);
   ASSERT_TRUE(single.converged);
   ASSERT_TRUE(drag.converged);
   ASSERT_EQ(drag.curve.size(), single.curve.size());
@@ -50,26 +70,12 @@ TEST(PolicyRun, ADragOfOneEditIsScheduledAsThatEdit) {
 // Measured denoised, every policy ends on the same image: the final samples' filter alone, bit
 // for bit, whatever frames its history kept on the way (the displays end bit-identical).
 TEST(PolicyRun, EveryPolicyEndsOnTheSameDenoisedImage) {
-  const Scene before = load_scene(test::asset("cornell_box.gltf"));
-  Scene after = before;
-  apply_edit(after, TransformEdit{"tall_block", glm::vec3(0.06f, 0.0f, -0.08f), std::nullopt});
-  const ChangeSet changes = diff_scenes(before, after);
-  const RenderSettings settings = test::render_settings(48, 40, 8, 6, 13);
-  const ImageRGB reference = test::full_frame_display(after, settings, 16);
-  Renderer renderer(test::context(), before, settings);
-  renderer.add_samples_full_frame(8);
-  const RenderSnapshot start = snapshot_render(renderer);
-  bench::PolicyRunOptions options;
-  options.schedule.tiles_per_step = 4;
-  options.schedule.first_visit_spp = 2;
-  options.target_spp = 8;
-  options.dense_until = 1e9;  // every step a frame of the denoiser's history
-  options.denoise.enabled = true;
+  TallBlockMove move;
+  move.options.denoise.enabled = true;  // every step a frame of the denoiser's history
   std::vector<bench::PolicyRun> runs;
   for (const Policy policy : {Policy::Hipr, Policy::Full, Policy::Spiral}) {
-    options.schedule.policy = policy;
-    runs.push_back(bench::run_policy(renderer, after, changes, start, reference, {}, options));
-    renderer.update_scene(before, diff_scenes(after, before));
+    move.options.schedule.policy = policy;
+    runs.push_back(move.run());
   }
   for (const bench::PolicyRun& run : runs) {
     ASSERT_TRUE(run.converged);
