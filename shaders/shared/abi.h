@@ -585,7 +585,7 @@ struct SortPush {
 struct DenoiseGuide {
   uint record;     // GeometryRecord, kInvalidIndex for background
   float distance;  // along the pixel centre's ray (0 for background)
-  uint normal;     // shading normal facing the camera, octahedral, two snorm16
+  uint normal;     // vertex normal (before normal mapping) facing the camera, octahedral, two snorm16
   uint albedo;     // what the radiance is demodulated by: unorm8 RGB (A unused)
   uint emissionRG; // what the surface emits toward the camera, set apart before the filter:
   uint emissionB;  // three halfs (infinite past half's range: such a pixel is shown as it is);
