@@ -118,21 +118,28 @@ int run_render(RenderOptions& o) {
   const CpuTimer cpu_timer;
   ProgressBar progress(o.common.spp, !o.common.quiet);
   uint32_t done = 0, batch = 1;
+  // --denoise-frames: the filter of every frame, kept out of the render's own times (and of
+  // its samples and rays per second).
+  double frames_denoise_seconds = 0.0, frames_denoise_cpu_seconds = 0.0;
   while (done < o.common.spp) {
     const uint32_t now = o.denoise_frames ? 1 : std::min(batch, o.common.spp - done);
     const Timer batch_timer;
     renderer.add_samples_full_frame(now);
     if (o.denoise_frames) {
+      const Timer frame_timer;
+      const CpuTimer frame_cpu_timer;
       renderer.resolve_display_all(DisplayRule::Immediate);
       renderer.run_denoiser(o.denoise);
+      frames_denoise_seconds += frame_timer.seconds();
+      frames_denoise_cpu_seconds += frame_cpu_timer.seconds();
     }
     done += now;
     progress.update(done, timer.seconds());
     const double seconds = batch_timer.seconds();
     if (seconds < 0.25) batch = std::min<uint32_t>(batch * 2, 256);
   }
-  const double render_seconds = timer.seconds();
-  const double render_cpu_seconds = cpu_timer.seconds();
+  const double render_seconds = timer.seconds() - frames_denoise_seconds;
+  const double render_cpu_seconds = cpu_timer.seconds() - frames_denoise_cpu_seconds;
   progress.finish();
 
   const ImageRGB raw = renderer.image();
@@ -195,6 +202,9 @@ int run_render(RenderOptions& o) {
         // its guides traced) and again (what each later image costs); 0 without.
         {"denoise_first_seconds", denoise_first_seconds},
         {"denoise_seconds", denoise_seconds},
+        // --denoise-frames: the filters of every frame together (the display resolve's
+        // included), outside render_seconds; 0 without.
+        {"denoise_frames_seconds", frames_denoise_seconds},
         // The filter alone, as a viewer's frame pays it: no read-back (median of 5, each waited
         // for: a submission's own overhead included).
         {"denoise_filter_seconds", filter_cost.wall_seconds},
