@@ -97,6 +97,44 @@ TEST(Denoise, NeverMixesTwoSurfaces) {
           << x << ", " << y;
 }
 
+// A card whose normal map tilts each pixel's normal its own way (a texel a pixel, up to 55
+// degrees): the map's detail is the surface's shading, not an edge between surfaces. Its noisy
+// pixels are filtered as one surface: measured, 4.2x less squared error (with the mapped normal
+// as the guide, the a-trous normal and tangent-plane weights kept nearly every pixel apart: 1.2x).
+TEST(Denoise, ANormalMapsDetailDoesNotSplitItsSurface) {
+  Scene scene = test::make_card_camera_scene(1.0f);
+  Image bumps;
+  bumps.name = "bumps";
+  bumps.width = bumps.height = kSize;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> tilt(-0.58f, 0.58f);
+  for (uint32_t i = 0; i < kSize * kSize; ++i) {
+    const float x = tilt(rng), y = tilt(rng);
+    const glm::vec3 n(x, y, std::sqrt(1.0f - x * x - y * y));
+    for (int c = 0; c < 3; ++c) bumps.rgba8.push_back(uint8_t(std::lround(127.5f * (n[c] + 1.0f))));
+    bumps.rgba8.push_back(255);
+  }
+  scene.images.push_back(bumps);
+  Texture texture;
+  texture.name = "bumps";
+  texture.flags = kTextureNearest;
+  scene.textures.push_back(texture);
+  MaterialParameters card = default_material_params();
+  card.normal_texture = 0;
+  test::add_card(scene, "card", glm::mat4(1.0f), card);
+  Renderer renderer(test::context(), scene, test::render_settings(kSize, kSize, 8, 4, 0));
+  const float value = 0.5f;
+  write_display(renderer, noisy(value, 0.4f, 5));
+  const ImageRGB shown = renderer.displayed_image();
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  double raw = 0.0, filtered = 0.0;
+  for (size_t i = 1; i < shown.rgb.size(); i += 3) {
+    raw += std::pow(shown.rgb[i] - value, 2.0);
+    filtered += std::pow(denoised.rgb[i] - value, 2.0);
+  }
+  EXPECT_LT(filtered, raw / 3.0) << "raw " << raw << ", denoised " << filtered;
+}
+
 TEST(Denoise, NeverMixesTheSceneBeforeAnEditWithTheSceneAfter) {
   Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
   // One surface: its top half re-rendered since the edit, its bottom half still the stale image.
