@@ -106,9 +106,10 @@ void main() {
     guide.record = hit.record;
     guide.distance = hit.t;
     // The normal before any normal map: one ray samples the map's detail at a point of the
-    // pixel (aliased where the detail is finer), and the a-trous passes' normal weight then
-    // kept a normal-mapped fabric from mixing at all (SheenChair at 4 spp: FLIP 0.0338 with
-    // the mapped normal, 0.0324 without). The detail's shading is in the radiance.
+    // pixel (aliased where the detail is finer), and the a-trous passes' normal and plane
+    // weights then kept a normal-mapped surface's pixels nearly apart (SheenChair at 4 spp:
+    // FLIP 0.0338 with the mapped normal, 0.0324 without). The detail's shading is in the
+    // radiance.
     guide.normal = pack_normal(surface.vertexNormal);
     guide.albedo = packUnorm4x8(vec4(surface_albedo(surface), 1.0));
     // As the camera path adds it at its first hit (trace_tiles.comp: shading_params).
