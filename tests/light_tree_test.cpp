@@ -103,41 +103,49 @@ TEST(LightTree, EveryLightWithPowerHasOneLeafAndNodesBoundTheirChildren) {
     const abi::LightTreeNode& node = tree[index];
     EXPECT_GT(node.power, 0.0f);
     if (node.child & abi::kLightTreeLeaf) {
-      const uint32_t light = node.child & ~abi::kLightTreeLeaf;
+      const uint32_t light = node.child & abi::kLightTreeIndexMask;
       ASSERT_LT(light, lights.table.size());
       ++reached[light];
       EXPECT_EQ(lights.table[light].treeLeaf, index);
-      // Every ancestor's cone holds the light's own: each direction it emits toward.
+      // Every ancestor's cone holds the light's own (each direction it emits toward, as far past
+      // its normals as it reaches), and its sphere holds the light.
       const LightBounds& own = lights.bounds[light];
       const float own_spread = std::acos(std::clamp(own.cos_spread, -1.0f, 1.0f));
       for (uint32_t a = index; a != abi::kInvalidIndex; a = tree[a].parent) {
-        const float spread = std::acos(std::clamp(tree[a].cosSpread, -1.0f, 1.0f));
+        const LightTreeNodeCone cone = light_tree_node_cone(tree[a]);
+        const float spread = std::acos(std::clamp(cone.cos_spread, -1.0f, 1.0f));
         if (spread < 3.14159f) {
           EXPECT_LE(angle_between(tree[a].axis, own.axis) + own_spread, spread + 1e-3f);
         }
+        EXPECT_LE(cone.cos_reach, own.cos_reach);
+        if (own.two_sided) {
+          EXPECT_TRUE(cone.two_sided);
+        }
+        for (int k = 0; k < 8; ++k) {
+          const glm::vec3 corner((k & 1) ? own.hi.x : own.lo.x, (k & 2) ? own.hi.y : own.lo.y,
+                                 (k & 4) ? own.hi.z : own.lo.z);
+          const glm::vec3 d = corner - tree[a].centre;
+          EXPECT_LE(glm::dot(d, d), tree[a].radius2);
+        }
         // A plane bound holds only one-sided triangles facing its way, each in front of it.
-        if (std::isfinite(tree[a].front)) {
+        if (std::isfinite(cone.front)) {
           const abi::Light& l = lights.table[light];
           ASSERT_EQ(l.type, abi::kLightTriangle);
           EXPECT_FALSE(own.two_sided);
           EXPECT_EQ(own.axis, tree[a].axis);
           for (const glm::vec3& v : {l.position, l.position + l.edge1, l.position + l.edge2})
-            EXPECT_GE(glm::dot(tree[a].axis, v), tree[a].front);
+            EXPECT_GE(glm::dot(tree[a].axis, v), cone.front);
         }
       }
       return;
     }
     float power = 0.0f;
-    for (uint32_t c : {node.child, node.child + 1}) {
+    const uint32_t first = node.child & abi::kLightTreeIndexMask;
+    for (uint32_t c : {first, first + 1}) {
       ASSERT_LT(c, tree.size());
       const abi::LightTreeNode& child = tree[c];
       EXPECT_EQ(child.parent, index);
-      EXPECT_TRUE(glm::all(glm::lessThanEqual(node.lo, child.lo)));
-      EXPECT_TRUE(glm::all(glm::greaterThanEqual(node.hi, child.hi)));
-      EXPECT_LE(node.cosReach, child.cosReach + 1e-6f);
-      if (child.twoSided) {
-        EXPECT_TRUE(node.twoSided);
-      }
+      EXPECT_LE(light_tree_node_cone(node).cos_reach, light_tree_node_cone(child).cos_reach);
       power += child.power;
       walk(c, depth + 1);
     }
@@ -188,11 +196,12 @@ TEST(LightTree, OneSidedLightsFacingOneWayAreBoundedByTheirPlane) {
   const std::vector<abi::LightTreeNode> tree = build_light_tree(ceiling.bounds, ceiling.table);
   ASSERT_EQ(tree.size(), 3u);
   for (const abi::LightTreeNode& node : tree) {
-    ASSERT_TRUE(std::isfinite(node.front));
-    EXPECT_NEAR(node.front, -h, 1e-3f);
-    EXPECT_LT(glm::dot(node.axis, glm::vec3(0.0f, h + 0.01f, 0.0f)), node.front) << "above";
-    EXPECT_GT(glm::dot(node.axis, glm::vec3(2.5f, h - 0.01f, 2.5f)), node.front) << "below";
-    EXPECT_LT(glm::dot(node.axis, glm::vec3(2.5f, h, 2.5f)), node.front + 1e-3f);
+    const float front = light_tree_node_cone(node).front;
+    ASSERT_TRUE(std::isfinite(front));
+    EXPECT_NEAR(front, -h, 1e-3f);
+    EXPECT_LT(glm::dot(node.axis, glm::vec3(0.0f, h + 0.01f, 0.0f)), front) << "above";
+    EXPECT_GT(glm::dot(node.axis, glm::vec3(2.5f, h - 0.01f, 2.5f)), front) << "below";
+    EXPECT_LT(glm::dot(node.axis, glm::vec3(2.5f, h, 2.5f)), front + 1e-3f);
   }
 
   Lights mixed = ceiling;
@@ -202,14 +211,16 @@ TEST(LightTree, OneSidedLightsFacingOneWayAreBoundedByTheirPlane) {
   point.intensity = glm::vec3(1.0f);
   mixed.add(point);
   const std::vector<abi::LightTreeNode> with_point = build_light_tree(mixed.bounds, mixed.table);
-  EXPECT_EQ(with_point[0].front, -INFINITY);
+  EXPECT_EQ(light_tree_node_cone(with_point[0]).front, -INFINITY);
   size_t planes = 0;
-  for (const abi::LightTreeNode& node : with_point) planes += std::isfinite(node.front);
+  for (const abi::LightTreeNode& node : with_point)
+    planes += std::isfinite(light_tree_node_cone(node).front);
   EXPECT_EQ(planes, 3u) << "the ceiling's subtree keeps its plane";
 
   Lights two_sided;
   two_sided.add(ceiling.table[0], 1.0f, true);
-  EXPECT_EQ(build_light_tree(two_sided.bounds, two_sided.table)[0].front, -INFINITY);
+  EXPECT_EQ(light_tree_node_cone(build_light_tree(two_sided.bounds, two_sided.table)[0]).front,
+            -INFINITY);
 }
 
 TEST(LightTree, OneLightIsALeafRootAndNoLightNoTree) {
@@ -246,6 +257,30 @@ TEST(LightTree, LightsAtOnePointStillMakeAShallowTree) {
     deepest = std::max(deepest, depth);
   }
   EXPECT_LE(deepest, 11u);
+}
+
+// Spots aimed the same way (an axis whose dot with itself rounds below 1): their node keeps
+// their cone instead of widening to every direction, and decodes it no narrower than built.
+TEST(LightTree, LightsSharingAnAxisKeepTheirCone) {
+  Lights spots;
+  abi::Light spot{};
+  spot.type = abi::kLightSpot;
+  spot.direction = glm::normalize(glm::vec3(1.0f, 2.0f, 3.0f));
+  spot.spotCosOuter = 0.9f;
+  spot.intensity = glm::vec3(1.0f);
+  for (int i = 0; i < 4; ++i) {
+    spot.position = glm::vec3(float(i), 0.0f, 0.0f);
+    spots.add(spot);
+  }
+  const auto tree = build_light_tree(spots.bounds, spots.table);
+  for (const abi::LightTreeNode& node : tree) {
+    const LightTreeNodeCone cone = light_tree_node_cone(node);
+    EXPECT_EQ(node.axis, spot.direction);
+    EXPECT_LE(cone.cos_spread, 0.9f);
+    EXPECT_GT(cone.cos_spread, 0.899f);
+    EXPECT_LE(cone.cos_reach, 1.0f);
+    EXPECT_GT(cone.cos_reach, 0.999f);
+  }
 }
 
 TEST(LightTree, TheSameLightsGiveTheSameTree) {

@@ -5,6 +5,8 @@
 #ifndef HIPR_LIGHT_TREE_GLSL
 #define HIPR_LIGHT_TREE_GLSL
 
+#include "light_tree_cone.glsl"
+
 // cos(max(0, a - b)) from the cosines and sines of a and b (angles in [0, pi]).
 float cos_of_gap(float cosA, float sinA, float cosB, float sinB) {
   if (cosA >= cosB) return 1.0;  // a <= b
@@ -19,34 +21,32 @@ float cos_of_gap(float cosA, float sinA, float cosB, float sinB) {
 // surface cosine is floored so that a grazing light is unlikely but never impossible.
 float light_tree_importance(LightTreeNode node, vec3 position, vec3 normal) {
   if (!(node.power > 0.0)) return 0.0;
-  // Behind every light of a node of one-sided surfaces facing one way (LightTreeNode::front).
-  if (dot(node.axis, position) < node.front) return 0.0;
-  const vec3 centre = 0.5 * (node.lo + node.hi);
-  const vec3 fromCentre = position - centre;
+  // Behind every light of a facing node (kLightTreeFacing).
+  if (dot(node.axis, position) < light_tree_front(node.cone, node.child)) return 0.0;
+  const vec2 cosines = light_tree_cosines(node.cone, node.child);  // theta_o, theta_e
+  const vec3 fromCentre = position - node.centre;
   const float d2 = dot(fromCentre, fromCentre);
-  const vec3 half_diagonal = 0.5 * (node.hi - node.lo);
-  const float radius2 = dot(half_diagonal, half_diagonal);
   // theta_b: half the angle the bounding sphere subtends (everything, from inside it).
   float cosB = -1.0, sinB = 0.0;
-  if (d2 > radius2) {
-    const float sin2 = radius2 / d2;
+  if (d2 > node.radius2) {
+    const float sin2 = node.radius2 / d2;
     sinB = sqrt(sin2);
     cosB = sqrt(max(1.0 - sin2, 0.0));
   }
   const vec3 wi = d2 > 0.0 ? fromCentre * inversesqrt(d2) : vec3(0.0, 0.0, 1.0);
   float cosW = clamp(dot(node.axis, wi), -1.0, 1.0);
-  if (node.twoSided != 0u) cosW = abs(cosW);
+  if ((node.child & kLightTreeTwoSided) != 0u) cosW = abs(cosW);
   const float sinW = sqrt(max(1.0 - cosW * cosW, 0.0));
-  const float sinSpread = sqrt(max(1.0 - node.cosSpread * node.cosSpread, 0.0));
+  const float sinSpread = sqrt(max(1.0 - cosines.x * cosines.x, 0.0));
   // The angle between the point and the nearest emitting direction: theta_w - theta_o - theta_b.
-  const float cosX = cos_of_gap(cosW, sinW, node.cosSpread, sinSpread);
+  const float cosX = cos_of_gap(cosW, sinW, cosines.x, sinSpread);
   const float sinX = sqrt(max(1.0 - cosX * cosX, 0.0));
   const float cosEmit = cos_of_gap(cosX, sinX, cosB, sinB);
-  if (cosEmit < node.cosReach) return 0.0;
+  if (cosEmit < cosines.y) return 0.0;
   // At the surface: the light arrives within theta_b of -wi.
   const float cosI = abs(dot(normal, wi));
   const float cosSurface = cos_of_gap(cosI, sqrt(max(1.0 - cosI * cosI, 0.0)), cosB, sinB);
-  return node.power * max(cosEmit, 0.0) * max(cosSurface, 1e-3) / max(d2, radius2);
+  return node.power * max(cosEmit, 0.0) * max(cosSurface, 1e-3) / max(d2, node.radius2);
 }
 
 // Chance of taking `child` (the first or second of its parent) among the two, at the point.
@@ -64,7 +64,7 @@ uint light_tree_pick(vec3 position, vec3 normal, float u, out float pmf) {
   pmf = 1.0;
   uint node = 0u;
   while ((b_light_tree[node].child & kLightTreeLeaf) == 0u) {
-    const uint first = b_light_tree[node].child;
+    const uint first = b_light_tree[node].child & kLightTreeIndexMask;
     const float a = light_tree_importance(b_light_tree[first], position, normal);
     const float b = light_tree_importance(b_light_tree[first + 1u], position, normal);
     const float sum = a + b;
@@ -84,7 +84,7 @@ uint light_tree_pick(vec3 position, vec3 normal, float u, out float pmf) {
       node = first + 1u;
     }
   }
-  return b_light_tree[node].child & ~kLightTreeLeaf;
+  return b_light_tree[node].child & kLightTreeIndexMask;
 }
 
 // The probability that light_tree_pick at this point picks the light whose leaf is `leaf`.
@@ -93,7 +93,7 @@ float light_tree_pmf(uint leaf, vec3 position, vec3 normal) {
   uint node = leaf;
   while (b_light_tree[node].parent != kInvalidIndex) {
     const uint parent = b_light_tree[node].parent;
-    pmf *= light_tree_branch(b_light_tree[parent].child, node, position, normal);
+    pmf *= light_tree_branch(b_light_tree[parent].child & kLightTreeIndexMask, node, position, normal);
     node = parent;
   }
   return pmf;

@@ -265,22 +265,28 @@ struct Light {
 
 // Many-light sampling (src/render/light_tree.h, common/light_tree.glsl): a node of the binary
 // tree over the lights at finite distance. An inner node's children are `child` and `child + 1`.
-HIPR_CONST uint kLightTreeLeaf = 0x80000000u;  // in `child`: a leaf; the low bits are its light
+// 44 bytes, of which the walk reads 40 per child (the 64-byte node before, box corners and a
+// word per cosine and flag, took 0-4 % more of a render on lavapipe: BENCHMARKS.md).
+// Flags in `child`; the low bits are the first child, or the light of a leaf:
+HIPR_CONST uint kLightTreeLeaf = 0x80000000u;
+HIPR_CONST uint kLightTreeTwoSided = 0x40000000u;  // some light emits on both sides (the cone holds both ways)
+// Every light is a one-sided surface facing exactly `axis` (spread 0, reach 90 degrees) and lies
+// where dot(axis, y) >= front, `cone` holding front's bits: a point x with dot(axis, x) < front is
+// behind all of them and gets no light. The cone bound cannot say so for a point inside the
+// node's bounding sphere (a ceiling point beside a ceiling light).
+HIPR_CONST uint kLightTreeFacing = 0x20000000u;
+HIPR_CONST uint kLightTreeIndexMask = 0x1fffffffu;
 struct LightTreeNode {
-  vec3 lo;           // bounds of its lights
-  float power;       // the sum of its lights' intensity toward a point in front (luminance)
-  vec3 hi;
-  uint child;        // inner: its first child; leaf: light index | kLightTreeLeaf
-  vec3 axis;         // unit; every emitting normal or spot axis is within cosSpread of it
-  float cosSpread;   // cos theta_o
-  float cosReach;    // cos theta_e: how far past an emitting normal light leaves (90 deg: a surface)
-  uint parent;       // kInvalidIndex at the root
-  uint twoSided;     // 1: some light emits on both sides (the cone then holds both ways)
-  // Every light is a one-sided surface facing exactly `axis` and lies where dot(axis, y) >= front:
-  // a point x with dot(axis, x) < front is behind all of them and gets no light. -inf: no such
-  // plane (other lights, or normals that differ). The cone bound cannot say so for a point
-  // inside the node's bounding sphere (a ceiling point beside a ceiling light).
-  float front;
+  vec3 centre;    // of the box around its lights
+  float radius2;  // squared distance from centre to the box's corners, rounded up: a sphere around every light
+  vec3 axis;      // unit; every emitting normal or spot axis is within theta_o of it
+  float power;    // the sum of its lights' intensity toward a point in front (luminance)
+  // Without kLightTreeFacing: cos theta_o (low 16 bits) and cos theta_e (how far past an
+  // emitting normal light leaves; high 16 bits), each (cos + 1) / 2 as unorm16 rounded down
+  // (wider cones; common/light_tree_cone.glsl decodes). With it: front.
+  uint cone;
+  uint child;
+  uint parent;  // kInvalidIndex at the root; read only by the walk up (light_tree_pmf)
 };
 
 // count's top bit (kPixelOwed) marks a pixel that still holds radiance from before the last

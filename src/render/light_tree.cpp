@@ -3,9 +3,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <glm/gtc/packing.hpp>
+#include <limits>
 #include <numeric>
+#include <stdexcept>
 
 namespace hipr {
+namespace shader {
+using namespace glm;
+using namespace abi;
+#include "shaders/common/light_tree_cone.glsl"
+}  // namespace shader
+
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
@@ -24,6 +33,8 @@ struct Cone {
 // both far edges, its axis turned from a's toward b's).
 Cone cone_union(const Cone& a, const Cone& b) {
   if (a.angle >= kPi || b.angle >= kPi) return {a.axis, kPi};
+  // (The same axis: acos of its rounded dot with itself need not be 0.)
+  if (a.axis == b.axis) return a.angle >= b.angle ? a : b;
   const float between = std::acos(std::clamp(glm::dot(a.axis, b.axis), -1.0f, 1.0f));
   if (between + b.angle <= a.angle) return a;
   if (between + a.angle <= b.angle) return b;
@@ -65,9 +76,9 @@ struct Group {
     empty = false;
   }
 
-  // abi::LightTreeNode::front: the lowest dot(axis, y) over the corners of the box (so over
-  // every point of its lights), less a rounding's slack, so that a point on the lights' plane
-  // keeps the bound it had without the plane.
+  // The plane of a facing node (abi::kLightTreeFacing): the lowest dot(axis, y) over the corners of
+  // the box (so over every point of its lights), less a rounding's slack, so that a point on the
+  // lights' plane keeps the bound it had without the plane.
   float front() const {
     if (!one_facing) return -INFINITY;
     const glm::vec3& a = cone.axis;
@@ -103,6 +114,27 @@ float split_cost(const Group& g, float pad) {
 // (Halves first: lo + hi of finite extremes could overflow.)
 glm::vec3 centre(const LightBounds& l) { return 0.5f * l.lo + 0.5f * l.hi; }
 
+// (cos + 1) / 2 as unorm16, a step below its rounding down: the decoded cone is never narrower
+// than the built one, whatever rounding a device's division makes (2.5 ulp in Vulkan).
+uint32_t unorm_below(float cos) {
+  const float u = std::clamp(0.5f * cos + 0.5f, 0.0f, 1.0f);
+  if (u >= 1.0f) return 65535u;
+  const uint32_t q = uint32_t(std::floor(u * 65535.0f));
+  return q > 0u ? q - 1u : 0u;
+}
+
+// The node's sphere: around the box's centre, through its corners, rounded up (with a
+// millionth's slack for the device's own rounding of distances).
+void set_sphere(abi::LightTreeNode& n, const glm::vec3& lo, const glm::vec3& hi) {
+  n.centre = 0.5f * lo + 0.5f * hi;
+  const glm::dvec3 half =
+      glm::max(glm::dvec3(hi) - glm::dvec3(n.centre), glm::dvec3(n.centre) - glm::dvec3(lo));
+  const double r2 = glm::dot(half, half) * (1.0 + 1e-6);
+  float f = float(std::min(r2, double(std::numeric_limits<float>::max())));
+  if (double(f) < r2) f = std::nextafter(f, INFINITY);
+  n.radius2 = f;
+}
+
 class Builder {
  public:
   Builder(std::vector<LightBounds>& bounds, std::vector<abi::Light>& lights)
@@ -120,29 +152,33 @@ class Builder {
     Group group;
     for (size_t i = begin; i < end; ++i) group.add(m_bounds[i]);
     abi::LightTreeNode n{};
-    n.lo = group.lo;
-    n.hi = group.hi;
+    set_sphere(n, group.lo, group.hi);
     n.power = group.power;
     n.axis = group.cone.axis;
-    n.cosSpread = std::cos(group.cone.angle);
-    n.cosReach = std::cos(group.reach);
     n.parent = parent;
-    n.twoSided = group.two_sided ? 1u : 0u;
-    n.front = group.front();
+    const float front = group.front();
+    uint32_t flags = group.two_sided ? abi::kLightTreeTwoSided : 0u;
+    if (std::isfinite(front)) {
+      flags |= abi::kLightTreeFacing;
+      n.cone = glm::floatBitsToUint(front);
+    } else {
+      n.cone = unorm_below(std::cos(group.cone.angle)) | unorm_below(std::cos(group.reach)) << 16;
+    }
     if (end - begin == 1) {
       const uint32_t light = m_bounds[begin].light;
-      n.child = light | abi::kLightTreeLeaf;
+      n.child = light | abi::kLightTreeLeaf | flags;
       m_lights[light].treeLeaf = node;
       m_nodes[node] = n;
       return;
     }
     const size_t middle = split(begin, end, group, depth < kMaxCostDepth);
-    n.child = uint32_t(m_nodes.size());
+    n.child = uint32_t(m_nodes.size()) | flags;
     m_nodes[node] = n;
     m_nodes.emplace_back();
     m_nodes.emplace_back();
-    fill(n.child, begin, middle, node, depth + 1);
-    fill(n.child + 1, middle, end, node, depth + 1);
+    const uint32_t first = n.child & abi::kLightTreeIndexMask;
+    fill(first, begin, middle, node, depth + 1);
+    fill(first + 1, middle, end, node, depth + 1);
   }
 
   // Partitions [begin, end) at the returned index: the cheapest of 11 planes on each axis of
@@ -255,7 +291,16 @@ std::vector<abi::LightTreeNode> build_light_tree(std::vector<LightBounds> bounds
                                                  std::vector<abi::Light>& lights) {
   for (abi::Light& light : lights) light.treeLeaf = abi::kInvalidIndex;
   std::erase_if(bounds, [](const LightBounds& b) { return !(b.power > 0.0f); });
+  // 2 L - 1 nodes, each index below the flags of `child`.
+  if (bounds.size() > abi::kLightTreeIndexMask / 2u)
+    throw std::runtime_error("too many lights for the light tree");
   return Builder(bounds, lights).build();
+}
+
+LightTreeNodeCone light_tree_node_cone(const abi::LightTreeNode& node) {
+  const glm::vec2 cosines = shader::light_tree_cosines(node.cone, node.child);
+  return {cosines.x, cosines.y, shader::light_tree_front(node.cone, node.child),
+          (node.child & abi::kLightTreeTwoSided) != 0u};
 }
 
 }  // namespace hipr

@@ -23,7 +23,7 @@ struct LightBounds {
   bool two_sided = false;
   // A one-sided surface light (a triangle): it emits only toward dot(axis, x) > dot(axis, y) of
   // its points y. The tree bounds a group of such lights facing the same way by a plane
-  // (abi::LightTreeNode::front).
+  // (abi::kLightTreeFacing).
   bool one_sided_surface = false;
   uint32_t light = 0;
 };
@@ -36,5 +36,14 @@ LightBounds light_bounds(const abi::Light& light, float emitted_luminance, bool 
 // every other light's becomes kInvalidIndex.
 std::vector<abi::LightTreeNode> build_light_tree(std::vector<LightBounds> bounds,
                                                  std::vector<abi::Light>& lights);
+
+// A node's cone as the walk decodes it (abi::LightTreeNode::cone and the flags of `child`).
+struct LightTreeNodeCone {
+  float cos_spread = 1.0f;  // cos theta_o
+  float cos_reach = 0.0f;   // cos theta_e
+  float front = 0.0f;       // -inf: no plane
+  bool two_sided = false;
+};
+LightTreeNodeCone light_tree_node_cone(const abi::LightTreeNode& node);
 
 }  // namespace hipr
