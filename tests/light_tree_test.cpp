@@ -281,6 +281,16 @@ TEST(LightTree, LightsSharingAnAxisKeepTheirCone) {
     EXPECT_LE(cone.cos_reach, 1.0f);
     EXPECT_GT(cone.cos_reach, 0.999f);
   }
+  // A tilted lamp: copies of one triangle side by side (normals equal bit for bit) keep the
+  // plane bound in every node, the root of all of them too.
+  Lights lamp;
+  const glm::vec3 a(0.0f), b(2.0f, -1.0f, 0.0f), c(3.0f, 0.0f, -1.0f);  // normal (1, 2, 3)
+  for (int i = 0; i < 6; ++i) {
+    const glm::vec3 at = float(i) * (b - a);
+    lamp.add(triangle(a + at, b + at, c + at));
+  }
+  for (const abi::LightTreeNode& node : build_light_tree(lamp.bounds, lamp.table))
+    EXPECT_TRUE(std::isfinite(light_tree_node_cone(node).front));
 }
 
 TEST(LightTree, TheSameLightsGiveTheSameTree) {
