@@ -8,8 +8,9 @@
 // pixel leads, kTileEditLead there too) into the tile flags, each pixel's bit of the pixel-lead bits, and
 // per tile a change score that orders the active tiles: 1 per pixel showing a changed element,
 // 2 where the pixel shows another surface than before or than the screen shows (an object moved
-// in or out: the largest changes on screen, while a moved object's own inside often looks much
-// as it did).
+// in or out, or another face of it: the largest changes on screen, while a moved object's own
+// inside often looks much as it did). A surface is a G-buffer record and the side its geometric
+// normal faces (common/octahedral.glsl, surface_turned).
 // After a reprojection (a camera edit alone, u_reprojected): the rejected pixels score 2 as
 // surfaces shown wrongly, pixels of view-dependent surfaces (kRecordViewDependent: a reflection
 // or refraction kept from another view is wrong) 1, so both rank first; every tile is marked
@@ -36,6 +37,7 @@ layout(local_size_x = 64) in;
 #include "common/frame.glsl"
 #include "shared/bindings/visibility.h"
 #include "common/dispatch.glsl"
+#include "common/octahedral.glsl"
 
 layout(scalar, binding = kMarkActiveGBuffer) readonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 layout(scalar, binding = kMarkActivePrevious) readonly buffer Previous { GBufferTexel b_previous[]; };
@@ -73,8 +75,12 @@ void main() {
   const uint index = dispatch_index();
   if (index >= u_frame.width * u_frame.height) return;
   const uint now = b_gbuffer[index].record, before = b_previous[index].record;
+  const uint normal = b_gbuffer[index].normal;
+  // Another surface, or another face of the same record (kSurfaceTurnCosine).
+  const bool surfaceChanged = now != before || surface_turned(normal, b_previous[index].normal);
   const uint shown = b_display[index].shownRecord;
-  const bool wrongSurface = u_everything == 0u && shown != kRecordUnknown && shown != now;
+  const bool wrongSurface = u_everything == 0u && shown != kRecordUnknown &&
+                            (shown != now || surface_turned(b_display[index].shownNormal, normal));
   const uvec2 pixel = uvec2(index % u_frame.width, index / u_frame.width);
   const uint tile = tile_of_pixel(pixel);
   const bool viewChanged = u_reprojected != 0u && !wrongSurface && view_dependent(now);
@@ -82,7 +88,7 @@ void main() {
     atomicOr(b_tile_flags[tile], kTileReprojected | ((b_display[index].flags & kShownStill) == 0u ? kTileMoved : 0u));
   const bool edited = changed(now) || changed(before) || wrongSurface || viewChanged;
   const bool leads = edited && u_everything == 0u && u_reprojected == 0u &&
-                     (now != before || wrongSurface || (u_moved != 0u && changed(now)));
+                     (surfaceChanged || wrongSurface || (u_moved != 0u && changed(now)));
   const uint bit = 1u << (index % 32u);
   if (leads)
     atomicOr(b_pixel_lead[index / 32u], bit);
@@ -92,6 +98,6 @@ void main() {
   if (!edited && focus == 0u) return;
   atomicOr(b_tile_flags[tile],
            kTileActive | kTileScored | (focus != 0u ? kTileFocus | kTileLead : 0u) | (leads ? kTileLead | kTileEditLead : 0u));
-  if (edited) atomicAdd(b_tile_change[tile], now != before || wrongSurface ? 2u : 1u);
+  if (edited) atomicAdd(b_tile_change[tile], surfaceChanged || wrongSurface ? 2u : 1u);
   if (focus != 0u) atomicAdd(b_tile_focus[tile], focus);
 }

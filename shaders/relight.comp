@@ -57,6 +57,7 @@ void main() {
   texel.staleSamples = fromAccumulation ? n : texel.staleSamples;
   texel.shownSamples = texel.staleSamples;
   texel.staleRecord = texel.shownRecord;
+  texel.staleNormal = texel.shownNormal;
   texel.flags = kShownGrouped | kStaleGrouped | kShownCurrent | kStaleCurrent;
   b_display[index] = texel;
 }

@@ -111,6 +111,7 @@ void main() {
 
   DisplayTexel texel;
   texel.shownRecord = now.record;
+  texel.shownNormal = now.normal;
   vec3 estimate;
   uint estimateSamples;
   // A pure value of the pixel's surface may stand for it unless it emits beside another surface
@@ -141,10 +142,12 @@ void main() {
     texel.shown = nearby ? estimate : b_before[fill].shown;
     texel.shownSamples = 0u;
     texel.shownRecord = kRecordRejected;
+    texel.shownNormal = kNormalUnknown;
   }
   texel.stale = texel.shown;
   texel.staleSamples = texel.shownSamples;
   texel.staleRecord = texel.shownRecord;
+  texel.staleNormal = texel.shownNormal;
   // Where the surface barely moved on screen the kept value is nearly the pixel's own: stage 1
   // ranks tiles of such pixels last.
   const vec2 motion = at - (vec2(pixel) + 0.5);

@@ -97,6 +97,7 @@ void capture(uvec2 origin, uint tilePixels) {
     texel.stale = texel.shown;
     texel.staleSamples = texel.shownSamples;
     texel.staleRecord = texel.shownRecord;
+    texel.staleNormal = texel.shownNormal;
     // The light groups of what was shown become those of the stale estimate (relight.comp);
     // what is shown is now of the scene before the edit.
     texel.flags = ((texel.flags & kShownGrouped) != 0u ? kShownGrouped | kStaleGrouped : 0u) |

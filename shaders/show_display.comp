@@ -108,6 +108,7 @@ void show_difference(inout DisplayTexel texel, uint index, vec2 sums, TileJudgem
                               : max(texel.stale + shrink * (corrected_estimate(record, texel.stale, fresh, c, regression) - texel.stale), vec3(0.0));
   texel.shownSamples = mixed_samples(shrink * (regression.x + regression.y + regression.z) / 3.0, n, texel.staleSamples);
   texel.shownRecord = current_record(index);
+  texel.shownNormal = current_normal(index);
   texel.flags = (texel.flags & ~kShownGrouped) | kShownCurrent;
 }
 
@@ -135,11 +136,13 @@ void show_pixel(uint index, vec4 sums, TileJudgement judgement) {
     texel.shown = fresh;
     texel.shownSamples = n;
     texel.shownRecord = current_record(index);
+    texel.shownNormal = current_normal(index);
     texel.flags |= kShownCurrent;
   } else {
     texel.shown = mix(texel.stale, fresh, alpha);
     texel.shownSamples = texel.staleSamples;
     texel.shownRecord = texel.staleRecord;
+    texel.shownNormal = texel.staleNormal;
     // Of the edited scene when the stale estimate is (relit).
     texel.flags = (texel.flags & kStaleCurrent) != 0u ? texel.flags | kShownCurrent : texel.flags & ~kShownCurrent;
   }

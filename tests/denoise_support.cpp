@@ -35,6 +35,7 @@ void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels
     t.shown = t.stale = p.shown;
     t.shownSamples = t.staleSamples = p.samples;
     t.shownRecord = t.staleRecord = abi::kRecordUnknown;
+    t.shownNormal = t.staleNormal = abi::kNormalUnknown;
     t.flags = p.current ? abi::kShownCurrent : 0u;
     const float n = float(p.samples);
     accum[i].sum = p.shown * n;

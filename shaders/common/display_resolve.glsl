@@ -15,6 +15,7 @@ layout(scalar, binding = kResolveJudgements) buffer Judgements { TileJudgement b
 layout(push_constant, scalar) uniform Push { ResolvePush u_push; };
 
 #include "common/difference.glsl"
+#include "common/octahedral.glsl"
 
 // Pixel index of the tile's local-th pixel, or kInvalidIndex outside the image.
 uint tile_pixel_index(uvec2 origin, uint local) {
@@ -25,9 +26,15 @@ uint tile_pixel_index(uvec2 origin, uint local) {
 // The surface the pixel shows now (kRecordUnknown without a current G-buffer).
 uint current_record(uint index) { return u_push.useGBuffer != 0u ? b_gbuffer[index].record : kRecordUnknown; }
 
-// The pixel's stale estimate depicts another surface than the pixel shows now.
+// Its geometric normal (kNormalUnknown without a current G-buffer).
+uint current_normal(uint index) { return u_push.useGBuffer != 0u ? b_gbuffer[index].normal : kNormalUnknown; }
+
+// The pixel's stale estimate depicts another surface than the pixel shows now: another record,
+// or another face of it (a moved block's front face where its side was: kSurfaceTurnCosine).
 bool resurfaced(uint index, DisplayTexel texel) {
-  return texel.staleRecord != kRecordUnknown && u_push.useGBuffer != 0u && texel.staleRecord != b_gbuffer[index].record;
+  if (texel.staleRecord == kRecordUnknown || u_push.useGBuffer == 0u) return false;
+  const GBufferTexel now = b_gbuffer[index];
+  return texel.staleRecord != now.record || surface_turned(texel.staleNormal, now.normal);
 }
 
 bool has_fresh_samples(PixelAccum accum) { return (accum.count & kPixelOwed) == 0u && (accum.count & kPixelCountMask) > 0u; }

@@ -93,6 +93,14 @@ HIPR_CONST uint kRecordUnknown = 0xfffffffeu;  // DisplayTexel: no G-buffer said
 // DisplayTexel: reprojected from the view before a camera edit and rejected (off-screen,
 // disoccluded, another surface there): it depicts no surface the pixel sees now.
 HIPR_CONST uint kRecordRejected = 0xfffffffdu;
+// GBufferTexel::normal, DisplayTexel::shownNormal / staleNormal: no normal known (the
+// environment, or a value of unknown surface). Octahedral normals (common/octahedral.glsl) are
+// two snorm16 in [-32767, 32767]: -32768 in both halves is none of them.
+HIPR_CONST uint kNormalUnknown = 0x80008000u;
+// Two records' surfaces differ where their geometric normals are further apart than this
+// (about 25 degrees): a block's side face and its front face are one record, but a value of one
+// is no estimate of the other.
+HIPR_CONST float kSurfaceTurnCosine = 0.9f;
 
 HIPR_CONST uint kLightTriangle = 0u;
 HIPR_CONST uint kLightPoint = 1u;
@@ -308,6 +316,8 @@ struct DisplayTexel {
   uint shownSamples;  // samples behind `shown` (of the stale estimate while it has any weight)
   uint shownRecord;   // the G-buffer record (surface) `shown` depicts, kRecordUnknown if not known
   uint staleRecord;   // the same for `stale`
+  uint shownNormal;   // the G-buffer's geometric normal with shownRecord (kNormalUnknown if not known)
+  uint staleNormal;   // the same for `stale`
   uint flags;         // kShownGrouped, kStaleGrouped, kShownCurrent, kStaleCurrent
 };
 
@@ -478,6 +488,7 @@ struct BvhInstance {
 struct GBufferTexel {
   uint record;  // GeometryRecord index, kInvalidIndex for background
   float depth;  // camera-space depth (along the view axis); 3e38 for background
+  uint normal;  // the triangle's geometric normal in world space (octahedral), kNormalUnknown for background
 };
 
 // Per-dispatch parameters of trace_tiles.comp.

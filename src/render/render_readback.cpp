@@ -29,6 +29,10 @@ std::vector<uint32_t> read_owed_tiles(const Renderer& renderer) {
   return per_tile;
 }
 
+std::vector<abi::GBufferTexel> read_gbuffer(Renderer& renderer) {
+  return renderer.render_state()->rendered_gbuffers().current.download_all<abi::GBufferTexel>();
+}
+
 DifferenceEstimates read_difference_estimates(const Renderer& renderer) {
   const RenderState& state = renderer.state();
   if (!state.film.keeps_difference()) return {};

@@ -16,6 +16,8 @@ std::vector<uint32_t> read_schedule(const Renderer& renderer);    // tile ids, i
 // Per tile: how many of its pixels still show radiance from before the last edit (they owe a
 // restart at their next visit).
 std::vector<uint32_t> read_owed_tiles(const Renderer& renderer);
+// The G-buffer of the scene as it is (rendered first where it is not).
+std::vector<abi::GBufferTexel> read_gbuffer(Renderer& renderer);
 // The difference estimates of the samples since the last edit (empty without
 // RenderSettings::difference_estimate).
 DifferenceEstimates read_difference_estimates(const Renderer& renderer);
