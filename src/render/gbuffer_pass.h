@@ -1,8 +1,8 @@
 #pragma once
 // The G-buffer (visibility.comp): one ray through every pixel centre records which surface
-// (GeometryRecord) the pixel sees and at what camera-space depth. The display resolve reads it
-// (which surface a pixel shows), picking reads it, and HiPR's stage 1 compares it with the
-// previous one, kept in `previous`.
+// (GeometryRecord) the pixel sees, at what camera-space depth and the triangle's geometric
+// normal (which face of it). The display resolve reads it (which surface a pixel shows), picking
+// reads it, and HiPR's stage 1 compares it with the previous one, kept in `previous`.
 #include <cstdint>
 #include <memory>
 
