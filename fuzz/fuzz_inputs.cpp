@@ -108,12 +108,12 @@ void derive_gpu_scene(const Scene& scene) {
   // The light tree: every leaf names a light that names it back, children within the tree.
   for (size_t node = 0; node < tables.tree.size(); ++node) {
     const abi::LightTreeNode& t = tables.tree[node];
-    require(std::isfinite(t.power) && t.power > 0.0f);
+    require(std::isfinite(t.power) && t.power > 0.0f && t.radius2 >= 0.0f);
+    const uint32_t index = t.child & abi::kLightTreeIndexMask;  // without the node's flags
     if (t.child & abi::kLightTreeLeaf) {
-      const uint32_t light = t.child & ~abi::kLightTreeLeaf;
-      require(light < tables.lights.size() && tables.lights[light].treeLeaf == node);
+      require(index < tables.lights.size() && tables.lights[index].treeLeaf == node);
     } else {
-      require(t.child > node && size_t(t.child) + 1 < tables.tree.size());
+      require(index > node && size_t(index) + 1 < tables.tree.size());
     }
   }
   const Camera camera = resolve_camera(scene);
