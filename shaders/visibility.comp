@@ -21,11 +21,10 @@ layout(local_size_x = 64) in;
 
 layout(scalar, binding = kVisibilityGBuffer) writeonly buffer GBuffer { GBufferTexel b_gbuffer[]; };
 
-// The hit triangle's normal in world space (as surface.glsl's, without the rest of the hit).
+// The hit triangle's normal in world space, packed (kNormalUnknown for a degenerate triangle).
 uint geometric_normal(RayHit hit) {
   const uvec3 v = triangle_vertices(b_geometries[hit.record], hit.primitive);
-  const vec3 p0 = b_positions[v.x];
-  const vec3 n = transpose(mat3(hit.worldToObject)) * cross(b_positions[v.y] - p0, b_positions[v.z] - p0);
+  const vec3 n = world_face_normal(b_positions[v.x], b_positions[v.y], b_positions[v.z], hit.worldToObject);
   return dot(n, n) > 0.0 ? pack_normal(normalize(n)) : kNormalUnknown;
 }
 

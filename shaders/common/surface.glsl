@@ -49,11 +49,9 @@ SurfaceHit make_surface_hit(uint geometry, uint primitive, vec2 bary, mat4x3 obj
   hit.material = g.materialIndex;
   // Interpolating in object space, then transforming, keeps the point on the triangle exactly.
   hit.position = objectToWorld * vec4(p0 * b0 + p1 * bary.x + p2 * bary.y, 1.0);
-  // Normals transform with the inverse transpose: n_world = n_object * mat3(worldToObject).
-  const mat3 normalMatrix = transpose(mat3(worldToObject));
-  vec3 ng = normalMatrix * cross(p1 - p0, p2 - p0);
+  vec3 ng = world_face_normal(p0, p1, p2, worldToObject);
   ng = dot(ng, ng) > 0.0 ? normalize(ng) : vec3(0.0, 1.0, 0.0);
-  vec3 ns = normalMatrix * (b_normals[v.x] * b0 + b_normals[v.y] * bary.x + b_normals[v.z] * bary.y);
+  vec3 ns = transpose(mat3(worldToObject)) * (b_normals[v.x] * b0 + b_normals[v.y] * bary.x + b_normals[v.z] * bary.y);
   ns = dot(ns, ns) > 0.0 ? normalize(ns) : ng;
   hit.uvs = interpolate_uv(v, bary);
   // Only normal maps and anisotropy need the tangent frame: other hits skip its three loads.
