@@ -12,8 +12,10 @@
 // shows (DisplayTexel::shownSamples: more than its fresh samples where a converged stale estimate
 // still weighs). Without it (the ablation: a denoiser that knows only the accumulation), the
 // accumulation's own count. A pixel still showing its stale estimate takes the variance of the
-// samples that made it (sampled_variance); one with fewer than two samples behind it, the
-// spatial variance of its 3 x 3 neighbours of the same key. The environment seen directly is
+// samples that made it (sampled_variance); one with fewer than kShortHistory samples behind it,
+// the spatial variance of its 3 x 3 neighbours of the same key: the variance of two samples is a
+// guess with one degree of freedom, and a pair that happened to agree (a new shadow's pixel,
+// both samples dark) was taken as precise and its speckle kept. The environment seen directly is
 // shown as it is (its only noise is antialiasing).
 // Keys: neighbours mix only when they show the same surface (the G-buffer record their guide
 // ray hit) and, with the display state, values of the same scene state (a stale pixel and a fresh
@@ -47,6 +49,7 @@ layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 const float kEdgeNormalCosine = 0.9;   // normals further apart: an edge (about 25 degrees)
 const float kEdgePlane = 0.1;           // a neighbour further off the tangent plane (as a slope)
 const float kEdgeAlbedo = 0.1;          // an albedo further off in any channel
+const uint kShortHistory = 3u;          // fewer samples behind a value: their own variance is not used
 
 vec3 guide_position(uvec2 pixel, DenoiseGuide guide) {
   return u_frame.cameraPosition + pixel_centre_ray(pixel) * guide.distance;
@@ -185,7 +188,7 @@ void main() {
     return;
   }
   float variance = sampled_variance(index, albedo, behind);
-  if (variance < 0.0) variance = spatial_variance(pixel, key, denoise_luminance(radiance));
+  if (variance < 0.0 || behind < kShortHistory) variance = spatial_variance(pixel, key, denoise_luminance(radiance));
   variance = isinf(variance) || isnan(variance) ? 0.0 : variance;
   b_input[index] = vec4(radiance, variance);
   b_samples[index] = behind;

@@ -79,6 +79,34 @@ TEST(Denoise, APrecisePixelIsLeftAsItIs) {
                             1e-6f);
 }
 
+// Pixels scattered as 2-sample estimates scatter, whose two samples each happened to agree (a
+// new shadow's pixel after an edit: both dark, or both lit): the variance of two samples is a
+// guess with one degree of freedom, and a value with fewer than three behind it takes its
+// neighbours' spread (as SVGF does with a short history). Trusted, the pairs stayed a speckle.
+// With four samples that agree, a pixel's own variance stands.
+TEST(Denoise, AValueOnFewSamplesTakesItsNeighboursSpread) {
+  for (const uint32_t samples : {2u, 4u}) {
+    Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+    std::vector<SyntheticPixel> pixels = noisy(0.5f, 0.4f, 5);
+    for (SyntheticPixel& p : pixels) {
+      p.samples = samples;
+      p.deviation = 0.0f;
+    }
+    write_display(renderer, pixels);
+    const ImageRGB shown = renderer.displayed_image();
+    const ImageRGB denoised = renderer.denoised_image(denoise_on());
+    double before = 0.0, after = 0.0;
+    for (size_t i = 0; i < shown.rgb.size(); ++i) {
+      before += (shown.rgb[i] - 0.5) * (shown.rgb[i] - 0.5);
+      after += (denoised.rgb[i] - 0.5) * (denoised.rgb[i] - 0.5);
+    }
+    if (samples < 4u)
+      EXPECT_LT(after, before / 4.0) << "before " << before << ", after " << after;
+    else
+      EXPECT_GT(after, before * 0.99) << "four samples that agree are precise";
+  }
+}
+
 TEST(Denoise, NeverMixesTwoSurfaces) {
   Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
   // Flat values on each card, noisy as far as their samples tell: the filter may average within
