@@ -181,6 +181,38 @@ TEST(DisplayRules, PixelsWhoseSurfaceChangedShowTheirFreshEstimateAtOnce) {
   EXPECT_GT(blended, 100u) << "pixels on unchanged surfaces still weigh stale against fresh";
 }
 
+// A blended value (1 - a) s + a f is worth the samples of that mix, not the stale estimate's:
+// the denoiser scales each pixel's sample variance by them. A moved block's new shadow, blended
+// at a near 1 from a few fresh samples, was counted as the 16-sample stale value, passed for
+// precise, and kept its speckle through the filter.
+TEST(DisplayRules, ABlendCountsTheSamplesOfItsMix) {
+  Scene scene = load_scene(test::asset("cornell_box.gltf"));
+  Renderer renderer(test::context(), scene, settings());
+  renderer.add_samples_full_frame(kStaleSpp);
+  renderer.resolve_display_all(DisplayRule::Immediate);
+  Scheduler scheduler(renderer, Policy::Hipr, renderer.tile_count());
+  scheduler.set_display_rule(DisplayRule::Blend);
+  scheduler.set_first_visit_spp(2);
+  const Scene before = scene;
+  apply_edit(scene, TransformEdit{"tall_block", glm::vec3(0.1f, 0.0f, -0.05f), std::nullopt});
+  scheduler.on_edit(scene, diff_scenes(before, scene));
+  while (scheduler.work_since_edit() < 2.0) scheduler.step();  // every tile visited once
+  size_t changed = 0, unchanged = 0;
+  for (const abi::DisplayTexel& t : read_display(renderer)) {
+    const bool blended = (t.flags & abi::kShownCurrent) == 0u && t.shown != t.stale;
+    if (!blended) continue;
+    // Mostly fresh (a new shadow or light): worth about its fresh samples, far from the stale 16.
+    if (glm::length(t.shown - t.stale) > 0.5f * glm::length(t.stale)) {
+      ++changed;
+      EXPECT_LT(t.shownSamples, kStaleSpp / 2) << "shown " << t.shown.x << ", stale " << t.stale.x;
+    } else {
+      unchanged += t.shownSamples > kStaleSpp / 2 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(changed, 10u) << "the block's new shadow and light";
+  EXPECT_GT(unchanged, 10u) << "mostly stale, the mix keeps most of the stale samples";
+}
+
 // No tile seams: blend weighs each pixel by the rule's sums over the pixels around it, not over
 // its tile, so its weight changes across a tile's edge no more than between two pixels inside a
 // tile. (Weighed per tile, every pixel of a tile had one weight and the weights jumped at the

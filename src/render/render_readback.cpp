@@ -33,6 +33,10 @@ std::vector<abi::GBufferTexel> read_gbuffer(Renderer& renderer) {
   return renderer.render_state()->rendered_gbuffers().current.download_all<abi::GBufferTexel>();
 }
 
+std::vector<abi::DisplayTexel> read_display(const Renderer& renderer) {
+  return renderer.state().resolve.display.download_all<abi::DisplayTexel>();
+}
+
 DifferenceEstimates read_difference_estimates(const Renderer& renderer) {
   const RenderState& state = renderer.state();
   if (!state.film.keeps_difference()) return {};
