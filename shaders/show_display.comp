@@ -113,8 +113,8 @@ void show_difference(inout DisplayTexel texel, uint index, vec2 sums, TileJudgem
 }
 
 // Samples behind the blend (1 - a) s + a f of n fresh samples, 1 / its variance in units of one
-// sample's, as if s and f were independent (they share some noise: an upper bound on the
-// variance), within [min(n, stale count), stale count]. The denoiser scales the pixel's sample
+// sample's, as if s and f were independent (where they share random numbers and paths they vary
+// together, and the mix somewhat more), within [min(n, stale count), stale count]. The denoiser scales the pixel's sample
 // variance by it. Counted as the stale estimate's samples, a moved block's new shadow, blended
 // at a near 1 from 9 fresh samples, passed for a 64-sample value and kept its speckle.
 uint blended_samples(float a, uint n, uint staleSamples) {

@@ -79,8 +79,8 @@ TEST(Denoise, APrecisePixelIsLeftAsItIs) {
                             1e-6f);
 }
 
-// Pixels scattered as 2-sample estimates scatter, whose two samples each happened to agree (a
-// new shadow's pixel after an edit: both dark, or both lit): the variance of two samples is a
+// Pixels scattered as 2-sample estimates are, each one's two samples happening to agree (a new
+// shadow's pixel after an edit: both dark, or both lit): the variance of two samples is a
 // guess with one degree of freedom, and a value with fewer than three behind it takes its
 // neighbours' spread (as SVGF does with a short history). Trusted, the pairs stayed a speckle.
 // With four samples that agree, a pixel's own variance stands.

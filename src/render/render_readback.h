@@ -18,7 +18,7 @@ std::vector<uint32_t> read_schedule(const Renderer& renderer);    // tile ids, i
 std::vector<uint32_t> read_owed_tiles(const Renderer& renderer);
 // The G-buffer of the scene as it is (rendered first where it is not).
 std::vector<abi::GBufferTexel> read_gbuffer(Renderer& renderer);
-// What the screen shows per pixel, with the values and the samples behind them (the display rules').
+// What the screen shows per pixel, with the values and samples behind it (the display rules').
 std::vector<abi::DisplayTexel> read_display(const Renderer& renderer);
 // The difference estimates of the samples since the last edit (empty without
 // RenderSettings::difference_estimate).
