@@ -313,7 +313,7 @@ struct DisplayTexel {
   vec3 shown;
   uint staleSamples;
   vec3 stale;
-  uint shownSamples;  // samples behind `shown` (of the stale estimate while it has any weight)
+  uint shownSamples;  // samples behind `shown`: 1 / its variance in units of one sample's (a blend: of its mix)
   uint shownRecord;   // the G-buffer record (surface) `shown` depicts, kRecordUnknown if not known
   uint staleRecord;   // the same for `stale`
   uint shownNormal;   // the G-buffer's geometric normal with shownRecord (kNormalUnknown if not known)
