@@ -145,6 +145,10 @@ TEST(LightTree, EveryLightWithPowerHasOneLeafAndNodesBoundTheirChildren) {
       ASSERT_LT(c, tree.size());
       const abi::LightTreeNode& child = tree[c];
       EXPECT_EQ(child.parent, index);
+      // Below a node taken by power every node is (the walk never returns to importances).
+      if ((node.child & abi::kLightTreeByPower) && !(child.child & abi::kLightTreeLeaf)) {
+        EXPECT_TRUE(child.child & abi::kLightTreeByPower);
+      }
       EXPECT_LE(light_tree_node_cone(node).cos_reach, light_tree_node_cone(child).cos_reach);
       power += child.power;
       walk(c, depth + 1);
@@ -298,6 +302,67 @@ TEST(LightTree, TheSameLightsGiveTheSameTree) {
   const auto ta = build_light_tree(a.bounds, a.table), tb = build_light_tree(b.bounds, b.table);
   ASSERT_EQ(ta.size(), tb.size());
   EXPECT_EQ(std::memcmp(ta.data(), tb.data(), ta.size() * sizeof(abi::LightTreeNode)), 0);
+}
+
+// The lights below a node: the leaves of its subtree.
+size_t lights_below(const std::vector<abi::LightTreeNode>& tree, uint32_t node) {
+  if (tree[node].child & abi::kLightTreeLeaf) return 1;
+  const uint32_t first = tree[node].child & abi::kLightTreeIndexMask;
+  return lights_below(tree, first) + lights_below(tree, first + 1);
+}
+
+bool by_power(const abi::LightTreeNode& node) {
+  return (node.child & abi::kLightTreeByPower) != 0u;
+}
+
+// A quad lamp's two triangles share its box and normal: no split can make either half's bounds
+// smaller, so the walk takes them by power instead of weighing two importances. Two lamps apart,
+// or a card's two faces turned away from each other, are told apart by importance.
+TEST(LightTree, ALampsTrianglesGoByPowerAndLampsApartByImportance) {
+  const auto quad = [](Lights& lights, const glm::vec3& at) {
+    const glm::vec3 x(1.3f, 0.0f, 0.0f), z(0.0f, 0.0f, 1.0f);
+    lights.add(triangle(at, at + x, at + x + z));
+    lights.add(triangle(at, at + x + z, at + z));
+  };
+  Lights one;
+  quad(one, glm::vec3(2.0f, 5.0f, 2.0f));
+  const auto lamp = build_light_tree(one.bounds, one.table);
+  ASSERT_EQ(lamp.size(), 3u);
+  EXPECT_TRUE(by_power(lamp[0]));
+
+  Lights two;
+  quad(two, glm::vec3(2.0f, 5.0f, 2.0f));
+  quad(two, glm::vec3(12.0f, 5.0f, 2.0f));
+  const auto lamps = build_light_tree(two.bounds, two.table);
+  ASSERT_EQ(lamps.size(), 7u);
+  EXPECT_FALSE(by_power(lamps[0])) << "two lamps 10 m apart";
+  const uint32_t first = lamps[0].child & abi::kLightTreeIndexMask;
+  for (uint32_t c : {first, first + 1}) {
+    EXPECT_EQ(lights_below(lamps, c), 2u);
+    EXPECT_TRUE(by_power(lamps[c])) << "each lamp's triangles";
+  }
+
+  Lights card;  // one triangle facing up, one facing down, in one place
+  const glm::vec3 a(0.0f), b(1.0f, 0.0f, 0.0f), c(0.0f, 0.0f, 1.0f);
+  card.add(triangle(a, b, c));
+  card.add(triangle(a, c, b));
+  EXPECT_FALSE(by_power(build_light_tree(card.bounds, card.table)[0]));
+
+  // Many lights at one point: no plane divides them; groups of up to 8 go by power.
+  Lights points;
+  abi::Light point{};
+  point.type = abi::kLightPoint;
+  point.intensity = glm::vec3(1.0f);
+  for (int i = 0; i < 40; ++i) points.add(point);
+  const auto tree = build_light_tree(points.bounds, points.table);
+  size_t taken_by_power = 0;
+  for (uint32_t n = 0; n < tree.size(); ++n) {
+    if (!by_power(tree[n])) continue;
+    EXPECT_LE(lights_below(tree, n), 8u);
+    if (tree[n].parent == abi::kInvalidIndex || !by_power(tree[tree[n].parent]))
+      taken_by_power += lights_below(tree, n);
+  }
+  EXPECT_EQ(taken_by_power, 40u);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // Many-light sampling: walking the light tree (src/render/light_tree.h) from the root to one
 // light, each step choosing a child in proportion to a bound on the light it could send to the
-// shading point, and the probability of that walk for a given light (MIS of emitter hits). Only
-// the scene decides both: the same pixel sample picks the same light in every schedule.
+// shading point (to its power below a node taken by power), and the probability of that walk
+// for a given light (MIS of emitter hits). Only the scene decides both: the same pixel sample
+// picks the same light in every schedule.
 #ifndef HIPR_LIGHT_TREE_GLSL
 #define HIPR_LIGHT_TREE_GLSL
 
@@ -49,10 +50,19 @@ float light_tree_importance(LightTreeNode node, vec3 position, vec3 normal) {
   return node.power * max(cosEmit, 0.0) * max(cosSurface, 1e-3) / max(d2, node.radius2);
 }
 
-// Chance of taking `child` (the first or second of its parent) among the two, at the point.
-float light_tree_branch(uint firstChild, uint taken, vec3 position, vec3 normal) {
-  const float first = light_tree_importance(b_light_tree[firstChild], position, normal);
-  const float second = light_tree_importance(b_light_tree[firstChild + 1u], position, normal);
+// The weights of a node's two children at the point (the first at `firstChild`): their
+// importances, or their powers below a node taken by power (kLightTreeByPower in `flags`).
+vec2 light_tree_weights(uint firstChild, uint flags, vec3 position, vec3 normal) {
+  if ((flags & kLightTreeByPower) != 0u) return vec2(b_light_tree[firstChild].power, b_light_tree[firstChild + 1u].power);
+  return vec2(light_tree_importance(b_light_tree[firstChild], position, normal),
+              light_tree_importance(b_light_tree[firstChild + 1u], position, normal));
+}
+
+// Chance of taking `taken` among the two children of a node whose `child` word is `flags`.
+float light_tree_branch(uint flags, uint taken, vec3 position, vec3 normal) {
+  const uint firstChild = flags & kLightTreeIndexMask;
+  const vec2 weights = light_tree_weights(firstChild, flags, position, normal);
+  const float first = weights.x, second = weights.y;
   const float sum = first + second;
   if (!(sum > 0.0)) return 0.0;
   return (taken == firstChild ? first : second) / sum;
@@ -64,9 +74,10 @@ uint light_tree_pick(vec3 position, vec3 normal, float u, out float pmf) {
   pmf = 1.0;
   uint node = 0u;
   while ((b_light_tree[node].child & kLightTreeLeaf) == 0u) {
-    const uint first = b_light_tree[node].child & kLightTreeIndexMask;
-    const float a = light_tree_importance(b_light_tree[first], position, normal);
-    const float b = light_tree_importance(b_light_tree[first + 1u], position, normal);
+    const uint flags = b_light_tree[node].child;
+    const uint first = flags & kLightTreeIndexMask;
+    const vec2 weights = light_tree_weights(first, flags, position, normal);
+    const float a = weights.x, b = weights.y;
     const float sum = a + b;
     if (!(sum > 0.0)) {
       pmf = 0.0;
@@ -93,7 +104,7 @@ float light_tree_pmf(uint leaf, vec3 position, vec3 normal) {
   uint node = leaf;
   while (b_light_tree[node].parent != kInvalidIndex) {
     const uint parent = b_light_tree[node].parent;
-    pmf *= light_tree_branch(b_light_tree[parent].child & kLightTreeIndexMask, node, position, normal);
+    pmf *= light_tree_branch(b_light_tree[parent].child, node, position, normal);
     node = parent;
   }
   return pmf;

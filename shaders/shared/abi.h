@@ -283,7 +283,12 @@ HIPR_CONST uint kLightTreeTwoSided = 0x40000000u;  // some light emits on both s
 // behind all of them and gets no light. The cone bound cannot say so for a point inside the
 // node's bounding sphere (a ceiling point beside a ceiling light).
 HIPR_CONST uint kLightTreeFacing = 0x20000000u;
-HIPR_CONST uint kLightTreeIndexMask = 0x1fffffffu;
+// An inner node whose lights the cost of a split could not tell apart (no plane divides them
+// into groups whose power, cone and box are smaller: the two triangles of one quad lamp): the
+// walk takes its children, and theirs, by power alone, as the power CDF would, without the two
+// importances a level (src/render/light_tree.cpp: at most 8 lights below it).
+HIPR_CONST uint kLightTreeByPower = 0x10000000u;
+HIPR_CONST uint kLightTreeIndexMask = 0x0fffffffu;
 struct LightTreeNode {
   vec3 centre;    // of the box around its lights
   float radius2;  // squared distance from centre to the box's corners, rounded up: a sphere around every light

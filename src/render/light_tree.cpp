@@ -20,6 +20,10 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 constexpr int kBuckets = 12;
 constexpr int kMaxCostDepth = 48;
+// The most lights a node taken by power (abi::kLightTreeByPower) holds, as Cycles' light tree
+// bounds its leaves: a larger group whose split the cost does not favour may still hold lights
+// that the importance tells apart further down.
+constexpr size_t kMaxPowerLights = 8;
 
 float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
@@ -143,12 +147,13 @@ class Builder {
   std::vector<abi::LightTreeNode> build() {
     if (m_bounds.empty()) return {};
     m_nodes.emplace_back();
-    fill(0, 0, m_bounds.size(), abi::kInvalidIndex, 0);
+    fill(0, 0, m_bounds.size(), abi::kInvalidIndex, 0, false);
     return std::move(m_nodes);
   }
 
  private:
-  void fill(uint32_t node, size_t begin, size_t end, uint32_t parent, int depth) {
+  // `by_power`: an ancestor is taken by power (so every node below it is).
+  void fill(uint32_t node, size_t begin, size_t end, uint32_t parent, int depth, bool by_power) {
     Group group;
     for (size_t i = begin; i < end; ++i) group.add(m_bounds[i]);
     abi::LightTreeNode n{};
@@ -171,20 +176,34 @@ class Builder {
       m_nodes[node] = n;
       return;
     }
-    const size_t middle = split(begin, end, group, depth < kMaxCostDepth);
+    const Split halves = split(begin, end, group, depth < kMaxCostDepth);
+    // The surface-area-orientation cost of the node whole against its best split (Conty
+    // Estevez and Kulla 2018; Cycles makes such a node a leaf): a split that costs no less
+    // divides the lights into groups no smaller in power, cone or box, whose importances at any
+    // point stay in about the ratio of their powers. Two triangles of one quad lamp: each
+    // triangle's box is the quad's, so each half costs half the whole.
+    by_power = by_power ||
+               (end - begin <= kMaxPowerLights && halves.cost >= split_cost(group, halves.pad));
+    if (by_power) flags |= abi::kLightTreeByPower;
     n.child = uint32_t(m_nodes.size()) | flags;
     m_nodes[node] = n;
     m_nodes.emplace_back();
     m_nodes.emplace_back();
     const uint32_t first = n.child & abi::kLightTreeIndexMask;
-    fill(first, begin, middle, node, depth + 1);
-    fill(first + 1, middle, end, node, depth + 1);
+    fill(first, begin, halves.middle, node, depth + 1, by_power);
+    fill(first + 1, halves.middle, end, node, depth + 1, by_power);
   }
+
+  struct Split {
+    size_t middle = 0;
+    float cost = INFINITY;  // of the two halves
+    float pad = 0.0f;       // the padding split_cost gave their boxes
+  };
 
   // Partitions [begin, end) at the returned index: the cheapest of 11 planes on each axis of
   // the centres' bounds, or the median of the longest axis where no plane separates them (and
   // below kMaxCostDepth, so that no tree grows deeper than that plus log2 of its lights).
-  size_t split(size_t begin, size_t end, const Group& all, bool by_cost) {
+  Split split(size_t begin, size_t end, const Group& all, bool by_cost) {
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     for (size_t i = begin; i < end; ++i) {
       lo = glm::min(lo, centre(m_bounds[i]));
@@ -222,14 +241,20 @@ class Builder {
       const auto middle = std::partition(first, last, [&](const LightBounds& l) {
         return bucket_of(l, best_axis, lo, extent) <= best_plane;
       });
-      if (middle != first && middle != last) return size_t(middle - m_bounds.begin());
+      if (middle != first && middle != last)
+        return {size_t(middle - m_bounds.begin()), best_cost, pad};
     }
     const int axis = int(std::max_element(&extent.x, &extent.x + 3) - &extent.x);
     const auto middle = first + (last - first) / 2;
     std::nth_element(first, middle, last, [&](const LightBounds& a, const LightBounds& b) {
       return centre(a)[axis] < centre(b)[axis];
     });
-    return size_t(middle - m_bounds.begin());
+    // (Lights sharing a centre may still face apart: a card's two faces.)
+    Group below, above;
+    for (auto l = first; l != middle; ++l) below.add(*l);
+    for (auto l = middle; l != last; ++l) above.add(*l);
+    return {size_t(middle - m_bounds.begin()), split_cost(below, pad) + split_cost(above, pad),
+            pad};
   }
 
   static int bucket_of(const LightBounds& l, int axis, const glm::vec3& lo,
@@ -292,7 +317,7 @@ std::vector<abi::LightTreeNode> build_light_tree(std::vector<LightBounds> bounds
   for (abi::Light& light : lights) light.treeLeaf = abi::kInvalidIndex;
   std::erase_if(bounds, [](const LightBounds& b) { return !(b.power > 0.0f); });
   // 2 L - 1 nodes, each index below the flags of `child`.
-  if (bounds.size() > abi::kLightTreeIndexMask / 2u)
+  if (bounds.size() > abi::kLightTreeIndexMask / 2u || lights.size() > abi::kLightTreeIndexMask)
     throw std::runtime_error("too many lights for the light tree");
   return Builder(bounds, lights).build();
 }
