@@ -26,7 +26,8 @@
 // A pixel the filter keeps shows what denoise_prepare.comp chose (its value, or the environment's
 // mean over its footprint).
 // Reads: the guides, keys, samples and the variance of each shown value, the display, the last
-// a-trous pass's output. Writes: this frame's denoised radiance (denoise_temporal.comp steadies it).
+// a-trous pass's output. Writes: this frame's denoised radiance (denoise_temporal.comp steadies it)
+// and each pixel's DisplayTexel::screenNoise (the display rules read it at the next step).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -39,7 +40,7 @@ layout(local_size_x = kDenoiseBlendTileWidth * kDenoiseBlendTileHeight) in;
 #include "common/dispatch.glsl"
 
 layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
-layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel b_display[]; };
+layout(scalar, binding = kDenoiseDisplay) buffer Display { DisplayTexel b_display[]; };  // writes screenNoise
 layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) readonly buffer Filtered { vec4 b_filtered[]; };
 layout(scalar, binding = kDenoiseVariance) readonly buffer Variance { float b_variance[]; };
@@ -87,6 +88,17 @@ void load(int slot, ivec2 q) {
   s_keys[slot] = key;
 }
 
+// The share of the shown value's variance `raw` the pixel's mix (1 - a) r + a f keeps, f's
+// variance `filtered` as the a-trous passes carried it: ((1 - a)^2 raw + a^2 filtered) / raw,
+// r and f taken as independent (f holds a little of r: the share is somewhat low where the
+// filter found few neighbours) and the temporal history's further steadying left out. 1 for a
+// value the filter gives no variance to.
+float screen_noise(float a, float raw, float filtered) {
+  if (!(raw > 0.0) || isinf(raw) || !(filtered >= 0.0) || isinf(filtered)) return 1.0;
+  const float kept = (1.0 - a) * (1.0 - a) * raw + a * a * filtered;
+  return clamp(kept / raw, 0.0, 1.0);
+}
+
 void main() {
   const uint tilesX = (u_push.width + uint(kTile.x) - 1u) / uint(kTile.x);
   const uint group = dispatch_group();
@@ -104,6 +116,7 @@ void main() {
   const vec3 shown = b_display[index].shown;
   if (key == kDenoiseKept) {  // what denoise_prepare.comp says it shows, through every pass
     b_frame[index] = b_filtered[index].rgb;
+    b_display[index].screenNoise = 1.0;
     return;
   }
   vec3 weighed = vec3(0.0);  // D and V, weighed as relMSE weighs errors; the variance of R
@@ -131,5 +144,7 @@ void main() {
   const DenoiseGuide guide = b_guides[index];
   const vec3 raw = demodulated(shown, guide);
   const vec3 radiance = remodulated(raw + weight * (restore * b_filtered[index].rgb - raw), guide);
-  b_frame[index] = any(isinf(radiance)) || any(isnan(radiance)) ? shown : radiance;
+  const bool finite = !(any(isinf(radiance)) || any(isnan(radiance)));
+  b_frame[index] = finite ? radiance : shown;
+  b_display[index].screenNoise = finite ? screen_noise(weight, b_variance[index], b_filtered[index].w) : 1.0;
 }

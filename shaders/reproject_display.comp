@@ -148,6 +148,7 @@ void main() {
   texel.staleSamples = texel.shownSamples;
   texel.staleRecord = texel.shownRecord;
   texel.staleNormal = texel.shownNormal;
+  texel.screenNoise = 1.0;  // not filtered in this view yet
   // Where the surface barely moved on screen the kept value is nearly the pixel's own: stage 1
   // ranks tiles of such pixels last.
   const vec2 motion = at - (vec2(pixel) + 0.5);

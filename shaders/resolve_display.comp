@@ -98,6 +98,7 @@ void capture(uvec2 origin, uint tilePixels) {
     texel.staleSamples = texel.shownSamples;
     texel.staleRecord = texel.shownRecord;
     texel.staleNormal = texel.shownNormal;
+    texel.screenNoise = 1.0;  // what the filter left of the old image's noise says nothing of the new one's
     // The light groups of what was shown become those of the stale estimate (relight.comp);
     // what is shown is now of the scene before the edit.
     texel.flags = ((texel.flags & kShownGrouped) != 0u ? kShownGrouped | kStaleGrouped : 0u) |

@@ -29,14 +29,24 @@ const uint kRegion = kBlock + 2u * kDisplayWindowRadius;  // the block with its 
 shared bool s_owner;                      // this workgroup cleared the tile's kTileReshow
 shared vec4 s_terms[kRegion * kRegion];   // per pixel: blend's w (f - s)^2 and its noise, the
                                           // difference rule's w (C' - s)^2 and its noise
+shared vec2 s_screen[kRegion * kRegion];  // per pixel: the two noises as the screen shows them
 shared vec4 s_rows[kRegion * kBlock];     // the terms summed along rows, by the tent
+shared vec2 s_screen_rows[kRegion * kBlock];
 
 // The rule's terms of the pixel at `at` (zero where it takes no part: outside the image, no
 // fresh sample, a changed surface, a relit value, one fresh sample, an unchanged or too bright
 // difference pixel),
 // as resolve_display.comp sums them over a tile; difference terms with the regression weight
-// fitted on the pixel's own tile without it (held_out_regression).
-vec4 gather(ivec2 at) {
+// fitted on the pixel's own tile without it (held_out_regression). `screen`: the two noise
+// terms as the screen shows them, times the share the display denoiser left of the pixel's
+// noise when it last filtered it (DisplayTexel::screenNoise; 1 unfiltered since the edit). The
+// raw noise estimates the change's squared bias (D - V), the screen's weighs it: a fresh
+// estimate the screen shows filtered errs by far less than its raw noise, and weighed by that
+// the rules kept the old value (a moved block's old shadow) where the filtered new one was
+// closer. (Taking the screen's noise out of D too showed noise as change where nothing
+// changed. The tiles' own gates, resolve_display.comp, keep the raw noise.)
+vec4 gather(ivec2 at, out vec2 screen) {
+  screen = vec2(0.0);
   if (at.x < 0 || at.y < 0 || at.x >= int(u_frame.width) || at.y >= int(u_frame.height)) return vec4(0.0);
   const uint index = uint(at.y) * u_frame.width + uint(at.x);
   const PixelAccum accum = b_accum[index];
@@ -45,10 +55,17 @@ vec4 gather(ivec2 at) {
   const DisplayTexel texel = b_display[index];
   if (resurfaced(index, texel) || keeps_current_stale(texel, n)) return vec4(0.0);
   const uint c = differenced_samples(texel, n);
-  if (c == 0u) return n >= 2u ? vec4(blend_terms(accum, n, texel), 0.0, 0.0) : vec4(0.0);
+  if (c == 0u) {
+    if (n < 2u) return vec4(0.0);
+    const vec2 terms = blend_terms(accum, n, texel);
+    screen.x = terms.y * texel.screenNoise;
+    return vec4(terms, 0.0, 0.0);
+  }
   const DifferenceRecord record = b_difference[index];
   if (!record_judges(record)) return vec4(0.0);
-  return vec4(0.0, 0.0, change_terms(record, texel, accum.sum / float(n), c, held_out_regression(b_judgements[tile_of_pixel(uvec2(at))], record)));
+  const vec2 terms = change_terms(record, texel, accum.sum / float(n), c, held_out_regression(b_judgements[tile_of_pixel(uvec2(at))], record));
+  screen.y = terms.y * texel.screenNoise;
+  return vec4(0.0, 0.0, terms);
 }
 
 // The tent's weight at an offset d along one axis, r + 1 - |d|: the pixels nearest count most,
@@ -60,33 +77,49 @@ float tent(int d) { return float(int(kDisplayWindowRadius) + 1 - abs(d)); }
 void gather_block(uvec2 blockOrigin) {
   const uint lane = gl_LocalInvocationIndex;
   const int r = int(kDisplayWindowRadius);
-  for (uint slot = lane; slot < kRegion * kRegion; slot += gl_WorkGroupSize.x)
-    s_terms[slot] = gather(ivec2(blockOrigin) + ivec2(slot % kRegion, slot / kRegion) - r);
+  for (uint slot = lane; slot < kRegion * kRegion; slot += gl_WorkGroupSize.x) {
+    vec2 screen;
+    s_terms[slot] = gather(ivec2(blockOrigin) + ivec2(slot % kRegion, slot / kRegion) - r, screen);
+    s_screen[slot] = screen;
+  }
   barrier();
   for (uint slot = lane; slot < kRegion * kBlock; slot += gl_WorkGroupSize.x) {
     const uint row = slot / kBlock, x = slot % kBlock;
     vec4 sum = vec4(0.0);
-    for (int dx = -r; dx <= r; ++dx) sum += tent(dx) * s_terms[row * kRegion + x + uint(dx + r)];
+    vec2 screen = vec2(0.0);
+    for (int dx = -r; dx <= r; ++dx) {
+      const uint at = row * kRegion + x + uint(dx + r);
+      sum += tent(dx) * s_terms[at];
+      screen += tent(dx) * s_screen[at];
+    }
     s_rows[slot] = sum;
+    s_screen_rows[slot] = screen;
   }
   barrier();
 }
 
 // The tent-weighted sums over the window around the block's pixel `local`: blend's D and V
-// (xy), the difference rule's Dd and Vd (zw).
-vec4 window_sums(uvec2 local) {
+// (xy), the difference rule's Dd and Vd (zw); in `screen` blend's and the difference rule's
+// noise as the screen shows it.
+vec4 window_sums(uvec2 local, out vec2 screen) {
   const int r = int(kDisplayWindowRadius);
   vec4 sum = vec4(0.0);
-  for (int dy = -r; dy <= r; ++dy) sum += tent(dy) * s_rows[(local.y + uint(dy + r)) * kBlock + local.x];
+  screen = vec2(0.0);
+  for (int dy = -r; dy <= r; ++dy) {
+    const uint at = (local.y + uint(dy + r)) * kBlock + local.x;
+    sum += tent(dy) * s_rows[at];
+    screen += tent(dy) * s_screen_rows[at];
+  }
   return sum;
 }
 
-// The fresh estimate's weight at a blend pixel of a tile in `state`, its window's D and V in `sums`.
-float pixel_alpha(uint state, vec2 sums) {
+// The fresh estimate's weight at a blend pixel of a tile in `state`, its window's D and V in
+// `sums`, V as the screen shows it in `screenV`.
+float pixel_alpha(uint state, vec2 sums, float screenV) {
   if (state == kJudgeStale) return 0.0;
   if (state != kJudgeWeighed) return 1.0;
   if (u_push.rule == kDisplaySwitch) return sums_overflowed(sums.x, sums.y) || sums.x > u_push.threshold * sums.y ? 1.0 : 0.0;
-  return change_weight(sums.x, sums.y);
+  return change_weight_on_screen(sums.x, sums.y, screenV);
 }
 
 // Samples behind the mix (1 - a) C + a f, as if the two were independent (a count for the
@@ -100,10 +133,10 @@ uint mixed_samples(float a, uint n, uint staleSamples) {
 // Difference rule: a changed pixel shows X = s + b (C' - s), C' = C + a (f - C), a fitted on its
 // tile's other changed pixels, b judged over its window (Dd, Vd in `sums`); an unchanged one (C = s
 // exactly) or one with a sample too bright to judge shows s.
-void show_difference(inout DisplayTexel texel, uint index, vec2 sums, TileJudgement judgement, vec3 fresh, uint n, uint c) {
+void show_difference(inout DisplayTexel texel, uint index, vec2 sums, float screenV, TileJudgement judgement, vec3 fresh, uint n, uint c) {
   const DifferenceRecord record = b_difference[index];
   const vec3 regression = held_out_regression(judgement, record);
-  const float shrink = record_judges(record) ? change_weight(sums.x, sums.y) : 0.0;
+  const float shrink = record_judges(record) ? change_weight_on_screen(sums.x, sums.y, screenV) : 0.0;
   texel.shown = shrink == 0.0 ? texel.stale
                               : max(texel.stale + shrink * (corrected_estimate(record, texel.stale, fresh, c, regression) - texel.stale), vec3(0.0));
   texel.shownSamples = mixed_samples(shrink * (regression.x + regression.y + regression.z) / 3.0, n, texel.staleSamples);
@@ -123,8 +156,8 @@ uint blended_samples(float a, uint n, uint staleSamples) {
   return clamp(uint(min(samples, float(max(staleSamples, 1u)))), min(n, staleSamples), max(staleSamples, 1u));
 }
 
-// `sums`: the window's sums (window_sums), where the tile needs them.
-void show_pixel(uint index, vec4 sums, TileJudgement judgement) {
+// `sums`, `screen`: the window's sums (window_sums), where the tile needs them.
+void show_pixel(uint index, vec4 sums, vec2 screen, TileJudgement judgement) {
   const PixelAccum accum = b_accum[index];
   if (!has_fresh_samples(accum)) return;
   const uint n = accum.count & kPixelCountMask;
@@ -136,11 +169,11 @@ void show_pixel(uint index, vec4 sums, TileJudgement judgement) {
   if (!surfaceChanged && keeps_current_stale(texel, n)) return;
   const uint c = differenced_samples(texel, n);
   if (judgement.state != kJudgeSettled && !surfaceChanged && c > 0u) {
-    show_difference(texel, index, sums.zw, judgement, fresh, n, c);
+    show_difference(texel, index, sums.zw, screen.y, judgement, fresh, n, c);
     b_display[index] = texel;
     return;
   }
-  const float alpha = surfaceChanged ? 1.0 : pixel_alpha(judgement.state, sums.xy);
+  const float alpha = surfaceChanged ? 1.0 : pixel_alpha(judgement.state, sums.xy, screen.x);
   if (alpha == 0.0) return;  // the pixel keeps what it shows
   texel.flags &= ~kShownGrouped;  // what is shown now is not the stale estimate alone
   if (alpha == 1.0) {
@@ -202,7 +235,11 @@ void main() {
     if (windows) gather_block(blockOrigin);
     const uvec2 local = uvec2(lane % kBlock, lane / kBlock);
     const uvec2 pixel = blockOrigin + local;
-    if (all(lessThan(pixel, tileEnd))) show_pixel(pixel.y * u_frame.width + pixel.x, windows ? window_sums(local) : vec4(0.0), judgement);
+    if (all(lessThan(pixel, tileEnd))) {
+      vec2 screen = vec2(0.0);
+      const vec4 sums = windows ? window_sums(local, screen) : vec4(0.0);
+      show_pixel(pixel.y * u_frame.width + pixel.x, sums, screen, judgement);
+    }
     barrier();  // the next block's gather overwrites what this one's pixels read
   }
 }

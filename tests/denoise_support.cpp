@@ -37,6 +37,7 @@ void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels
     t.shownRecord = t.staleRecord = abi::kRecordUnknown;
     t.shownNormal = t.staleNormal = abi::kNormalUnknown;
     t.flags = p.current ? abi::kShownCurrent : 0u;
+    t.screenNoise = 1.0f;
     const float n = float(p.samples);
     accum[i].sum = p.shown * n;
     accum[i].count = p.current ? p.samples : 0u;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hipr/denoise.h"
 #include "hipr/edits.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
@@ -211,6 +212,46 @@ TEST(DisplayRules, ABlendCountsTheSamplesOfItsMix) {
   }
   EXPECT_GT(changed, 10u) << "the block's new shadow and light";
   EXPECT_GT(unchanged, 10u) << "mostly stale, the mix keeps most of the stale samples";
+}
+
+// While the screen shows the display denoised, the rules weigh a fresh estimate by the noise the
+// screen shows of it (DisplayTexel::screenNoise, the share the filter left), not by its raw
+// noise: the moved block's new shadow and light show sooner, closer to the fresh image; without
+// the filter nothing changes (every share 1), and both end on the very same samples.
+TEST(DisplayRules, ADenoisedScreenWeighsTheNoiseItShows) {
+  const Edit move = TransformEdit{"tall_block", glm::vec3(0.1f, 0.0f, -0.05f), std::nullopt};
+  EditedBox raw(DisplayRule::Difference, 2), filtered(DisplayRule::Difference, 2);
+  const DenoiseSettings denoise{.enabled = true};
+  filtered.renderer.run_denoiser(denoise);  // the converged image, shown filtered before the edit
+  raw.edit(move);
+  filtered.edit(move);
+  for (const abi::DisplayTexel& t : read_display(filtered.renderer))
+    ASSERT_EQ(t.screenNoise, 1.0f) << "the capture forgets the old image's filter";
+  for (int round = 0; round < 2; ++round) {
+    raw.scheduler.step();
+    filtered.scheduler.step();
+    filtered.renderer.run_denoiser(denoise);
+  }
+  size_t filtered_hard = 0;
+  for (const abi::DisplayTexel& t : read_display(filtered.renderer)) {
+    EXPECT_GE(t.screenNoise, 0.0f);
+    EXPECT_LE(t.screenNoise, 1.0f);
+    filtered_hard += t.screenNoise < 0.25f ? 1 : 0;
+  }
+  EXPECT_GT(filtered_hard, 100u) << "pixels of 2-4 fresh samples the filter averages";
+  for (const abi::DisplayTexel& t : read_display(raw.renderer)) ASSERT_EQ(t.screenNoise, 1.0f);
+  const ImageRGB fresh = raw.renderer.image();
+  ASSERT_EQ(fresh.rgb, filtered.renderer.image().rgb) << "the same samples";
+  EXPECT_LT(relmse(filtered.scheduler.displayed_image(), fresh),
+            0.8 * relmse(raw.scheduler.displayed_image(), fresh));
+  for (int round = 0; round < 40 && raw.scheduler.displayed_image().rgb != raw.renderer.image().rgb;
+       ++round) {
+    raw.scheduler.step();
+    filtered.scheduler.step();
+    filtered.renderer.run_denoiser(denoise);
+  }
+  EXPECT_EQ(raw.scheduler.displayed_image().rgb, raw.renderer.image().rgb);
+  EXPECT_EQ(filtered.scheduler.displayed_image().rgb, raw.renderer.image().rgb) << "converged";
 }
 
 // No tile seams: blend weighs each pixel by the rule's sums over the pixels around it, not over

@@ -86,6 +86,16 @@ Lights random_lights(size_t count, uint32_t seed) {
   return lights;
 }
 
+// `count` equal point lights at the origin.
+Lights points_at_origin(int count) {
+  Lights lights;
+  abi::Light point{};
+  point.type = abi::kLightPoint;
+  point.intensity = glm::vec3(1.0f);
+  for (int i = 0; i < count; ++i) lights.add(point);
+  return lights;
+}
+
 float angle_between(const glm::vec3& a, const glm::vec3& b) {
   return std::acos(std::clamp(glm::dot(a, b), -1.0f, 1.0f));
 }
@@ -247,11 +257,7 @@ TEST(LightTree, OneLightIsALeafRootAndNoLightNoTree) {
 
 TEST(LightTree, LightsAtOnePointStillMakeAShallowTree) {
   // No plane separates them: the builder halves the list instead of recursing forever.
-  Lights lights;
-  abi::Light point{};
-  point.type = abi::kLightPoint;
-  point.intensity = glm::vec3(1.0f);
-  for (int i = 0; i < 1000; ++i) lights.add(point);
+  Lights lights = points_at_origin(1000);
   const auto tree = build_light_tree(lights.bounds, lights.table);
   EXPECT_EQ(tree.size(), 2u * 1000u - 1u);
   uint32_t deepest = 0;
@@ -349,11 +355,7 @@ TEST(LightTree, ALampsTrianglesGoByPowerAndLampsApartByImportance) {
   EXPECT_FALSE(by_power(build_light_tree(card.bounds, card.table)[0]));
 
   // Many lights at one point: no plane divides them; groups of up to 8 go by power.
-  Lights points;
-  abi::Light point{};
-  point.type = abi::kLightPoint;
-  point.intensity = glm::vec3(1.0f);
-  for (int i = 0; i < 40; ++i) points.add(point);
+  Lights points = points_at_origin(40);
   const auto tree = build_light_tree(points.bounds, points.table);
   size_t taken_by_power = 0;
   for (uint32_t n = 0; n < tree.size(); ++n) {

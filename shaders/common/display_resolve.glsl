@@ -96,13 +96,17 @@ vec3 held_out_regression(TileJudgement judgement, DifferenceRecord record) {
 // the one that converges, so it shows, as it would without a display rule.
 bool sums_overflowed(float d, float v) { return isinf(v) || isnan(v) || isinf(d) || isnan(d); }
 
-// The weight B / (B + V) of a change estimated from D = B + V in expectation (0 when B = 0;
-// 1 from overflowed sums).
-float change_weight(float d, float v) {
+// The weight B / (B + V') of a change whose squared bias B is estimated from D = B + V in
+// expectation, V the raw noise D holds, V' the noise the screen shows of the estimate (V' = V
+// unless the display is denoised: DisplayTexel::screenNoise). 0 when B = 0; 1 from overflowed
+// sums.
+float change_weight_on_screen(float d, float v, float screenV) {
   if (sums_overflowed(d, v)) return 1.0;
   const float b = max(d - v, 0.0);
-  return b > 0.0 ? b / (b + v) : 0.0;
+  return b > 0.0 ? b / (b + screenV) : 0.0;
 }
+
+float change_weight(float d, float v) { return change_weight_on_screen(d, v, v); }
 
 // A blend pixel's terms of D and V (n >= 2 fresh samples): w (f - s)^2 and
 // w var (1/n - 1/n_s). Var(f - s) with shared random streams: sample i of a pixel draws the same

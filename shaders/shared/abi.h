@@ -324,6 +324,11 @@ struct DisplayTexel {
   uint shownNormal;   // the G-buffer's geometric normal with shownRecord (kNormalUnknown if not known)
   uint staleNormal;   // the same for `stale`
   uint flags;         // kShownGrouped, kStaleGrouped, kShownCurrent, kStaleCurrent
+  // The share of `shown`'s variance left on the screen when the display denoiser last filtered
+  // it (denoise_blend.comp); 1 where it has not since the last edit or camera move (the capture
+  // and the reprojection reset it). The display rules weigh a fresh estimate by the noise the
+  // screen shows of it (show_display.comp).
+  float screenNoise;
 };
 
 // The difference estimate (docs/method.md#the-difference-estimate): per pixel, the values of the

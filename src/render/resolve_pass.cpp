@@ -67,6 +67,7 @@ void ResolvePass::clear() {
   abi::DisplayTexel black{};
   black.shownRecord = black.staleRecord = abi::kRecordUnknown;
   black.shownNormal = black.staleNormal = abi::kNormalUnknown;
+  black.screenNoise = 1.0f;
   const std::vector<abi::DisplayTexel> texels(size_t(m_width) * m_height, black);
   display.upload(texels.data(), texels.size() * sizeof(abi::DisplayTexel));
   const std::vector<abi::TileJudgement> none(m_tile_count, abi::TileJudgement{});
