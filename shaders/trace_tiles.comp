@@ -224,6 +224,7 @@ struct PathState {
   uint firstLobe;             // lobe sampled at x_0 (discovery path classes)
   bool specularSinceFirst;    // every lobe after x_0 so far was specular or transmission
   uint channel;               // the colour channel it carries since a dispersive surface, or kNoChannel
+  bool guided;                // one of its vertices has been guided (no later one is)
 };
 
 // Adds a contribution to the path's radiance and to its light group's share. The share is what
@@ -278,6 +279,7 @@ PathState start_path(uvec2 pixel, uint sampleIndex, uint seed) {
   p.firstLobe = kLobeDiffuse;
   p.specularSinceFirst = true;
   p.channel = kNoChannel;
+  p.guided = false;
 #if HIPR_LIGHT_GROUPS > 0
   for (uint g = 0u; g < HIPR_LIGHT_GROUPS; ++g) g_sampleGroups[g] = vec3(0.0);
 #endif
@@ -340,7 +342,13 @@ bool path_step(inout PathState p, bool backgroundTile, inout uvec3 rays) {
   if (p.depth >= u_frame.maxDepth) return true;
 
   const BsdfPoint bsdf = bsdf_point(params, BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent), wo);
-  const GuideSite site = guide_site(surface.position, bsdf);
+  GuideSite site = guide_site(surface.position, bsdf);
+  // One guided vertex per path: the mixed density weighs a direction up to 1 / (1 - share)
+  // times BSDF sampling's weight, so each guided vertex may double the second moment of what
+  // the path carries; in a closed room of pale walls, guided at every vertex, that compounded
+  // into pixels hundreds of times their value (BENCHMARKS.md, "Path guiding").
+  if (p.guided) site.probability = 0.0;
+  if (site.probability > 0.0) p.guided = true;
   if (HIPR_HAS_LIGHTS && u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly) {
     // sample_light takes the choice of light in x and the point in y,z (rng_uniform4's layout).
     uint group;
