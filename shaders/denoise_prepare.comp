@@ -15,8 +15,13 @@
 // samples that made it (sampled_variance); one with fewer than kShortHistory samples behind it,
 // the spatial variance of its 3 x 3 neighbours of the same key: the variance of two samples is a
 // guess with one degree of freedom, and a pair that happened to agree (a new shadow's pixel,
-// both samples dark) was taken as precise and its speckle kept. The environment seen directly is
-// shown as it is (its only noise is antialiasing).
+// both samples dark) was taken as precise and its speckle kept. A value still shown after its
+// samples left the accumulation (the converged image a restart shows until its first pass is
+// done, whose pixels then hold one sample of the new pass) keeps the variance and samples it was
+// last filtered with (kDenoiseShownNoise, matched by the shown luminance's bits): taken from its
+// neighbours it was filtered as one sample's value, and the converged image blurred step by step
+// while it stayed on screen. The environment seen directly is shown as it is (its only noise is
+// antialiasing).
 // Keys: neighbours mix only when they show the same surface (the G-buffer record their guide
 // ray hit) and, with the display state, values of the same scene state (a stale pixel and a fresh
 // one never mix: the filter does not spread a change, or the absence of one, across the line the
@@ -44,6 +49,7 @@ layout(scalar, binding = kDenoiseKeys) writeonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) writeonly buffer Input { vec4 b_input[]; };
 layout(scalar, binding = kDenoiseSamples) writeonly buffer Samples { uint b_samples[]; };
 layout(scalar, binding = kDenoiseVariance) writeonly buffer Variance { float b_variance[]; };
+layout(scalar, binding = kDenoiseShownNoise) buffer ShownNoise { uvec3 b_shown_noise[]; };
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
 const float kEdgeNormalCosine = 0.9;   // normals further apart: an edge (about 25 degrees)
@@ -185,11 +191,20 @@ void main() {
     b_input[index] = vec4(kept_value(index), 0.0);
     b_samples[index] = behind;
     b_variance[index] = 0.0;
+    b_shown_noise[index] = uvec3(0u);
     return;
   }
+  const uint shownBits = floatBitsToUint(denoise_luminance(radiance));
   float variance = sampled_variance(index, albedo, behind);
-  if (variance < 0.0 || behind < kShortHistory) variance = spatial_variance(pixel, key, denoise_luminance(radiance));
+  const uvec3 last = b_shown_noise[index];
+  if (variance < 0.0 && !shows_current(b_display[index]) && last.x == shownBits && last.z >= kShortHistory) {
+    variance = uintBitsToFloat(last.y);
+    behind = last.z;
+  } else if (variance < 0.0 || behind < kShortHistory) {
+    variance = spatial_variance(pixel, key, denoise_luminance(radiance));
+  }
   variance = isinf(variance) || isnan(variance) ? 0.0 : variance;
+  b_shown_noise[index] = uvec3(shownBits, floatBitsToUint(variance), behind);
   b_input[index] = vec4(radiance, variance);
   b_samples[index] = behind;
   b_variance[index] = variance;

@@ -85,6 +85,26 @@ TEST(PolicyRun, EveryPolicyEndsOnTheSameDenoisedImage) {
   }
 }
 
+// A restart shows the converged image of the scene before the edit until its first pass is done;
+// denoised, that image stays as it was: the filter takes each value's noise from the samples
+// that made it, not from the one sample of the new pass its pixel holds by then (taken from its
+// neighbours, as a single sample's, the image blurred further at every step).
+TEST(PolicyRun, ARestartShowsTheImageBeforeTheEditUnchangedUntilItsFirstPass) {
+  TallBlockMove move;
+  move.options.denoise.enabled = true;
+  move.options.schedule.policy = Policy::Full;
+  move.options.schedule.first_visit_spp = 1;
+  const bench::PolicyRun run = move.run();
+  uint32_t before_pass = 0;
+  for (const bench::CurvePoint& point : run.curve) {
+    if (point.work >= 1.0) break;
+    EXPECT_EQ(point.relmse, run.curve[0].relmse) << "at work " << point.work;
+    EXPECT_EQ(point.flip, run.curve[0].flip) << "at work " << point.work;
+    ++before_pass;
+  }
+  EXPECT_GE(before_pass, 8u) << "steps measured during the first pass";
+}
+
 // Every setting is declared once, with a flag of its own.
 TEST(ScheduleSettings, EverySettingIsDeclaredOnceWithItsOwnFlag) {
   ScheduleSettings settings;

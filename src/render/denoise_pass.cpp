@@ -28,6 +28,8 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
       m_pong(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
       m_frame(ctx, pixels(width, height) * sizeof(abi::vec3), kStorage),
       m_history(ctx, pixels(width, height) * 2 * sizeof(uint32_t), kStorage),
+      m_shown_noise(ctx, pixels(width, height) * 3 * sizeof(uint32_t),
+                    kStorage | VK_BUFFER_USAGE_TRANSFER_DST_BIT),
       m_trace_guides(ctx, "denoise_guides.comp", {},
                      {{abi::kDenoiseGuides, &m_guides}, {abi::kDenoiseGeometry, &m_geometry}}, 0,
                      &scene.descriptor_set()),
@@ -38,7 +40,8 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
                  {abi::kDenoiseKeys, &m_keys},
                  {abi::kDenoiseInput, &m_ping},
                  {abi::kDenoiseSamples, &m_samples},
-                 {abi::kDenoiseVariance, &m_variance}},
+                 {abi::kDenoiseVariance, &m_variance},
+                 {abi::kDenoiseShownNoise, &m_shown_noise}},
                 sizeof(abi::DenoisePush), &scene.descriptor_set()),
       m_ping_to_pong(ctx, "denoise_atrous.comp", {}, atrous_bindings(m_ping, m_pong),
                      sizeof(abi::DenoisePush), &scene.descriptor_set()),
@@ -85,6 +88,11 @@ void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings,
   };
   const uint32_t groups = groups_for(m_width * m_height);
   if (watch) watch->reset(cmd);
+  if (!m_shown_noise_cleared) {
+    vkCmdFillBuffer(cmd, m_shown_noise.handle(), 0, VK_WHOLE_SIZE, 0);
+    vk::transfer_to_compute_barrier(cmd);
+    m_shown_noise_cleared = true;
+  }
   vk::compute_to_compute_barrier(cmd);
   mark(kStart);
   // What the last frame showed is of another scene, view or filter: nothing of it is kept.

@@ -56,10 +56,11 @@ class DenoisePass {
   const vk::Context& m_ctx;
   uint32_t m_width, m_height;
   bool m_guides_current = false;
+  bool m_shown_noise_cleared = false;  // m_shown_noise holds no value of another run's memory
   // The settings of the last frame recorded (none yet: its history is not there to keep).
   std::optional<DenoiseSettings> m_last_settings;
   vk::Buffer m_guides, m_geometry, m_keys, m_samples, m_variance, m_ping, m_pong, m_frame,
-      m_history;
+      m_history, m_shown_noise;
   vk::ComputePipeline m_trace_guides;  // denoise_guides.comp
   vk::ComputePipeline m_prepare;       // denoise_prepare.comp: display -> ping
   vk::ComputePipeline m_ping_to_pong;  // denoise_atrous.comp
