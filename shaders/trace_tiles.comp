@@ -342,12 +342,11 @@ bool path_step(inout PathState p, bool backgroundTile, inout uvec3 rays) {
   if (p.depth >= u_frame.maxDepth) return true;
 
   const BsdfPoint bsdf = bsdf_point(params, BsdfFrame(surface.shadingNormal, surface.geometricNormal, shading.tangent), wo);
-  GuideSite site = guide_site(surface.position, bsdf);
   // One guided vertex per path: the mixed density weighs a direction up to 1 / (1 - share)
   // times BSDF sampling's weight, so each guided vertex may double the second moment of what
   // the path carries; in a closed room of pale walls, guided at every vertex, that compounded
   // into pixels hundreds of times their value (BENCHMARKS.md, "Path guiding").
-  if (p.guided) site.probability = 0.0;
+  const GuideSite site = p.guided ? GuideSite(kInvalidIndex, 0.0) : guide_site(surface.position, bsdf);
   if (site.probability > 0.0) p.guided = true;
   if (HIPR_HAS_LIGHTS && u_frame.lightCount > 0u && HIPR_LIGHT_SAMPLING != kLightSamplingBsdfOnly) {
     // sample_light takes the choice of light in x and the point in y,z (rng_uniform4's layout).

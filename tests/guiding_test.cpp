@@ -13,6 +13,7 @@
 #include "hipr/renderer.h"
 #include "hipr/scene_diff.h"
 #include "hipr/scene_loader.h"
+#include "image/image_compare.h"
 #include "render/render_state.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
@@ -190,12 +191,8 @@ TEST(Guiding, HiprScheduleEndsOnTheFullFrameImageOfTheEdit) {
 // Mean squared difference of two images: for two independent renders of one scene, twice the
 // variance of a pixel's estimate.
 double mean_squared_difference(const ImageRGB& a, const ImageRGB& b) {
-  double sum = 0.0;
-  for (size_t i = 0; i < a.rgb.size(); ++i) {
-    const double d = double(a.rgb[i]) - double(b.rgb[i]);
-    sum += d * d;
-  }
-  return sum / double(a.rgb.size());
+  const double rmse = compare_images(a, b, CompareMetric::Rmse, 0.0).value;
+  return rmse * rmse;
 }
 
 TEST(Guiding, VarianceDoesNotCompoundAlongAPath) {
