@@ -12,7 +12,11 @@
 // shows (DisplayTexel::shownSamples: more than its fresh samples where a converged stale estimate
 // still weighs). Without it (the ablation: a denoiser that knows only the accumulation), the
 // accumulation's own count. A pixel still showing its stale estimate takes the variance of the
-// samples that made it (sampled_variance); one with fewer than kShortHistory samples behind it,
+// samples that made it (sample_variance). One showing a value that holds more than its fresh
+// samples (the stale estimate kept, or mixed with them) pools their variance with the noise prior
+// (pooled_with_prior): one sample's variance measured on at least kPriorSamples samples of the
+// surface it sees, the last time it had them (before the edit), kept in kDenoiseShownNoise.
+// One with fewer than kShortHistory samples behind it,
 // the spatial variance of its 3 x 3 neighbours of the same key: the variance of two samples is a
 // guess with one degree of freedom, and a pair that happened to agree (a new shadow's pixel,
 // both samples dark) was taken as precise and its speckle kept. A value still shown after its
@@ -49,13 +53,20 @@ layout(scalar, binding = kDenoiseKeys) writeonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) writeonly buffer Input { vec4 b_input[]; };
 layout(scalar, binding = kDenoiseSamples) writeonly buffer Samples { uint b_samples[]; };
 layout(scalar, binding = kDenoiseVariance) writeonly buffer Variance { float b_variance[]; };
-layout(scalar, binding = kDenoiseShownNoise) buffer ShownNoise { uvec3 b_shown_noise[]; };
+// What the prepare kernel keeps of a pixel from one run to the next.
+struct ShownNoise {
+  uvec3 last;   // the shown value's luminance bits, its variance (bits) and samples, as last filtered
+  uvec3 prior;  // the noise prior: one sample's variance (bits), the samples it was measured on
+                // and the surface (guide record) they saw
+};
+layout(scalar, binding = kDenoiseShownNoise) buffer ShownNoiseBuffer { ShownNoise b_shown_noise[]; };
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
 const float kEdgeNormalCosine = 0.9;   // normals further apart: an edge (about 25 degrees)
 const float kEdgePlane = 0.1;           // a neighbour further off the tangent plane (as a slope)
 const float kEdgeAlbedo = 0.1;          // an albedo further off in any channel
-const uint kShortHistory = 3u;          // fewer samples behind a value: their own variance is not used
+const uint kShortHistory = 3u;
+const uint kPriorSamples = 16u;         // fewer samples: their variance is no prior for later ones          // fewer samples behind a value: their own variance is not used
 
 vec3 guide_position(uvec2 pixel, DenoiseGuide guide) {
   return u_frame.cameraPosition + pixel_centre_ray(pixel) * guide.distance;
@@ -108,24 +119,21 @@ float demodulated_luminance(uint index) {
 // The samples behind what is shown, as far as the variance knows them (1: a spatial estimate).
 uint samples_behind(DisplayTexel texel, uint n) { return u_push.displayState != 0u ? max(texel.shownSamples, n) : n; }
 
-// The samples' variance of the demodulated luminance, over the samples behind what is shown, or
-// -1 where the pixel cannot tell (fewer than two samples). Whose samples: a pixel showing the
-// scene since the edit has its fresh ones; one still showing its stale estimate has the samples
-// that made it, in the accumulation until its next visit drops them (owed: mark_owed.comp); a
-// relit pixel (the edited scene, from owed samples of the scene before) has neither.
-float sampled_variance(uint index, vec3 albedo, out uint behind) {
-  const DisplayTexel texel = b_display[index];
+// One sample's variance of the demodulated luminance, from the n samples in the pixel's
+// accumulation, or -1 where the pixel cannot tell (fewer than two samples). Whose samples: a pixel
+// showing the scene since the edit has its fresh ones; one still showing its stale estimate has
+// the samples that made it, in the accumulation until its next visit drops them (owed:
+// mark_owed.comp); a relit pixel (the edited scene, from owed samples of the scene before) has
+// neither.
+float sample_variance(uint index, vec3 albedo, out uint n) {
   const PixelAccum accum = b_accum[index];
-  const bool owed = (accum.count & kPixelOwed) != 0u;
-  const uint n = accum.count & kPixelCountMask;
-  behind = 1u;
-  if (n < 2u || (owed && shows_current(texel))) return -1.0;
+  n = accum.count & kPixelCountMask;
+  if (n < 2u || ((accum.count & kPixelOwed) != 0u && shows_current(b_display[index]))) return -1.0;
   const vec3 mean = accum.sum / float(n);
   const vec3 spread = sqrt(max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u)) / albedo;
   // The channels' noise is of the same paths: their deviations add up in the luminance.
   const float deviation = denoise_luminance(spread);
-  behind = samples_behind(texel, n);
-  return deviation * deviation / float(behind);
+  return deviation * deviation;
 }
 
 // The variance of the luminance over the 3 x 3 neighbours with the pixel's key.
@@ -178,6 +186,29 @@ vec3 kept_value(uint index) {
   return environment;
 }
 
+// Whether the pixel's noise prior may stand for the noise of what it shows: measured on enough
+// samples of the surface the pixel sees now.
+bool prior_applies(uvec3 prior, uint index) {
+  return prior.y >= kPriorSamples && prior.z == b_guides[index].record;
+}
+
+// One sample's variance of a value that holds more than its n fresh samples (a converged stale
+// estimate kept, or mixed with a few fresh samples: DisplayTexel::shownSamples > n), pooled with
+// the prior measured on the samples of the scene before the edit: a pair of samples' own variance
+// has one degree of freedom, and where paths rarely meet what the edit changed (a moved sphere
+// seen in a closed box's walls) it mostly misses the rare bright paths, so the kept value was
+// taken as precise and shown unfiltered (CornellBox's sphere move: the denoised display grew
+// worse as hipr re-rendered). -1 without a prior or where the fresh samples are as many.
+float pooled_with_prior(uvec3 prior, uint index, float perSample, uint n) {
+  const DisplayTexel texel = b_display[index];
+  if (u_push.displayState == 0u || !shows_current(texel) || texel.shownSamples <= n || n >= prior.y ||
+      !prior_applies(prior, index))
+    return -1.0;
+  const float fresh = perSample >= 0.0 ? float(n - 1u) : 0.0;
+  const float old = float(prior.y - 1u);
+  return (fresh * max(perSample, 0.0) + old * uintBitsToFloat(prior.x)) / (fresh + old);
+}
+
 void main() {
   const uint index = dispatch_index();
   if (index >= u_push.width * u_push.height) return;
@@ -186,25 +217,38 @@ void main() {
   const vec3 radiance = demodulated(b_display[index].shown, b_guides[index]);
   const uint key = pixel_key(index);
   b_keys[index] = key;
+  ShownNoise kept = b_shown_noise[index];
   uint behind = 1u;
   if (key == kDenoiseKept) {
     b_input[index] = vec4(kept_value(index), 0.0);
     b_samples[index] = behind;
     b_variance[index] = 0.0;
-    b_shown_noise[index] = uvec3(0u);
+    b_shown_noise[index].last = uvec3(0u);
     return;
   }
   const uint shownBits = floatBitsToUint(denoise_luminance(radiance));
-  float variance = sampled_variance(index, albedo, behind);
-  const uvec3 last = b_shown_noise[index];
-  if (variance < 0.0 && !shows_current(b_display[index]) && last.x == shownBits && last.z >= kShortHistory) {
-    variance = uintBitsToFloat(last.y);
-    behind = last.z;
+  uint n;
+  const float perSample = sample_variance(index, albedo, n);
+  if (perSample >= 0.0 && n >= kPriorSamples && !isinf(perSample) && !isnan(perSample))
+    kept.prior = uvec3(floatBitsToUint(perSample), n, b_guides[index].record);
+  const float pooled = pooled_with_prior(kept.prior, index, perSample, n);
+  float variance = -1.0;
+  if (perSample >= 0.0) {
+    behind = samples_behind(b_display[index], n);
+    variance = perSample / float(behind);
+  }
+  if (pooled >= 0.0) {
+    behind = b_display[index].shownSamples;
+    variance = pooled / float(behind);
+  } else if (variance < 0.0 && !shows_current(b_display[index]) && kept.last.x == shownBits && kept.last.z >= kShortHistory) {
+    variance = uintBitsToFloat(kept.last.y);
+    behind = kept.last.z;
   } else if (variance < 0.0 || behind < kShortHistory) {
     variance = spatial_variance(pixel, key, denoise_luminance(radiance));
   }
   variance = isinf(variance) || isnan(variance) ? 0.0 : variance;
-  b_shown_noise[index] = uvec3(shownBits, floatBitsToUint(variance), behind);
+  kept.last = uvec3(shownBits, floatBitsToUint(variance), behind);
+  b_shown_noise[index] = kept;
   b_input[index] = vec4(radiance, variance);
   b_samples[index] = behind;
   b_variance[index] = variance;

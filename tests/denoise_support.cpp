@@ -38,9 +38,10 @@ void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels
     t.shownNormal = t.staleNormal = abi::kNormalUnknown;
     t.flags = p.current ? abi::kShownCurrent : 0u;
     t.screenNoise = 1.0f;
-    const float n = float(p.samples);
+    const uint32_t count = p.fresh > 0u ? p.fresh : p.samples;
+    const float n = float(count);
     accum[i].sum = p.shown * n;
-    accum[i].count = p.current ? p.samples : 0u;
+    accum[i].count = p.current ? count : 0u;
     // sum of squares = n (mean^2 + variance (n - 1) / n): the sample variance is deviation^2.
     accum[i].sumSquares = n * p.shown * p.shown + glm::vec3((n - 1.0f) * p.deviation * p.deviation);
   }

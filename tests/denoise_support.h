@@ -24,8 +24,9 @@ Scene two_cards();
 struct SyntheticPixel {
   glm::vec3 shown{0.0f};
   bool current = true;
-  uint32_t samples = 4;
-  float deviation = 0.5f;
+  uint32_t samples = 4;    // behind what is shown (DisplayTexel::shownSamples)
+  float deviation = 0.5f;  // of one sample, in the accumulation
+  uint32_t fresh = 0;      // samples in the accumulation, when fewer than `samples` (0: as many)
 };
 
 void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels);

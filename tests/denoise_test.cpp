@@ -107,6 +107,37 @@ TEST(Denoise, AValueOnFewSamplesTakesItsNeighboursSpread) {
   }
 }
 
+// After an edit hipr keeps a converged stale value where the edit changed nothing (the difference
+// rule's b = 0), and the pixel, re-rendered, shows it over its first pair of fresh samples
+// (shownSamples 16, two in the accumulation). The pair's variance, one degree of freedom, is
+// mostly too small where rare paths carry the noise (here: the two agree exactly), and the kept
+// value passed for a precise one and was shown unfiltered: the denoised display grew noisier as
+// hipr re-rendered (CornellBox's sphere move). The noise measured on the value's own 16 samples,
+// before the edit, stands for it.
+TEST(Denoise, AKeptValueOverAPairOfFreshSamplesKeepsTheNoiseOfItsOwnSamples) {
+  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+  std::vector<SyntheticPixel> pixels = noisy(0.5f, 0.8f, 7);
+  for (SyntheticPixel& p : pixels) p.samples = 16;  // noisy() scatters as 4 samples of 0.4
+  write_display(renderer, pixels);
+  const ImageRGB shown = renderer.displayed_image();
+  const auto scatter = [&](const ImageRGB& image) {
+    double sum = 0.0;
+    for (const float v : image.rgb) sum += (v - 0.5) * (v - 0.5);
+    return sum;
+  };
+  const double before = scatter(renderer.denoised_image(denoise_on()));
+  for (SyntheticPixel& p : pixels) {
+    p.fresh = 2;
+    p.deviation = 0.0f;
+  }
+  write_display(renderer, pixels);
+  ASSERT_EQ(renderer.displayed_image().rgb, shown.rgb);
+  const double after = scatter(renderer.denoised_image(denoise_on()));
+  EXPECT_LT(before, 0.7 * scatter(shown)) << "filtered before the edit";
+  EXPECT_LT(after, 1.2 * before) << "raw " << scatter(shown) << ", before " << before << ", after "
+                                 << after;
+}
+
 TEST(Denoise, NeverMixesTwoSurfaces) {
   Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
   // Flat values on each card, noisy as far as their samples tell: the filter may average within

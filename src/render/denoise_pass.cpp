@@ -28,7 +28,7 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
       m_pong(ctx, pixels(width, height) * sizeof(abi::vec4), kStorage),
       m_frame(ctx, pixels(width, height) * sizeof(abi::vec3), kStorage),
       m_history(ctx, pixels(width, height) * 2 * sizeof(uint32_t), kStorage),
-      m_shown_noise(ctx, pixels(width, height) * 3 * sizeof(uint32_t),
+      m_shown_noise(ctx, pixels(width, height) * 6 * sizeof(uint32_t),
                     kStorage | VK_BUFFER_USAGE_TRANSFER_DST_BIT),
       m_trace_guides(ctx, "denoise_guides.comp", {},
                      {{abi::kDenoiseGuides, &m_guides}, {abi::kDenoiseGeometry, &m_geometry}}, 0,

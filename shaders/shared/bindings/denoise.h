@@ -23,7 +23,7 @@ HIPR_CONST uint kDenoiseVariance = 8u;      // float per pixel: the shown value'
 HIPR_CONST uint kDenoiseGeometry = 9u;      // uvec2 per pixel: a guide's normal and distance (guides write)
 HIPR_CONST uint kDenoiseFrame = 10u;        // vec3 per pixel: this frame's filtered radiance (blend writes)
 HIPR_CONST uint kDenoiseHistory = 11u;      // uvec2 per pixel: key and samples last shown (temporal)
-HIPR_CONST uint kDenoiseShownNoise = 12u;   // uvec3 per pixel: a shown value's luminance bits, variance, samples (prepare)
+HIPR_CONST uint kDenoiseShownNoise = 12u;   // 6 uints per pixel: a shown value's luminance bits, variance, samples; the noise prior (prepare)
 
 // denoise_blend.comp's workgroup: a tile of pixels whose windows' sums are read from shared
 // memory. 16 x 8 (and the windows' margin: 26 x 18 places of 28 bytes, 13 KB) keeps within what
