@@ -65,8 +65,8 @@ layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 const float kEdgeNormalCosine = 0.9;   // normals further apart: an edge (about 25 degrees)
 const float kEdgePlane = 0.1;           // a neighbour further off the tangent plane (as a slope)
 const float kEdgeAlbedo = 0.1;          // an albedo further off in any channel
-const uint kShortHistory = 3u;
-const uint kPriorSamples = 16u;         // fewer samples: their variance is no prior for later ones          // fewer samples behind a value: their own variance is not used
+const uint kShortHistory = 3u;          // fewer samples behind a value: their own variance is not used
+const uint kPriorSamples = 16u;         // fewer samples: their variance is no prior for later ones
 
 vec3 guide_position(uvec2 pixel, DenoiseGuide guide) {
   return u_frame.cameraPosition + pixel_centre_ray(pixel) * guide.distance;
