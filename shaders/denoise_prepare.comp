@@ -125,10 +125,10 @@ uint samples_behind(DisplayTexel texel, uint n) { return u_push.displayState != 
 // the samples that made it, in the accumulation until its next visit drops them (owed:
 // mark_owed.comp); a relit pixel (the edited scene, from owed samples of the scene before) has
 // neither.
-float sample_variance(uint index, vec3 albedo, out uint n) {
+float sample_variance(uint index, DisplayTexel texel, vec3 albedo, out uint n) {
   const PixelAccum accum = b_accum[index];
   n = accum.count & kPixelCountMask;
-  if (n < 2u || ((accum.count & kPixelOwed) != 0u && shows_current(b_display[index]))) return -1.0;
+  if (n < 2u || ((accum.count & kPixelOwed) != 0u && shows_current(texel))) return -1.0;
   const vec3 mean = accum.sum / float(n);
   const vec3 spread = sqrt(max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u)) / albedo;
   // The channels' noise is of the same paths: their deviations add up in the luminance.
@@ -199,8 +199,7 @@ bool prior_applies(uvec3 prior, uint index) {
 // seen in a closed box's walls) it mostly misses the rare bright paths, so the kept value was
 // taken as precise and shown unfiltered (CornellBox's sphere move: the denoised display grew
 // worse as hipr re-rendered). -1 without a prior or where the fresh samples are as many.
-float pooled_with_prior(uvec3 prior, uint index, float perSample, uint n) {
-  const DisplayTexel texel = b_display[index];
+float pooled_with_prior(uvec3 prior, uint index, DisplayTexel texel, float perSample, uint n) {
   if (u_push.displayState == 0u || !shows_current(texel) || texel.shownSamples <= n || n >= prior.y ||
       !prior_applies(prior, index))
     return -1.0;
@@ -214,7 +213,8 @@ void main() {
   if (index >= u_push.width * u_push.height) return;
   const uvec2 pixel = uvec2(index % u_push.width, index / u_push.width);
   const vec3 albedo = unpack_albedo(b_guides[index].albedo);
-  const vec3 radiance = demodulated(b_display[index].shown, b_guides[index]);
+  const DisplayTexel texel = b_display[index];
+  const vec3 radiance = demodulated(texel.shown, b_guides[index]);
   const uint key = pixel_key(index);
   b_keys[index] = key;
   ShownNoise kept = b_shown_noise[index];
@@ -228,19 +228,19 @@ void main() {
   }
   const uint shownBits = floatBitsToUint(denoise_luminance(radiance));
   uint n;
-  const float perSample = sample_variance(index, albedo, n);
+  const float perSample = sample_variance(index, texel, albedo, n);
   if (perSample >= 0.0 && n >= kPriorSamples && !isinf(perSample) && !isnan(perSample))
     kept.prior = uvec3(floatBitsToUint(perSample), n, b_guides[index].record);
-  const float pooled = pooled_with_prior(kept.prior, index, perSample, n);
+  const float pooled = pooled_with_prior(kept.prior, index, texel, perSample, n);
   float variance = -1.0;
   if (perSample >= 0.0) {
-    behind = samples_behind(b_display[index], n);
+    behind = samples_behind(texel, n);
     variance = perSample / float(behind);
   }
   if (pooled >= 0.0) {
-    behind = b_display[index].shownSamples;
+    behind = texel.shownSamples;
     variance = pooled / float(behind);
-  } else if (variance < 0.0 && !shows_current(b_display[index]) && kept.last.x == shownBits && kept.last.z >= kShortHistory) {
+  } else if (variance < 0.0 && !shows_current(texel) && kept.last.x == shownBits && kept.last.z >= kShortHistory) {
     variance = uintBitsToFloat(kept.last.y);
     behind = kept.last.z;
   } else if (variance < 0.0 || behind < kShortHistory) {

@@ -116,15 +116,15 @@ TEST(Denoise, AValueOnFewSamplesTakesItsNeighboursSpread) {
 // before the edit, stands for it.
 TEST(Denoise, AKeptValueOverAPairOfFreshSamplesKeepsTheNoiseOfItsOwnSamples) {
   Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
-  std::vector<SyntheticPixel> pixels =
-      noisy(0.5f, 0.4f, 7);  // scattered as 4 samples of 0.4, or 16 of 0.8
+  // Scattered as 4 samples of deviation 0.4 would be, or 16 of 0.8.
+  std::vector<SyntheticPixel> pixels = noisy(0.5f, 0.4f, 7);
   for (SyntheticPixel& p : pixels) {
     p.samples = 16;
     p.deviation = 0.8f;
   }
   write_display(renderer, pixels);
   const ImageRGB shown = renderer.displayed_image();
-  const auto scatter = [&](const ImageRGB& image) {
+  const auto scatter = [](const ImageRGB& image) {
     double sum = 0.0;
     for (const float v : image.rgb) sum += (v - 0.5) * (v - 0.5);
     return sum;
