@@ -2,7 +2,7 @@
 // One pass of the display denoiser's edge-avoiding a-trous filter (Dammertz et al. 2010, with
 // SVGF's variance-guided luminance edge, Schied et al. 2017): a 5 x 5 B3-spline kernel whose taps
 // lie `step` pixels apart, each weighed by how alike the two pixels are:
-//   key       equal, or no weight (same surface, same scene state: denoise_prepare.comp)
+//   key       mixing (keys_mix), or no weight (same surface, same scene state: denoise_prepare.comp)
 //   colour    exp(-L(|c_p - c_q|) / (4 strength sqrt(Var_p))), L the luminance of the channels'
 //             differences, Var_p the variance of the pixel's luminance blurred
 //             over its 3 x 3 neighbours (blurred_variance): a precise pixel takes nothing from
@@ -54,7 +54,7 @@ float blurred_variance(ivec2 p, uint key) {
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
       const ivec2 q = p + ivec2(dx, dy);
-      if (!inside(q) || b_keys[pixel_index(q)] != key) continue;
+      if (!inside(q) || !keys_mix(b_keys[pixel_index(q)], key)) continue;
       const float w = (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25);
       sum += w * b_input[pixel_index(q)].w * float(b_samples[pixel_index(q)]) / own;
       weights += w;
@@ -86,7 +86,7 @@ void main() {
       const ivec2 q = p + step * ivec2(dx, dy);
       if (!inside(q)) continue;
       const uint neighbour = pixel_index(q);
-      if (b_keys[neighbour] != key) continue;
+      if (!keys_mix(b_keys[neighbour], key)) continue;
       const vec4 value = b_input[neighbour];
       float w = kSpline[abs(dx)] * kSpline[abs(dy)];
       if (neighbour != index) {

@@ -2,9 +2,10 @@
 // The display denoiser's last kernel: how much of the filtered value each pixel shows. The
 // filter trades noise for bias (a shading gradient averaged over its footprint): where the
 // pixel's own estimate is precise, the bias is the larger error. As hipr's display rules weigh a
-// stale estimate against a fresh one (resolve_display.comp), over the 11 x 11 pixels of the same
-// key around it, with r the shown value and f the filtered one (luminances of radiance), each
-// pixel weighed as relMSE weighs errors, w = 1 / (r^2 + 0.01), as the display rules do:
+// stale estimate against a fresh one (resolve_display.comp), over the 11 x 11 pixels whose
+// keys mix with its own (keys_mix), with r the shown value and f the filtered one (luminances
+// of radiance), each pixel weighed as relMSE weighs errors, w = 1 / (r^2 + 0.01), as the
+// display rules do:
 //   D = sum w (f - r)^2   (E[D] ~ B + V: the filter's squared bias, and r's noise)
 //   V = sum w Var(r)
 // (In radiance, not in the demodulated values the filter works on: there a dark texel's noise,
@@ -125,7 +126,7 @@ void main() {
   for (int dy = -kWindowRadius; dy <= kWindowRadius; ++dy)
     for (int dx = -kWindowRadius; dx <= kWindowRadius; ++dx) {
       const int slot = centre + dy * kSpan.x + dx;
-      if (s_keys[slot] != key) continue;
+      if (!keys_mix(s_keys[slot], key)) continue;
       weighed += s_weighed[slot];
       sums += s_sums[slot];
       count += 1.0;

@@ -29,7 +29,8 @@
 // Keys: neighbours mix only when they show the same surface (the G-buffer record their guide
 // ray hit) and, with the display state, values of the same scene state (a stale pixel and a fresh
 // one never mix: the filter does not spread a change, or the absence of one, across the line the
-// re-render has reached). A pixel whose shown value depicts another surface than the one its
+// re-render has reached; a re-rendered pixel showing its stale estimate, unchanged, mixes with
+// either: scene_state). A pixel whose shown value depicts another surface than the one its
 // guide sees (a moved object's old place, still stale) is kept as it is and read by no one.
 // A pixel beside an edge (a neighbour sees another surface, a normal or plane of its own, another
 // albedo) mixes two surfaces in its samples, though its centre sees one: it takes and gives only
@@ -97,6 +98,21 @@ bool beside_edge(uvec2 pixel, DenoiseGuide guide) {
 
 bool shows_current(DisplayTexel texel) { return u_push.displayState == 0u || (texel.flags & kShownCurrent) != 0u; }
 
+// The scene state of the pixel's key: the scene before the last edit (no bit), since it
+// (kDenoiseCurrent), or unchanged (kDenoiseUnchanged): a re-rendered pixel whose fresh samples
+// found no change, the difference rule showing its stale estimate bit for bit. That value is what
+// the pixels not re-rendered yet show and what the re-rendered ones estimate where nothing
+// changed: it mixes with either. Kept apart from the first, the line the re-render had reached
+// cut the filter's footprint in every tile it crossed (CornellBox's walls grew noisier on the
+// screen where a moved sphere changed nothing); apart from the second, such a pixel inside a
+// change (colour bleeding its two samples missed) no longer took its neighbours' change.
+uint scene_state(DisplayTexel texel) {
+  if (!shows_current(texel)) return 0u;
+  const bool unchanged = u_push.displayState != 0u && (texel.flags & kStaleCurrent) == 0u && texel.staleSamples > 0u &&
+                         all(equal(texel.shown, texel.stale));
+  return unchanged ? kDenoiseUnchanged : kDenoiseCurrent;
+}
+
 uint pixel_key(uint index) {
   const DisplayTexel texel = b_display[index];
   const uint seen = b_guides[index].record;
@@ -108,7 +124,7 @@ uint pixel_key(uint index) {
   if (seen == kInvalidIndex) return kDenoiseKept;
   const uint surface = (seen + 1u) & kDenoiseSurfaceMask;
   const uvec2 pixel = uvec2(index % u_push.width, index / u_push.width);
-  return surface | (shows_current(texel) ? kDenoiseCurrent : 0u) |
+  return surface | scene_state(texel) |
          (beside_edge(pixel, b_guides[index]) ? kDenoiseBoundary : 0u);
 }
 
@@ -145,7 +161,7 @@ float spatial_variance(uvec2 pixel, uint key, float own) {
       const ivec2 q = ivec2(pixel) + ivec2(dx, dy);
       if (any(lessThan(q, ivec2(0))) || q.x >= int(u_push.width) || q.y >= int(u_push.height)) continue;
       const uint neighbour = uint(q.y) * u_push.width + uint(q.x);
-      if (pixel_key(neighbour) != key) continue;
+      if (!keys_mix(pixel_key(neighbour), key)) continue;
       const float l = demodulated_luminance(neighbour);
       sum += l;
       squares += l * l;

@@ -32,7 +32,8 @@ void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels
   for (size_t i = 0; i < pixels.size(); ++i) {
     const SyntheticPixel& p = pixels[i];
     abi::DisplayTexel& t = texels[i];
-    t.shown = t.stale = p.shown;
+    t.shown = p.shown;
+    t.stale = p.stale.value_or(p.shown);
     t.shownSamples = t.staleSamples = p.samples;
     t.shownRecord = t.staleRecord = abi::kRecordUnknown;
     t.shownNormal = t.staleNormal = abi::kNormalUnknown;

@@ -2,6 +2,7 @@
 // What the display denoiser's tests share: a view of two cards, displays written directly
 // (values, their samples and noise, stale or fresh), noisy and settings helpers.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "hipr/denoise.h"
@@ -27,6 +28,9 @@ struct SyntheticPixel {
   uint32_t samples = 4;    // behind what is shown (DisplayTexel::shownSamples)
   float deviation = 0.5f;  // of one sample, in the accumulation
   uint32_t fresh = 0;      // samples in the accumulation, when fewer than `samples` (0: as many)
+  // The stale estimate (of the scene before the last edit), where it is not `shown`: a current
+  // pixel whose stale estimate is what it shows found no change since the edit.
+  std::optional<glm::vec3> stale;
 };
 
 void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels);

@@ -198,19 +198,25 @@ TEST(Denoise, ANormalMapsDetailDoesNotSplitItsSurface) {
   EXPECT_LT(filtered, raw / 3.0) << "raw " << raw << ", denoised " << filtered;
 }
 
-TEST(Denoise, NeverMixesTheSceneBeforeAnEditWithTheSceneAfter) {
-  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
-  // One surface: its top half re-rendered since the edit, its bottom half still the stale image.
+// One surface (the left card): its top half re-rendered since the edit and showing 0.2, its
+// bottom half still the stale image's 0.8; the re-rendered pixels' stale estimate is `stale`.
+std::vector<SyntheticPixel> half_re_rendered(float stale) {
   std::vector<SyntheticPixel> pixels(kSize * kSize);
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x < kSize / 2; ++x) {
       SyntheticPixel& p = pixels[y * kSize + x];
       p.current = y < kSize / 2;
       p.shown = glm::vec3(p.current ? 0.2f : 0.8f);
+      p.stale = glm::vec3(p.current ? stale : 0.8f);
       p.deviation = 2.0f;
       p.samples = p.current ? 2u : 64u;
     }
-  write_display(renderer, pixels);
+  return pixels;
+}
+
+TEST(Denoise, NeverMixesTheSceneBeforeAnEditWithTheSceneAfter) {
+  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+  write_display(renderer, half_re_rendered(0.8f));
   const ImageRGB denoised = renderer.denoised_image(denoise_on());
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x < kSize / 2; ++x)
@@ -221,6 +227,29 @@ TEST(Denoise, NeverMixesTheSceneBeforeAnEditWithTheSceneAfter) {
   plain.display_state = false;
   const ImageRGB mixed = renderer.denoised_image(plain);
   EXPECT_GT(mixed.rgb[3 * ((kSize / 2 - 1) * kSize + 4) + 1], 0.2f + 1e-3f);
+}
+
+// A re-rendered pixel that shows its stale estimate bit for bit (the difference rule found no
+// change in its samples) shows what the pixels not re-rendered yet show, and what re-rendered
+// ones estimate where nothing changed: the filter mixes it with either. Kept apart from the
+// first, the line the re-render had reached cut the filter's footprint and the screen grew
+// noisier where nothing changed; a stale pixel and a changed one still never mix (above).
+TEST(Denoise, APixelShowingItsStaleEstimateMixesWithEitherState) {
+  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
+  const size_t aboveTheLine = 3 * ((kSize / 2 - 1) * kSize + 4) + 1;
+  const size_t belowTheLine = 3 * ((kSize / 2) * kSize + 4) + 1;
+  // Unchanged (0.2) above, not re-rendered (0.8) below.
+  write_display(renderer, half_re_rendered(0.2f));
+  EXPECT_GT(renderer.denoised_image(denoise_on()).rgb[aboveTheLine], 0.2f + 1e-3f);
+  // Changed (0.2) above, unchanged (0.8) below.
+  std::vector<SyntheticPixel> pixels = half_re_rendered(0.5f);
+  for (uint32_t y = kSize / 2; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize / 2; ++x) {
+      pixels[y * kSize + x].current = true;
+      pixels[y * kSize + x].samples = 2u;
+    }
+  write_display(renderer, pixels);
+  EXPECT_LT(renderer.denoised_image(denoise_on()).rgb[belowTheLine], 0.8f - 1e-3f);
 }
 
 // Pixels of 4 skewed samples each (10 % of them 13x brighter), seeded.

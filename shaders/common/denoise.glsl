@@ -32,6 +32,15 @@ bool footprint_environment(DenoiseGuide guide, out vec3 radiance, out float devi
          !any(isnan(radiance));
 }
 
+// Whether two pixels' keys (denoise_prepare.comp) let them mix: the same surface, both beside an
+// edge or both not, and values of the same scene state, where a value re-rendered without change
+// (kDenoiseUnchanged) goes with either. A kept pixel mixes with none.
+bool keys_mix(uint a, uint b) {
+  if (((a | b) & kDenoiseKept) != 0u) return false;
+  const uint state = kDenoiseCurrent | kDenoiseUnchanged;
+  return a == b || (((a ^ b) & ~state) == 0u && ((a | b) & kDenoiseUnchanged) != 0u);
+}
+
 float denoise_luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 #endif

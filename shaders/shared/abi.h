@@ -627,7 +627,10 @@ HIPR_CONST float kFootprintDeviationFloor = 1.0e-4;
 HIPR_CONST uint kFootprintLookups = 128u;
 
 // A pixel's key in the filter (denoise_prepare.comp): neighbours mix only with equal keys.
-HIPR_CONST uint kDenoiseSurfaceMask = 0x1fffffffu;  // the surface shown, + 1
+HIPR_CONST uint kDenoiseSurfaceMask = 0x0fffffffu;  // the surface shown, + 1
+// What is shown is the stale estimate, bit for bit, though the pixel was re-rendered since the
+// edit: its fresh samples found no change (the difference rule). It mixes with either state.
+HIPR_CONST uint kDenoiseUnchanged = 0x10000000u;
 HIPR_CONST uint kDenoiseBoundary = 0x20000000u;     // a neighbour sees another surface, normal or albedo
 HIPR_CONST uint kDenoiseCurrent = 0x40000000u;      // what is shown is of the scene since the last edit
 HIPR_CONST uint kDenoiseKept = 0x80000000u;         // shown as it is, read by no neighbour
