@@ -135,18 +135,30 @@ float demodulated_luminance(uint index) {
 // The samples behind what is shown, as far as the variance knows them (1: a spatial estimate).
 uint samples_behind(DisplayTexel texel, uint n) { return u_push.displayState != 0u ? max(texel.shownSamples, n) : n; }
 
+// Whether the pixel shows its stale estimate relit (relight.comp): the edited scene's value from
+// the samples of the scene before the edit, each light group's share scaled.
+bool shows_relit(DisplayTexel texel) {
+  const uint relit = kShownGrouped | kStaleCurrent;
+  return u_push.displayState != 0u && (texel.flags & relit) == relit;
+}
+
 // One sample's variance of the demodulated luminance, from the n samples in the pixel's
 // accumulation, or -1 where the pixel cannot tell (fewer than two samples). Whose samples: a pixel
 // showing the scene since the edit has its fresh ones; one still showing its stale estimate has
 // the samples that made it, in the accumulation until its next visit drops them (owed:
-// mark_owed.comp); a relit pixel (the edited scene, from owed samples of the scene before) has
-// neither.
+// mark_owed.comp); a relit pixel has those too, each channel's spread scaled as the relight
+// scaled its value (the sums of squares do not keep the light groups apart). Taken from its
+// neighbours instead, as a pixel without samples, a converged relit image was filtered as noise
+// wherever its shading varied (cornell_sphere's ceiling light dimmed: relMSE over the first unit
+// 1.13x that of the image before the edit, filtered).
 float sample_variance(uint index, DisplayTexel texel, vec3 albedo, out uint n) {
   const PixelAccum accum = b_accum[index];
   n = accum.count & kPixelCountMask;
-  if (n < 2u || ((accum.count & kPixelOwed) != 0u && shows_current(texel))) return -1.0;
+  const bool owedShown = (accum.count & kPixelOwed) != 0u && shows_current(texel);
+  if (n < 2u || (owedShown && !shows_relit(texel))) return -1.0;
   const vec3 mean = accum.sum / float(n);
-  const vec3 spread = sqrt(max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u)) / albedo;
+  vec3 spread = sqrt(max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u)) / albedo;
+  if (owedShown) spread *= mix(vec3(1.0), texel.shown / max(mean, vec3(1e-30)), greaterThan(mean, vec3(0.0)));
   // The channels' noise is of the same paths: their deviations add up in the luminance.
   const float deviation = denoise_luminance(spread);
   return deviation * deviation;

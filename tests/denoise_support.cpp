@@ -38,13 +38,16 @@ void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels
     t.shownRecord = t.staleRecord = abi::kRecordUnknown;
     t.shownNormal = t.staleNormal = abi::kNormalUnknown;
     t.flags = p.current ? abi::kShownCurrent : 0u;
+    if (p.relitBy > 0.0f)
+      t.flags = abi::kShownGrouped | abi::kStaleGrouped | abi::kShownCurrent | abi::kStaleCurrent;
     t.screenNoise = 1.0f;
     const uint32_t count = p.fresh > 0u ? p.fresh : p.samples;
     const float n = float(count);
-    accum[i].sum = p.shown * n;
-    accum[i].count = p.current ? count : 0u;
+    const glm::vec3 mean = p.relitBy > 0.0f ? p.shown / p.relitBy : p.shown;
+    accum[i].sum = mean * n;
+    accum[i].count = p.relitBy > 0.0f ? count | abi::kPixelOwed : p.current ? count : 0u;
     // sum of squares = n (mean^2 + variance (n - 1) / n): the sample variance is deviation^2.
-    accum[i].sumSquares = n * p.shown * p.shown + glm::vec3((n - 1.0f) * p.deviation * p.deviation);
+    accum[i].sumSquares = n * mean * mean + glm::vec3((n - 1.0f) * p.deviation * p.deviation);
   }
   state.resolve.display.upload(texels.data(), texels.size() * sizeof(abi::DisplayTexel));
   state.film.accumulation.upload(accum.data(), accum.size() * sizeof(abi::PixelAccum));

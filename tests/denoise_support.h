@@ -31,6 +31,9 @@ struct SyntheticPixel {
   // The stale estimate (of the scene before the last edit), where it is not `shown`: a current
   // pixel whose stale estimate is what it shows found no change since the edit.
   std::optional<glm::vec3> stale;
+  // Above 0: the pixel shows its stale estimate relit by this factor (relight.comp), from the
+  // samples still in the accumulation, of the scene before the edit (owed), `deviation` theirs.
+  float relitBy = 0.0f;
 };
 
 void write_display(Renderer& renderer, const std::vector<SyntheticPixel>& pixels);
