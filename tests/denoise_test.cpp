@@ -219,7 +219,8 @@ TEST(Denoise, ARelitPixelKeepsTheNoiseOfItsSamples) {
   const ImageRGB shown = renderer.displayed_image();
   const ImageRGB denoised = renderer.denoised_image(denoise_on());
   float moved = 0.0f;
-  for (size_t i = 0; i < shown.rgb.size(); ++i) moved = std::max(moved, std::abs(denoised.rgb[i] - shown.rgb[i]));
+  for (size_t i = 0; i < shown.rgb.size(); ++i)
+    moved = std::max(moved, std::abs(denoised.rgb[i] - shown.rgb[i]));
   EXPECT_LT(moved, 0.01f);
 }
 
