@@ -150,7 +150,7 @@ bool shows_relit(DisplayTexel texel) {
 // scaled its value (the sums of squares do not keep the light groups apart). Taken from its
 // neighbours instead, as a pixel without samples, a converged relit image was filtered as noise
 // wherever its shading varied (cornell_sphere's ceiling light dimmed: relMSE over the first unit
-// 1.13x that of the image before the edit, filtered).
+// 1.13x that of full + denoise, which shows the image before the edit).
 float sample_variance(uint index, DisplayTexel texel, vec3 albedo, out uint n) {
   const PixelAccum accum = b_accum[index];
   n = accum.count & kPixelCountMask;

@@ -626,7 +626,8 @@ HIPR_CONST float kFootprintDeviationFloor = 1.0e-4;
 // pixel has fewer samples (denoise_prepare.comp: kept_value).
 HIPR_CONST uint kFootprintLookups = 128u;
 
-// A pixel's key in the filter (denoise_prepare.comp): neighbours mix only with equal keys.
+// A pixel's key in the filter (denoise_prepare.comp): neighbours mix only where their keys do
+// (common/denoise.glsl: keys_mix).
 HIPR_CONST uint kDenoiseSurfaceMask = 0x0fffffffu;  // the surface shown, + 1
 // What is shown is the stale estimate, bit for bit, though the pixel was re-rendered since the
 // edit: its fresh samples found no change (the difference rule). It mixes with either state.
