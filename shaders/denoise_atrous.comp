@@ -44,7 +44,7 @@ vec3 guide_position(uvec2 pixel, float distance) {
   return u_frame.cameraPosition + pixel_centre_ray(pixel) * distance;
 }
 
-// The pixel's variance blurred over its 3 x 3 neighbours of the same key (weights 1/4, 1/2, 1/4
+// The pixel's variance blurred over its 3 x 3 neighbours whose keys mix (weights 1/4, 1/2, 1/4
 // per axis): a variance from a few samples is itself noisy. What is blurred is the noise of the
 // light (a neighbour's variance times its samples), over the pixel's own samples: a pixel with
 // a million samples among noisy 4-sample ones stays precise.

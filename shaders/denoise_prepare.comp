@@ -17,7 +17,7 @@
 // (pooled_with_prior): one sample's variance measured on at least kPriorSamples samples of the
 // surface it sees, the last time it had them (before the edit), kept in kDenoiseShownNoise.
 // One with fewer than kShortHistory samples behind it,
-// the spatial variance of its 3 x 3 neighbours of the same key: the variance of two samples is a
+// the spatial variance of its 3 x 3 neighbours whose keys mix: the variance of two samples is a
 // guess with one degree of freedom, and a pair that happened to agree (a new shadow's pixel,
 // both samples dark) was taken as precise and its speckle kept. A value still shown after its
 // samples left the accumulation (the converged image a restart shows until its first pass is
