@@ -2,10 +2,10 @@
 // The display denoiser's first kernel: what each pixel shows, less its surface's emission and
 // demodulated by its albedo (common/denoise.glsl), with the variance of its luminance, and the
 // key that says which neighbours it may mix with.
-// Reads: the guides, the display (shown value, its samples, record and scene state), the
-// accumulation (sum, sum of squares, count), FrameParams. Writes: the input of the first a-trous
-// pass (vec4: demodulated radiance, variance; a kept pixel: the radiance it shows, kept_value),
-// the variance again (for denoise_blend.comp), the samples behind each value and the keys.
+// Reads: the guides, the display (shown value, its samples and scene state), the accumulation
+// (sum, sum of squares, count), the keys. Writes: the input of the first a-trous pass (vec4:
+// demodulated radiance, variance; a kept pixel: the radiance it shows, kept_value), the variance
+// again (for denoise_blend.comp) and the samples behind each value.
 //
 // The variance is the shown value's own: with hipr's display state (DenoisePush::displayState),
 // a pixel showing the edited scene takes its samples' variance over the samples behind what it
@@ -26,16 +26,7 @@
 // neighbours it was filtered as one sample's value, and the converged image blurred step by step
 // while it stayed on screen. The environment seen directly is shown as it is (its only noise is
 // antialiasing).
-// Keys: neighbours mix only when they show the same surface (the G-buffer record their guide
-// ray hit) and, with the display state, values of the same scene state (a stale pixel and a fresh
-// one never mix: the filter does not spread a change, or the absence of one, across the line the
-// re-render has reached; a re-rendered pixel showing its stale estimate, unchanged, mixes with
-// either: scene_state). A pixel whose shown value depicts another surface than the one its
-// guide sees (a moved object's old place, still stale) is kept as it is and read by no one.
-// A pixel beside an edge (a neighbour sees another surface, a normal or plane of its own, another
-// albedo) mixes two surfaces in its samples, though its centre sees one: it takes and gives only
-// among pixels beside edges too (kDenoiseBoundary). Filtered with the inside of its surface, an
-// edge lost its antialiasing and a bright emitter's rim bled along the surface beside it.
+// Keys (which neighbours a pixel may mix with) are denoise_keys.comp's, written before this runs.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -45,12 +36,11 @@ layout(local_size_x = 64) in;
 #include "common/frame.glsl"
 #include "common/denoise.glsl"
 #include "common/dispatch.glsl"
-#include "common/pixel_ray.glsl"
 
 layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
 layout(scalar, binding = kDenoiseDisplay) readonly buffer Display { DisplayTexel b_display[]; };
 layout(scalar, binding = kDenoiseAccumulation) readonly buffer Accumulation { PixelAccum b_accum[]; };
-layout(scalar, binding = kDenoiseKeys) writeonly buffer Keys { uint b_keys[]; };
+layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) writeonly buffer Input { vec4 b_input[]; };
 layout(scalar, binding = kDenoiseSamples) writeonly buffer Samples { uint b_samples[]; };
 layout(scalar, binding = kDenoiseVariance) writeonly buffer Variance { float b_variance[]; };
@@ -63,70 +53,8 @@ struct ShownNoise {
 layout(scalar, binding = kDenoiseShownNoise) buffer ShownNoiseBuffer { ShownNoise b_shown_noise[]; };
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
-const float kEdgeNormalCosine = 0.9;   // normals further apart: an edge (about 25 degrees)
-const float kEdgePlane = 0.1;           // a neighbour further off the tangent plane (as a slope)
-const float kEdgeAlbedo = 0.1;          // an albedo further off in any channel
 const uint kShortHistory = 3u;          // fewer samples behind a value: their own variance is not used
 const uint kPriorSamples = 16u;         // fewer samples: their variance is no prior for later ones
-
-vec3 guide_position(uvec2 pixel, DenoiseGuide guide) {
-  return u_frame.cameraPosition + pixel_centre_ray(pixel) * guide.distance;
-}
-
-// Whether a neighbour of the pixel sees another surface, or the same one across an edge of its
-// own (a fold, a corner) or of its albedo.
-bool beside_edge(uvec2 pixel, DenoiseGuide guide) {
-  const bool surface = guide.record != kInvalidIndex;
-  const vec3 normal = surface ? unpack_normal(guide.normal) : vec3(0.0);
-  const vec3 position = surface ? guide_position(pixel, guide) : vec3(0.0);
-  const vec3 albedo = unpackUnorm4x8(guide.albedo).rgb;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      const ivec2 q = ivec2(pixel) + ivec2(dx, dy);
-      if ((dx == 0 && dy == 0) || any(lessThan(q, ivec2(0))) || q.x >= int(u_push.width) || q.y >= int(u_push.height))
-        continue;
-      const DenoiseGuide other = b_guides[uint(q.y) * u_push.width + uint(q.x)];
-      if (other.record != guide.record) return true;
-      if (any(greaterThan(abs(unpackUnorm4x8(other.albedo).rgb - albedo), vec3(kEdgeAlbedo)))) return true;
-      if (!surface) continue;
-      if (dot(unpack_normal(other.normal), normal) < kEdgeNormalCosine) return true;
-      const vec3 offset = guide_position(uvec2(q), other) - position;
-      if (abs(dot(normal, offset)) > kEdgePlane * length(offset)) return true;
-    }
-  return false;
-}
-
-bool shows_current(DisplayTexel texel) { return u_push.displayState == 0u || (texel.flags & kShownCurrent) != 0u; }
-
-// The scene state of the pixel's key: the scene before the last edit (no bit), since it
-// (kDenoiseCurrent), or unchanged (kDenoiseUnchanged): a re-rendered pixel whose fresh samples
-// found no change, the difference rule showing its stale estimate bit for bit. That value is what
-// the pixels not re-rendered yet show and what the re-rendered ones estimate where nothing
-// changed: it mixes with either. Kept apart from the first, the line the re-render had reached
-// cut the filter's footprint in every tile it crossed (CornellBox's walls grew noisier on the
-// screen where a moved sphere changed nothing); apart from the second, such a pixel inside a
-// change (colour bleeding its two samples missed) no longer took its neighbours' change.
-uint scene_state(DisplayTexel texel) {
-  if (!shows_current(texel)) return 0u;
-  const bool unchanged = u_push.displayState != 0u && (texel.flags & kStaleCurrent) == 0u && texel.staleSamples > 0u &&
-                         all(equal(texel.shown, texel.stale));
-  return unchanged ? kDenoiseUnchanged : kDenoiseCurrent;
-}
-
-uint pixel_key(uint index) {
-  const DisplayTexel texel = b_display[index];
-  const uint seen = b_guides[index].record;
-  if (u_push.strength <= 0.0 || any(isinf(texel.shown)) || any(isnan(texel.shown)) ||
-      any(isinf(unpack_emission(b_guides[index]))))
-    return kDenoiseKept;
-  if (u_push.displayState != 0u && texel.shownRecord != kRecordUnknown && texel.shownRecord != seen) return kDenoiseKept;
-  // The environment seen directly has no noise but its antialiasing: nothing to filter.
-  if (seen == kInvalidIndex) return kDenoiseKept;
-  const uint surface = (seen + 1u) & kDenoiseSurfaceMask;
-  const uvec2 pixel = uvec2(index % u_push.width, index / u_push.width);
-  return surface | scene_state(texel) |
-         (beside_edge(pixel, b_guides[index]) ? kDenoiseBoundary : 0u);
-}
 
 float demodulated_luminance(uint index) {
   return denoise_luminance(demodulated(b_display[index].shown, b_guides[index]));
@@ -154,7 +82,7 @@ bool shows_relit(DisplayTexel texel) {
 float sample_variance(uint index, DisplayTexel texel, vec3 albedo, out uint n) {
   const PixelAccum accum = b_accum[index];
   n = accum.count & kPixelCountMask;
-  const bool owedShown = (accum.count & kPixelOwed) != 0u && shows_current(texel);
+  const bool owedShown = (accum.count & kPixelOwed) != 0u && shows_current(texel, u_push.displayState);
   if (n < 2u || (owedShown && !shows_relit(texel))) return -1.0;
   const vec3 mean = accum.sum / float(n);
   vec3 spread = sqrt(max(accum.sumSquares - float(n) * mean * mean, vec3(0.0)) / float(n - 1u)) / albedo;
@@ -173,7 +101,7 @@ float spatial_variance(uvec2 pixel, uint key, float own) {
       const ivec2 q = ivec2(pixel) + ivec2(dx, dy);
       if (any(lessThan(q, ivec2(0))) || q.x >= int(u_push.width) || q.y >= int(u_push.height)) continue;
       const uint neighbour = uint(q.y) * u_push.width + uint(q.x);
-      if (!keys_mix(pixel_key(neighbour), key)) continue;
+      if (!keys_mix(b_keys[neighbour], key)) continue;
       const float l = demodulated_luminance(neighbour);
       sum += l;
       squares += l * l;
@@ -228,7 +156,7 @@ bool prior_applies(uvec3 prior, uint index) {
 // taken as precise and shown unfiltered (CornellBox's sphere move: the denoised display grew
 // worse as hipr re-rendered). -1 without a prior or where the fresh samples are as many.
 float pooled_with_prior(uvec3 prior, uint index, DisplayTexel texel, float perSample, uint n) {
-  if (u_push.displayState == 0u || !shows_current(texel) || texel.shownSamples <= n || n >= prior.y ||
+  if (u_push.displayState == 0u || !shows_current(texel, u_push.displayState) || texel.shownSamples <= n || n >= prior.y ||
       !prior_applies(prior, index))
     return -1.0;
   const float fresh = perSample >= 0.0 ? float(n - 1u) : 0.0;
@@ -243,8 +171,7 @@ void main() {
   const vec3 albedo = unpack_albedo(b_guides[index].albedo);
   const DisplayTexel texel = b_display[index];
   const vec3 radiance = demodulated(texel.shown, b_guides[index]);
-  const uint key = pixel_key(index);
-  b_keys[index] = key;
+  const uint key = b_keys[index];
   ShownNoise kept = b_shown_noise[index];
   uint behind = 1u;
   if (key == kDenoiseKept) {
@@ -268,7 +195,7 @@ void main() {
   if (pooled >= 0.0) {
     behind = texel.shownSamples;
     variance = pooled / float(behind);
-  } else if (variance < 0.0 && !shows_current(texel) && kept.last.x == shownBits && kept.last.z >= kShortHistory) {
+  } else if (variance < 0.0 && !shows_current(texel, u_push.displayState) && kept.last.x == shownBits && kept.last.z >= kShortHistory) {
     variance = uintBitsToFloat(kept.last.y);
     behind = kept.last.z;
   } else if (variance < 0.0 || behind < kShortHistory) {

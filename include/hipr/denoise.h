@@ -36,7 +36,8 @@ inline constexpr float kMaxDenoiseHistory = 0.95f;
 
 // One run of the filter as the device timed it (GPU timestamps between its kernels): what a
 // viewer's frame pays for it, without the host's submission and wait. The guides are traced
-// only after an edit or a camera move (0 otherwise).
+// only after an edit or a camera move (0 otherwise); `prepare` is the keys' kernel and the
+// variance's together.
 struct DenoiseGpuSeconds {
   double guides = 0.0, prepare = 0.0, atrous = 0.0, blend = 0.0, temporal = 0.0;
   double total() const { return guides + prepare + atrous + blend + temporal; }

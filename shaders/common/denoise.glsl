@@ -41,6 +41,10 @@ bool keys_mix(uint a, uint b) {
   return a == b || (((a ^ b) & ~state) == 0u && ((a | b) & kDenoiseUnchanged) != 0u);
 }
 
+// Whether a pixel shows the scene since the last edit (always, without hipr's display state:
+// DenoisePush::displayState 0).
+bool shows_current(DisplayTexel texel, uint displayState) { return displayState == 0u || (texel.flags & kShownCurrent) != 0u; }
+
 float denoise_luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 #endif

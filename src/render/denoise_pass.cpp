@@ -33,6 +33,11 @@ DenoisePass::DenoisePass(const vk::Context& ctx, const GpuScene& scene, const Fi
       m_trace_guides(ctx, "denoise_guides.comp", {},
                      {{abi::kDenoiseGuides, &m_guides}, {abi::kDenoiseGeometry, &m_geometry}}, 0,
                      &scene.descriptor_set()),
+      m_keys_pass(ctx, "denoise_keys.comp", {},
+                  {{abi::kDenoiseGuides, &m_guides},
+                   {abi::kDenoiseDisplay, &display},
+                   {abi::kDenoiseKeys, &m_keys}},
+                  sizeof(abi::DenoisePush), &scene.descriptor_set()),
       m_prepare(ctx, "denoise_prepare.comp", {},
                 {{abi::kDenoiseGuides, &m_guides},
                  {abi::kDenoiseDisplay, &display},
@@ -111,6 +116,8 @@ void DenoisePass::record(VkCommandBuffer cmd, const DenoiseSettings& settings,
   push.displayState = settings.display_state ? 1u : 0u;
   push.historyReset = history_reset ? 1u : 0u;
   push.historyKeep = std::clamp(settings.history, 0.0f, kMaxDenoiseHistory);
+  m_keys_pass.dispatch(cmd, &push, groups);
+  vk::compute_to_compute_barrier(cmd);
   m_prepare.dispatch(cmd, &push, groups);
   mark(kPrepareDone);
   const uint32_t passes = std::clamp(settings.passes, 1u, kMaxDenoisePasses);

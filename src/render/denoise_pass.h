@@ -1,9 +1,9 @@
 #pragma once
-// The display denoiser (denoise_guides.comp, denoise_prepare.comp, denoise_atrous.comp,
-// denoise_blend.comp, denoise_temporal.comp): an edge-avoiding a-trous filter of what the display
-// shows, guided by each pixel's noise, the surface its centre sees and the scene state of its
-// value, then steadied by the frame it showed last. It writes a copy (`result`): the
-// accumulation and the display stay as they are (docs/method.md, "The denoised display").
+// The display denoiser (denoise_guides.comp, denoise_keys.comp, denoise_prepare.comp,
+// denoise_atrous.comp, denoise_blend.comp, denoise_temporal.comp): an edge-avoiding a-trous filter
+// of what the display shows, guided by each pixel's noise, the surface its centre sees and the
+// scene state of its value, then steadied by the frame it showed last. It writes a copy (`result`):
+// the accumulation and the display stay as they are (docs/method.md, "The denoised display").
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -62,7 +62,8 @@ class DenoisePass {
   vk::Buffer m_guides, m_geometry, m_keys, m_samples, m_variance, m_ping, m_pong, m_frame,
       m_history, m_shown_noise;
   vk::ComputePipeline m_trace_guides;  // denoise_guides.comp
-  vk::ComputePipeline m_prepare;       // denoise_prepare.comp: display -> ping
+  vk::ComputePipeline m_keys_pass;     // denoise_keys.comp: guides, display -> keys
+  vk::ComputePipeline m_prepare;       // denoise_prepare.comp: display, keys -> ping
   vk::ComputePipeline m_ping_to_pong;  // denoise_atrous.comp
   vk::ComputePipeline m_pong_to_ping;
   vk::ComputePipeline m_blend_ping;  // denoise_blend.comp, after an even number of passes

@@ -1,5 +1,5 @@
-// Set 0 of the display denoiser (DenoisePass: denoise_guides.comp, denoise_prepare.comp,
-// denoise_atrous.comp, denoise_blend.comp, denoise_temporal.comp).
+// Set 0 of the display denoiser (DenoisePass: denoise_guides.comp, denoise_keys.comp,
+// denoise_prepare.comp, denoise_atrous.comp, denoise_blend.comp, denoise_temporal.comp).
 // Compiles as C++ (namespace hipr::abi) and as GLSL, like ../abi.h: the one declaration of these
 // binding numbers, named by the kernels' GLSL layouts and by their C++ pass.
 #ifndef HIPR_BINDINGS_DENOISE_H
@@ -14,7 +14,7 @@ namespace hipr::abi {
 HIPR_CONST uint kDenoiseGuides = 0u;        // DenoiseGuide per pixel (guides: written; else read)
 HIPR_CONST uint kDenoiseDisplay = 1u;       // DisplayTexel per pixel: what the screen shows (read)
 HIPR_CONST uint kDenoiseAccumulation = 2u;  // PixelAccum per pixel: the samples' variance (read)
-HIPR_CONST uint kDenoiseKeys = 3u;          // uint per pixel: kDenoise* key (prepare writes)
+HIPR_CONST uint kDenoiseKeys = 3u;          // uint per pixel: kDenoise* key (keys writes)
 HIPR_CONST uint kDenoiseInput = 4u;         // vec4 per pixel: demodulated radiance, its variance
 HIPR_CONST uint kDenoiseOutput = 5u;        // vec4 per pixel: the same after a pass
 HIPR_CONST uint kDenoiseResult = 6u;        // vec3 per pixel: the denoised radiance shown (temporal writes)
