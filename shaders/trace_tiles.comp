@@ -170,11 +170,11 @@ BsdfSample scatter_sample(BsdfPoint bsdf, GuideSite site, vec3 v, vec3 u) {
   return b;
 }
 
-// Rays traced, by kind: x camera, y extension (a path's later segments), z shadow.
-vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, GuideSite site, vec4 u, float occlusionWeight, inout uvec3 rays,
-                  out uint group) {
-  const LightSample ls = sample_light(surface.position, surface.shadingNormal, u);
-  group = ls.group;
+// What light sample `ls` brings to the surface through the BSDF: a shadow ray, and MIS against
+// the BSDF's density where both could find it. Rays traced, by kind: x camera, y extension (a
+// path's later segments), z shadow.
+vec3 light_sample_contribution(SurfaceHit surface, BsdfPoint bsdf, GuideSite site, LightSample ls, float occlusionWeight,
+                               inout uvec3 rays) {
   if (ls.pdf <= 0.0 || max3(ls.radiance) <= 0.0) return vec3(0.0);
   const vec3 f = bsdf_eval(bsdf, ls.direction);
   if (max3(f) <= 0.0) return vec3(0.0);
@@ -206,6 +206,16 @@ vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, GuideSite site, vec4 u, fl
                            ? 1.0
                            : power_heuristic(ls.pdf, scatter_pdf(bsdf, site, ls.direction));
   return f * ls.radiance * (weight / ls.pdf);
+}
+
+// Next-event estimation at a vertex: the light selection picks one light (u.x; a point on it:
+// u.yz) for `direct`, in `group`'s share, and each punctual light sampled each adds its own
+// (add_punctual_lights).
+vec3 direct_light(SurfaceHit surface, BsdfPoint bsdf, GuideSite site, vec4 u, float occlusionWeight, inout uvec3 rays,
+                  out uint group) {
+  const LightSample ls = sample_light(surface.position, surface.shadingNormal, u);
+  group = ls.group;
+  return light_sample_contribution(surface, bsdf, site, ls, occlusionWeight, rays);
 }
 
 // One path in flight. A path advances one bounce per path_step call, so an invocation whose
@@ -354,6 +364,16 @@ bool path_step(inout PathState p, bool backgroundTile, inout uvec3 rays) {
     const vec3 direct =
         direct_light(surface, bsdf, site, rng_uniform4(p.rng, p.depth, 1u).zxyw, luminance(p.throughput), rays, group);
     add_radiance(p, group, p.throughput * direct);
+#if HIPR_FEATURE_PUNCTUAL_LIGHTS
+    // A scene's few punctual lights, each at every vertex: none is picked, so none brings the
+    // noise of a pick (LightsPunctualLamp, five lamps: 0.23x the RMSE at 64 spp for 1.8x the time).
+    for (uint i = 0u; i < u_frame.eachLightCount; ++i) {
+      const Light light = b_lights[u_frame.eachLightOffset + i];
+      const LightSample ls = punctual_light_sample(light, surface.position, 1.0);
+      add_radiance(p, light.group,
+                   p.throughput * light_sample_contribution(surface, bsdf, site, ls, luminance(p.throughput), rays));
+    }
+#endif
   }
 
   const vec4 u = rng_uniform4(p.rng, p.depth, 0u);

@@ -130,5 +130,38 @@ TEST(Estimators, LightTreeIsUnbiasedAndLessNoisyAmongManyLamps) {
       << "power at 256 spp: " << rmse(power_long, reference);
 }
 
+// lamp_hall's first `lamps` point lamps (skipping `skip`), without its emissive panels.
+Scene lamps_of_hall(size_t skip, size_t lamps) {
+  Scene scene = load_scene(test::asset("lamp_hall.glb"));
+  for (Material& m : scene.materials) m.params.emission_luminance = 0.0f;
+  size_t seen = 0;
+  for (Node& node : scene.nodes) {
+    if (node.light < 0) continue;
+    if (seen < skip || seen >= skip + lamps) node.light = -1;
+    ++seen;
+  }
+  return scene;
+}
+
+TEST(Estimators, FewPunctualLightsAreEachSampledAndAgreeWithAPick) {
+  // Up to kEachPunctualLights punctual lights are each sampled at every vertex; one more and
+  // the tree picks among them. Direct light is linear in the lights: eight lamps sampled each
+  // plus the ninth alone must be the nine picked.
+  const Scene eight = lamps_of_hall(0, 8), ninth = lamps_of_hall(8, 1), nine = lamps_of_hall(0, 9);
+  const double each = render_mean(eight, LightSampling::Mis, 24, 256, 1) +
+                      render_mean(ninth, LightSampling::Mis, 24, 256, 1);
+  const double picked = render_mean(nine, LightSampling::Mis, 24, 256, 1);
+  EXPECT_GT(each, 0.0);
+  EXPECT_NEAR(picked / each, 1.0, 0.02);
+  // The pick's noise is gone: two seeds of the eight lamps differ by their pixels' jitter alone.
+  const double each_noise =
+      rmse(render_image(eight, LightSampling::Mis, 24, 16, 1, LightSelection::Tree, 1),
+           render_image(eight, LightSampling::Mis, 24, 16, 1, LightSelection::Tree, 2));
+  const double pick_noise =
+      rmse(render_image(nine, LightSampling::Mis, 24, 16, 1, LightSelection::Tree, 1),
+           render_image(nine, LightSampling::Mis, 24, 16, 1, LightSelection::Tree, 2));
+  EXPECT_LT(each_noise, 0.3 * pick_noise);
+}
+
 }  // namespace
 }  // namespace hipr

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Estimators compared at equal samples: the light tree against selection by power alone
-(--compare selection, the default), or path guiding against BSDF sampling alone (--compare
-guiding; the light tree in both).
+(--compare selection, the default), path guiding against BSDF sampling alone (--compare
+guiding; the light tree in both), or another hipr binary's defaults against this build's
+(--compare build --baseline BIN: a change to an estimator, before and after).
 
 For each scene: a reference (hipr, --ref-spp, the tree, no guiding, a seed no measured render
 uses), then --seeds renders with each of the two at --spp; RMSE against the reference (hipr compare),
@@ -12,8 +13,8 @@ the reference's, in units of the standard error of their difference. Writes OUTD
 and OUTDIR/light.md (BENCHMARKS.md, "Light selection"), or guiding.json and guiding.md ("Path
 guiding").
 
-usage: python3 tools/light_bench.py [OUTDIR] [--compare selection|guiding] [--size N]
-       [--ref-spp N] [--spp N] [--seeds N] [--scenes name,...] [--flags "..."]
+usage: python3 tools/light_bench.py [OUTDIR] [--compare selection|guiding|build] [--baseline BIN]
+       [--size N] [--ref-spp N] [--spp N] [--seeds N] [--scenes name,...] [--flags "..."]
        (default OUTDIR: bench-results; --flags: more `hipr render` flags for both)
 """
 import argparse
@@ -29,17 +30,19 @@ from sampler_bench import HIPR, ROOT, SCENES as SAMPLER_SCENES, SHARED, STUDIO, 
 SCENES = [("lamp_hall", os.path.join(ROOT, "assets/scenes/lamp_hall.glb"), [])] + SAMPLER_SCENES + [
     ("DamagedHelmet", os.path.join(SHARED, "DamagedHelmet/DamagedHelmet.glb"), ["--env", STUDIO]),
 ]
-# What each comparison runs: (name, flags) of the baseline, then of the estimator measured.
+# What each comparison runs: (name, flags) of the baseline, then of the estimator measured
+# ("build": the same flags, the baseline rendered by --baseline).
 COMPARISONS = {
     "selection": [("power", ["--light-selection", "power"]), ("tree", ["--light-selection", "tree"])],
     "guiding": [("bsdf", []), ("guided", ["--guiding"])],
+    "build": [("before", []), ("now", [])],
 }
-OUTPUT_NAMES = {"selection": "light", "guiding": "guiding"}
+OUTPUT_NAMES = {"selection": "light", "guiding": "guiding", "build": "build"}
 
 
-def render(scene, flags, size, spp, seed, out_exr):
+def render(scene, flags, size, spp, seed, out_exr, binary=HIPR):
     stats = out_exr + ".json"
-    subprocess.run([HIPR, "render", scene, "-o", out_exr, "--stats-json", stats, "-q", "--width", str(size),
+    subprocess.run([binary, "render", scene, "-o", out_exr, "--stats-json", stats, "-q", "--width", str(size),
                     "--height", str(size), "--spp", str(spp), "--seed", str(seed)] + flags, check=True)
     with open(stats) as f:
         return json.load(f)
@@ -65,7 +68,10 @@ def main():
     ap.add_argument("--scenes", default="")
     ap.add_argument("--compare", choices=sorted(COMPARISONS), default="selection")
     ap.add_argument("--flags", default="", help="more hipr render flags, for every render")
+    ap.add_argument("--baseline", default="", help="--compare build: the hipr binary of the baseline")
     args = ap.parse_args()
+    if (args.compare == "build") != bool(args.baseline):
+        ap.error("--baseline goes with --compare build")
     wanted = set(args.scenes.split(",")) if args.scenes else None
     output = OUTPUT_NAMES[args.compare]
     work = os.path.join(args.outdir, output)
@@ -79,13 +85,14 @@ def main():
         ref_mean = image_mean(reference)
         row = {"scene": name, "reference_spp": args.ref_spp, "device": ref_stats["device"]}
         for config, config_flags in COMPARISONS[args.compare]:
+            binary = args.baseline if config == "before" else HIPR
             # Untimed, once: drivers that compile a kernel variant at its first dispatch (lavapipe)
             # and the shader cache then cost no measured render anything.
-            render(scene, flags + config_flags, args.size, 1, 999, os.path.join(work, "warm_up.exr"))
+            render(scene, flags + config_flags, args.size, 1, 999, os.path.join(work, "warm_up.exr"), binary)
             errors, seconds, means = [], [], []
             for seed in range(1, args.seeds + 1):
                 image = os.path.join(work, "%s_%s_%d.exr" % (name, config, seed))
-                stats = render(scene, flags + config_flags, args.size, args.spp, seed, image)
+                stats = render(scene, flags + config_flags, args.size, args.spp, seed, image, binary)
                 errors.append(rmse(image, reference))
                 seconds.append(stats["render_cpu_seconds"])
                 means.append(image_mean(image))
@@ -116,7 +123,7 @@ def main():
 
 def table(results, args):
     a, b = (name for name, _ in COMPARISONS[args.compare])
-    lines = ["%dx%d, %d spp, %d seeds; references %d spp (tree, seed 1000); efficiency 1/(RMSE^2 x CPU s)%s\n" %
+    lines = ["%dx%d, %d spp, %d seeds; references %d spp (this build, seed 1000); efficiency 1/(RMSE^2 x CPU s)%s\n" %
              (args.size, args.size, args.spp, args.seeds, args.ref_spp,
               "; flags " + args.flags if args.flags else ""), "",
              "| scene | RMSE {a} | RMSE {b} | CPU s {a} | CPU s {b} | efficiency {b} / {a} |"

@@ -1,6 +1,7 @@
 // Light selection (the light tree for lights at finite distance, a CDF by estimated power for
 // the rest; or one CDF over all, --light-selection power) and next-event sampling of emissive
-// triangles, punctual lights and the environment. Needs cutout.glsl: a cut-out emitter emits
+// triangles, punctual lights and the environment; a scene's few punctual lights are not picked
+// but each sampled (punctual_light_sample, FrameParams::eachLightCount). Needs cutout.glsl: a cut-out emitter emits
 // only where it is there.
 #ifndef HIPR_LIGHTS_GLSL
 #define HIPR_LIGHTS_GLSL
@@ -85,7 +86,7 @@ float triangle_light_pdf(Light light, float distance, float cosAtLight) {
   return distance * distance / (light.area * cosAtLight);
 }
 
-LightSample sample_light(vec3 position, vec3 normal, vec4 u) {
+LightSample no_light_sample() {
   LightSample s;
   s.pdf = 0.0;
   s.isDelta = false;
@@ -93,10 +94,42 @@ LightSample sample_light(vec3 position, vec3 normal, vec4 u) {
   s.radiance = vec3(0.0);
   s.lightNormal = vec3(0.0);
   s.group = kInvalidIndex;
-  if (u_frame.lightCount == 0u) return s;
+  return s;
+}
+
+// What punctual light `light` (point, spot or directional) sends to `position`, as a sample of
+// probability `selection`.
+LightSample punctual_light_sample(Light light, vec3 position, float selection) {
+  LightSample s = no_light_sample();
+  s.group = light.group;
+  if (light.type == kLightDirectional) {
+    s.direction = -light.direction;
+    s.radiance = light.intensity;
+  } else {
+    vec3 direction, arriving;
+    float distance;
+    if (!point_light_arrival(light, position, direction, distance, arriving)) return s;
+    s.direction = direction;
+    s.distance = distance;
+    s.radiance = arriving;
+  }
+  s.pdf = selection;
+  s.isDelta = true;
+  return s;
+}
+
+// Whether light selection picks among any lights: not where the only lights are the punctual
+// ones sampled each (kEachPunctualLights).
+bool lights_to_pick() { return u_frame.lightCount > u_frame.eachLightCount; }
+
+// One light picked for the point (never one of the punctual lights sampled each: a CDF with
+// nothing of power left gives every entry an equal share) and a point on it.
+LightSample sample_light(vec3 position, vec3 normal, vec4 u) {
+  LightSample s = no_light_sample();
+  if (!lights_to_pick()) return s;
   float selection;
   const uint index = select_light(u.x, position, normal, selection);
-  if (!(selection > 0.0)) return s;
+  if (!(selection > 0.0) || index - u_frame.eachLightOffset < u_frame.eachLightCount) return s;
   const Light light = b_lights[index];
   s.group = light.group;
 
@@ -127,20 +160,8 @@ LightSample sample_light(vec3 position, vec3 normal, vec4 u) {
     s.direction = env_sample(u.yz, pdf);
     s.radiance = env_radiance(s.direction);
     s.pdf = selection * pdf;
-  } else if (HIPR_FEATURE_PUNCTUAL_LIGHTS != 0 && light.type == kLightDirectional) {
-    s.direction = -light.direction;
-    s.radiance = light.intensity;
-    s.pdf = selection;
-    s.isDelta = true;
-  } else if (HIPR_FEATURE_PUNCTUAL_LIGHTS != 0) {  // point or spot
-    vec3 direction, arriving;
-    float distance;
-    if (!point_light_arrival(light, position, direction, distance, arriving)) return s;
-    s.direction = direction;
-    s.distance = distance;
-    s.radiance = arriving;
-    s.pdf = selection;
-    s.isDelta = true;
+  } else if (HIPR_FEATURE_PUNCTUAL_LIGHTS != 0) {
+    return punctual_light_sample(light, position, selection);
   }
   return s;
 }

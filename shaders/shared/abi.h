@@ -464,6 +464,10 @@ struct FrameParams {
   uint guideResolutionX;
   uint guideResolutionY;
   uint guideResolutionZ;
+  // Punctual lights sampled each at every vertex (common/lights.glsl): Light table entries
+  // [eachLightOffset, eachLightOffset + eachLightCount), which light selection never picks.
+  uint eachLightOffset;
+  uint eachLightCount;
 };
 
 // Software traversal: one BVH node (bounds in the space of the level it belongs to).

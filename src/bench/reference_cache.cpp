@@ -32,7 +32,7 @@ std::string reference_key(const vk::Context& ctx, const Scene& scene, const std:
   Hasher hasher;
   // The shader sources are hashed below; a change of host code that alters pixels (scene
   // packing, light or BSDF tables) must bump this version, or stale references are reused.
-  hasher.add("hipr-reference-v1").add(scene.content_hash).add(state);
+  hasher.add("hipr-reference-v2").add(scene.content_hash).add(state);
   // Devices (and traversals) agree only to a tolerance: each keeps its own references.
   hasher.add(ctx.device_name()).add(ctx.traversal_name());
   if (scene.environment) {

@@ -43,6 +43,8 @@ abi::FrameParams make_frame_params(const Scene& scene, const GpuScene& gpu,
   f.maxDepth = s.max_depth;
   f.lightCount = uint32_t(gpu.light_tables().lights.size());
   f.environmentLight = gpu.light_tables().environment_index;
+  f.eachLightOffset = gpu.light_tables().each_offset;
+  f.eachLightCount = gpu.light_tables().each_count;
   if (s.light_selection == LightSelection::Tree) {
     f.lightTreeProbability = gpu.light_tables().tree_probability;
     f.lightCdfOffset = gpu.light_tables().tree_cdf_offset();

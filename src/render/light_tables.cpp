@@ -121,8 +121,15 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
     }
   }
 
-  // Punctual lights: one per node that references a light.
-  for (uint32_t n : scene.light_nodes()) {
+  // Punctual lights: one per node that references a light. Few of them are each sampled at
+  // every vertex: no power (never picked), no leaf.
+  const std::vector<uint32_t> light_nodes = scene.light_nodes();
+  const bool each = light_nodes.size() >= 2 && light_nodes.size() <= kEachPunctualLights;
+  if (each) {
+    t.each_offset = uint32_t(t.lights.size());
+    t.each_count = uint32_t(light_nodes.size());
+  }
+  for (uint32_t n : light_nodes) {
     const Node& node = scene.nodes[n];
     abi::Light light = punctual_light(scene.lights[size_t(node.light)], scene.world_transform(n));
     light.group = groups.of_node(n);
@@ -138,8 +145,12 @@ LightTables build_light_tables(const Scene& scene, const std::vector<Instance>& 
         power.push_back(lum * kPi * scene_radius * scene_radius);
         break;  // directional
     }
-    bounds.push_back(light_bounds(light, 0.0f, false));
-    bounds.back().light = uint32_t(t.lights.size());
+    if (each) {
+      power.back() = 0.0;
+    } else {
+      bounds.push_back(light_bounds(light, 0.0f, false));
+      bounds.back().light = uint32_t(t.lights.size());
+    }
     t.lights.push_back(light);
   }
 
