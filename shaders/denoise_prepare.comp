@@ -1,7 +1,7 @@
 #version 460
-// The display denoiser's first kernel: what each pixel shows, less its surface's emission and
-// demodulated by its albedo (common/denoise.glsl), with the variance of its luminance, and the
-// key that says which neighbours it may mix with.
+// The display denoiser's second kernel (after denoise_keys.comp): what each pixel shows, less its
+// surface's emission and demodulated by its albedo (common/denoise.glsl), with the variance of
+// its luminance.
 // Reads: the guides, the display (shown value, its samples and scene state), the accumulation
 // (sum, sum of squares, count), the keys. Writes: the input of the first a-trous pass (vec4:
 // demodulated radiance, variance; a kept pixel: the radiance it shows, kept_value), the variance

@@ -144,9 +144,9 @@ Scene lamps_of_hall(size_t skip, size_t lamps) {
 }
 
 TEST(Estimators, FewPunctualLightsAreEachSampledAndAgreeWithAPick) {
-  // Up to kEachPunctualLights punctual lights are each sampled at every vertex; one more and
-  // the tree picks among them. Direct light is linear in the lights: eight lamps sampled each
-  // plus the ninth alone must be the nine picked.
+  // Two to kEachPunctualLights (8) punctual lights are each sampled at every vertex; one more,
+  // or one alone, and the tree picks. Direct light is linear in the lights: eight lamps sampled
+  // each plus the ninth alone must be the nine picked.
   const Scene eight = lamps_of_hall(0, 8), ninth = lamps_of_hall(8, 1), nine = lamps_of_hall(0, 9);
   const double each = render_mean(eight, LightSampling::Mis, 24, 256, 1) +
                       render_mean(ninth, LightSampling::Mis, 24, 256, 1);

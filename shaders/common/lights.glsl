@@ -1,8 +1,8 @@
 // Light selection (the light tree for lights at finite distance, a CDF by estimated power for
 // the rest; or one CDF over all, --light-selection power) and next-event sampling of emissive
 // triangles, punctual lights and the environment; a scene's few punctual lights are not picked
-// but each sampled (punctual_light_sample, FrameParams::eachLightCount). Needs cutout.glsl: a cut-out emitter emits
-// only where it is there.
+// but each sampled (punctual_light_sample, FrameParams::eachLightCount). Needs cutout.glsl: a
+// cut-out emitter emits only where it is there.
 #ifndef HIPR_LIGHTS_GLSL
 #define HIPR_LIGHTS_GLSL
 

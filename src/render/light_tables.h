@@ -13,8 +13,8 @@ namespace hipr {
 // A scene with two to this many punctual lights samples each of them at every vertex, one
 // shadow ray each: a punctual light has no noise of its own, so the only noise next-event
 // estimation has from it is which light was picked (docs/method.md, "Many-light sampling").
-// One punctual light stays in the pick: nothing to pick it from but the other emitters, which a
-// shadow ray of its own cost more than it gained (cornell_sphere: 0.84x the efficiency).
+// One punctual light stays in the pick: there is nothing to pick it from but the other emitters,
+// and a shadow ray of its own cost more than it gained (cornell_sphere: 0.84x the efficiency).
 inline constexpr uint32_t kEachPunctualLights = 8;
 
 struct LightTables {
