@@ -33,7 +33,6 @@
 
 layout(local_size_x = 64) in;
 
-#include "common/frame.glsl"
 #include "common/denoise.glsl"
 #include "common/dispatch.glsl"
 
