@@ -3,6 +3,7 @@
 // pdf (light selection, triangle area measure, environment CDF) makes one of them drift.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "hipr/renderer.h"
@@ -161,6 +162,32 @@ TEST(Estimators, FewPunctualLightsAreEachSampledAndAgreeWithAPick) {
       rmse(render_image(nine, LightSampling::Mis, 24, 16, 1, LightSelection::Tree, 1),
            render_image(nine, LightSampling::Mis, 24, 16, 1, LightSelection::Tree, 2));
   EXPECT_LT(each_noise, 0.3 * pick_noise);
+}
+
+TEST(Estimators, PunctualLightsThatBringLittleTraceFewShadowRays) {
+  // One of eight lamps 20x brighter: where it outshines the others, a lamp bringing under a
+  // tenth of the lamps' unshadowed light traces its shadow ray by Russian roulette, its light
+  // divided by the probability. The image is still the bright lamp's plus the seven others'.
+  Scene eight = lamps_of_hall(0, 8);
+  Scene bright = lamps_of_hall(0, 1), seven = lamps_of_hall(1, 7);
+  for (Scene* scene : {&eight, &bright}) {
+    const auto lamp = std::find_if(scene->nodes.begin(), scene->nodes.end(),
+                                   [](const Node& node) { return node.light >= 0; });
+    scene->lights[size_t(lamp->light)].intensity *= 20.0f;
+  }
+  const double sum = render_mean(bright, LightSampling::Mis, 24, 256, 1) +
+                     render_mean(seven, LightSampling::Mis, 24, 256, 1);
+  RenderSettings s;
+  s.width = s.height = 24;
+  s.max_depth = 1;
+  Renderer renderer(test::context(), eight, s);
+  for (int i = 0; i < 4; ++i) renderer.add_samples_full_frame(64);
+  EXPECT_NEAR(test::mean(renderer.image()) / sum, 1.0, 0.02);
+  const RenderCounters counters = renderer.counters();
+  // Sampled each without the roulette, a floor point traces eight (7.1 a camera ray here): at
+  // most half of that.
+  EXPECT_LT(double(counters.shadow_rays) / double(counters.camera_rays), 4.0)
+      << counters.shadow_rays << " shadow rays for " << counters.camera_rays << " camera rays";
 }
 
 }  // namespace

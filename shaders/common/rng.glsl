@@ -124,7 +124,8 @@ struct PathRng {
 // Four uniforms in [0,1) for (bounce, block). Blocks: 0 = BSDF (direction in x,y, lobe in z,
 // Russian roulette in w), 1 = light (point in x,y, choice of light in z), 2 = camera jitter
 // (x,y), 3 = the colour channel of a dispersive hit (x), 4 = path guiding (guide or BSDF in x,
-// the guide's direction in y,z). With Sobol, (x,y) and (z,w) are two
+// the guide's direction in y,z), 5 and 6 = the shadow rays' roulette of the punctual lights
+// sampled each (light i: block 5 + i / 4, component i % 4). With Sobol, (x,y) and (z,w) are two
 // independent blue-noise 2D pairs: the 2D integrals that matter most get a pair of their own.
 HIPR_FN vec4 rng_uniform4(PathRng rng, uint bounce, uint block) {
   const uint dimensionBlock = (bounce << 4u) | block;

@@ -380,6 +380,9 @@ HIPR_CONST uint kJudgeWeighed = 2u;  // blend pixels show what the rule weighs o
 HIPR_CONST uint kJudgeFresh = 3u;    // blend pixels show f (difference pixels still their estimate)
 HIPR_CONST uint kJudgeSettled = 4u;  // every pixel shows f alone, until the next edit
 
+// At most this many punctual lights are sampled each at every vertex (render/light_tables.h).
+HIPR_CONST uint kEachPunctualLights = 8u;
+
 // Light groups (relight.comp): each group's share of a pixel's radiance is kept apart, so an edit
 // of an emitter's intensity or colour rescales it. At most this many groups.
 HIPR_CONST uint kMaxLightGroups = 8u;

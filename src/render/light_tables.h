@@ -15,7 +15,8 @@ namespace hipr {
 // estimation has from it is which light was picked (docs/method.md, "Many-light sampling").
 // One punctual light stays in the pick: there is nothing to pick it from but the other emitters,
 // and a shadow ray of its own cost more than it gained (cornell_sphere: 0.84x the efficiency).
-inline constexpr uint32_t kEachPunctualLights = 8;
+// (abi::kEachPunctualLights: the trace kernel holds one value per light.)
+inline constexpr uint32_t kEachPunctualLights = abi::kEachPunctualLights;
 
 struct LightTables {
   std::vector<abi::Light> lights;
