@@ -14,6 +14,7 @@ layout(scalar, set = kSceneSet, binding = kSceneTlasNodes) readonly buffer TlasN
 layout(scalar, set = kSceneSet, binding = kSceneTlasInstances) readonly buffer TlasInstances { BvhInstance b_tlas_instances[]; };
 #else
 layout(set = kSceneSet, binding = kSceneTlas) uniform accelerationStructureEXT u_tlas;
+layout(scalar, set = kSceneSet, binding = kSceneTriangleOrder) readonly buffer TriangleOrder { uint b_triangle_order[]; };
 #endif
 layout(scalar, set = kSceneSet, binding = kScenePositions) readonly buffer Positions { vec3 b_positions[]; };
 layout(scalar, set = kSceneSet, binding = kSceneNormals) readonly buffer Normals { vec3 b_normals[]; };

@@ -34,6 +34,12 @@ bool trace_occluded(vec3 origin, vec3 direction, float tMax) {
 // candidate loop; without cutout geometry in the scene every ray is opaque.
 const uint kCutoutRayFlags = HIPR_FEATURE_CUTOUT != 0 ? gl_RayFlagsNoneEXT : gl_RayFlagsOpaqueEXT;
 
+// The BLASes hold each primitive's triangles in spatial order (render/traversal_order.h): the
+// index a query reports, mapped back to the triangle's own.
+uint built_triangle(uint record, uint built) {
+  return b_triangle_order[b_geometries[record].firstIndex / 3u + built];
+}
+
 // Runs an initialised query to its end, confirming the candidate triangles that pass the test.
 void cutout_proceed(rayQueryEXT query, vec3 origin, vec3 direction) {
 #if HIPR_FEATURE_CUTOUT == 0
@@ -44,7 +50,7 @@ void cutout_proceed(rayQueryEXT query, vec3 origin, vec3 direction) {
     if (rayQueryGetIntersectionTypeEXT(query, false) != gl_RayQueryCandidateIntersectionTriangleEXT) continue;
     const uint record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false)) +
                         uint(rayQueryGetIntersectionGeometryIndexEXT(query, false));
-    if (cutout_hit(record, uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, false)),
+    if (cutout_hit(record, built_triangle(record, uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, false))),
                    rayQueryGetIntersectionBarycentricsEXT(query, false), origin, direction))
       rayQueryConfirmIntersectionEXT(query);
   }
@@ -59,7 +65,7 @@ bool trace_closest(vec3 origin, vec3 direction, float tMax, out RayHit hit) {
   hit.t = rayQueryGetIntersectionTEXT(query, true);
   hit.record = uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)) +
                uint(rayQueryGetIntersectionGeometryIndexEXT(query, true));
-  hit.primitive = uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true));
+  hit.primitive = built_triangle(hit.record, uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true)));
   hit.barycentrics = rayQueryGetIntersectionBarycentricsEXT(query, true);
   hit.objectToWorld = rayQueryGetIntersectionObjectToWorldEXT(query, true);
   hit.worldToObject = rayQueryGetIntersectionWorldToObjectEXT(query, true);

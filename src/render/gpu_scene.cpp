@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <span>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -10,6 +11,7 @@
 #include "render/environment_tables.h"
 #include "render/material_packing.h"
 #include "render/texture_fit.h"
+#include "render/traversal_order.h"
 #include "shaders/shared/bindings/scene.h"
 
 namespace hipr {
@@ -46,8 +48,10 @@ GpuScene::GpuScene(const vk::Context& ctx, const Scene& scene, uint32_t light_gr
   frame_buffer =
       vk::make_storage_buffer(ctx, std::vector<abi::FrameParams>(1), 0, vk::MemoryUse::Shared);
   std::vector<vk::BindingSlot> slots;
-  if (!ctx.software_traversal())
+  if (!ctx.software_traversal()) {
     slots.push_back({abi::kSceneTlas, vk::BindingKind::AccelerationStructure});
+    slots.push_back({abi::kSceneTriangleOrder});
+  }
   for (uint32_t b = abi::kScenePositions; b <= abi::kSceneFrame; ++b) slots.push_back({b});
   slots.push_back({abi::kSceneLightTree});
   slots.push_back({abi::kSceneGuideCounts});
@@ -168,6 +172,7 @@ void GpuScene::bind_set() {
     m_set->bind_buffer(abi::kSceneTlasInstances, m_software.tlas_instances);
   } else {
     m_set->bind_acceleration_structure(abi::kSceneTlas, m_tlas.structure.handle());
+    m_set->bind_buffer(abi::kSceneTriangleOrder, triangle_order);
   }
   const std::pair<uint32_t, const vk::Buffer*> buffers[] = {
       {abi::kScenePositions, &positions},
@@ -213,6 +218,29 @@ void GpuScene::upload_geometry(const Scene& scene) {
       all_indices.insert(all_indices.end(), p.indices.begin(), p.indices.end());
     }
   }
+  // Ray queries: each primitive's triangles in spatial order for the BLAS builds, and the
+  // way back to the triangle's own index, at the triangle's place in the scene's index buffer
+  // (traversal_order.h; primitives hold whole triangles: complete_primitive). hipr's own BVH
+  // sorts its own.
+  std::vector<uint32_t> built_indices, built_order;
+  if (!m_ctx.software_traversal()) {
+    built_indices = all_indices;
+    built_order.assign(all_indices.size() / 3, 0);
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+      for (size_t p = 0; p < m_ranges[m].size(); ++p) {
+        const PrimitiveRange& r = m_ranges[m][p];
+        const std::span<const uint32_t> triangles(all_indices.data() + r.first_index,
+                                                  size_t(r.triangle_count) * 3);
+        const std::vector<uint32_t> order =
+            spatial_triangle_order(scene.meshes[m].primitives[p].positions, triangles);
+        for (size_t k = 0; k < order.size(); ++k) {
+          built_order[r.first_index / 3 + k] = order[k];
+          std::copy_n(triangles.begin() + 3 * order[k], 3,
+                      built_indices.begin() + r.first_index + 3 * k);
+        }
+      }
+    }
+  }
   // Acceleration-structure builds read positions and indices (ray queries only).
   const VkBufferUsageFlags build_input =
       m_ctx.software_traversal()
@@ -227,7 +255,13 @@ void GpuScene::upload_geometry(const Scene& scene) {
   normals = vk::make_storage_buffer(m_ctx, all_normals);
   tangents = vk::make_storage_buffer(m_ctx, all_tangents);
   uvs = vk::make_storage_buffer(m_ctx, all_uvs);
-  indices = vk::make_storage_buffer(m_ctx, all_indices, build_input);
+  indices = vk::make_storage_buffer(m_ctx, all_indices);
+  if (!m_ctx.software_traversal()) {
+    built_indices.resize(std::max<size_t>(built_indices.size(), 1));  // a buffer needs bytes
+    built_order.resize(std::max<size_t>(built_order.size(), 1));
+    blas_indices = vk::make_storage_buffer(m_ctx, built_indices, build_input);
+    triangle_order = vk::make_storage_buffer(m_ctx, built_order);
+  }
 
   // The BLASes hold their own copy of the triangles: meshes that stay keep theirs.
   m_blas.resize(scene.meshes.size());
@@ -264,7 +298,8 @@ bool GpuScene::build_blases(const Scene& scene) {
         const PrimitiveRange& r = m_ranges[m][p];
         geometry.push_back(
             {positions.address() + VkDeviceAddress(r.vertex_offset) * sizeof(glm::vec3),
-             r.vertex_count, indices.address() + VkDeviceAddress(r.first_index) * sizeof(uint32_t),
+             r.vertex_count,
+             blas_indices.address() + VkDeviceAddress(r.first_index) * sizeof(uint32_t),
              r.triangle_count, opaque[p]});
       }
       m_blas[m] = vk::build_blas(m_ctx, geometry);

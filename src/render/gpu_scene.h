@@ -79,6 +79,9 @@ class GpuScene {
   }
 
   vk::Buffer positions, normals, tangents, uvs, indices;
+  // Ray queries only: the triangles as the BLASes were built from them (each primitive's in
+  // spatial order) and, per built triangle, the index of the triangle in its primitive.
+  vk::Buffer blas_indices, triangle_order;
   vk::Buffer geometries, materials, textures, texels;
   vk::Buffer lights, light_cdf, light_tree, environment;
   vk::Buffer bsdf_tables, frame_buffer;

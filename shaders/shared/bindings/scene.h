@@ -35,6 +35,8 @@ HIPR_CONST uint kSceneLightTree = 19u;      // LightTreeNode: the tree over ligh
 // Path guiding (common/guiding.glsl), per grid cell:
 HIPR_CONST uint kSceneGuideCounts = 20u;  // uint64 x kGuideSumSlots: the training's sums and largest splats per bin
 HIPR_CONST uint kSceneGuide = 21u;        // float x kGuideSlots: the bins' CDF, then the guide's probability
+// Ray queries only (render/traversal_order.h):
+HIPR_CONST uint kSceneTriangleOrder = 22u;  // uint per triangle as built: its index in its primitive
 
 #ifdef __cplusplus
 }  // namespace hipr::abi
