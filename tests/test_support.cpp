@@ -2,12 +2,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <random>
 #include <sstream>
 
 #include <sys/wait.h>
@@ -256,6 +258,23 @@ Environment uniform_environment(float radiance) {
   environment.height = 4;
   environment.texels.assign(32, glm::vec3(radiance));
   return environment;
+}
+
+std::vector<uint32_t> grid_triangles(uint32_t n, uint32_t shuffle_seed) {
+  std::vector<std::array<uint32_t, 3>> triangles;
+  for (uint32_t y = 0; y < n; ++y)
+    for (uint32_t x = 0; x < n; ++x) {
+      const uint32_t a = y * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+      triangles.push_back({a, b, d});
+      triangles.push_back({a, d, c});
+    }
+  if (shuffle_seed != 0) {
+    std::mt19937 rng(shuffle_seed);
+    std::shuffle(triangles.begin(), triangles.end(), rng);
+  }
+  std::vector<uint32_t> indices;
+  for (const auto& t : triangles) indices.insert(indices.end(), t.begin(), t.end());
+  return indices;
 }
 
 }  // namespace hipr::test

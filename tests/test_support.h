@@ -77,6 +77,10 @@ Scene make_furnace_scene(float radius, glm::vec3 center, float albedo, float env
 // A small equirectangular environment of one radiance everywhere.
 Environment uniform_environment(float radiance);
 
+// The triangles of an n x n grid of quads over (n + 1)^2 vertices numbered row by row, two a
+// quad, listed row by row, or shuffled by `shuffle_seed` (0: not): three indices a triangle.
+std::vector<uint32_t> grid_triangles(uint32_t n, uint32_t shuffle_seed);
+
 }  // namespace hipr::test
 
 namespace hipr::test {

@@ -1,17 +1,18 @@
 // The order in which triangles go to the device's acceleration-structure build
-// (render/traversal_order.h): a permutation, along space, decided by the geometry alone.
+// (render/traversal_order.h): a permutation, along space, decided by the geometry alone, and
+// kept from one upload to the next while the mesh is unchanged (render/triangle_orders.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <random>
 
 #include <glm/geometric.hpp>
 
 #include "render/traversal_order.h"
+#include "render/triangle_orders.h"
+#include "test_support.h"
 
 namespace hipr {
 namespace {
@@ -27,16 +28,7 @@ Grid shuffled_grid(uint32_t seed) {
   Grid g;
   for (uint32_t y = 0; y <= n; ++y)
     for (uint32_t x = 0; x <= n; ++x) g.positions.emplace_back(float(x), float(y), 0.0f);
-  std::vector<std::array<uint32_t, 3>> triangles;
-  for (uint32_t y = 0; y < n; ++y)
-    for (uint32_t x = 0; x < n; ++x) {
-      const uint32_t a = y * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
-      triangles.push_back({a, b, d});
-      triangles.push_back({a, d, c});
-    }
-  std::mt19937 rng(seed);
-  std::shuffle(triangles.begin(), triangles.end(), rng);
-  for (const auto& t : triangles) g.indices.insert(g.indices.end(), t.begin(), t.end());
+  g.indices = test::grid_triangles(n, seed);
   return g;
 }
 
@@ -99,6 +91,45 @@ TEST(TraversalOrder, DependsOnTheGeometryAloneAndPutsBrokenTrianglesLast) {
   EXPECT_EQ(order[triangles - 2], triangles - 2);
   EXPECT_EQ(order[triangles - 1], triangles - 1);
   EXPECT_TRUE(spatial_triangle_order(g.positions, {}).empty());
+}
+
+Mesh grid_mesh(uint32_t seed) {
+  const Grid g = shuffled_grid(seed);
+  Mesh mesh;
+  mesh.primitives.resize(1);
+  mesh.primitives[0].positions = g.positions;
+  mesh.primitives[0].indices = g.indices;
+  mesh.revision = mesh_revision(mesh);
+  return mesh;
+}
+
+TEST(TriangleOrders, SortAMeshAgainOnlyWhenItsGeometryChanged) {
+  TriangleOrders orders;
+  const Mesh a = grid_mesh(3), b = grid_mesh(4);
+  const auto first_a = orders.of(a), first_b = orders.of(b);
+  orders.end_upload();
+  EXPECT_EQ(orders.primitives_sorted(), 2u);
+  EXPECT_EQ(first_a[0], spatial_triangle_order(a.primitives[0].positions, a.primitives[0].indices));
+  // The next upload: b first now (a removal before it), and a deformed.
+  Mesh deformed = a;
+  deformed.primitives[0].positions[0].z = 0.5f;
+  deformed.revision = mesh_revision(deformed);
+  EXPECT_EQ(orders.of(b), first_b);
+  EXPECT_EQ(orders.primitives_sorted(), 2u);
+  const auto second_a = orders.of(deformed);
+  EXPECT_EQ(orders.primitives_sorted(), 3u);
+  EXPECT_EQ(second_a[0], spatial_triangle_order(deformed.primitives[0].positions,
+                                                deformed.primitives[0].indices));
+  orders.end_upload();
+  // The undo brings a back: the last upload did not use it, so it was forgotten.
+  EXPECT_EQ(orders.of(a), first_a);
+  EXPECT_EQ(orders.primitives_sorted(), 4u);
+  // A mesh without a fingerprint is sorted each time.
+  Mesh unset = b;
+  unset.revision = 0;
+  EXPECT_EQ(orders.of(unset), first_b);
+  EXPECT_EQ(orders.of(unset), first_b);
+  EXPECT_EQ(orders.primitives_sorted(), 6u);
 }
 
 }  // namespace

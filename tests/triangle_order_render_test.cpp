@@ -5,9 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <random>
 
 #include "card_scene.h"
 #include "hipr/renderer.h"
@@ -43,19 +41,7 @@ Scene wavy_sheet_scene(uint32_t shuffle) {
       sheet.uvs.emplace_back(float(i) / n, float(j) / n);
       sheet.uvs1.push_back(sheet.uvs.back());
     }
-  std::vector<std::array<uint32_t, 3>> triangles;
-  for (uint32_t j = 0; j < n; ++j)
-    for (uint32_t i = 0; i < n; ++i) {
-      const uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-      triangles.push_back({a, b, d});
-      triangles.push_back({a, d, c});
-    }
-  if (shuffle != 0) {
-    std::mt19937 rng(shuffle);
-    std::shuffle(triangles.begin(), triangles.end(), rng);
-  }
-  sheet.indices.clear();
-  for (const auto& t : triangles) sheet.indices.insert(sheet.indices.end(), t.begin(), t.end());
+  sheet.indices = test::grid_triangles(n, shuffle);
   scene.meshes.back().revision = mesh_revision(scene.meshes.back());
   return scene;
 }

@@ -11,7 +11,6 @@
 #include "render/environment_tables.h"
 #include "render/material_packing.h"
 #include "render/texture_fit.h"
-#include "render/traversal_order.h"
 #include "shaders/shared/bindings/scene.h"
 
 namespace hipr {
@@ -227,12 +226,12 @@ void GpuScene::upload_geometry(const Scene& scene) {
     built_indices = all_indices;
     built_order.assign(all_indices.size() / 3, 0);
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
+      const std::vector<std::vector<uint32_t>>& orders = m_triangle_orders.of(scene.meshes[m]);
       for (size_t p = 0; p < m_ranges[m].size(); ++p) {
         const PrimitiveRange& r = m_ranges[m][p];
         const std::span<const uint32_t> triangles(all_indices.data() + r.first_index,
                                                   size_t(r.triangle_count) * 3);
-        const std::vector<uint32_t> order =
-            spatial_triangle_order(scene.meshes[m].primitives[p].positions, triangles);
+        const std::vector<uint32_t>& order = orders[p];
         for (size_t k = 0; k < order.size(); ++k) {
           built_order[r.first_index / 3 + k] = order[k];
           std::copy_n(triangles.begin() + 3 * order[k], 3,
@@ -240,6 +239,7 @@ void GpuScene::upload_geometry(const Scene& scene) {
         }
       }
     }
+    m_triangle_orders.end_upload();
   }
   // Acceleration-structure builds read positions and indices (ray queries only).
   const VkBufferUsageFlags build_input =

@@ -18,6 +18,7 @@
 #include "render/light_groups.h"
 #include "render/light_tables.h"
 #include "render/software_bvh.h"
+#include "render/triangle_orders.h"
 #include "vk/acceleration.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -132,6 +133,7 @@ class GpuScene {
   float m_environment_mean =
       0.0f;  // environment_mean_luminance of the map uploaded last (light power)
   std::vector<std::vector<PrimitiveRange>> m_ranges;  // per mesh, per primitive
+  TriangleOrders m_triangle_orders;                   // ray queries: each mesh's build order
   std::vector<vk::AccelerationStructure> m_blas;      // one per mesh (empty meshes: none)
   std::vector<bool> m_has_blas;
   std::vector<std::vector<bool>> m_blas_opaque;  // per mesh, per primitive, as built
