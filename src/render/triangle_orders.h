@@ -1,9 +1,10 @@
 #pragma once
 // Each mesh's build order (traversal_order.h), kept from one geometry upload to the next. Every
 // upload rebuilds the scene's index buffers whole, but an edit changes one mesh: a deform or an
-// import of one mesh sorts that mesh alone (MetalRoughSpheresNoTextures: 0.5 s of sorting per
-// edit otherwise). Kept by Mesh::revision, a fingerprint of the positions and indices the order
-// is made from, so a mesh that moves to another slot (a removal before it) keeps its order.
+// import of one mesh sorts that mesh alone (a deform of one of MetalRoughSpheresNoTextures'
+// spheres updated the scene in 0.44-0.56 s sorting them all, 0.06-0.11 s so). Kept by
+// Mesh::revision, a fingerprint of the positions and indices the order is made from, so a mesh that
+// moves to another slot (a removal before it) keeps its order.
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
@@ -23,7 +24,7 @@ class TriangleOrders {
   // Ends an upload: the orders of meshes it did not ask for are forgotten.
   void end_upload();
 
-  // Primitives sorted since construction (what the keeping saves shows here).
+  // How many primitives were sorted since construction: what the keeping saved, for tests.
   size_t primitives_sorted() const { return m_primitives_sorted; }
 
  private:
