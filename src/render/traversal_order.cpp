@@ -7,6 +7,8 @@
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
+#include "render/bvh_builder.h"
+
 namespace hipr {
 namespace {
 
@@ -40,18 +42,6 @@ void order_by_halving(std::vector<uint32_t>& order, size_t first, size_t last,
   }
 }
 
-struct Box {
-  glm::vec3 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
-  void add(const Box& b) {
-    lo = glm::min(lo, b.lo);
-    hi = glm::max(hi, b.hi);
-  }
-  double area() const {
-    const glm::dvec3 e = glm::max(glm::dvec3(hi) - glm::dvec3(lo), glm::dvec3(0.0));
-    return e.x * e.y + e.y * e.z + e.z * e.x;
-  }
-};
-
 // The surface-area cost of the tree the builder makes by halving triangles [first, last] of
 // `order`: the summed areas of its inner nodes' boxes (a ray visits a node in proportion to its
 // area). Returns the box of the range.
@@ -60,8 +50,8 @@ Box halving_cost(const std::vector<uint32_t>& order, size_t first, size_t last,
   if (first == last) return boxes[order[first]];
   const size_t split = (first + last) / 2;
   Box box = halving_cost(order, first, split, boxes, cost);
-  box.add(halving_cost(order, split + 1, last, boxes, cost));
-  cost += box.area();
+  box.grow(halving_cost(order, split + 1, last, boxes, cost));
+  cost += box.half_area();
   return box;
 }
 
@@ -80,7 +70,7 @@ std::vector<uint32_t> spatial_triangle_order(std::span<const glm::vec3> position
       const glm::vec3 p =
           v < positions.size() ? positions[v] : glm::vec3(std::numeric_limits<float>::quiet_NaN());
       sum += p;
-      boxes[t].add({p, p});
+      boxes[t].grow(p);
     }
     centroids[t] = sum / 3.0f;
     (finite(centroids[t]) ? order : broken).push_back(uint32_t(t));
