@@ -121,8 +121,18 @@ TEST(TriangleOrders, SortAMeshAgainOnlyWhenItsGeometryChanged) {
   EXPECT_EQ(second_a[0], spatial_triangle_order(deformed.primitives[0].positions,
                                                 deformed.primitives[0].indices));
   orders.end_upload();
-  // The undo brings a back: the last upload did not use it, so it was forgotten.
+  // The undo brings a back: the last upload dropped it, and it is kept one upload more.
   EXPECT_EQ(orders.of(a), first_a);
+  EXPECT_EQ(orders.of(b), first_b);
+  EXPECT_EQ(orders.primitives_sorted(), 3u);
+  orders.end_upload();
+  // The redo: the deformed mesh, dropped by the undo, comes back unsorted too.
+  EXPECT_EQ(orders.of(deformed), second_a);
+  EXPECT_EQ(orders.primitives_sorted(), 3u);
+  orders.end_upload();
+  // Two uploads without a mesh forget it: b was last asked two uploads ago.
+  orders.end_upload();
+  EXPECT_EQ(orders.of(b), first_b);
   EXPECT_EQ(orders.primitives_sorted(), 4u);
   // A mesh without a fingerprint is sorted each time.
   Mesh unset = b;

@@ -25,6 +25,16 @@ bool fits(const std::vector<std::vector<uint32_t>>& orders, const Mesh& mesh) {
 
 }  // namespace
 
+TriangleOrders::Orders* TriangleOrders::take(std::unordered_map<uint64_t, Orders>& from,
+                                             const Mesh& mesh) {
+  auto found = from.find(mesh.revision);
+  if (found == from.end() || !fits(found->second, mesh)) return nullptr;
+  Orders& orders = m_used[mesh.revision];
+  orders = std::move(found->second);
+  from.erase(found);
+  return &orders;
+}
+
 const std::vector<std::vector<uint32_t>>& TriangleOrders::of(const Mesh& mesh) {
   if (mesh.revision == 0) {
     m_unkept = sort_primitives(mesh);
@@ -33,20 +43,16 @@ const std::vector<std::vector<uint32_t>>& TriangleOrders::of(const Mesh& mesh) {
   }
   if (auto used = m_used.find(mesh.revision); used != m_used.end() && fits(used->second, mesh))
     return used->second;
-  auto kept = m_kept.find(mesh.revision);
-  if (kept != m_kept.end() && fits(kept->second, mesh)) {
-    auto& orders = m_used[mesh.revision];
-    orders = std::move(kept->second);
-    m_kept.erase(kept);
-    return orders;
-  }
-  auto& orders = m_used[mesh.revision];
+  if (Orders* kept = take(m_kept, mesh)) return *kept;
+  if (Orders* dropped = take(m_dropped, mesh)) return *dropped;
+  Orders& orders = m_used[mesh.revision];
   orders = sort_primitives(mesh);
   m_primitives_sorted += mesh.primitives.size();
   return orders;
 }
 
 void TriangleOrders::end_upload() {
+  m_dropped = std::move(m_kept);
   m_kept = std::move(m_used);
   m_used.clear();
   m_unkept.clear();
