@@ -1,7 +1,5 @@
 #include "render/triangle_orders.h"
 
-#include <utility>
-
 #include "render/traversal_order.h"
 
 namespace hipr {
@@ -25,36 +23,25 @@ bool fits(const std::vector<std::vector<uint32_t>>& orders, const Mesh& mesh) {
 
 }  // namespace
 
-TriangleOrders::Orders* TriangleOrders::take(std::unordered_map<uint64_t, Orders>& from,
-                                             const Mesh& mesh) {
-  auto found = from.find(mesh.revision);
-  if (found == from.end() || !fits(found->second, mesh)) return nullptr;
-  Orders& orders = m_used[mesh.revision];
-  orders = std::move(found->second);
-  from.erase(found);
-  return &orders;
-}
-
 const std::vector<std::vector<uint32_t>>& TriangleOrders::of(const Mesh& mesh) {
   if (mesh.revision == 0) {
     m_unkept = sort_primitives(mesh);
     m_primitives_sorted += mesh.primitives.size();
     return m_unkept;
   }
-  if (auto used = m_used.find(mesh.revision); used != m_used.end() && fits(used->second, mesh))
-    return used->second;
-  if (Orders* kept = take(m_kept, mesh)) return *kept;
-  if (Orders* dropped = take(m_dropped, mesh)) return *dropped;
-  Orders& orders = m_used[mesh.revision];
-  orders = sort_primitives(mesh);
-  m_primitives_sorted += mesh.primitives.size();
-  return orders;
+  Kept& kept = m_kept[mesh.revision];
+  if (!fits(kept.orders, mesh)) {  // new here, or a fingerprint collision
+    kept.orders = sort_primitives(mesh);
+    m_primitives_sorted += mesh.primitives.size();
+  }
+  kept.asked = m_upload;
+  return kept.orders;
 }
 
 void TriangleOrders::end_upload() {
-  m_dropped = std::move(m_kept);
-  m_kept = std::move(m_used);
-  m_used.clear();
+  // Asked by this upload or the last one: kept (an undo of the last edit asks for those).
+  std::erase_if(m_kept, [&](const auto& entry) { return entry.second.asked + 1 < m_upload; });
+  ++m_upload;
   m_unkept.clear();
 }
 

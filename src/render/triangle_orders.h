@@ -24,22 +24,21 @@ class TriangleOrders {
   // set (0, a scene made by hand) is sorted every time.
   const std::vector<std::vector<uint32_t>>& of(const Mesh& mesh);
 
-  // Ends an upload: the orders the last upload used and this one did not ask for are kept for
-  // one more; those it dropped before are forgotten (memory follows the scene, at most twice).
+  // Ends an upload: what neither it nor the one before asked for is forgotten (memory follows
+  // the scene and the last edit's dropped meshes).
   void end_upload();
 
   // How many primitives were sorted since construction: what the keeping saved, for tests.
   size_t primitives_sorted() const { return m_primitives_sorted; }
 
  private:
-  using Orders = std::vector<std::vector<uint32_t>>;
-  // Taken from kept or dropped into used when an upload asks; a taken entry moves, not copies.
-  Orders* take(std::unordered_map<uint64_t, Orders>& from, const Mesh& mesh);
-
-  std::unordered_map<uint64_t, Orders> m_used;     // asked by the upload in progress
-  std::unordered_map<uint64_t, Orders> m_kept;     // used by the last upload, not asked yet
-  std::unordered_map<uint64_t, Orders> m_dropped;  // used by the one before, not by the last
-  Orders m_unkept;                                 // the last mesh without a revision
+  struct Kept {
+    std::vector<std::vector<uint32_t>> orders;
+    uint64_t asked = 0;  // the last upload that asked for it
+  };
+  std::unordered_map<uint64_t, Kept> m_kept;    // by Mesh::revision
+  uint64_t m_upload = 0;                        // the upload in progress
+  std::vector<std::vector<uint32_t>> m_unkept;  // the last mesh without a revision
   size_t m_primitives_sorted = 0;
 };
 
