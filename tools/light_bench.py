@@ -5,9 +5,10 @@ guiding; the light tree in both), or another hipr binary's defaults against this
 (--compare build --baseline BIN: a change to an estimator, before and after).
 
 For each scene: a reference (hipr, --ref-spp, the tree, no guiding, a seed no measured render
-uses), then --seeds renders with each of the two at --spp; RMSE against the reference (hipr compare),
-render time from `hipr render --stats-json` (render_cpu_seconds: CPU seconds of all threads,
-robust to a busy machine, the tree's walk and the guide's training included) and efficiency
+uses), then --seeds renders with each of the two at --spp, alternating seed by seed; RMSE
+against the reference (hipr compare), render time from `hipr render --stats-json`
+(render_cpu_seconds: CPU seconds of all threads, the tree's walk and the guide's training
+included; alternating, what else loads a shared machine weighs on both alike) and efficiency
 1 / (RMSE^2 x time). It also checks that both are unbiased: the image mean over seeds against
 the reference's, in units of the standard error of their difference. Writes OUTDIR/light.json
 and OUTDIR/light.md (BENCHMARKS.md, "Light selection"), or guiding.json and guiding.md ("Path
@@ -48,6 +49,11 @@ def render(scene, flags, size, spp, seed, out_exr, binary=HIPR):
         return json.load(f)
 
 
+def binary_of(config, args):
+    """The hipr that renders `config`: --baseline's for the baseline of --compare build."""
+    return args.baseline if config == "before" else HIPR
+
+
 def image_mean(image):
     """Mean over pixels and channels (oiiotool's statistics)."""
     out = subprocess.run(["oiiotool", image, "--printstats"], check=True, capture_output=True, text=True).stdout
@@ -84,18 +90,25 @@ def main():
         ref_stats = render(scene, flags, args.size, args.ref_spp, 1000, reference)
         ref_mean = image_mean(reference)
         row = {"scene": name, "reference_spp": args.ref_spp, "device": ref_stats["device"]}
-        for config, config_flags in COMPARISONS[args.compare]:
-            binary = args.baseline if config == "before" else HIPR
+        configs = COMPARISONS[args.compare]
+        for config, config_flags in configs:
             # Untimed, once: drivers that compile a kernel variant at its first dispatch (lavapipe)
             # and the shader cache then cost no measured render anything.
-            render(scene, flags + config_flags, args.size, 1, 999, os.path.join(work, "warm_up.exr"), binary)
-            errors, seconds, means = [], [], []
-            for seed in range(1, args.seeds + 1):
+            render(scene, flags + config_flags, args.size, 1, 999, os.path.join(work, "warm_up.exr"),
+                   binary_of(config, args))
+        # The two alternate seed by seed, so whatever else loads the machine over the run (these
+        # machines are shared) weighs on both alike instead of on whichever ran second.
+        measured = {config: ([], [], []) for config, _ in configs}
+        for seed in range(1, args.seeds + 1):
+            for config, config_flags in configs:
+                errors, seconds, means = measured[config]
                 image = os.path.join(work, "%s_%s_%d.exr" % (name, config, seed))
-                stats = render(scene, flags + config_flags, args.size, args.spp, seed, image, binary)
+                stats = render(scene, flags + config_flags, args.size, args.spp, seed, image, binary_of(config, args))
                 errors.append(rmse(image, reference))
                 seconds.append(stats["render_cpu_seconds"])
                 means.append(image_mean(image))
+        for config, _ in configs:
+            errors, seconds, means = measured[config]
             mse = sum(e * e for e in errors) / len(errors)
             time = sum(seconds) / len(seconds)
             mean = sum(means) / len(means)
