@@ -96,11 +96,12 @@ def main():
             # and the shader cache then cost no measured render anything.
             render(scene, flags + config_flags, args.size, 1, 999, os.path.join(work, "warm_up.exr"),
                    binary_of(config, args))
-        # The two alternate seed by seed, so whatever else loads the machine over the run (these
-        # machines are shared) weighs on both alike instead of on whichever ran second.
+        # The two alternate seed by seed, first one then the other first, so whatever else loads
+        # the machine over the run (these machines are shared) weighs on both alike instead of on
+        # whichever ran second.
         measured = {config: ([], [], []) for config, _ in configs}
         for seed in range(1, args.seeds + 1):
-            for config, config_flags in configs:
+            for config, config_flags in (configs if seed % 2 else configs[::-1]):
                 errors, seconds, means = measured[config]
                 image = os.path.join(work, "%s_%s_%d.exr" % (name, config, seed))
                 stats = render(scene, flags + config_flags, args.size, args.spp, seed, image, binary_of(config, args))
