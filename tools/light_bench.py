@@ -26,7 +26,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sampler_bench import HIPR, ROOT, SCENES as SAMPLER_SCENES, SHARED, STUDIO, rmse, scenes_to_run  # noqa: E402
+from sampler_bench import HIPR, ROOT, SCENES as SAMPLER_SCENES, SHARED, STUDIO, render_stats, rmse, scenes_to_run  # noqa: E402
 
 SCENES = [("lamp_hall", os.path.join(ROOT, "assets/scenes/lamp_hall.glb"), [])] + SAMPLER_SCENES + [
     ("DamagedHelmet", os.path.join(SHARED, "DamagedHelmet/DamagedHelmet.glb"), ["--env", STUDIO]),
@@ -42,11 +42,7 @@ OUTPUT_NAMES = {"selection": "light", "guiding": "guiding", "build": "build"}
 
 
 def render(scene, flags, size, spp, seed, out_exr, binary=HIPR):
-    stats = out_exr + ".json"
-    subprocess.run([binary, "render", scene, "-o", out_exr, "--stats-json", stats, "-q", "--width", str(size),
-                    "--height", str(size), "--spp", str(spp), "--seed", str(seed)] + flags, check=True)
-    with open(stats) as f:
-        return json.load(f)
+    return render_stats(scene, out_exr, size, spp, ["--seed", str(seed)] + flags, binary)
 
 
 def binary_of(config, args):

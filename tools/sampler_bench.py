@@ -53,13 +53,20 @@ BLUE_NOISE_SPP = [1, 4]  # 1 must be there (the ratio column)
 BOX = 8
 
 
-def render(scene, flags, size, spp, sampler, seed, out_exr, depth):
+def render_stats(scene, out_exr, size, spp, flags, binary=HIPR, env=None):
+    """One `hipr render` of a size x size image at spp, with more flags: the image goes to out_exr
+    and its --stats-json report (render_cpu_seconds among it) is returned. The benches that time
+    renders (light_bench.py, time_ab.py) share it."""
     stats = out_exr + ".json"
-    subprocess.run([HIPR, "render", scene, "-o", out_exr, "--stats-json", stats, "-q", "--width", str(size),
-                    "--height", str(size), "--spp", str(spp), "--sampler", sampler, "--seed", str(seed),
-                    "--max-depth", str(depth)] + flags, check=True)
+    subprocess.run([binary, "render", scene, "-o", out_exr, "--stats-json", stats, "-q", "--width", str(size),
+                    "--height", str(size), "--spp", str(spp)] + flags, check=True, env=env)
     with open(stats) as f:
         return json.load(f)
+
+
+def render(scene, flags, size, spp, sampler, seed, out_exr, depth):
+    return render_stats(scene, out_exr, size, spp,
+                        ["--sampler", sampler, "--seed", str(seed), "--max-depth", str(depth)] + flags)
 
 
 def rmse(image, reference):

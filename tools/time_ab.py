@@ -23,17 +23,13 @@ import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
-HIPR = os.path.join(ROOT, "build", "hipr")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sampler_bench import HIPR, render_stats  # noqa: E402
 
 
 def render(binary, scene, flags, size, spp, out_exr, env):
-    """CPU seconds of one render (its stats JSON), the image written to out_exr."""
-    stats = out_exr + ".json"
-    subprocess.run([binary, "render", scene, "-o", out_exr, "--stats-json", stats, "-q", "--width", str(size),
-                    "--height", str(size), "--spp", str(spp)] + flags, check=True, env=env)
-    with open(stats) as f:
-        return json.load(f)["render_cpu_seconds"]
+    """CPU seconds of one render, the image written to out_exr."""
+    return render_stats(scene, out_exr, size, spp, flags, binary, env)["render_cpu_seconds"]
 
 
 def median_interval(values, confidence=0.9):
