@@ -8,6 +8,11 @@
 // Writes: DenoiseGuide per pixel, and its normal and distance packed (what the a-trous passes
 // read of a neighbour).
 #extension GL_GOOGLE_include_directive : require
+// The guide ray stands for the pixel's samples: a stochastic (BLEND) surface stops it where it
+// stops most of them (common/cutout.glsl), or where nothing else would (main). A 5 %-opaque
+// sphere otherwise stopped one guide ray in twenty: those pixels were keyed to it, apart from
+// the wall all of them show.
+#define HIPR_CUTOUT_MAJORITY 1
 #include "common/traversal.glsl"
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -53,10 +58,12 @@ vec2 hammersley(uint i, uint n) { return vec2((float(i) + 0.5) / float(n), float
 
 bool footprint_sees_only_environment(uvec2 pixel) {
   RayHit hit;
-  for (uint i = 0u; i < kFootprintRays * kFootprintRays; ++i)
-    if (trace_closest(u_frame.cameraPosition, camera_ray_direction(pixel, grid_point(i, kFootprintRays)), 3.0e38, hit))
-      return false;
-  return true;
+  bool only = true;
+  g_cutoutStopsFrom = 0.0;  // a veil in front of the environment: some samples see it
+  for (uint i = 0u; i < kFootprintRays * kFootprintRays && only; ++i)
+    only = !trace_closest(u_frame.cameraPosition, camera_ray_direction(pixel, grid_point(i, kFootprintRays)), 3.0e38, hit);
+  g_cutoutStopsFrom = 0.5;
+  return only;
 }
 
 // The environment's mean over the pixel, and the standard deviation of its luminance there.
@@ -92,7 +99,24 @@ void main() {
   const vec3 direction = pixel_centre_ray(pixel);
   DenoiseGuide guide = DenoiseGuide(kInvalidIndex, 0.0, 0u, packUnorm4x8(vec4(1.0)), 0u, 0u);
   RayHit hit;
-  if (!trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit)) {
+  bool found = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
+  // Veiled: the pixel's rays stop at more than one surface (a stochastic one in front), so the
+  // record its shown value was rendered with may be another than the guide's (denoise_keys.comp).
+  bool veiled = false;
+#if HIPR_FEATURE_CUTOUT
+  g_cutoutStopsFrom = 0.0;
+  RayHit first;  // the first surface any of the pixel's rays may stop at
+  if (trace_closest(u_frame.cameraPosition, direction, 3.0e38, first)) {
+    veiled = !found || first.record != hit.record;
+    // Nothing that most of the pixel's rays stop at: a veil some of them stop at before the
+    // environment is still where its noise comes from (a vase of 30 % opaque glass, the studio
+    // behind it), and its pixels are filtered together.
+    if (!found) hit = first;
+    found = true;
+  }
+  g_cutoutStopsFrom = 0.5;
+#endif
+  if (!found) {
     if (HIPR_FEATURE_ENVIRONMENT != 0 && u_frame.environmentLight != kInvalidIndex &&
         footprint_sees_only_environment(pixel)) {
       float deviation;
@@ -111,7 +135,7 @@ void main() {
     // FLIP 0.0338 with the mapped normal, 0.0324 without). The detail's shading is in the
     // radiance.
     guide.normal = pack_normal(surface.vertexNormal);
-    guide.albedo = packUnorm4x8(vec4(surface_albedo(surface), 1.0));
+    guide.albedo = packUnorm4x8(vec4(surface_albedo(surface), veiled ? 0.0 : 1.0));
     // As the camera path adds it at its first hit (trace_tiles.comp: shading_params).
     const bool emits = surface.frontFacing || (b_materials[surface.material].flags & kMaterialDoubleSided) != 0u;
     const vec3 emission =

@@ -85,7 +85,10 @@ uint pixel_key(uint index) {
   if (u_push.strength <= 0.0 || any(isinf(texel.shown)) || any(isnan(texel.shown)) ||
       any(isinf(unpack_emission(b_guides[index]))))
     return kDenoiseKept;
-  if (u_push.displayState != 0u && texel.shownRecord != kRecordUnknown && texel.shownRecord != seen) return kDenoiseKept;
+  // (Behind a veil the record a value was rendered with may be the veil's or the guide's.)
+  if (u_push.displayState != 0u && texel.shownRecord != kRecordUnknown && texel.shownRecord != seen &&
+      !guide_veiled(b_guides[index]))
+    return kDenoiseKept;
   // The environment seen directly has no noise but its antialiasing: nothing to filter.
   if (seen == kInvalidIndex) return kDenoiseKept;
   const uint surface = (seen + 1u) & kDenoiseSurfaceMask;

@@ -161,6 +161,52 @@ TEST(Denoise, NeverMixesTwoSurfaces) {
           << x << ", " << y;
 }
 
+// A veil in front of the two cards, 30 % opaque (stochastic BLEND): most of each pixel's samples
+// see the card behind it, and so does its guide (common/cutout.glsl, HIPR_CUTOUT_MAJORITY). A
+// guide that stopped where a random 30 % of rays stop keyed those pixels to the veil, one surface
+// across both cards, and the filter mixed the two cards' values there.
+TEST(Denoise, AMostlyTransparentSurfaceDoesNotJoinTheSurfacesBehindIt) {
+  Scene scene = two_cards();
+  MaterialParameters veil = default_material_params();
+  veil.geometry_opacity = 0.3f;
+  test::add_card(scene, "veil", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 1.0f)), veil);
+  Renderer renderer(test::context(), scene, test::render_settings(kSize, kSize, 8, 4, 0));
+  std::vector<SyntheticPixel> pixels(kSize * kSize);
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      pixels[y * kSize + x].shown = glm::vec3(x < kSize / 2 ? 1.0f : 0.25f);
+      pixels[y * kSize + x].deviation = 2.0f;
+    }
+  write_display(renderer, pixels);
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x)
+      ASSERT_NEAR(denoised.rgb[3 * (y * kSize + x) + 1], x < kSize / 2 ? 1.0f : 0.25f, 1e-5f)
+          << x << ", " << y;
+}
+
+// The same veil with only the environment behind it: no surface stops most of a pixel's rays,
+// but the veil is where its noise comes from (the environment alone has none), and its pixels
+// are filtered together, as one surface. A guide that passed through to the environment would
+// show every pixel as it is; one stopped at random would key a third of them to the veil.
+TEST(Denoise, AVeilBeforeTheEnvironmentIsFilteredAsOneSurface) {
+  Scene scene = test::make_card_camera_scene(1.0f);
+  MaterialParameters veil = default_material_params();
+  veil.geometry_opacity = 0.3f;
+  test::add_card(scene, "veil", glm::mat4(1.0f), veil);
+  Renderer renderer(test::context(), scene, test::render_settings(kSize, kSize, 8, 4, 0));
+  const float value = 0.5f;
+  write_display(renderer, noisy(value, 0.4f, 5));
+  const ImageRGB shown = renderer.displayed_image();
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  double raw = 0.0, filtered = 0.0;
+  for (size_t i = 1; i < shown.rgb.size(); i += 3) {
+    raw += std::pow(shown.rgb[i] - value, 2.0);
+    filtered += std::pow(denoised.rgb[i] - value, 2.0);
+  }
+  EXPECT_LT(filtered, raw / 3.0) << "raw " << raw << ", denoised " << filtered;
+}
+
 // A card whose normal map tilts each pixel's normal its own way (a texel a pixel, up to 55
 // degrees): the map's detail is the surface's shading, not an edge between surfaces. Its noisy
 // pixels are filtered as one surface: measured, 4.2x less squared error (with the mapped normal

@@ -7,6 +7,16 @@
 #define HIPR_CUTOUT_GLSL
 
 #include "features.glsl"
+
+// 1 where a kernel's rays stand for a pixel's many (cutout_hit): defined before this include.
+#ifndef HIPR_CUTOUT_MAJORITY
+#define HIPR_CUTOUT_MAJORITY 0
+#endif
+#if HIPR_CUTOUT_MAJORITY
+// The opacity from which such a ray stops at a stochastic (BLEND) surface, set by the kernel
+// per ray: 0.5, where most of the pixel's rays stop; 0, at any surface some of them may stop at.
+float g_cutoutStopsFrom = 0.5;
+#endif
 #include "rng.glsl"
 #include "vertices.glsl"
 
@@ -36,7 +46,14 @@ bool cutout_hit(uint record, uint primitive, vec2 bary, vec3 origin, vec3 direct
   float cutoff;
   const float opacity = cutout_opacity(record, primitive, bary, cutoff);
   if (cutoff >= 0.0) return opacity >= cutoff;
+#if HIPR_CUTOUT_MAJORITY
+  // A ray that stands for the whole pixel (the denoiser's guide) stops where most rays through
+  // the point stop (the layer most of the pixel's samples see, not one a few of them see), or at
+  // any surface they may stop at (g_cutoutStopsFrom).
+  return opacity > 0.0 && opacity >= g_cutoutStopsFrom;
+#else
   return cutout_random(origin, direction, b_geometries[record].identity, primitive) < opacity;
+#endif
 }
 
 // The mean of cutout_hit over rays: what light sampling weights an emitter's radiance by, so

@@ -11,6 +11,10 @@
 const float kDenoiseAlbedoFloor = 0.02;
 vec3 unpack_albedo(uint packed) { return max(unpackUnorm4x8(packed).rgb, vec3(kDenoiseAlbedoFloor)); }
 
+// The pixel's rays stop at more than one surface: a stochastic (BLEND) one lies in front of
+// another, or of the environment (denoise_guides.comp). Kept in the albedo's alpha.
+bool guide_veiled(DenoiseGuide guide) { return unpackUnorm4x8(guide.albedo).a < 0.5; }
+
 vec3 unpack_emission(DenoiseGuide guide) {
   return vec3(unpackHalf2x16(guide.emissionRG), unpackHalf2x16(guide.emissionB).x);
 }
