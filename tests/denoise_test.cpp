@@ -143,10 +143,11 @@ TEST(Denoise, AKeptValueOverAPairOfFreshSamplesKeepsTheNoiseOfItsOwnSamples) {
                                  << after;
 }
 
-TEST(Denoise, NeverMixesTwoSurfaces) {
-  Renderer renderer(test::context(), two_cards(), test::render_settings(kSize, kSize, 8, 4, 0));
-  // Flat values on each card, noisy as far as their samples tell: the filter may average within
-  // a card (the values are all alike) but any weight across the edge shows.
+// The left card's pixels show 1, the right card's 0.25, noisy as far as their samples tell: the
+// filter may average within a card (the values are all alike) but any weight across the edge
+// shows. `scene`: two_cards(), with whatever else in front.
+void expect_the_cards_apart(const Scene& scene) {
+  Renderer renderer(test::context(), scene, test::render_settings(kSize, kSize, 8, 4, 0));
   std::vector<SyntheticPixel> pixels(kSize * kSize);
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x < kSize; ++x) {
@@ -161,6 +162,15 @@ TEST(Denoise, NeverMixesTwoSurfaces) {
           << x << ", " << y;
 }
 
+// The green channel's squared error against `value`, summed over the image.
+double squared_error(const ImageRGB& image, float value) {
+  double sum = 0.0;
+  for (size_t i = 1; i < image.rgb.size(); i += 3) sum += std::pow(image.rgb[i] - value, 2.0);
+  return sum;
+}
+
+TEST(Denoise, NeverMixesTwoSurfaces) { expect_the_cards_apart(two_cards()); }
+
 // A veil in front of the two cards, 30 % opaque (stochastic BLEND): most of each pixel's samples
 // see the card behind it, and so does its guide (common/cutout.glsl, HIPR_CUTOUT_MAJORITY). A
 // guide that stopped where a random 30 % of rays stop keyed those pixels to the veil, one surface
@@ -170,19 +180,7 @@ TEST(Denoise, AMostlyTransparentSurfaceDoesNotJoinTheSurfacesBehindIt) {
   MaterialParameters veil = default_material_params();
   veil.geometry_opacity = 0.3f;
   test::add_card(scene, "veil", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 1.0f)), veil);
-  Renderer renderer(test::context(), scene, test::render_settings(kSize, kSize, 8, 4, 0));
-  std::vector<SyntheticPixel> pixels(kSize * kSize);
-  for (uint32_t y = 0; y < kSize; ++y)
-    for (uint32_t x = 0; x < kSize; ++x) {
-      pixels[y * kSize + x].shown = glm::vec3(x < kSize / 2 ? 1.0f : 0.25f);
-      pixels[y * kSize + x].deviation = 2.0f;
-    }
-  write_display(renderer, pixels);
-  const ImageRGB denoised = renderer.denoised_image(denoise_on());
-  for (uint32_t y = 0; y < kSize; ++y)
-    for (uint32_t x = 0; x < kSize; ++x)
-      ASSERT_NEAR(denoised.rgb[3 * (y * kSize + x) + 1], x < kSize / 2 ? 1.0f : 0.25f, 1e-5f)
-          << x << ", " << y;
+  expect_the_cards_apart(scene);
 }
 
 // The same veil with only the environment behind it: no surface stops most of a pixel's rays,
@@ -199,11 +197,7 @@ TEST(Denoise, AVeilBeforeTheEnvironmentIsFilteredAsOneSurface) {
   write_display(renderer, noisy(value, 0.4f, 5));
   const ImageRGB shown = renderer.displayed_image();
   const ImageRGB denoised = renderer.denoised_image(denoise_on());
-  double raw = 0.0, filtered = 0.0;
-  for (size_t i = 1; i < shown.rgb.size(); i += 3) {
-    raw += std::pow(shown.rgb[i] - value, 2.0);
-    filtered += std::pow(denoised.rgb[i] - value, 2.0);
-  }
+  const double raw = squared_error(shown, value), filtered = squared_error(denoised, value);
   EXPECT_LT(filtered, raw / 3.0) << "raw " << raw << ", denoised " << filtered;
 }
 
@@ -237,11 +231,7 @@ TEST(Denoise, ANormalMapsDetailDoesNotSplitItsSurface) {
   write_display(renderer, noisy(value, 0.4f, 5));
   const ImageRGB shown = renderer.displayed_image();
   const ImageRGB denoised = renderer.denoised_image(denoise_on());
-  double raw = 0.0, filtered = 0.0;
-  for (size_t i = 1; i < shown.rgb.size(); i += 3) {
-    raw += std::pow(shown.rgb[i] - value, 2.0);
-    filtered += std::pow(denoised.rgb[i] - value, 2.0);
-  }
+  const double raw = squared_error(shown, value), filtered = squared_error(denoised, value);
   EXPECT_LT(filtered, raw / 3.0) << "raw " << raw << ", denoised " << filtered;
 }
 
