@@ -56,14 +56,21 @@ vec2 grid_point(uint i, uint n) { return (vec2(i % n, i / n) + 0.5) / float(n); 
 // axis.
 vec2 hammersley(uint i, uint n) { return vec2((float(i) + 0.5) / float(n), float(bitfieldReverse(i)) * 2.3283064365386963e-10); }
 
+// The first surface any of the pixel's rays may stop at along `direction`: a stochastic one
+// whatever its opacity (trace_closest stops where most of them stop).
+bool trace_first_possible(vec3 direction, out RayHit hit) {
+  g_cutoutStopsFrom = 0.0;
+  const bool found = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
+  g_cutoutStopsFrom = 0.5;
+  return found;
+}
+
+// (A veil in front of the environment counts: some samples see it.)
 bool footprint_sees_only_environment(uvec2 pixel) {
   RayHit hit;
-  bool only = true;
-  g_cutoutStopsFrom = 0.0;  // a veil in front of the environment: some samples see it
-  for (uint i = 0u; i < kFootprintRays * kFootprintRays && only; ++i)
-    only = !trace_closest(u_frame.cameraPosition, camera_ray_direction(pixel, grid_point(i, kFootprintRays)), 3.0e38, hit);
-  g_cutoutStopsFrom = 0.5;
-  return only;
+  for (uint i = 0u; i < kFootprintRays * kFootprintRays; ++i)
+    if (trace_first_possible(camera_ray_direction(pixel, grid_point(i, kFootprintRays)), hit)) return false;
+  return true;
 }
 
 // The environment's mean over the pixel, and the standard deviation of its luminance there.
@@ -104,9 +111,8 @@ void main() {
   // record its shown value was rendered with may be another than the guide's (denoise_keys.comp).
   bool veiled = false;
 #if HIPR_FEATURE_CUTOUT
-  g_cutoutStopsFrom = 0.0;
-  RayHit first;  // the first surface any of the pixel's rays may stop at
-  if (trace_closest(u_frame.cameraPosition, direction, 3.0e38, first)) {
+  RayHit first;
+  if (trace_first_possible(direction, first)) {
     veiled = !found || first.record != hit.record;
     // Nothing that most of the pixel's rays stop at: a veil some of them stop at before the
     // environment is still where its noise comes from (a vase of 30 % opaque glass, the studio
@@ -114,7 +120,6 @@ void main() {
     if (!found) hit = first;
     found = true;
   }
-  g_cutoutStopsFrom = 0.5;
 #endif
   if (!found) {
     if (HIPR_FEATURE_ENVIRONMENT != 0 && u_frame.environmentLight != kInvalidIndex &&
