@@ -106,20 +106,28 @@ void main() {
   const vec3 direction = pixel_centre_ray(pixel);
   DenoiseGuide guide = DenoiseGuide(kInvalidIndex, 0.0, 0u, packUnorm4x8(vec4(1.0)), 0u, 0u);
   RayHit hit;
-  bool found = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
   // Veiled: the pixel's rays stop at more than one surface (a stochastic one in front), so the
   // record its shown value was rendered with may be another than the guide's (denoise_keys.comp).
   bool veiled = false;
 #if HIPR_FEATURE_CUTOUT
+  // The first surface any of the pixel's rays may stop at and the first most of them stop at:
+  // one trace where the first is also the second (every surface most rays stop at is one some
+  // may stop at, so none of those lies nearer), a second trace only behind a veil.
   RayHit first;
-  if (trace_first_possible(direction, first)) {
-    veiled = !found || first.record != hit.record;
-    // Nothing that most of the pixel's rays stop at: a veil some of them stop at before the
-    // environment is still where its noise comes from (a vase of 30 % opaque glass, the studio
-    // behind it), and its pixels are filtered together.
-    if (!found) hit = first;
-    found = true;
+  bool found = trace_first_possible(direction, first);
+  if (found) {
+    hit = first;
+    if (!cutout_hit(first.record, first.primitive, first.barycentrics, u_frame.cameraPosition, direction)) {
+      // Nothing that most of the pixel's rays stop at: a veil some of them stop at before the
+      // environment is still where its noise comes from (a vase of 30 % opaque glass, the
+      // studio behind it), and its pixels are filtered together.
+      const bool behind = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
+      veiled = !behind || first.record != hit.record;
+      if (!behind) hit = first;
+    }
   }
+#else
+  bool found = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
 #endif
   if (!found) {
     if (HIPR_FEATURE_ENVIRONMENT != 0 && u_frame.environmentLight != kInvalidIndex &&
