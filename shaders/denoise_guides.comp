@@ -118,11 +118,11 @@ void main() {
   if (found) {
     hit = first;
     if (!cutout_hit(first.record, first.primitive, first.barycentrics, u_frame.cameraPosition, direction)) {
+      const bool behind = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
+      veiled = !behind || first.record != hit.record;
       // Nothing that most of the pixel's rays stop at: a veil some of them stop at before the
       // environment is still where its noise comes from (a vase of 30 % opaque glass, the
       // studio behind it), and its pixels are filtered together.
-      const bool behind = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
-      veiled = !behind || first.record != hit.record;
       if (!behind) hit = first;
     }
   }
