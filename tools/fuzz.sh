@@ -25,6 +25,10 @@ done
 for f in assets/scenes/*.edits.json tools/bench/*.json; do cp "$f" "$corpus/edit_script/$(basename "$f")"; done
 oiiotool --pattern fill:top=1,0.5,0.25:bottom=0,0.1,0.2 8x4 3 -d half -o "$corpus/environment/gradient.exr"
 oiiotool --pattern checker:color1=2,2,2:color2=0,0,0 8x4 3 -o "$corpus/environment/checker.hdr"
+# Files of formats an environment map may not be, for the fuzzer to disguise as one.
+for format in tif iff bmp tga sgi; do
+  oiiotool --pattern checker:color1=2,2,2:color2=0,0,0 8x4 3 -o "$corpus/environment/other.$format"
+done
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 for target in gltf edit_script environment; do

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "image/exr_header.h"
+#include "image/image_reader.h"
 
 namespace hipr {
 
@@ -34,9 +35,8 @@ Environment load_environment(const std::filesystem::path& path) {
   };
   // OpenEXR trusts its header's sizes while parsing it: it is checked here first.
   if (const auto window = scan_exr_header(path)) check_claimed_size(window->width, window->height);
-  auto input = OIIO::ImageInput::open(path.string());
-  if (!input)
-    throw InputError("cannot read environment map " + path.string() + ": " + OIIO::geterror());
+  const auto input =
+      open_image_reader(path, {ImageFormat::OpenExr, ImageFormat::Radiance}, "environment map");
   const OIIO::ImageSpec& spec = input->spec();
   if (spec.nchannels < 1) throw InputError("environment map " + path.string() + " has no channels");
   check_claimed_size(spec.width, spec.height);

@@ -7,11 +7,16 @@
 #include "core/error.h"
 #include "core/file_util.h"
 #include "image/exr_header.h"
+#include "image/image_reader.h"
 #include "image/tonemap.h"
 
 namespace hipr {
 namespace fs = std::filesystem;
 namespace {
+
+// What hipr writes and compares: renders (OpenEXR, PNG) and references (also Radiance .hdr).
+constexpr std::initializer_list<ImageFormat> kReadFormats = {ImageFormat::OpenExr, ImageFormat::Png,
+                                                             ImageFormat::Radiance};
 
 std::string lower_extension(const fs::path& path) {
   std::string ext = path.extension().string();
@@ -82,29 +87,31 @@ ImageRGB read_image(const fs::path& path) {
                        " bytes can hold");
   };
   if (const auto window = scan_exr_header(path)) check_size(window->width, window->height);
-  auto input = OIIO::ImageInput::open(path.string());
-  if (!input) throw InputError("cannot read image " + path.string() + ": " + OIIO::geterror());
+  const auto input = open_image_reader(path, kReadFormats, "image");
   const OIIO::ImageSpec& spec = input->spec();
   if (spec.nchannels < 1) throw InputError("image " + path.string() + " has no channels");
   check_size(spec.width, spec.height);
   ImageRGB image;
   image.width = uint32_t(spec.width);
   image.height = uint32_t(spec.height);
-  std::vector<float> pixels(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
-  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+  // The first three channels only: a header naming thousands costs no more memory.
+  const size_t channels = std::min<size_t>(size_t(spec.nchannels), 3);
+  std::vector<float> pixels(size_t(spec.width) * size_t(spec.height) * channels);
+  if (!input->read_image(0, 0, 0, int(channels), OIIO::TypeDesc::FLOAT, pixels.data()))
     throw InputError("cannot decode image " + path.string());
   image.rgb.resize(size_t(spec.width) * size_t(spec.height) * 3);
   for (size_t i = 0; i < size_t(spec.width) * size_t(spec.height); ++i)
     for (size_t c = 0; c < 3; ++c)
-      image.rgb[i * 3 + c] =
-          pixels[i * size_t(spec.nchannels) + std::min<size_t>(c, size_t(spec.nchannels) - 1)];
+      image.rgb[i * 3 + c] = pixels[i * channels + std::min(c, channels - 1)];
   return image;
 }
 
 std::string read_image_attribute(const fs::path& path, const std::string& name) {
-  auto input = OIIO::ImageInput::open(path.string());
-  if (!input) return "";
-  return input->spec().get_string_attribute(name);
+  try {
+    return open_image_reader(path, kReadFormats, "image")->spec().get_string_attribute(name);
+  } catch (const InputError&) {
+    return "";
+  }
 }
 
 }  // namespace hipr

@@ -21,6 +21,8 @@ void write_image(const std::filesystem::path& path, const ImageRGB& image,
 // `channels`: 3 (RGB) or 4 (RGBA) bytes per pixel, rows top first.
 void write_png8(const std::filesystem::path& path, uint32_t width, uint32_t height,
                 uint32_t channels, const std::vector<uint8_t>& pixels);
+// Reads an OpenEXR, PNG or Radiance .hdr image (told apart by content, never by name) as RGB: a
+// grey image's one channel in all three. Any other file is an InputError.
 ImageRGB read_image(const std::filesystem::path& path);
 // Reads one metadata attribute as text ("" when absent).
 std::string read_image_attribute(const std::filesystem::path& path, const std::string& name);

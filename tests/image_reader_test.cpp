@@ -1,0 +1,98 @@
+// Whole images are read by the reader their content names, among the formats each use accepts
+// (image/image_reader.h): never by the file's extension, never by every reader OpenImageIO has.
+#include "image/image_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "image/environment_loader.h"
+#include "image/image_io.h"
+#include "test_support.h"
+
+namespace hipr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The InputError's message, or "" when none is thrown.
+template <typename F>
+std::string input_error(F&& read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Writes `channels` float channels, each pixel's channel c holding c + 1.
+void write_with_oiio(const fs::path& path, const char* format, int channels) {
+  auto out = OIIO::ImageOutput::create(format);
+  ASSERT_TRUE(out);
+  const OIIO::ImageSpec spec(4, 2, channels, OIIO::TypeDesc::FLOAT);
+  std::vector<float> pixels(size_t(4 * 2 * channels));
+  for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = float(i % size_t(channels) + 1);
+  ASSERT_TRUE(out->open(path.string(), spec));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+  ASSERT_TRUE(out->close());
+}
+
+TEST(ImageReader, TheContentNamesTheReaderNotTheExtension) {
+  const fs::path dir = test::temp_dir("image_reader");
+  write_image(dir / "render.exr", ImageRGB{4, 2, std::vector<float>(4 * 2 * 3, 0.25f)});
+  fs::copy_file(dir / "render.exr", dir / "render.png", fs::copy_options::overwrite_existing);
+  const ImageRGB image = read_image(dir / "render.png");  // OpenEXR, whatever its name says
+  EXPECT_EQ(image.width, 4u);
+  EXPECT_EQ(image.rgb, std::vector<float>(4 * 2 * 3, 0.25f));
+  fs::copy_file(dir / "render.exr", dir / "map.hdr", fs::copy_options::overwrite_existing);
+  EXPECT_EQ(load_environment(dir / "map.hdr").width, 4u);
+}
+
+TEST(ImageReader, FormatsOutsideTheUseAreRefusedInOneLine) {
+  const fs::path dir = test::temp_dir("image_reader");
+  // A TIFF named .hdr: OpenImageIO alone would find the TIFF reader for it.
+  write_with_oiio(dir / "map.tif", "tiff", 3);
+  fs::copy_file(dir / "map.tif", dir / "map.hdr", fs::copy_options::overwrite_existing);
+  const std::string message = input_error([&] { load_environment(dir / "map.hdr"); });
+  EXPECT_NE(message.find("is not OpenEXR or Radiance .hdr"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos);
+  // A PNG is an image to compare, not an environment map.
+  write_png8(dir / "shot.png", 2, 2, 3, std::vector<uint8_t>(2 * 2 * 3, 128));
+  EXPECT_EQ(read_image(dir / "shot.png").width, 2u);
+  EXPECT_NE(input_error([&] { load_environment(dir / "shot.png"); }), "");
+  // Bytes of no format, and an empty file.
+  std::ofstream(dir / "noise.exr") << "BM not quite anything";
+  EXPECT_NE(input_error([&] { read_image(dir / "noise.exr"); }).find("is not OpenEXR, PNG or"),
+            std::string::npos);
+  std::ofstream(dir / "empty.hdr").flush();
+  EXPECT_NE(input_error([&] { load_environment(dir / "empty.hdr"); }), "");
+  EXPECT_EQ(read_image_attribute(dir / "noise.exr", "hipr:spp"), "");
+}
+
+TEST(ImageReader, OnlyTheFirstThreeChannelsAreRead) {
+  const fs::path dir = test::temp_dir("image_reader");
+  write_with_oiio(dir / "layers.exr", "openexr", 7);  // channels hold 1, 2, ... 7
+  const ImageRGB image = read_image(dir / "layers.exr");
+  const Environment map = load_environment(dir / "layers.exr");
+  ASSERT_EQ(image.rgb.size(), size_t(4 * 2 * 3));
+  ASSERT_EQ(map.texels.size(), size_t(4 * 2));
+  for (size_t i = 0; i < 4 * 2; ++i) {
+    // OpenImageIO gives R, G, B first whatever order OpenEXR stores the channels in.
+    EXPECT_EQ(image.rgb[3 * i], 1.0f);
+    EXPECT_EQ(image.rgb[3 * i + 1], 2.0f);
+    EXPECT_EQ(image.rgb[3 * i + 2], 3.0f);
+    EXPECT_EQ(map.texels[i], glm::vec3(1.0f, 2.0f, 3.0f));
+  }
+  write_with_oiio(dir / "grey.exr", "openexr", 1);  // one channel: grey in all three
+  const ImageRGB grey = read_image(dir / "grey.exr");
+  EXPECT_EQ(grey.rgb, std::vector<float>(4 * 2 * 3, 1.0f));
+}
+
+}  // namespace
+}  // namespace hipr
