@@ -113,18 +113,15 @@ void main() {
   // The first surface any of the pixel's rays may stop at and the first most of them stop at:
   // one trace where the first is also the second (every surface most rays stop at is one some
   // may stop at, so none of those lies nearer), a second trace only behind a veil.
-  RayHit first;
-  bool found = trace_first_possible(direction, first);
-  if (found) {
-    hit = first;
-    if (!cutout_hit(first.record, first.primitive, first.barycentrics, u_frame.cameraPosition, direction)) {
-      const bool behind = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
-      veiled = !behind || first.record != hit.record;
-      // Nothing that most of the pixel's rays stop at: a veil some of them stop at before the
-      // environment is still where its noise comes from (a vase of 30 % opaque glass, the
-      // studio behind it), and its pixels are filtered together.
-      if (!behind) hit = first;
-    }
+  const bool found = trace_first_possible(direction, hit);
+  if (found && !cutout_hit(hit.record, hit.primitive, hit.barycentrics, u_frame.cameraPosition, direction)) {
+    RayHit behind;
+    const bool stops_behind = trace_closest(u_frame.cameraPosition, direction, 3.0e38, behind);
+    veiled = !stops_behind || behind.record != hit.record;
+    // Nothing that most of the pixel's rays stop at: the guide stays the veil some of them stop
+    // at before the environment, still where its noise comes from (a vase of 30 % opaque glass,
+    // the studio behind it), and its pixels are filtered together.
+    if (stops_behind) hit = behind;
   }
 #else
   bool found = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
