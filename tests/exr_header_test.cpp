@@ -169,6 +169,27 @@ TEST(ExrHeader, AWindowBeyondTheFileIsRefusedBeforeOpenExrSeesIt) {
   EXPECT_EQ(window->width, int64_t(1) << 31);
   EXPECT_THROW(load_environment(path), InputError);
   EXPECT_THROW(read_image(path), InputError);
+  EXPECT_EQ(read_image_attribute(path, "hipr:spp"), "");
+}
+
+TEST(ExrHeader, AMapLargerThanHiprReadsIsRefusedBeforeOpenExrSeesIt) {
+  // 16385 x 8192 texels, one row over the environment maps' 2^27, in a file large enough to
+  // hold them by plausible_image_size (a long comment pads it).
+  const fs::path path =
+      ExrBytes()
+          .attribute("comments", "string", 140000, std::vector<uint8_t>(140000, 'x'))
+          .data_window(0, 0, 16384, 8191)
+          .end_header()
+          .write("wide_map.exr");
+  ASSERT_TRUE(plausible_image_size(16385, 8192, fs::file_size(path)));
+  try {
+    load_environment(path);
+    ADD_FAILURE() << "a map beyond 2^27 texels was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is larger (16385x8192) than hipr reads"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

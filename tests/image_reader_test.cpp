@@ -92,6 +92,22 @@ TEST(ImageReader, OnlyTheFirstThreeChannelsAreRead) {
   write_with_oiio(dir / "grey.exr", "openexr", 1);  // one channel: grey in all three
   const ImageRGB grey = read_image(dir / "grey.exr");
   EXPECT_EQ(grey.rgb, std::vector<float>(4 * 2 * 3, 1.0f));
+  // Grey and alpha (a two-channel PNG): the grey in all three, as environment maps read it;
+  // alpha is not a colour.
+  auto out = OIIO::ImageOutput::create("png");
+  ASSERT_TRUE(out);
+  const std::vector<uint8_t> grey_alpha = {51, 255, 51, 255, 51, 255, 51, 255};
+  ASSERT_TRUE(out->open((dir / "grey_alpha.png").string(),
+                        OIIO::ImageSpec(2, 2, 2, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, grey_alpha.data()));
+  ASSERT_TRUE(out->close());
+  const ImageRGB shaded = read_image(dir / "grey_alpha.png");
+  ASSERT_EQ(shaded.rgb.size(), size_t(2 * 2 * 3));
+  for (size_t i = 0; i < 2 * 2; ++i) {
+    EXPECT_NEAR(shaded.rgb[3 * i], 0.2f, 1e-6f);
+    EXPECT_EQ(shaded.rgb[3 * i + 1], shaded.rgb[3 * i]);
+    EXPECT_EQ(shaded.rgb[3 * i + 2], shaded.rgb[3 * i]);
+  }
 }
 
 }  // namespace
