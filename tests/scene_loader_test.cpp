@@ -328,6 +328,28 @@ TEST(WrittenScenes, UnusedBrokenAccessorIsRefused) {
   expect_refused(doc, "runs past the end of its buffer");
 }
 
+TEST(WrittenScenes, AnImageViewPastItsBufferIsRefusedBeforeItIsDecoded) {
+  // tinygltf hands an image's bufferView to the decoder as long as the view claims: the view must
+  // be checked against its buffer first (a fuzzed GLB had OpenImageIO's DDS path read past it).
+  for (const char* magic : {"\x89PNG\r\n\x1a\n", "DDS "}) {
+    Document doc = triangle_document();
+    const size_t offset = doc.bin.size();
+    doc.bin.insert(doc.bin.end(), magic, magic + std::strlen(magic));
+    doc.bin.resize((doc.bin.size() + 3) / 4 * 4, 0);
+    doc.gltf["bufferViews"].push_back(
+        {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", doc.bin.size() - offset + 400}});
+    const size_t view = doc.gltf["bufferViews"].size() - 1;
+    doc.gltf["images"] = json::array({{{"bufferView", view}, {"mimeType", "image/png"}}});
+    expect_refused(
+        doc, "image 0's bufferView " + std::to_string(view) + " runs past the end of its buffer");
+    doc.gltf["images"][0]["bufferView"] = view + 1;
+    expect_refused(doc, "image 0 names a bufferView that does not exist");
+    doc.gltf["images"][0]["bufferView"] = view;
+    doc.gltf["bufferViews"][view]["byteOffset"] = -4;
+    expect_refused(doc, "has no valid byteOffset or byteLength");
+  }
+}
+
 TEST(WrittenScenes, NodeThatIsItsOwnChildIsRefused) {
   Document doc = triangle_document();
   doc.gltf["nodes"][0]["children"] = {0};

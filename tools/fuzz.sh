@@ -22,6 +22,8 @@ scenes() { find assets/scenes ../shared/scenes -maxdepth 2 -type f -size -256k \
 for f in $(scenes); do
   cp "$f" "$corpus/gltf/$(echo "$f" | tr '/' '_')"
 done
+# Textures OpenImageIO decodes (WebP, AVIF, DDS), in GLBs built here: no shipped scene has one.
+python3 tools/fuzz_texture_seeds.py "$corpus/gltf"
 for f in assets/scenes/*.edits.json tools/bench/*.json; do cp "$f" "$corpus/edit_script/$(basename "$f")"; done
 oiiotool --pattern fill:top=1,0.5,0.25:bottom=0,0.1,0.2 8x4 3 -d half -o "$corpus/environment/gradient.exr"
 oiiotool --pattern checker:color1=2,2,2:color2=0,0,0 8x4 3 -o "$corpus/environment/checker.hdr"

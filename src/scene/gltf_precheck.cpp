@@ -3,7 +3,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <optional>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -79,6 +82,62 @@ std::string json_text(const std::vector<unsigned char>& bytes, bool glb) {
   return std::string(bytes.begin() + 20, bytes.begin() + 20 + std::ptrdiff_t(length));
 }
 
+namespace {
+
+// A count or index as glTF writes it: a non-negative integer (a float of integral value, as some
+// writers print them, too), at most 2^53; nothing for anything else.
+std::optional<uint64_t> whole_number(const nlohmann::json& value) {
+  if (value.is_number_unsigned()) return value.get<uint64_t>();
+  if (value.is_number_float()) {
+    const double v = value.get<double>();
+    if (v >= 0.0 && v <= 9007199254740992.0 && v == std::floor(v)) return uint64_t(v);
+  }
+  return std::nullopt;
+}
+
+// Every image held in a bufferView lies inside its buffer. tinygltf hands an image's view to the
+// image decoder (stb_image, or OpenImageIO for WebP, AVIF and DDS) as the view claims it, without
+// comparing it with the buffer's bytes: a view longer than its buffer had the decoder read past
+// the buffer's end (found by fuzzing). A buffer holds exactly its byteLength once tinygltf has
+// read it (it refuses a shorter file, data URI or GLB chunk), so the JSON alone tells.
+void check_image_views(const nlohmann::json& doc, const std::string& name) {
+  if (!doc.contains("images") || !doc["images"].is_array()) return;
+  const auto array = [&](const char* kind) -> const nlohmann::json* {
+    return doc.contains(kind) && doc[kind].is_array() ? &doc[kind] : nullptr;
+  };
+  const nlohmann::json* views = array("bufferViews");
+  const nlohmann::json* buffers = array("buffers");
+  for (size_t i = 0; i < doc["images"].size(); ++i) {
+    const nlohmann::json& image = doc["images"][i];
+    if (!image.is_object() || !image.contains("bufferView")) continue;
+    const std::string what = name + ": image " + std::to_string(i);
+    const std::optional<uint64_t> v = whole_number(image["bufferView"]);
+    if (!v || !views || *v >= views->size() || !(*views)[*v].is_object())
+      throw InputError(what + " names a bufferView that does not exist");
+    const nlohmann::json& view = (*views)[*v];
+    const std::string view_name = what + "'s bufferView " + std::to_string(*v);
+    const std::optional<uint64_t> b =
+        view.contains("buffer") ? whole_number(view["buffer"]) : std::nullopt;
+    if (!b || !buffers || *b >= buffers->size() || !(*buffers)[*b].is_object())
+      throw InputError(view_name + " names a buffer that does not exist");
+    const nlohmann::json& buffer = (*buffers)[*b];
+    const std::optional<uint64_t> offset =
+        view.contains("byteOffset") ? whole_number(view["byteOffset"]) : uint64_t(0);
+    const std::optional<uint64_t> length =
+        view.contains("byteLength") ? whole_number(view["byteLength"]) : std::nullopt;
+    const std::optional<uint64_t> size =
+        buffer.contains("byteLength") ? whole_number(buffer["byteLength"]) : std::nullopt;
+    if (!offset || !length || !size)
+      throw InputError(view_name + " or its buffer has no valid byteOffset or byteLength");
+    if (*offset > *size || *length > *size - *offset)  // (no sum: it cannot wrap)
+      throw InputError(view_name + " runs past the end of its buffer (bytes " +
+                       std::to_string(*offset) + " to " + std::to_string(*offset + *length) +
+                       " of " + std::to_string(*size) + ")");
+  }
+}
+
+}  // namespace
+
 void precheck_json(const std::string& text, const std::string& name) {
   nlohmann::json doc;
   try {
@@ -113,6 +172,7 @@ void precheck_json(const std::string& text, const std::string& name) {
                                    " " + std::to_string(i));
     }
   }
+  check_image_views(doc, name);
 }
 
 }  // namespace gltf
