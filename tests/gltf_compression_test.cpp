@@ -20,6 +20,7 @@
 #include "hipr/scene_loader.h"
 #include "image/image_io.h"
 #include "scene/base64.h"
+#include "scene/dds_header.h"
 #include "test_support.h"
 
 namespace hipr {
@@ -263,6 +264,63 @@ TEST(TextureSources, DdsIsPreferredToTheFallback) {
   EXPECT_EQ(texel[0], 180);
   EXPECT_EQ(texel[1], 120);
   EXPECT_EQ(texel[2], 200);
+}
+
+TEST(TextureSources, ADdsTheReaderWouldTripOnIsRefusedAndItsFallbackShown) {
+  // DXT2 (premultiplied BC2): OpenImageIO 2.4's DDS reader divided by zero on it (found by
+  // fuzzing). hipr refuses it from its header and shows the texture's PNG fallback.
+  const fs::path dir = test::temp_dir("dds_dxt2");
+  std::vector<unsigned char> dds = dds_image(4, 4);
+  const uint32_t four_cc = 0x4, dxt2 = 0x32545844;  // DDPF_FOURCC, "DXT2"
+  std::memcpy(dds.data() + 80, &four_cc, 4);
+  std::memcpy(dds.data() + 84, &dxt2, 4);
+  test::write_bytes(dir / "texels.dds", dds);
+  test::Document doc = textured_triangle(
+      dir, {{"source", 0}, {"extensions", {{"MSFT_texture_dds", {{"source", 1}}}}}});
+  doc.gltf["extensionsUsed"] = {"MSFT_texture_dds"};
+  test::write_document(dir / "dxt2.gltf", doc);
+  const Scene scene = load_scene(dir / "dxt2.gltf");
+  ASSERT_EQ(scene.images.size(), 1u);
+  ASSERT_EQ(scene.images[0].width, 1u);           // the grey PNG, not the magenta checker
+  EXPECT_NEAR(scene.images[0].rgba8[0], 188, 1);  // 0.5 linear, sRGB-encoded
+  // Without a fallback: the checker, and a warning, never a crash.
+  doc.gltf["textures"][0].erase("source");
+  test::write_document(dir / "dxt2_alone.gltf", doc);
+  const Scene alone = load_scene(dir / "dxt2_alone.gltf");
+  ASSERT_EQ(alone.images.size(), 1u);
+  EXPECT_GT(alone.images[0].width, 1u);
+}
+
+TEST(DdsHeader, OnlyTheKindsTheReaderDecodesPass) {
+  const auto problem = [](std::vector<unsigned char> dds) {
+    return gltf::dds_header_problem(dds.data(), dds.size());
+  };
+  const auto with = [](std::vector<unsigned char> dds, size_t at, uint32_t value) {
+    std::memcpy(dds.data() + at, &value, 4);
+    return dds;
+  };
+  const std::vector<unsigned char> good = dds_image(4, 3);
+  EXPECT_EQ(problem(good), "");
+  EXPECT_NE(problem(with(good, 88, 0)).find("0 bits"), std::string::npos);  // hung the reader
+  EXPECT_NE(problem(with(good, 88, 12)).find("12 bits"), std::string::npos);
+  EXPECT_NE(problem(with(with(good, 88, 16), 92, 0x00ff0000)).find("masks"), std::string::npos);
+  EXPECT_NE(problem(with(good, 112, 0x200)).find("cube map"), std::string::npos);
+  EXPECT_NE(problem(with(good, 12, 0)).find("without texels"), std::string::npos);
+  EXPECT_NE(problem(with(good, 4, 100)).find("malformed"), std::string::npos);
+  EXPECT_NE(problem(std::vector<unsigned char>(good.begin(), good.end() - 1)).find("run past"),
+            std::string::npos);
+  EXPECT_NE(problem(std::vector<unsigned char>(good.begin(), good.begin() + 64)).find("too short"),
+            std::string::npos);
+  // Mip levels beyond a 4 x 3 image's three.
+  const std::vector<unsigned char> mipped = with(good, 8, 0x1 | 0x2 | 0x4 | 0x1000 | 0x20000);
+  EXPECT_EQ(problem(with(mipped, 28, 3)), "");
+  EXPECT_NE(problem(with(mipped, 28, 4)).find("mip levels"), std::string::npos);
+  // Block formats: DXT1 passes with its blocks' bytes, DXT4 is refused by name.
+  std::vector<unsigned char> dxt1 = with(with(good, 80, 0x4), 84, 0x31545844);
+  dxt1.resize(128 + 8);  // 4 x 3 texels: one 4 x 4 block of 8 bytes
+  EXPECT_EQ(problem(dxt1), "");
+  EXPECT_NE(problem(with(dxt1, 84, 0x34545844)).find("DXT4"), std::string::npos);
+  EXPECT_NE(problem(with(dxt1, 16, 12)).find("run past"), std::string::npos);  // 12 wide: 3 blocks
 }
 
 TEST(TextureSources, BasisuUsesItsFallbackOrIsOneClearError) {

@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <memory>
 
+#include "scene/dds_header.h"
+
 namespace hipr::gltf {
 
 namespace {
@@ -77,6 +79,8 @@ bool decode_with_oiio(tinygltf::Image* image, const unsigned char* bytes, size_t
     return false;
   };
   const std::string format = format_of(bytes, size);
+  if (format == "dds")
+    if (std::string why = dds_header_problem(bytes, size); !why.empty()) return fail(why);
   // The proxy and the file must outlive the input: declared first, they are destroyed last.
   OIIO::Filesystem::IOMemReader memory(const_cast<unsigned char*>(bytes), size);
   std::unique_ptr<TemporaryFile> file;

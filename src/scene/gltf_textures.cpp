@@ -117,12 +117,19 @@ namespace {
 // MSFT_texture_dds; decoded through OpenImageIO) before the core `source`, which is then the file's
 // fallback. A KTX2 source (KHR_texture_basisu) has no packaged decoder: the fallback is used, and
 // without one the file cannot be shown as its author meant, which is an error rather than a guess.
-int image_source(const tinygltf::Texture& source, int texture, const std::string& what) {
+// An extension's image that could not be decoded (a DDS format hipr does not decode, a broken
+// WebP) gives way to the fallback too, where there is one: that is what the fallback is for.
+int image_source(const tinygltf::Model& model, const tinygltf::Texture& source, int texture,
+                 const std::string& what) {
   for (const char* extension : {"EXT_texture_webp", "EXT_texture_avif", "MSFT_texture_dds"}) {
     const auto it = source.extensions.find(extension);
-    if (it != source.extensions.end() && it->second.Has("source") &&
-        it->second.Get("source").IsInt())
-      return it->second.Get("source").GetNumberAsInt();
+    if (it == source.extensions.end() || !it->second.Has("source") ||
+        !it->second.Get("source").IsInt())
+      continue;
+    const int index = it->second.Get("source").GetNumberAsInt();
+    const bool decoded = index >= 0 && size_t(index) < model.images.size() &&
+                         !model.images[size_t(index)].image.empty();
+    if (decoded || source.source < 0) return index;
   }
   if (source.source < 0 && source.extensions.count("KHR_texture_basisu"))
     throw InputError(what + ": texture " + std::to_string(texture) +
@@ -136,7 +143,7 @@ int image_source(const tinygltf::Texture& source, int texture, const std::string
 uint32_t TextureTable::image_for(const tinygltf::Texture& source, int texture,
                                  const std::string& what) {
   // A broken or missing image gets its own fallback per texture, so the warning names it once.
-  const int index = image_source(source, texture, what);
+  const int index = image_source(m_model, source, texture, what);
   const bool has_image = index >= 0 && size_t(index) < m_model.images.size();
   if (index >= 0 && !has_image)
     throw InputError(what + ": texture " + std::to_string(texture) + " references missing image " +

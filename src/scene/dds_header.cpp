@@ -1,0 +1,105 @@
+#include "scene/dds_header.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+
+namespace hipr::gltf {
+namespace {
+
+// Offsets into the file: "DDS " then DDS_HEADER (124 bytes) with its DDS_PIXELFORMAT at 76.
+constexpr size_t kHeaderEnd = 128;
+constexpr size_t kSize = 4, kFlags = 8, kHeight = 12, kWidth = 16, kDepth = 24, kMipCount = 28;
+constexpr size_t kFormatSize = 76, kFormatFlags = 80, kFourCc = 84, kBitCount = 88, kMasks = 92;
+constexpr size_t kCaps2 = 112;
+
+constexpr uint32_t kFlagDepth = 0x800000;
+constexpr uint32_t kFlagMipCount = 0x20000;
+constexpr uint32_t kFormatAlphaPixels = 0x1, kFormatAlphaOnly = 0x2, kFormatFourCc = 0x4, kFormatRgb = 0x40,
+                   kFormatLuminance = 0x20000;
+constexpr uint32_t kCaps2CubeMap = 0x200, kCaps2Volume = 0x200000;
+
+uint32_t u32(const unsigned char* bytes, size_t at) {
+  uint32_t v;
+  std::memcpy(&v, bytes + at, 4);
+  return v;  // (DDS is little-endian, as every machine hipr builds for)
+}
+
+struct BlockFormat {
+  const char* four_cc;
+  uint32_t block_bytes;  // per 4 x 4 texels
+};
+constexpr std::array<BlockFormat, 7> kBlockFormats{{{"DXT1", 8},
+                                                    {"DXT3", 16},
+                                                    {"DXT5", 16},
+                                                    {"ATI1", 8},
+                                                    {"BC4U", 8},
+                                                    {"ATI2", 16},
+                                                    {"BC5U", 16}}};
+
+// The four characters of a FourCC as text, unprintable ones as '?'.
+std::string printable(const unsigned char* bytes) {
+  std::string text(reinterpret_cast<const char*>(bytes), 4);
+  for (char& c : text)
+    if (c < 0x20 || c > 0x7e) c = '?';
+  return text;
+}
+
+}  // namespace
+
+std::string dds_header_problem(const unsigned char* bytes, size_t size) {
+  if (size < kHeaderEnd || std::memcmp(bytes, "DDS ", 4) != 0)
+    return "is too short for a DDS header";
+  if (u32(bytes, kSize) != 124 || u32(bytes, kFormatSize) != 32)
+    return "has a malformed DDS header";
+  const uint64_t width = u32(bytes, kWidth), height = u32(bytes, kHeight);
+  if (width == 0 || height == 0) return "is a DDS image without texels";
+  if ((u32(bytes, kCaps2) & (kCaps2CubeMap | kCaps2Volume)) != 0 ||
+      ((u32(bytes, kFlags) & kFlagDepth) != 0 && u32(bytes, kDepth) > 1))
+    return "is a DDS cube map or volume, not a 2D texture";
+
+  const uint32_t format = u32(bytes, kFormatFlags);
+  uint64_t top_level_bytes = 0;
+  if (format & kFormatFourCc) {
+    const auto block = std::find_if(kBlockFormats.begin(), kBlockFormats.end(),
+                                    [&](const BlockFormat& f) {
+                                      return std::memcmp(bytes + kFourCc, f.four_cc, 4) == 0;
+                                    });
+    if (block == kBlockFormats.end())
+      return "is DDS of format " + printable(bytes + kFourCc) +
+             ", which hipr does not decode (it decodes DXT1, DXT3, DXT5, ATI1/BC4U, ATI2/BC5U "
+             "and uncompressed texels)";
+    top_level_bytes = ((width + 3) / 4) * ((height + 3) / 4) * block->block_bytes;
+  } else if (format & (kFormatRgb | kFormatLuminance | kFormatAlphaOnly)) {
+    const uint32_t bits = u32(bytes, kBitCount);
+    if (bits != 8 && bits != 16 && bits != 24 && bits != 32)
+      return "is uncompressed DDS of " + std::to_string(bits) +
+             " bits a texel (hipr decodes 8, 16, 24 or 32)";
+    // Every channel the flags name has a mask (the reader looks for a zero mask's lowest set bit
+    // forever), and every mask fits in the texel.
+    const auto mask = [&](size_t k) { return u32(bytes, kMasks + 4 * k); };
+    const bool named_masks_set =
+        (!(format & kFormatRgb) || (mask(0) && mask(1) && mask(2))) &&
+        (!(format & kFormatLuminance) || mask(0)) &&
+        (!(format & (kFormatAlphaPixels | kFormatAlphaOnly)) || mask(3));
+    const uint32_t all = mask(0) | mask(1) | mask(2) | mask(3);
+    if (!named_masks_set || (bits < 32 && (all >> bits) != 0))
+      return "is uncompressed DDS whose channel masks do not fit its " + std::to_string(bits) +
+             " bits";
+    top_level_bytes = width * height * (bits / 8);
+  } else {
+    return "is DDS of no pixel format hipr decodes";
+  }
+  if (top_level_bytes > size - kHeaderEnd)
+    return "is DDS whose texels run past the end of its bytes";
+  if (u32(bytes, kFlags) & kFlagMipCount) {
+    uint32_t levels = 1;
+    for (uint64_t side = std::max(width, height); side > 1; side /= 2) ++levels;
+    if (u32(bytes, kMipCount) > levels)
+      return "is DDS with more mip levels than its size has";
+  }
+  return "";
+}
+
+}  // namespace hipr::gltf
