@@ -16,8 +16,8 @@ constexpr size_t kCaps2 = 112;
 
 constexpr uint32_t kFlagDepth = 0x800000;
 constexpr uint32_t kFlagMipCount = 0x20000;
-constexpr uint32_t kFormatAlphaPixels = 0x1, kFormatAlphaOnly = 0x2, kFormatFourCc = 0x4, kFormatRgb = 0x40,
-                   kFormatLuminance = 0x20000;
+constexpr uint32_t kFormatAlphaPixels = 0x1, kFormatAlphaOnly = 0x2, kFormatFourCc = 0x4,
+                   kFormatRgb = 0x40, kFormatLuminance = 0x20000;
 constexpr uint32_t kCaps2CubeMap = 0x200, kCaps2Volume = 0x200000;
 
 uint32_t u32(const unsigned char* bytes, size_t at) {
@@ -62,10 +62,9 @@ std::string dds_header_problem(const unsigned char* bytes, size_t size) {
   const uint32_t format = u32(bytes, kFormatFlags);
   uint64_t top_level_bytes = 0;
   if (format & kFormatFourCc) {
-    const auto block = std::find_if(kBlockFormats.begin(), kBlockFormats.end(),
-                                    [&](const BlockFormat& f) {
-                                      return std::memcmp(bytes + kFourCc, f.four_cc, 4) == 0;
-                                    });
+    const auto block = std::find_if(
+        kBlockFormats.begin(), kBlockFormats.end(),
+        [&](const BlockFormat& f) { return std::memcmp(bytes + kFourCc, f.four_cc, 4) == 0; });
     if (block == kBlockFormats.end())
       return "is DDS of format " + printable(bytes + kFourCc) +
              ", which hipr does not decode (it decodes DXT1, DXT3, DXT5, ATI1/BC4U, ATI2/BC5U "
@@ -79,10 +78,9 @@ std::string dds_header_problem(const unsigned char* bytes, size_t size) {
     // Every channel the flags name has a mask (the reader looks for a zero mask's lowest set bit
     // forever), and every mask fits in the texel.
     const auto mask = [&](size_t k) { return u32(bytes, kMasks + 4 * k); };
-    const bool named_masks_set =
-        (!(format & kFormatRgb) || (mask(0) && mask(1) && mask(2))) &&
-        (!(format & kFormatLuminance) || mask(0)) &&
-        (!(format & (kFormatAlphaPixels | kFormatAlphaOnly)) || mask(3));
+    const bool named_masks_set = (!(format & kFormatRgb) || (mask(0) && mask(1) && mask(2))) &&
+                                 (!(format & kFormatLuminance) || mask(0)) &&
+                                 (!(format & (kFormatAlphaPixels | kFormatAlphaOnly)) || mask(3));
     const uint32_t all = mask(0) | mask(1) | mask(2) | mask(3);
     if (!named_masks_set || (bits < 32 && (all >> bits) != 0))
       return "is uncompressed DDS whose channel masks do not fit its " + std::to_string(bits) +
@@ -96,8 +94,7 @@ std::string dds_header_problem(const unsigned char* bytes, size_t size) {
   if (u32(bytes, kFlags) & kFlagMipCount) {
     uint32_t levels = 1;
     for (uint64_t side = std::max(width, height); side > 1; side /= 2) ++levels;
-    if (u32(bytes, kMipCount) > levels)
-      return "is DDS with more mip levels than its size has";
+    if (u32(bytes, kMipCount) > levels) return "is DDS with more mip levels than its size has";
   }
   return "";
 }

@@ -48,7 +48,7 @@ const std::vector<GltfExtension>& gltf_extension_table() {
       {"KHR_mesh_quantization", "integer and normalized attributes, dequantized at load"},
       {"EXT_texture_webp", "WebP images, decoded with OpenImageIO"},
       {"EXT_texture_avif", "AVIF images, decoded with OpenImageIO (libheif)"},
-      {"MSFT_texture_dds", "DDS images, decoded with OpenImageIO"},
+      {"MSFT_texture_dds", "DDS images (BC1-BC5, uncompressed), decoded with OpenImageIO"},
       {"KHR_texture_basisu",
        "KTX2 images cannot be decoded (no packaged decoder): the fallback image is used"},
       {"KHR_xmp_json_ld", "XMP metadata: not shown, kept as it was when saving"},
