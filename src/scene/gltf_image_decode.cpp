@@ -3,15 +3,10 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <memory>
 
+#include "scene/avif_decode.h"
 #include "scene/dds_header.h"
 
 namespace hipr::gltf {
@@ -23,8 +18,8 @@ bool starts(const unsigned char* bytes, size_t size, size_t at, const char* tag)
   return size >= at + n && std::memcmp(bytes + at, tag, n) == 0;
 }
 
-// The reader for the bytes: WebP, DDS, or AVIF (an ISO media file of brand avif or avis, which
-// OpenImageIO reads through libheif); empty for anything else.
+// The decoder for the bytes: WebP, DDS (OpenImageIO's readers), or AVIF (an ISO media file of
+// brand avif or avis: libheif, avif_decode.h); empty for anything else.
 std::string format_of(const unsigned char* bytes, size_t size) {
   if (starts(bytes, size, 0, "RIFF") && starts(bytes, size, 8, "WEBP")) return "webp";
   if (starts(bytes, size, 0, "DDS ")) return "dds";
@@ -33,38 +28,6 @@ std::string format_of(const unsigned char* bytes, size_t size) {
     return "heif";
   return "";
 }
-
-// A private file holding the bytes, for readers that cannot read memory (OpenImageIO 2.4's
-// heif); removed when it goes out of scope.
-class TemporaryFile {
- public:
-  TemporaryFile(const unsigned char* bytes, size_t size, const char* suffix) {
-    std::string name =
-        (std::filesystem::temp_directory_path() / "hipr-image-XXXXXX").string() + suffix;
-    const int fd = mkstemps(name.data(), int(std::strlen(suffix)));
-    if (fd < 0) return;
-    size_t written = 0;
-    while (written < size) {
-      const ssize_t n = ::write(fd, bytes + written, size - written);
-      if (n <= 0) break;
-      written += size_t(n);
-    }
-    ::close(fd);
-    m_path = name;
-    m_ok = written == size;
-  }
-  ~TemporaryFile() {
-    if (!m_path.empty()) std::remove(m_path.c_str());
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-  bool ok() const { return m_ok; }
-  const std::string& path() const { return m_path; }
-
- private:
-  std::string m_path;
-  bool m_ok = false;
-};
 
 }  // namespace
 
@@ -79,21 +42,16 @@ bool decode_with_oiio(tinygltf::Image* image, const unsigned char* bytes, size_t
     return false;
   };
   const std::string format = format_of(bytes, size);
+  if (format == "heif") return decode_avif(image, bytes, size, max_pixels, max_side, err);
   if (format == "dds")
     if (std::string why = dds_header_problem(bytes, size); !why.empty()) return fail(why);
-  // The proxy and the file must outlive the input: declared first, they are destroyed last.
+  // The proxy must outlive the input: declared first, it is destroyed last.
   OIIO::Filesystem::IOMemReader memory(const_cast<unsigned char*>(bytes), size);
-  std::unique_ptr<TemporaryFile> file;
   auto input = OIIO::ImageInput::create(format);
   if (!input) return fail("this OpenImageIO has no " + format + " reader");
-  std::string name = "texture." + format;
-  if (input->supports("ioproxy")) {
-    if (!input->set_ioproxy(&memory)) return fail("the " + format + " reader cannot read memory");
-  } else {  // (2.4's heif reader reads files only)
-    file = std::make_unique<TemporaryFile>(bytes, size, ".heif");
-    if (!file->ok()) return fail("cannot write a temporary file to decode it");
-    name = file->path();
-  }
+  const std::string name = "texture." + format;
+  if (!input->supports("ioproxy") || !input->set_ioproxy(&memory))
+    return fail("the " + format + " reader cannot read memory");
   OIIO::ImageSpec spec;
   if (!input->open(name, spec, OIIO::ImageSpec())) return fail(input->geterror());
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)

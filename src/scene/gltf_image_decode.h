@@ -1,8 +1,7 @@
 #pragma once
-// Images stb cannot decode but OpenImageIO can (WebP for EXT_texture_webp, DDS for
-// MSFT_texture_dds, AVIF for EXT_texture_avif), read from memory: the bytes may come from a
-// bufferView or a data: URI (AVIF goes through a private temporary file: OpenImageIO 2.4's heif
-// reader reads files only).
+// Images stb cannot decode (WebP for EXT_texture_webp and DDS for MSFT_texture_dds through
+// OpenImageIO, AVIF for EXT_texture_avif through libheif), read from memory: the bytes may come
+// from a bufferView or a data: URI.
 #include <tiny_gltf.h>
 
 #include <cstddef>
