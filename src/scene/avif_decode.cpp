@@ -20,14 +20,13 @@ struct ImageRelease {
 };
 
 bool too_large(int width, int height, size_t max_pixels, int max_side) {
-  return width > max_side || height > max_side ||
-         size_t(width) * size_t(height) > max_pixels;
+  return width > max_side || height > max_side || size_t(width) * size_t(height) > max_pixels;
 }
 
 }  // namespace
 
-bool decode_avif(tinygltf::Image* image, const unsigned char* bytes, size_t size,
-                 size_t max_pixels, int max_side, std::string* err) {
+bool decode_avif(tinygltf::Image* image, const unsigned char* bytes, size_t size, size_t max_pixels,
+                 int max_side, std::string* err) {
   const auto fail = [&](const std::string& why) {
     if (err) *err = why;
     return false;
@@ -62,7 +61,8 @@ bool decode_avif(tinygltf::Image* image, const unsigned char* bytes, size_t size
   const int height = heif_image_get_height(decoded.get(), heif_channel_interleaved);
   const int channels = alpha ? 4 : 3;
   int stride = 0;
-  const uint8_t* plane = heif_image_get_plane_readonly(decoded.get(), heif_channel_interleaved, &stride);
+  const uint8_t* plane =
+      heif_image_get_plane_readonly(decoded.get(), heif_channel_interleaved, &stride);
   if (!plane || width <= 0 || height <= 0 || too_large(width, height, max_pixels, max_side) ||
       heif_image_get_bits_per_pixel(decoded.get(), heif_channel_interleaved) != 8 * channels ||
       stride < width * channels)

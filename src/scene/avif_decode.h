@@ -13,7 +13,7 @@ namespace hipr::gltf {
 // Decodes into `image` as 8-bit RGB or RGBA (with an alpha plane). `max_pixels` and `max_side`
 // bound the size read from the file before anything is decoded, and the decoded image's too.
 // False with `err` set when the bytes cannot be read.
-bool decode_avif(tinygltf::Image* image, const unsigned char* bytes, size_t size,
-                 size_t max_pixels, int max_side, std::string* err);
+bool decode_avif(tinygltf::Image* image, const unsigned char* bytes, size_t size, size_t max_pixels,
+                 int max_side, std::string* err);
 
 }  // namespace hipr::gltf

@@ -31,12 +31,12 @@ std::string format_of(const unsigned char* bytes, size_t size) {
 
 }  // namespace
 
-bool needs_oiio_decoder(const unsigned char* bytes, size_t size) {
+bool needs_extension_decoder(const unsigned char* bytes, size_t size) {
   return !format_of(bytes, size).empty();
 }
 
-bool decode_with_oiio(tinygltf::Image* image, const unsigned char* bytes, size_t size,
-                      size_t max_pixels, int max_side, std::string* err) {
+bool decode_extension_image(tinygltf::Image* image, const unsigned char* bytes, size_t size,
+                            size_t max_pixels, int max_side, std::string* err) {
   const auto fail = [&](const std::string& why) {
     if (err) *err = why;
     return false;

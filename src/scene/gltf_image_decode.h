@@ -10,11 +10,11 @@
 namespace hipr::gltf {
 
 // Whether the bytes start like a WebP (RIFF....WEBP), DDS ("DDS ") or AVIF (....ftypavif) file.
-bool needs_oiio_decoder(const unsigned char* bytes, size_t size);
+bool needs_extension_decoder(const unsigned char* bytes, size_t size);
 
 // Decodes into `image` as 8-bit with 1 to 4 channels. `max_pixels` bounds the size read from
 // the header before any pixel is decoded. False with `err` set when the image cannot be read.
-bool decode_with_oiio(tinygltf::Image* image, const unsigned char* bytes, size_t size,
-                      size_t max_pixels, int max_side, std::string* err);
+bool decode_extension_image(tinygltf::Image* image, const unsigned char* bytes, size_t size,
+                            size_t max_pixels, int max_side, std::string* err);
 
 }  // namespace hipr::gltf

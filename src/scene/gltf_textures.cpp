@@ -114,7 +114,7 @@ TextureReference texture_reference(const tinygltf::Value& extension, const char*
 namespace {
 
 // The image a texture shows: a WebP, AVIF or DDS source (EXT_texture_webp, EXT_texture_avif,
-// MSFT_texture_dds; decoded through OpenImageIO) before the core `source`, which is then the file's
+// MSFT_texture_dds; gltf_image_decode.h) before the core `source`, which is then the file's
 // fallback. A KTX2 source (KHR_texture_basisu) has no packaged decoder: the fallback is used, and
 // without one the file cannot be shown as its author meant, which is an error rather than a guess.
 // An extension's image that could not be decoded (a DDS format hipr does not decode, a broken

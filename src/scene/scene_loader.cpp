@@ -54,10 +54,11 @@ bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* 
     return true;
   };
   size_t& decoded = *static_cast<size_t*>(user);
-  if (gltf::needs_oiio_decoder(bytes, size_t(std::max(size, 0)))) {  // WebP, AVIF, DDS
+  if (gltf::needs_extension_decoder(bytes, size_t(std::max(size, 0)))) {  // WebP, AVIF, DDS
     std::string why;
     const size_t budget = std::min(gltf::kMaxImagePixels, gltf::kMaxScenePixels - decoded);
-    if (!gltf::decode_with_oiio(image, bytes, size_t(size), budget, gltf::kMaxImageSide, &why))
+    if (!gltf::decode_extension_image(image, bytes, size_t(size), budget, gltf::kMaxImageSide,
+                                      &why))
       return refuse("could not be decoded: " + why);
     decoded += size_t(image->width) * size_t(image->height);
     return true;
