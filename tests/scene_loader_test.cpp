@@ -14,6 +14,7 @@
 #include "gltf_document.h"
 #include "hipr/scene_loader.h"
 #include "image/image_io.h"
+#include "scene/base64.h"
 #include "scene/default_camera.h"
 #include "shaders/shared/abi.h"
 #include "test_support.h"
@@ -347,6 +348,25 @@ TEST(WrittenScenes, AnImageViewPastItsBufferIsRefusedBeforeItIsDecoded) {
     doc.gltf["images"][0]["bufferView"] = view;
     doc.gltf["bufferViews"][view]["byteOffset"] = -4;
     expect_refused(doc, "has no valid byteOffset or byteLength");
+  }
+  // A meshopt fallback buffer: tinygltf reads a 4-byte placeholder in its place.
+  Document doc = triangle_document();
+  doc.gltf["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 0}, {"byteLength", 512}});
+  doc.gltf["images"] = json::array({{{"bufferView", doc.gltf["bufferViews"].size() - 1}}});
+  doc.gltf["extensionsUsed"] = {"EXT_meshopt_compression"};
+  doc.gltf["buffers"] =
+      json::array({{{"byteLength", doc.bin.size()},
+                    {"uri", "data:application/octet-stream;base64," + base64_encode(doc.bin)}},
+                   {{"byteLength", 1024},
+                    {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}});
+  const fs::path file = test::temp_dir("refused") / "fallback_image.gltf";
+  std::ofstream(file) << doc.gltf.dump();
+  try {
+    load_scene(file);
+    ADD_FAILURE() << "an image in a meshopt fallback buffer was handed to its decoder";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lies in a meshopt fallback buffer"), std::string::npos)
+        << e.what();
   }
 }
 

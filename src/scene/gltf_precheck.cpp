@@ -121,6 +121,15 @@ void check_image_views(const nlohmann::json& doc, const std::string& name) {
     if (!b || !buffers || *b >= buffers->size() || !(*buffers)[*b].is_object())
       throw InputError(view_name + " names a buffer that does not exist");
     const nlohmann::json& buffer = (*buffers)[*b];
+    // A meshopt fallback buffer has no bytes of its own until its views are decoded, after the
+    // images (gltf_parser_input.h hands tinygltf a 4-byte placeholder for it).
+    const nlohmann::json* meshopt = buffer.contains("extensions") &&
+                                            buffer["extensions"].is_object() &&
+                                            buffer["extensions"].contains("EXT_meshopt_compression")
+                                        ? &buffer["extensions"]["EXT_meshopt_compression"]
+                                        : nullptr;
+    if (meshopt && meshopt->is_object() && meshopt->value("fallback", false) == true)
+      throw InputError(view_name + " lies in a meshopt fallback buffer, which holds no image");
     const std::optional<uint64_t> offset =
         view.contains("byteOffset") ? whole_number(view["byteOffset"]) : uint64_t(0);
     const std::optional<uint64_t> length =
