@@ -110,5 +110,42 @@ TEST(ImageReader, OnlyTheFirstThreeChannelsAreRead) {
   }
 }
 
+// Every format's signature names it, from its own bytes only; one byte short, it names none.
+TEST(ImageSignature, EachFormatIsKnownByItsFirstBytesAlone) {
+  using namespace std::string_literals;  // (the signatures hold NUL bytes)
+  const auto bytes = [](const std::string& text) {
+    return std::vector<unsigned char>(text.begin(), text.end());
+  };
+  const std::vector<std::pair<std::vector<unsigned char>, ImageFormat>> files = {
+      {bytes("\x76\x2f\x31\x01...."s), ImageFormat::OpenExr},
+      {bytes("#?RADIANCE\n"s), ImageFormat::Radiance},
+      {bytes("\x89PNG\r\n\x1a\n...."s), ImageFormat::Png},
+      {bytes("RIFF\x10\0\0\0WEBPVP8 "s), ImageFormat::Webp},
+      {bytes("DDS |\0\0\0"s), ImageFormat::Dds},
+      {bytes("\0\0\0\x1c"
+             "ftypavif"s),
+       ImageFormat::Avif},
+      {bytes("\0\0\0\x1c"
+             "ftypavis"s),
+       ImageFormat::Avif},
+  };
+  for (const auto& [file, format] : files) {
+    EXPECT_EQ(image_format_of(file.data(), file.size()), format) << image_format_name(format);
+    // The shortest prefix that names it: one byte less names nothing.
+    size_t shortest = file.size();
+    while (shortest > 0 && image_format_of(file.data(), shortest - 1) == format) --shortest;
+    ASSERT_GT(shortest, 0u) << image_format_name(format);
+    EXPECT_EQ(image_format_of(file.data(), shortest - 1), std::nullopt)
+        << image_format_name(format);
+  }
+  // Another ISO media brand (HEIC) or RIFF form (WAVE) is not an image hipr reads.
+  const std::vector<unsigned char> heic = bytes(
+      "\0\0\0\x1c"
+      "ftypheic"s);
+  const std::vector<unsigned char> wave = bytes("RIFF\x10\0\0\0WAVEfmt "s);
+  EXPECT_EQ(image_format_of(heic.data(), heic.size()), std::nullopt);
+  EXPECT_EQ(image_format_of(wave.data(), wave.size()), std::nullopt);
+}
+
 }  // namespace
 }  // namespace hipr

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes small GLB scenes whose one texture is a WebP, AVIF or DDS image held in the binary
-chunk, as seeds for the glTF fuzz target (tools/fuzz.sh): the images go to OpenImageIO's own
-readers, and a fuzzer starting from text or PNG-textured scenes would rarely reach them. The
-image bytes lie raw in the GLB, so the fuzzer mutates their headers directly.
+chunk, as seeds for the glTF fuzz target (tools/fuzz.sh): the images go to their own decoders
+(libwebp, libheif, hipr's DDS decoder), which a fuzzer starting from text or PNG-textured scenes
+would rarely reach. The image bytes lie raw in the GLB, so the fuzzer mutates their headers
+directly.
 
 usage: fuzz_texture_seeds.py OUTDIR   (needs oiiotool for the WebP and AVIF images)
 """
@@ -30,23 +31,26 @@ def dds_uncompressed(w, h):
     return b"DDS " + struct.pack("<31I", *header) + texels
 
 
-def dds_dxt1(w, h, mips):
-    """A DXT1 (BC1) DDS with `mips` levels: block-compressed, the reader's other path."""
+def dds_blocks(w, h, mips, four_cc=b"DXT1"):
+    """A block-compressed DDS (DXT1: BC1, DXT5: BC3, ATI2: BC5) with `mips` levels."""
+    block = struct.pack("<HHI", 0xF800, 0x001F, 0x1B1B1B1B)  # BC1 colours, or a BC4 value block
+    if four_cc != b"DXT1":
+        block = struct.pack("<BB6B", 240, 16, 0x88, 0xC6, 0xFA, 0x05, 0x39, 0xA7) + block
     header = [0] * 31
     header[0] = 124
     header[1] = 0x1 | 0x2 | 0x4 | 0x1000 | 0x80000 | (0x20000 if mips > 1 else 0)  # LINEARSIZE, MIPMAPCOUNT
     header[2], header[3] = h, w
-    header[4] = max(1, (w + 3) // 4) * max(1, (h + 3) // 4) * 8
+    header[4] = max(1, (w + 3) // 4) * max(1, (h + 3) // 4) * len(block)
     header[6] = mips
     header[18] = 32
     header[19] = 0x4                         # FOURCC
-    header[20] = struct.unpack("<I", b"DXT1")[0]
+    header[20] = struct.unpack("<I", four_cc)[0]
     header[26] = 0x1000 | (0x400008 if mips > 1 else 0)
     blocks = b""
     lw, lh = w, h
     for _ in range(mips):
         n = max(1, (lw + 3) // 4) * max(1, (lh + 3) // 4)
-        blocks += struct.pack("<HHI", 0xF800, 0x001F, 0x1B1B1B1B) * n
+        blocks += block * n
         lw, lh = max(1, lw // 2), max(1, lh // 2)
     return b"DDS " + struct.pack("<31I", *header) + blocks
 
@@ -102,7 +106,9 @@ def main():
     os.makedirs(out, exist_ok=True)
     seeds = {
         "texture_dds_bgra.glb": (dds_uncompressed(4, 3), "image/vnd-ms.dds", "MSFT_texture_dds"),
-        "texture_dds_dxt1.glb": (dds_dxt1(8, 8, 4), "image/vnd-ms.dds", "MSFT_texture_dds"),
+        "texture_dds_dxt1.glb": (dds_blocks(8, 8, 4), "image/vnd-ms.dds", "MSFT_texture_dds"),
+        "texture_dds_dxt5.glb": (dds_blocks(6, 5, 1, b"DXT5"), "image/vnd-ms.dds", "MSFT_texture_dds"),
+        "texture_dds_ati2.glb": (dds_blocks(8, 4, 2, b"ATI2"), "image/vnd-ms.dds", "MSFT_texture_dds"),
         "texture_webp.glb": (oiio_image("webp"), "image/webp", "EXT_texture_webp"),
         "texture_avif.glb": (oiio_image("avif"), "image/avif", "EXT_texture_avif"),
     }

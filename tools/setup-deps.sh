@@ -18,7 +18,7 @@ packages=(
   libvulkan-dev vulkan-validationlayers vulkan-tools
   glslang-dev glslang-tools spirv-tools
   libglfw3-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
-  libdraco-dev libmeshoptimizer-dev libheif-dev
+  libdraco-dev libmeshoptimizer-dev libheif-dev libwebp-dev
   libopenimageio-dev openimageio-tools libimath-dev libopenexr-dev
   libimgui-dev libcli11-dev libgtest-dev
   xvfb xauth python3-matplotlib

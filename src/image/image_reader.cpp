@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <fstream>
 
 #include "core/error.h"
@@ -11,24 +10,18 @@
 namespace hipr {
 namespace {
 
-struct FormatInfo {
-  ImageFormat format;
-  const char* reader;  // OpenImageIO's name for its reader
-  const char* name;    // as the error message says it
-  const char* magic;   // the bytes every file of the format starts with
-  size_t magic_size;
-};
-
-constexpr std::array<FormatInfo, 3> kFormats{{
-    {ImageFormat::OpenExr, "openexr", "OpenEXR", "\x76\x2f\x31\x01", 4},
-    {ImageFormat::Radiance, "hdr", "Radiance .hdr", "#?", 2},  // #?RADIANCE or #?RGBE
-    {ImageFormat::Png, "png", "PNG", "\x89PNG\r\n\x1a\n", 8},
-}};
-
-const FormatInfo& info_of(ImageFormat format) {
-  for (const FormatInfo& info : kFormats)
-    if (info.format == format) return info;
-  throw InternalError("open_image_reader: unknown image format");
+// OpenImageIO's reader for each whole-image format hipr reads.
+const char* reader_of(ImageFormat format) {
+  switch (format) {
+    case ImageFormat::OpenExr:
+      return "openexr";
+    case ImageFormat::Radiance:
+      return "hdr";
+    case ImageFormat::Png:
+      return "png";
+    default:
+      throw InternalError("open_image_reader: no whole-image reader for this format");
+  }
 }
 
 // "A", "A or B", "A, B or C": the formats a use accepts, for its error message.
@@ -40,7 +33,7 @@ std::string names_of(std::initializer_list<ImageFormat> accepted) {
     names += std::string(named == 1                 ? ""
                          : named == accepted.size() ? " or "
                                                     : ", ") +
-             info_of(format).name;
+             image_format_name(format);
   }
   return names;
 }
@@ -53,14 +46,12 @@ std::unique_ptr<OIIO::ImageInput> open_image_reader(const std::filesystem::path&
   const std::string named = what + " " + path.string();
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError("cannot read " + named);
-  std::array<char, 8> head{};
+  std::array<char, kImageSignatureBytes> head{};
   file.read(head.data(), std::streamsize(head.size()));
-  const size_t size = size_t(file.gcount());
-  const auto match = std::find_if(accepted.begin(), accepted.end(), [&](ImageFormat format) {
-    const FormatInfo& info = info_of(format);
-    return size >= info.magic_size && std::memcmp(head.data(), info.magic, info.magic_size) == 0;
-  });
-  if (match == accepted.end()) throw InputError(named + " is not " + names_of(accepted));
+  const std::optional<ImageFormat> format =
+      image_format_of(reinterpret_cast<const unsigned char*>(head.data()), size_t(file.gcount()));
+  if (!format || std::find(accepted.begin(), accepted.end(), *format) == accepted.end())
+    throw InputError(named + " is not " + names_of(accepted));
 
   std::error_code ec;
   const uintmax_t bytes = std::filesystem::file_size(path, ec);
@@ -76,12 +67,12 @@ std::unique_ptr<OIIO::ImageInput> open_image_reader(const std::filesystem::path&
                        std::to_string(max_texels) + " texels)");
   };
   // OpenEXR allocates by its header's claims while parsing it: they are checked before.
-  if (*match == ImageFormat::OpenExr)
+  if (*format == ImageFormat::OpenExr)
     if (const auto window = scan_exr_header(path)) check_size(window->width, window->height);
 
-  const FormatInfo& info = info_of(*match);
-  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(info.reader);
-  if (!input) throw InternalError(std::string("OpenImageIO has no ") + info.reader + " reader");
+  const char* reader = reader_of(*format);
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(reader);
+  if (!input) throw InternalError(std::string("OpenImageIO has no ") + reader + " reader");
   OIIO::ImageSpec spec;
   if (!input->open(path.string(), spec))
     throw InputError("cannot read " + named + ": " + input->geterror());

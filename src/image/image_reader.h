@@ -7,19 +7,18 @@
 #include <memory>
 #include <string>
 
+#include "image/image_signature.h"
+
 namespace hipr {
 
-// The whole-image formats hipr reads: renders and references to compare, environment maps.
-enum class ImageFormat { OpenExr, Radiance, Png };
-
-// Opens `path` with the reader its first bytes name, one of `accepted`, and no other. OpenImageIO
-// alone, when the reader the file's extension names refuses it, offers the file to every reader
-// it has, some of which trust whatever their header claims (fuzzing found a negative-size copy
-// in the IFF reader). Every size a header claims is checked before anything is allocated for it:
-// an OpenEXR header is walked before OpenEXR parses it (exr_header.h), and the opened image must
-// have a channel, at most `max_texels` texels, and no more than its file can hold
-// (plausible_image_size). A file of another format or of none, or a claim beyond those, is an
-// InputError in one line naming `what`.
+// Opens `path` with the reader its first bytes name (image_signature.h), one of `accepted` (of
+// the whole-image formats OpenExr, Radiance and Png), and no other. OpenImageIO alone, when the
+// reader the file's extension names refuses it, offers the file to every reader it has, some of
+// which trust whatever their header claims (fuzzing found a negative-size copy in the IFF reader).
+// Every size a header claims is checked before anything is allocated for it: an OpenEXR header is
+// walked before OpenEXR parses it (exr_header.h), and the opened image must have a channel, at most
+// `max_texels` texels, and no more than its file can hold (plausible_image_size). A file of another
+// format or of none, or a claim beyond those, is an InputError in one line naming `what`.
 std::unique_ptr<OIIO::ImageInput> open_image_reader(const std::filesystem::path& path,
                                                     std::initializer_list<ImageFormat> accepted,
                                                     const std::string& what, int64_t max_texels);

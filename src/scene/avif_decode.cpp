@@ -6,6 +6,8 @@
 #include <memory>
 #include <vector>
 
+#include "scene/decoded_texture.h"
+
 namespace hipr::gltf {
 namespace {
 
@@ -18,10 +20,6 @@ struct HandleRelease {
 struct ImageRelease {
   void operator()(const heif_image* i) const { heif_image_release(i); }
 };
-
-bool too_large(int width, int height, size_t max_pixels, int max_side) {
-  return width > max_side || height > max_side || size_t(width) * size_t(height) > max_pixels;
-}
 
 }  // namespace
 
@@ -44,10 +42,9 @@ bool decode_avif(tinygltf::Image* image, const unsigned char* bytes, size_t size
   const std::unique_ptr<const heif_image_handle, HandleRelease> handle(raw_handle);
   const int claimed_width = heif_image_handle_get_width(handle.get());
   const int claimed_height = heif_image_handle_get_height(handle.get());
-  if (claimed_width <= 0 || claimed_height <= 0) return fail("image has no pixels");
-  if (too_large(claimed_width, claimed_height, max_pixels, max_side))
-    return fail("is " + std::to_string(claimed_width) + "x" + std::to_string(claimed_height) +
-                ", beyond hipr's limit");
+  if (std::string why = texture_size_problem(claimed_width, claimed_height, max_pixels, max_side);
+      !why.empty())
+    return fail(why);
 
   const bool alpha = heif_image_handle_has_alpha_channel(handle.get()) != 0;
   heif_image* raw_image = nullptr;
@@ -63,7 +60,7 @@ bool decode_avif(tinygltf::Image* image, const unsigned char* bytes, size_t size
   int stride = 0;
   const uint8_t* plane =
       heif_image_get_plane_readonly(decoded.get(), heif_channel_interleaved, &stride);
-  if (!plane || width <= 0 || height <= 0 || too_large(width, height, max_pixels, max_side) ||
+  if (!plane || !texture_size_problem(width, height, max_pixels, max_side).empty() ||
       heif_image_get_bits_per_pixel(decoded.get(), heif_channel_interleaved) != 8 * channels ||
       stride < width * channels)
     return fail("decoded to no usable 8-bit RGB image");
@@ -71,12 +68,7 @@ bool decode_avif(tinygltf::Image* image, const unsigned char* bytes, size_t size
   const size_t row = size_t(width) * size_t(channels);
   for (int y = 0; y < height; ++y)
     std::memcpy(pixels.data() + size_t(y) * row, plane + size_t(y) * size_t(stride), row);
-  image->width = width;
-  image->height = height;
-  image->component = channels;
-  image->bits = 8;
-  image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-  image->image = std::move(pixels);
+  store_texels(image, width, height, channels, std::move(pixels));
   return true;
 }
 

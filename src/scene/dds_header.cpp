@@ -9,15 +9,15 @@ namespace hipr::gltf {
 namespace {
 
 // Offsets into the file: "DDS " then DDS_HEADER (124 bytes) with its DDS_PIXELFORMAT at 76.
-constexpr size_t kHeaderEnd = 128;
+constexpr size_t kHeaderEnd = kDdsTexelsAt;
 constexpr size_t kSize = 4, kFlags = 8, kHeight = 12, kWidth = 16, kDepth = 24, kMipCount = 28;
 constexpr size_t kFormatSize = 76, kFormatFlags = 80, kFourCc = 84, kBitCount = 88, kMasks = 92;
 constexpr size_t kCaps2 = 112;
 
 constexpr uint32_t kFlagDepth = 0x800000;
 constexpr uint32_t kFlagMipCount = 0x20000;
-constexpr uint32_t kFormatAlphaPixels = 0x1, kFormatAlphaOnly = 0x2, kFormatFourCc = 0x4,
-                   kFormatRgb = 0x40, kFormatLuminance = 0x20000;
+constexpr uint32_t kFormatAlphaPixels = kDdsAlphaPixels, kFormatAlphaOnly = kDdsAlphaOnly,
+                   kFormatFourCc = 0x4, kFormatRgb = kDdsRgb, kFormatLuminance = kDdsLuminance;
 constexpr uint32_t kCaps2CubeMap = 0x200, kCaps2Volume = 0x200000;
 
 uint32_t u32(const unsigned char* bytes, size_t at) {
@@ -29,14 +29,16 @@ uint32_t u32(const unsigned char* bytes, size_t at) {
 struct BlockFormat {
   const char* four_cc;
   uint32_t block_bytes;  // per 4 x 4 texels
+  DdsLayout::Kind kind;
 };
-constexpr std::array<BlockFormat, 7> kBlockFormats{{{"DXT1", 8},
-                                                    {"DXT3", 16},
-                                                    {"DXT5", 16},
-                                                    {"ATI1", 8},
-                                                    {"BC4U", 8},
-                                                    {"ATI2", 16},
-                                                    {"BC5U", 16}}};
+using Kind = DdsLayout::Kind;
+constexpr std::array<BlockFormat, 7> kBlockFormats{{{"DXT1", 8, Kind::Bc1},
+                                                    {"DXT3", 16, Kind::Bc2},
+                                                    {"DXT5", 16, Kind::Bc3},
+                                                    {"ATI1", 8, Kind::Bc4},
+                                                    {"BC4U", 8, Kind::Bc4},
+                                                    {"ATI2", 16, Kind::Bc5},
+                                                    {"BC5U", 16, Kind::Bc5}}};
 
 // The four characters of a FourCC as text, unprintable ones as '?'.
 std::string printable(const unsigned char* bytes) {
@@ -49,6 +51,11 @@ std::string printable(const unsigned char* bytes) {
 }  // namespace
 
 std::string dds_header_problem(const unsigned char* bytes, size_t size) {
+  DdsLayout layout;
+  return read_dds_header(bytes, size, &layout);
+}
+
+std::string read_dds_header(const unsigned char* bytes, size_t size, DdsLayout* layout) {
   if (size < kHeaderEnd || std::memcmp(bytes, "DDS ", 4) != 0)
     return "is too short for a DDS header";
   if (u32(bytes, kSize) != 124 || u32(bytes, kFormatSize) != 32)
@@ -70,6 +77,7 @@ std::string dds_header_problem(const unsigned char* bytes, size_t size) {
              ", which hipr does not decode (it decodes DXT1, DXT3, DXT5, ATI1/BC4U, ATI2/BC5U "
              "and uncompressed texels)";
     top_level_bytes = ((width + 3) / 4) * ((height + 3) / 4) * block->block_bytes;
+    layout->kind = block->kind;
   } else if (format & (kFormatRgb | kFormatLuminance | kFormatAlphaOnly)) {
     const uint32_t bits = u32(bytes, kBitCount);
     if (bits != 8 && bits != 16 && bits != 24 && bits != 32)
@@ -86,6 +94,10 @@ std::string dds_header_problem(const unsigned char* bytes, size_t size) {
       return "is uncompressed DDS whose channel masks do not fit its " + std::to_string(bits) +
              " bits";
     top_level_bytes = width * height * (bits / 8);
+    layout->kind = Kind::Uncompressed;
+    layout->texel_bytes = bits / 8;
+    layout->format_flags = format;
+    for (size_t k = 0; k < 4; ++k) layout->masks[k] = mask(k);
   } else {
     return "is DDS of no pixel format hipr decodes";
   }
@@ -96,6 +108,8 @@ std::string dds_header_problem(const unsigned char* bytes, size_t size) {
     for (uint64_t side = std::max(width, height); side > 1; side /= 2) ++levels;
     if (u32(bytes, kMipCount) > levels) return "is DDS with more mip levels than its size has";
   }
+  layout->width = uint32_t(width);
+  layout->height = uint32_t(height);
   return "";
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// Images stb cannot decode (WebP for EXT_texture_webp and DDS for MSFT_texture_dds through
-// OpenImageIO, AVIF for EXT_texture_avif through libheif), read from memory: the bytes may come
-// from a bufferView or a data: URI.
+// Images stb cannot decode, read from memory (the bytes may come from a bufferView or a data:
+// URI): WebP for EXT_texture_webp (libwebp, webp_decode.h), DDS for MSFT_texture_dds (hipr's own
+// decoder, dds_decode.h), AVIF for EXT_texture_avif (libheif, avif_decode.h).
 #include <tiny_gltf.h>
 
 #include <cstddef>
@@ -9,7 +9,7 @@
 
 namespace hipr::gltf {
 
-// Whether the bytes start like a WebP (RIFF....WEBP), DDS ("DDS ") or AVIF (....ftypavif) file.
+// Whether the bytes start like a WebP, DDS or AVIF file (image_signature.h).
 bool needs_extension_decoder(const unsigned char* bytes, size_t size);
 
 // Decodes into `image` as 8-bit with 1 to 4 channels. `max_pixels` bounds the size read from

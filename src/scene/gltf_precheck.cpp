@@ -46,9 +46,9 @@ const std::vector<GltfExtension>& gltf_extension_table() {
       {"KHR_draco_mesh_compression", "decoded with libdraco at load"},
       {"EXT_meshopt_compression", "decoded with libmeshoptimizer at load (every mode and filter)"},
       {"KHR_mesh_quantization", "integer and normalized attributes, dequantized at load"},
-      {"EXT_texture_webp", "WebP images, decoded with OpenImageIO"},
+      {"EXT_texture_webp", "WebP images, decoded with libwebp"},
       {"EXT_texture_avif", "AVIF images, decoded with libheif"},
-      {"MSFT_texture_dds", "DDS images (BC1-BC5, uncompressed), decoded with OpenImageIO"},
+      {"MSFT_texture_dds", "DDS images (BC1-BC5, uncompressed; the top level), decoded by hipr"},
       {"KHR_texture_basisu",
        "KTX2 images cannot be decoded (no packaged decoder): the fallback image is used"},
       {"KHR_xmp_json_ld", "XMP metadata: not shown, kept as it was when saving"},
@@ -96,7 +96,7 @@ std::optional<uint64_t> whole_number(const nlohmann::json& value) {
 }
 
 // Every image held in a bufferView lies inside its buffer. tinygltf hands an image's view to the
-// image decoder (stb_image, libheif for AVIF, OpenImageIO for WebP and DDS) as the view claims it,
+// image decoder (stb_image, or gltf_image_decode for WebP, AVIF and DDS) as the view claims it,
 // without comparing it with the buffer's bytes: a view longer than its buffer had the decoder read
 // past the buffer's end (found by fuzzing). A buffer holds exactly its byteLength once tinygltf has
 // read it (it refuses a shorter file, data URI or GLB chunk), so the JSON alone tells.
