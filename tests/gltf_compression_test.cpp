@@ -5,6 +5,8 @@
 // quantization and WebP load as the same geometry and texels as their originals.
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
+#include <webp/decode.h>
+#include <webp/encode.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -264,6 +266,33 @@ TEST(TextureSources, DdsIsPreferredToTheFallback) {
   EXPECT_EQ(texel[0], 180);
   EXPECT_EQ(texel[1], 120);
   EXPECT_EQ(texel[2], 200);
+}
+
+// glTF colours are not premultiplied by alpha. OpenImageIO's WebP reader, which hipr used before
+// libwebp, handed texels premultiplied (a half-transparent texel at half its colour).
+TEST(TextureSources, AWebpKeepsTheColourOfItsTranslucentTexels) {
+  const fs::path dir = test::temp_dir("webp_alpha");
+  std::vector<uint8_t> rgba;
+  // (Alpha from 15 up: the encoder may drop the colour of a wholly transparent texel.)
+  for (int i = 0; i < 16; ++i)
+    rgba.insert(rgba.end(), {200, uint8_t(16 * i), 40, uint8_t(15 + 15 * i)});
+  uint8_t* encoded = nullptr;
+  const size_t size = WebPEncodeLosslessRGBA(rgba.data(), 4, 4, 16, &encoded);
+  ASSERT_GT(size, 0u);
+  test::write_bytes(dir / "texels.webp", std::vector<unsigned char>(encoded, encoded + size));
+  WebPFree(encoded);
+  test::Document doc = test::triangle_document();
+  const int uv = doc.add_accessor(std::vector<float>{0, 0, 1, 0, 0, 1}, test::kFloat, "VEC2", 3);
+  doc.primitive()["attributes"]["TEXCOORD_0"] = uv;
+  doc.gltf["images"] = json::array({{{"uri", "texels.webp"}}});
+  doc.gltf["textures"] = json::array({{{"extensions", {{"EXT_texture_webp", {{"source", 0}}}}}}});
+  doc.gltf["extensionsUsed"] = {"EXT_texture_webp"};
+  doc.gltf["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
+  test::write_document(dir / "webp.gltf", doc);
+  const Scene scene = load_scene(dir / "webp.gltf");
+  ASSERT_EQ(scene.images.size(), 1u);
+  ASSERT_EQ(scene.images[0].width, 4u);
+  EXPECT_EQ(scene.images[0].rgba8, rgba) << "lossless: every texel as written, colour unscaled";
 }
 
 TEST(TextureSources, ADdsTheReaderWouldTripOnIsRefusedAndItsFallbackShown) {

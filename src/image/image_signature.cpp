@@ -12,7 +12,7 @@ struct Signature {
   size_t at;          // where the bytes are
   const char* bytes;  // what every file of the format has there
   size_t size;
-  const char* also;   // and, when not null, these 4 bytes at 8 (WebP's form type, AVIF's brand)
+  const char* also;  // and, when not null, these 4 bytes at 8 (WebP's form type, AVIF's brand)
 };
 
 // AVIF has two brands (a still image, a sequence): two rows.
