@@ -62,6 +62,10 @@ std::string read_dds_header(const unsigned char* bytes, size_t size, DdsLayout* 
     return "has a malformed DDS header";
   const uint64_t width = u32(bytes, kWidth), height = u32(bytes, kHeight);
   if (width == 0 || height == 0) return "is a DDS image without texels";
+  // (So that the sizes below cannot overflow; Direct3D's largest texture is 16384 a side.)
+  if (width > (1u << 24) || height > (1u << 24))
+    return "is a DDS image larger than any texture (" + std::to_string(width) + "x" +
+           std::to_string(height) + ")";
   if ((u32(bytes, kCaps2) & (kCaps2CubeMap | kCaps2Volume)) != 0 ||
       ((u32(bytes, kFlags) & kFlagDepth) != 0 && u32(bytes, kDepth) > 1))
     return "is a DDS cube map or volume, not a 2D texture";
