@@ -322,7 +322,8 @@ TEST(TextureSources, ADdsTheReaderWouldTripOnIsRefusedAndItsFallbackShown) {
 
 TEST(DdsHeader, OnlyTheKindsTheReaderDecodesPass) {
   const auto problem = [](std::vector<unsigned char> dds) {
-    return gltf::dds_header_problem(dds.data(), dds.size());
+    gltf::DdsLayout layout;
+    return gltf::read_dds_header(dds.data(), dds.size(), &layout);
   };
   const auto with = [](std::vector<unsigned char> dds, size_t at, uint32_t value) {
     std::memcpy(dds.data() + at, &value, 4);

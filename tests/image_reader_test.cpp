@@ -110,6 +110,26 @@ TEST(ImageReader, OnlyTheFirstThreeChannelsAreRead) {
   }
 }
 
+// A PNG's alpha is not a colour: its translucent pixels are read, and written, with the colours
+// the file stores, the same as an opaque PNG of those colours (OpenImageIO's default multiplies
+// them by alpha when reading and divides them by it when writing).
+TEST(ImageReader, APngsColoursAreReadAsStoredWhateverItsAlpha) {
+  const fs::path dir = test::temp_dir("image_reader");
+  const std::vector<uint8_t> colours = {200, 100, 50, 10, 20, 30, 255, 128, 0, 90, 90, 90};
+  std::vector<uint8_t> translucent;
+  const uint8_t alphas[] = {128, 1, 255, 0};
+  for (size_t i = 0; i < 4; ++i) {
+    translucent.insert(translucent.end(), colours.begin() + 3 * i, colours.begin() + 3 * i + 3);
+    translucent.push_back(alphas[i]);
+  }
+  write_png8(dir / "opaque.png", 2, 2, 3, colours);
+  write_png8(dir / "translucent.png", 2, 2, 4, translucent);
+  const ImageRGB opaque = read_image(dir / "opaque.png");
+  const ImageRGB read = read_image(dir / "translucent.png");
+  EXPECT_NEAR(opaque.rgb[0], 200.0f / 255.0f, 1e-6f);
+  EXPECT_EQ(read.rgb, opaque.rgb);
+}
+
 // Every format's signature names it, from its own bytes only; one byte short, it names none.
 TEST(ImageSignature, EachFormatIsKnownByItsFirstBytesAlone) {
   using namespace std::string_literals;  // (the signatures hold NUL bytes)

@@ -68,7 +68,10 @@ void write_png8(const fs::path& path, uint32_t width, uint32_t height, uint32_t 
   write_atomically(path, [&](const fs::path& temp) {
     auto out = OIIO::ImageOutput::create("png");
     if (!out) throw InternalError("OpenImageIO has no .png writer");
-    const OIIO::ImageSpec spec(int(width), int(height), int(channels), OIIO::TypeDesc::UINT8);
+    OIIO::ImageSpec spec(int(width), int(height), int(channels), OIIO::TypeDesc::UINT8);
+    // As they are: without the hint OpenImageIO takes RGBA for premultiplied and divides the
+    // colours by alpha on the way out.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!out->open(temp.string(), spec))
       throw InputError("cannot write " + path.string() + ": " + out->geterror());
     const bool ok = out->write_image(OIIO::TypeDesc::UINT8, pixels.data());

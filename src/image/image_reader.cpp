@@ -74,7 +74,12 @@ std::unique_ptr<OIIO::ImageInput> open_image_reader(const std::filesystem::path&
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(reader);
   if (!input) throw InternalError(std::string("OpenImageIO has no ") + reader + " reader");
   OIIO::ImageSpec spec;
-  if (!input->open(path.string(), spec))
+  // Colours as the file stores them: OpenImageIO would multiply a PNG's by its alpha, which is
+  // not a colour (`compare` judged a translucent pixel's colour scaled by its alpha). OpenEXR and
+  // Radiance store no unassociated alpha: the hint changes nothing there.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  if (!input->open(path.string(), spec, config))
     throw InputError("cannot read " + named + ": " + input->geterror());
   if (input->spec().nchannels < 1) throw InputError(named + " has no channels");
   check_size(input->spec().width, input->spec().height);

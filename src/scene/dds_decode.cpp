@@ -127,27 +127,40 @@ uint8_t to_8_bits(uint32_t value, int bits) {
   return uint8_t(out >> (filled - 8));
 }
 
-// The masks of the channels an uncompressed texel has: R, G, B or luminance, then alpha.
-std::vector<uint32_t> channel_masks(const DdsLayout& layout) {
+// Where one channel of an uncompressed texel lies: its mask, the mask's lowest set bit and its
+// width (read_dds_header refuses a zero mask for a channel the flags name).
+struct ChannelField {
+  uint32_t mask;
+  int shift;
+  int bits;
+};
+
+// The channels an uncompressed texel has: R, G, B or luminance, then alpha.
+std::vector<ChannelField> channel_fields(const DdsLayout& layout) {
   std::vector<uint32_t> masks;
   if (layout.format_flags & kDdsRgb)
     masks = {layout.masks[0], layout.masks[1], layout.masks[2]};
   else if (layout.format_flags & kDdsLuminance)
     masks = {layout.masks[0]};
   if (layout.format_flags & (kDdsAlphaPixels | kDdsAlphaOnly)) masks.push_back(layout.masks[3]);
-  return masks;
+  std::vector<ChannelField> fields;
+  for (const uint32_t mask : masks) {
+    const int shift = std::countr_zero(mask);
+    fields.push_back({mask, shift, int(std::bit_width(mask >> shift))});
+  }
+  return fields;
 }
 
 std::vector<unsigned char> decode_uncompressed(const DdsLayout& layout, const unsigned char* texels,
-                                               int channels) {
-  const std::vector<uint32_t> masks = channel_masks(layout);
+                                               const std::vector<ChannelField>& fields) {
+  const size_t channels = fields.size();
   const size_t count = size_t(layout.width) * layout.height;
-  std::vector<unsigned char> pixels(count * size_t(channels));
+  std::vector<unsigned char> pixels(count * channels);
   for (size_t i = 0; i < count; ++i) {
     const uint32_t texel = little_endian(texels + i * layout.texel_bytes, layout.texel_bytes);
-    for (int c = 0; c < channels; ++c)
-      pixels[i * channels + c] = to_8_bits((texel & masks[c]) >> std::countr_zero(masks[c]),
-                                           std::bit_width(masks[c] >> std::countr_zero(masks[c])));
+    for (size_t c = 0; c < channels; ++c)
+      pixels[i * channels + c] =
+          to_8_bits((texel & fields[c].mask) >> fields[c].shift, fields[c].bits);
   }
   return pixels;
 }
@@ -172,8 +185,9 @@ bool decode_dds(tinygltf::Image* image, const unsigned char* bytes, size_t size,
     store_texels(image, width, height, block_channels(layout.kind), decode_blocks(layout, texels));
     return true;
   }
-  const int channels = int(channel_masks(layout).size());
-  store_texels(image, width, height, channels, decode_uncompressed(layout, texels, channels));
+  const std::vector<ChannelField> fields = channel_fields(layout);
+  store_texels(image, width, height, int(fields.size()),
+               decode_uncompressed(layout, texels, fields));
   return true;
 }
 

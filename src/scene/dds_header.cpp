@@ -50,11 +50,6 @@ std::string printable(const unsigned char* bytes) {
 
 }  // namespace
 
-std::string dds_header_problem(const unsigned char* bytes, size_t size) {
-  DdsLayout layout;
-  return read_dds_header(bytes, size, &layout);
-}
-
 std::string read_dds_header(const unsigned char* bytes, size_t size, DdsLayout* layout) {
   if (size < kHeaderEnd || std::memcmp(bytes, "DDS ", 4) != 0)
     return "is too short for a DDS header";

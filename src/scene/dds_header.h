@@ -25,15 +25,12 @@ constexpr size_t kDdsTexelsAt = 128;
 constexpr uint32_t kDdsAlphaPixels = 0x1, kDdsAlphaOnly = 0x2, kDdsRgb = 0x40,
                    kDdsLuminance = 0x20000;
 
-// Fills `layout` and returns "" when dds_header_problem would; otherwise returns its reason.
+// "" when the bytes are a DDS file of the kinds real glTF assets ship and hipr decodes, with
+// `layout` filled: one 2D image (no cube map, no volume), block-compressed as BC1, BC2, BC3
+// (DXT1, DXT3, DXT5), BC4 or BC5 (ATI1/BC4U, ATI2/BC5U), or uncompressed with 8, 16, 24 or 32
+// bits a texel, a mask for every channel its flags name and every mask within the texel; its top
+// level wholly inside the bytes, and no more mip levels than its size has. Otherwise why not, for
+// a warning ("... is DXT2, which ...").
 std::string read_dds_header(const unsigned char* bytes, size_t size, DdsLayout* layout);
-
-// Empty when the bytes are a DDS file of the kinds real glTF assets ship and hipr decodes:
-// one 2D image (no cube map, no volume), block-compressed as BC1, BC2, BC3 (DXT1, DXT3, DXT5),
-// BC4 or BC5 (ATI1/BC4U, ATI2/BC5U), or uncompressed with 8, 16, 24 or 32 bits a texel, a mask
-// for every channel its flags name and every mask within the texel; its top level wholly inside the
-// bytes, and no more mip levels than its size has. Otherwise why not, for a warning ("... is DXT2,
-// which ...").
-std::string dds_header_problem(const unsigned char* bytes, size_t size);
 
 }  // namespace hipr::gltf

@@ -15,6 +15,7 @@
 #include "hipr/edits.h"
 #include "hipr/scene_loader.h"
 #include "image/builtin_environments.h"
+#include "scene/decoded_texture.h"
 #include "scene/default_camera.h"
 #include "scene/glb_container.h"
 #include "scene/gltf_accessors.h"
@@ -65,10 +66,10 @@ bool lenient_image_loader(tinygltf::Image* image, const int index, std::string* 
   }
   int w = 0, h = 0, channels = 0;
   if (stbi_info_from_memory(bytes, size, &w, &h, &channels)) {
-    if (w > gltf::kMaxImageSide || h > gltf::kMaxImageSide ||
-        size_t(w) * size_t(h) > gltf::kMaxImagePixels)
-      return refuse("is " + std::to_string(w) + "x" + std::to_string(h) +
-                    ", beyond hipr's limit (" + std::to_string(gltf::kMaxImageSide) + " a side, " +
+    if (std::string why =
+            gltf::texture_size_problem(w, h, gltf::kMaxImagePixels, gltf::kMaxImageSide);
+        !why.empty())
+      return refuse(why + " (" + std::to_string(gltf::kMaxImageSide) + " a side, " +
                     std::to_string(gltf::kMaxImagePixels) + " pixels): not decoded");
     if (decoded + size_t(w) * size_t(h) > gltf::kMaxScenePixels)
       return refuse("would take the scene's images beyond " +
