@@ -14,6 +14,8 @@
 #include "hipr/scene_loader.h"
 #include "image/builtin_environments.h"
 #include "image/environment_loader.h"
+#include "image/image_compare.h"
+#include "image/image_io.h"
 #include "render/bvh_builder.h"
 #include "render/light_groups.h"
 #include "render/light_tables.h"
@@ -175,6 +177,33 @@ void load_environment_bytes(const uint8_t* data, size_t size, const std::filesys
     (void)load_environment(path);
   } catch (const InputError&) {
   }
+}
+
+void read_image_bytes(const uint8_t* data, size_t size, const std::filesystem::path& folder) {
+  // The name says PNG; the content picks the reader (image_reader.h).
+  const std::filesystem::path path = write_alone(data, size, folder, "image.png");
+  ImageRGB image;
+  try {
+    image = read_image(path);
+  } catch (const InputError&) {
+    return;
+  }
+  require(image.width > 0 && image.height > 0 &&
+          image.rgb.size() == size_t(image.width) * image.height * 3);
+  // FLIP filters every pixel: larger images would slow the fuzzer without reaching new code.
+  if (image.rgb.size() > 3 * 4096) return;
+  ImageRGB off = image;
+  off.rgb[0] = off.rgb[0] + 0.5f;
+  for (const CompareMetric metric :
+       {CompareMetric::Flip, CompareMetric::RelMse, CompareMetric::Rmse, CompareMetric::Max})
+    for (const ImageRGB* other : {&image, &off}) {
+      const ImageComparison same = compare_images(image, *other, metric, 0.0, 99.0);
+      const ImageComparison whole = compare_images(image, *other, metric, 0.0);
+      require(same.pixel_error.size() == size_t(image.width) * image.height);
+      require(!std::isnan(whole.value) && !std::isnan(same.value));
+      // A finite image is the same as itself.
+      if (other == &image && whole.nonfinite_pixels == 0) require(whole.value == 0.0);
+    }
 }
 
 }  // namespace hipr::fuzz

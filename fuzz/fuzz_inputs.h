@@ -24,4 +24,9 @@ void apply_edit_script_bytes(const uint8_t* data, size_t size, const std::filesy
 // The bytes as an environment image: .exr when they start with OpenEXR's magic, else .hdr.
 void load_environment_bytes(const uint8_t* data, size_t size, const std::filesystem::path& folder);
 
+// The bytes as an image `hipr compare` reads (OpenEXR, PNG or Radiance, told apart by content),
+// then compared with itself and with a copy one texel off in every metric, as a screenshot
+// regression suite's files are.
+void read_image_bytes(const uint8_t* data, size_t size, const std::filesystem::path& folder);
+
 }  // namespace hipr::fuzz

@@ -1,5 +1,5 @@
 // One libFuzzer target per input kind (HIPR_FUZZ_TARGET: 0 glTF, 1 edit script, 2 environment
-// image); see fuzz_inputs.h and tools/fuzz.sh.
+// image, 3 an image `compare` reads); see fuzz_inputs.h and tools/fuzz.sh.
 #include <unistd.h>
 
 #include <cstddef>
@@ -30,8 +30,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   hipr::fuzz::load_gltf_bytes(data, size, scratch());
 #elif HIPR_FUZZ_TARGET == 1
   hipr::fuzz::apply_edit_script_bytes(data, size, HIPR_ASSETS_DIR);
-#else
+#elif HIPR_FUZZ_TARGET == 2
   hipr::fuzz::load_environment_bytes(data, size, scratch());
+#else
+  hipr::fuzz::read_image_bytes(data, size, scratch());
 #endif
   return 0;
 }

@@ -54,5 +54,12 @@ TEST(FuzzRegressions, EnvironmentInputs) {
   });
 }
 
+TEST(FuzzRegressions, ImageInputs) {
+  const fs::path folder = test::temp_dir("fuzz_image");
+  replay_all("image", [&](const std::vector<uint8_t>& d) {
+    fuzz::read_image_bytes(d.data(), d.size(), folder);
+  });
+}
+
 }  // namespace
 }  // namespace hipr
