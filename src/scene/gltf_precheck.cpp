@@ -138,10 +138,12 @@ void check_image_views(const nlohmann::json& doc, const std::string& name) {
         buffer.contains("byteLength") ? whole_number(buffer["byteLength"]) : std::nullopt;
     if (!offset || !length || !size)
       throw InputError(view_name + " or its buffer has no valid byteOffset or byteLength");
-    if (*offset > *size || *length > *size - *offset)  // (no sum: it cannot wrap)
+    // (value_or: GCC 12 takes the dereferences below the throw for reads of unset optionals.)
+    const uint64_t start = offset.value_or(0), count = length.value_or(0), total = size.value_or(0);
+    if (start > total || count > total - start)  // (no sum: it cannot wrap)
       throw InputError(view_name + " runs past the end of its buffer (bytes " +
-                       std::to_string(*offset) + " to " + std::to_string(*offset + *length) +
-                       " of " + std::to_string(*size) + ")");
+                       std::to_string(start) + " to " + std::to_string(start + count) + " of " +
+                       std::to_string(total) + ")");
   }
 }
 
