@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "image/exr_header.h"
+#include "image/png_chunks.h"
 
 namespace hipr {
 namespace {
@@ -69,6 +70,8 @@ std::unique_ptr<OIIO::ImageInput> open_image_reader(const std::filesystem::path&
   // OpenEXR allocates by its header's claims while parsing it: they are checked before.
   if (*format == ImageFormat::OpenExr)
     if (const auto window = scan_exr_header(path)) check_size(window->width, window->height);
+  // libpng allocates each chunk at the length it claims: the claims are checked first too.
+  if (*format == ImageFormat::Png) scan_png_chunks(path);
 
   const char* reader = reader_of(*format);
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(reader);
