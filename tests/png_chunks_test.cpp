@@ -43,7 +43,8 @@ TEST(PngChunks, RealPngsAreWalkedWhole) {
   write_png8(dir / "written.png", 3, 2, 4, std::vector<uint8_t>(3 * 2 * 4, 77));
   std::vector<fs::path> pngs = {dir / "written.png"};
   // The README's pictures: PNGs other tools wrote, with their own ancillary chunks.
-  for (const auto& entry : fs::directory_iterator(fs::path(HIPR_TEST_DATA_DIR) / ".." / ".." / "docs"))
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(HIPR_TEST_DATA_DIR) / ".." / ".." / "docs"))
     if (entry.path().extension() == ".png") pngs.push_back(entry.path());
   ASSERT_GT(pngs.size(), 1u);
   for (const fs::path& png : pngs) {
@@ -59,7 +60,8 @@ TEST(PngChunks, AChunkLongerThanTheFileIsRefusedBeforeLibpngAllocatesIt) {
   const fs::path dir = test::temp_dir("png_chunks");
   // Kept from the fuzzer: a 4 x 4 grey PNG whose second tEXt chunk claims 1,953,066,862 bytes
   // (libpng allocated them all: 2 GB and 12 s under AddressSanitizer).
-  const fs::path found = fs::path(HIPR_TEST_DATA_DIR) / "fuzz" / "image" / "png_text_chunk_claims_2gb.png";
+  const fs::path found =
+      fs::path(HIPR_TEST_DATA_DIR) / "fuzz" / "image" / "png_text_chunk_claims_2gb.png";
   EXPECT_NE(refusal(found).find("has a tEXt chunk of 1953066862 bytes that runs past the end"),
             std::string::npos)
       << refusal(found);
@@ -69,13 +71,15 @@ TEST(PngChunks, AChunkLongerThanTheFileIsRefusedBeforeLibpngAllocatesIt) {
   ASSERT_GT(bytes.size(), 40u);
   bytes.resize(bytes.size() - 20);  // IEND is 12 bytes: 8 more come off the IDAT chunk
   write_bytes(dir / "cut.png", bytes);
-  EXPECT_NE(refusal(dir / "cut.png").find("IDAT chunk"), std::string::npos) << refusal(dir / "cut.png");
+  EXPECT_NE(refusal(dir / "cut.png").find("IDAT chunk"), std::string::npos)
+      << refusal(dir / "cut.png");
   // A length beyond PNG's 2^31 - 1, whatever the file's size.
   bytes = read_bytes(dir / "whole.png");
   const size_t ihdr_length_at = 8;
   bytes[ihdr_length_at] = 0xff;
   write_bytes(dir / "huge_length.png", bytes);
-  EXPECT_NE(refusal(dir / "huge_length.png").find("IHDR chunk of 4278190093 bytes"), std::string::npos)
+  EXPECT_NE(refusal(dir / "huge_length.png").find("IHDR chunk of 4278190093 bytes"),
+            std::string::npos)
       << refusal(dir / "huge_length.png");
 }
 
