@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/file_util.h"
 #include "image/image_io.h"
 #include "test_support.h"
 
@@ -21,11 +22,6 @@ namespace fs = std::filesystem;
 void write_bytes(const fs::path& path, const std::vector<uint8_t>& bytes) {
   std::ofstream(path, std::ios::binary)
       .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-}
-
-std::vector<uint8_t> read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // The InputError's message, or "" when none is thrown.
@@ -67,14 +63,14 @@ TEST(PngChunks, AChunkLongerThanTheFileIsRefusedBeforeLibpngAllocatesIt) {
       << refusal(found);
   // A PNG cut short inside its image data: the IDAT chunk no longer fits.
   write_png8(dir / "whole.png", 8, 8, 3, std::vector<uint8_t>(8 * 8 * 3, 200));
-  std::vector<uint8_t> bytes = read_bytes(dir / "whole.png");
+  std::vector<uint8_t> bytes = read_file_bytes(dir / "whole.png");
   ASSERT_GT(bytes.size(), 40u);
   bytes.resize(bytes.size() - 20);  // IEND is 12 bytes: 8 more come off the IDAT chunk
   write_bytes(dir / "cut.png", bytes);
   EXPECT_NE(refusal(dir / "cut.png").find("IDAT chunk"), std::string::npos)
       << refusal(dir / "cut.png");
   // A length beyond PNG's 2^31 - 1, whatever the file's size.
-  bytes = read_bytes(dir / "whole.png");
+  bytes = read_file_bytes(dir / "whole.png");
   const size_t ihdr_length_at = 8;
   bytes[ihdr_length_at] = 0xff;
   write_bytes(dir / "huge_length.png", bytes);

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/: glTF/GLB scenes, edit scripts, environment images, the
-# images `hipr compare` reads; clang with AddressSanitizer and UBSan) and runs each for SECONDS (default 60), starting from the
-# shipped scenes and scripts, the shared scenes when ../shared is beside the repository, small
-# generated images, and every input kept in tests/data/fuzz/<target>/. A crash, a sanitizer
-# report or an input slower than 10 s fails the run and leaves the input in
+# images `hipr compare` reads; clang with AddressSanitizer and UBSan) and runs each for SECONDS
+# (default 60), starting from the shipped scenes and scripts, the shared scenes when ../shared is
+# beside the repository, small generated images, and every input kept in tests/data/fuzz/<target>/.
+# A crash, a sanitizer report or an input slower than 10 s fails the run and leaves the input in
 # build-fuzz/findings/<target>/: fix it, then keep it in tests/data/fuzz/<target>/, which the
 # ordinary test suite replays (tests/fuzz_regression_test.cpp). Memory is limited to 4 GB: the
 # OpenEXR library takes 2 GB while refusing some malformed headers
