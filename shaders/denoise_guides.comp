@@ -1,9 +1,9 @@
 #version 460
 // The display denoiser's guides: one ray through every pixel centre (the ray of visibility.comp)
 // records the surface it hits, how far, its normal facing the camera, the albedo the
-// radiance is demodulated by and the radiance the surface emits toward the camera; a pixel that
-// sees only the environment, the environment's mean over its footprint. Run when the scene or the
-// camera changed.
+// radiance is demodulated by and the radiance the surface emits toward the camera; a pixel whose
+// centre sees the environment, the surface its footprint finds (an outline) or else the
+// environment's mean over its footprint. Run when the scene or the camera changed.
 // Reads: TLAS (or the software BVH), FrameParams, geometry, materials and textures.
 // Writes: DenoiseGuide per pixel, and its normal and distance packed (what the a-trous passes
 // read of a neighbour).
@@ -65,12 +65,15 @@ bool trace_first_possible(vec3 direction, out RayHit hit) {
   return found;
 }
 
-// (A veil in front of the environment counts: some samples see it.)
-bool footprint_sees_only_environment(uvec2 pixel) {
-  RayHit hit;
-  for (uint i = 0u; i < kFootprintRays * kFootprintRays; ++i)
-    if (trace_first_possible(camera_ray_direction(pixel, grid_point(i, kFootprintRays)), hit)) return false;
-  return true;
+// The first surface a grid of rays over a pixel whose centre sees the environment finds, in
+// `hit` and the ray's `direction`; false where they all see the environment. (A veil in front of
+// the environment counts: some samples see it.)
+bool footprint_finds_surface(uvec2 pixel, out RayHit hit, out vec3 direction) {
+  for (uint i = 0u; i < kFootprintRays * kFootprintRays; ++i) {
+    direction = camera_ray_direction(pixel, grid_point(i, kFootprintRays));
+    if (trace_first_possible(direction, hit)) return true;
+  }
+  return false;
 }
 
 // The environment's mean over the pixel, and the standard deviation of its luminance there.
@@ -113,7 +116,7 @@ void main() {
   // The first surface any of the pixel's rays may stop at and the first most of them stop at:
   // one trace where the first is also the second (every surface most rays stop at is one some
   // may stop at, so none of those lies nearer), a second trace only behind a veil.
-  const bool found = trace_first_possible(direction, hit);
+  bool found = trace_first_possible(direction, hit);
   if (found && !cutout_hit(hit.record, hit.primitive, hit.barycentrics, u_frame.cameraPosition, direction)) {
     RayHit behind;
     const bool stops_behind = trace_closest(u_frame.cameraPosition, direction, 3.0e38, behind);
@@ -126,9 +129,22 @@ void main() {
 #else
   bool found = trace_closest(u_frame.cameraPosition, direction, 3.0e38, hit);
 #endif
+  // A pixel on a silhouette whose centre sees the environment: its samples mix the surface
+  // beside it and the environment, and at a few samples all of them may happen to fall on one
+  // side (SheenChair at 4 spp: the chair's outline dark or lit in dots). Shown as it was (the
+  // environment's key mixes with nothing), it kept that coverage noise; it takes the surface
+  // its footprint finds instead, veiled (denoise_keys.comp: beside an edge of that surface, its
+  // value of two surfaces), and is filtered with the surface's other silhouette pixels. Its
+  // emission is not set apart: the surface covers only part of it.
+  vec3 surfaceDirection = direction;
+  bool besideSurface = false;
+  if (!found && footprint_finds_surface(pixel, hit, surfaceDirection)) {
+    found = true;
+    veiled = true;
+    besideSurface = true;
+  }
   if (!found) {
-    if (HIPR_FEATURE_ENVIRONMENT != 0 && u_frame.environmentLight != kInvalidIndex &&
-        footprint_sees_only_environment(pixel)) {
+    if (HIPR_FEATURE_ENVIRONMENT != 0 && u_frame.environmentLight != kInvalidIndex) {
       float deviation;
       const vec3 environment = footprint_environment(pixel, deviation);
       guide.emissionRG = packHalf2x16(environment.rg);
@@ -136,7 +152,7 @@ void main() {
     }
   } else {
     const SurfaceHit surface =
-        make_surface_hit(hit.record, hit.primitive, hit.barycentrics, hit.objectToWorld, hit.worldToObject, direction);
+        make_surface_hit(hit.record, hit.primitive, hit.barycentrics, hit.objectToWorld, hit.worldToObject, surfaceDirection);
     guide.record = hit.record;
     guide.distance = hit.t;
     // The normal before any normal map: one ray samples the map's detail at a point of the
@@ -147,7 +163,8 @@ void main() {
     guide.normal = pack_normal(surface.vertexNormal);
     guide.albedo = packUnorm4x8(vec4(surface_albedo(surface), veiled ? 0.0 : 1.0));
     // As the camera path adds it at its first hit (trace_tiles.comp: shading_params).
-    const bool emits = surface.frontFacing || (b_materials[surface.material].flags & kMaterialDoubleSided) != 0u;
+    const bool emits =
+        !besideSurface && (surface.frontFacing || (b_materials[surface.material].flags & kMaterialDoubleSided) != 0u);
     const vec3 emission =
         emits ? material_emission(surface.material, surface.uvs, dot(surface.geometricNormal, -direction)) : vec3(0.0);
     guide.emissionRG = packHalf2x16(emission.rg);

@@ -494,5 +494,46 @@ TEST(Denoise, AnEnvironmentPixelWhoseSamplesSawASurfaceIsShownAsItIs) {
   EXPECT_NE(started.rgb[3 * (corner + 2)], 0.5f);
 }
 
+// A pixel on the card's outline whose centre sees the environment mixes the card and the
+// environment in its samples, and at a few samples they may all fall on one side: along the
+// outline such pixels show dark and lit dots (SheenChair at 4 spp). Its guide takes the surface
+// its footprint finds (denoise_guides.comp), so it is filtered with the card's other outline
+// pixels, where shown as it is it kept every dot. Here those pixels alternate 0.1 and 0.9 down
+// the outline, each as noisy as four samples of coverage tell; the card shows 0.5. Measured: 48
+// such pixels, 3.5x less squared error than shown (1x, every dot kept, before the rule).
+TEST(Denoise, AnOutlinePixelWhoseCentreSeesTheEnvironmentIsFilteredWithItsSurface) {
+  Renderer renderer(test::context(), card_under_checked_environment(),
+                    test::render_settings(kSize, kSize, 8, 4, 0));
+  renderer.refresh_gbuffer();
+  const std::vector<uint32_t> instances = renderer.gbuffer_instances();
+  const auto on_card = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < int(kSize) && y < int(kSize) &&
+           instances[y * kSize + x] != UINT32_MAX;
+  };
+  std::vector<SyntheticPixel> pixels(kSize * kSize);
+  std::vector<size_t> outline;
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      SyntheticPixel& p = pixels[y * kSize + x];
+      p.shown = glm::vec3(0.5f);
+      p.deviation = 0.4f;
+      const int ix = int(x), iy = int(y);
+      if (on_card(ix, iy) || !(on_card(ix - 1, iy) || on_card(ix + 1, iy) || on_card(ix, iy - 1) ||
+                               on_card(ix, iy + 1)))
+        continue;
+      p.shown = glm::vec3((x + y) % 2 == 0 ? 0.1f : 0.9f);
+      outline.push_back(y * kSize + x);
+    }
+  ASSERT_GE(outline.size(), 20u);
+  write_display(renderer, pixels);
+  const ImageRGB denoised = renderer.denoised_image(denoise_on());
+  double shown = 0.0, filtered = 0.0;
+  for (size_t p : outline) {
+    shown += std::pow(pixels[p].shown.y - 0.5, 2.0);
+    filtered += std::pow(denoised.rgb[3 * p + 1] - 0.5, 2.0);
+  }
+  EXPECT_LT(filtered, shown / 3.0) << "shown " << shown << ", denoised " << filtered;
+}
+
 }  // namespace
 }  // namespace hipr
