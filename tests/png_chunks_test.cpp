@@ -24,6 +24,12 @@ void write_bytes(const fs::path& path, const std::vector<uint8_t>& bytes) {
       .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
+// The chunk walk over a PNG file as the image reader runs it.
+void walk(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  scan_png_chunks(in, fs::file_size(path), path.string());
+}
+
 // The InputError's message, or "" when none is thrown.
 std::string refusal(const fs::path& path) {
   try {
@@ -44,12 +50,9 @@ TEST(PngChunks, RealPngsAreWalkedWhole) {
     if (entry.path().extension() == ".png") pngs.push_back(entry.path());
   ASSERT_GT(pngs.size(), 1u);
   for (const fs::path& png : pngs) {
-    EXPECT_NO_THROW(scan_png_chunks(png)) << png;
+    EXPECT_NO_THROW(walk(png)) << png;
     EXPECT_EQ(refusal(png), "") << png;
   }
-  // Not a PNG: not this walk's business.
-  write_bytes(dir / "other.bin", {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12});
-  EXPECT_NO_THROW(scan_png_chunks(dir / "other.bin"));
 }
 
 TEST(PngChunks, AChunkLongerThanTheFileIsRefusedBeforeLibpngAllocatesIt) {

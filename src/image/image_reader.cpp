@@ -71,7 +71,7 @@ std::unique_ptr<OIIO::ImageInput> open_image_reader(const std::filesystem::path&
   if (*format == ImageFormat::OpenExr)
     if (const auto window = scan_exr_header(path)) check_size(window->width, window->height);
   // libpng allocates each chunk at the length it claims: the claims are checked first too.
-  if (*format == ImageFormat::Png) scan_png_chunks(path);
+  if (*format == ImageFormat::Png) scan_png_chunks(file, bytes, named);
 
   const char* reader = reader_of(*format);
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(reader);

@@ -4,6 +4,9 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <string_view>
+
+#include "core/log.h"
 
 namespace hipr::gltf {
 namespace {
@@ -40,14 +43,6 @@ constexpr std::array<BlockFormat, 7> kBlockFormats{{{"DXT1", 8, Kind::Bc1},
                                                     {"ATI2", 16, Kind::Bc5},
                                                     {"BC5U", 16, Kind::Bc5}}};
 
-// The four characters of a FourCC as text, unprintable ones as '?'.
-std::string printable(const unsigned char* bytes) {
-  std::string text(reinterpret_cast<const char*>(bytes), 4);
-  for (char& c : text)
-    if (c < 0x20 || c > 0x7e) c = '?';
-  return text;
-}
-
 }  // namespace
 
 std::string read_dds_header(const unsigned char* bytes, size_t size, DdsLayout* layout) {
@@ -72,7 +67,9 @@ std::string read_dds_header(const unsigned char* bytes, size_t size, DdsLayout* 
         kBlockFormats.begin(), kBlockFormats.end(),
         [&](const BlockFormat& f) { return std::memcmp(bytes + kFourCc, f.four_cc, 4) == 0; });
     if (block == kBlockFormats.end())
-      return "is DDS of format " + printable(bytes + kFourCc) +
+      return "is DDS of format " +
+             log::printable_line(
+                 std::string_view(reinterpret_cast<const char*>(bytes + kFourCc), 4)) +
              ", which hipr does not decode (it decodes DXT1, DXT3, DXT5, ATI1/BC4U, ATI2/BC5U "
              "and uncompressed texels)";
     top_level_bytes = ((width + 3) / 4) * ((height + 3) / 4) * block->block_bytes;
