@@ -43,10 +43,13 @@ layout(scalar, binding = kDenoiseGeometry) writeonly buffer Geometry { uvec2 b_g
 // lookups. The denoised display shows that while the pixel has fewer samples
 // (denoise_prepare.comp: kept_value, which also catches what lies between these rays): a
 // high-frequency environment seen directly (a curtain, foliage) otherwise shows its few samples'
-// aliasing and flickers as they arrive. Cost: 4 rays and 128 lookups per such pixel when the
-// scene or the camera changed (SheenChair at 512 x 512 on lavapipe: guides and a filter 0.53 s
-// against 0.28 s without; most of it the lookups' trigonometry).
-const uint kFootprintRays = 2u;
+// aliasing and flickers as they arrive. The same grid finds the surface of an outline pixel
+// (main). Cost: 16 rays and 128 lookups per such pixel when the scene or the camera changed
+// (SheenChair at 512 x 512 on lavapipe: guides and a filter 0.53 s against 0.28 s without,
+// most of it the lookups' trigonometry; the first denoise 0.72 s against 0.60 s with a 2 x 2
+// grid). With a 2 x 2 grid, 11 more of SheenChair's outline pixels (128 x 128, 4 spp) missed the
+// chair and showed the environment alone, below 0.3x the reference.
+const uint kFootprintRays = 4u;
 
 vec2 grid_point(uint i, uint n) { return (vec2(i % n, i / n) + 0.5) / float(n); }
 
@@ -161,7 +164,7 @@ void main() {
     // FLIP 0.0338 with the mapped normal, 0.0324 without). The detail's shading is in the
     // radiance.
     guide.normal = pack_normal(surface.vertexNormal);
-    guide.albedo = packUnorm4x8(vec4(surface_albedo(surface), veiled ? 0.0 : 1.0));
+    guide.albedo = packUnorm4x8(vec4(surface_albedo(surface), besideSurface ? kGuideOutline : veiled ? 0.0 : 1.0));
     // As the camera path adds it at its first hit (trace_tiles.comp: shading_params).
     const bool emits =
         !besideSurface && (surface.frontFacing || (b_materials[surface.material].flags & kMaterialDoubleSided) != 0u);

@@ -19,7 +19,9 @@
 // One with fewer than kShortHistory samples behind it,
 // the spatial variance of its 3 x 3 neighbours whose keys mix: the variance of two samples is a
 // guess with one degree of freedom, and a pair that happened to agree (a new shadow's pixel,
-// both samples dark) was taken as precise and its speckle kept. A value still shown after its
+// both samples dark) was taken as precise and its speckle kept. An outline pixel (guide_outline)
+// with fewer than kOutlineSamples takes at least that spatial variance: its samples agreeing
+// (all on the background beside its surface) is chance, not precision. A value still shown after its
 // samples left the accumulation (the converged image a restart shows until its first pass is
 // done, whose pixels then hold one sample of the new pass) keeps the variance and samples it was
 // last filtered with (kDenoiseShownNoise, matched by the shown luminance's bits): taken from its
@@ -54,6 +56,7 @@ layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
 const uint kShortHistory = 3u;          // fewer samples behind a value: their own variance is not used
 const uint kPriorSamples = 16u;         // fewer samples: their variance is no prior for later ones
+const uint kOutlineSamples = 16u;       // fewer behind an outline pixel: its neighbours' variance too
 
 float demodulated_luminance(uint index) {
   return denoise_luminance(demodulated(b_display[index].shown, b_guides[index]));
@@ -200,6 +203,12 @@ void main() {
   } else if (variance < 0.0 || behind < kShortHistory) {
     variance = spatial_variance(pixel, key, denoise_luminance(radiance));
   }
+  // An outline pixel's samples fall on its surface or on the environment beside it: a few that
+  // agree (all on the dark background) tell nothing of that mix. Below kOutlineSamples its
+  // variance is at least that of its neighbours of the same key (the surface's other pixels
+  // beside an edge).
+  if (guide_outline(b_guides[index]) && behind < kOutlineSamples)
+    variance = max(variance, spatial_variance(pixel, key, denoise_luminance(radiance)));
   variance = isinf(variance) || isnan(variance) ? 0.0 : variance;
   kept.last = uvec3(shownBits, floatBitsToUint(variance), behind);
   b_shown_noise[index] = kept;

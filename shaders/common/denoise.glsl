@@ -11,9 +11,13 @@
 const float kDenoiseAlbedoFloor = 0.02;
 vec3 unpack_albedo(uint packed) { return max(unpackUnorm4x8(packed).rgb, vec3(kDenoiseAlbedoFloor)); }
 
-// The pixel's rays stop at more than one surface: a stochastic (BLEND) one lies in front of
-// another, or of the environment (denoise_guides.comp). Kept in the albedo's alpha.
+// The albedo's alpha says how many things the pixel's rays stop at (denoise_guides.comp): 1, one
+// surface; 0, veiled (a stochastic, BLEND, surface lies in front of another or of the
+// environment); kGuideOutline, an outline (the centre sees the environment, the footprint the
+// guide's surface: veiled too, its value of both).
+const float kGuideOutline = 0.25;
 bool guide_veiled(DenoiseGuide guide) { return unpackUnorm4x8(guide.albedo).a < 0.5; }
+bool guide_outline(DenoiseGuide guide) { return abs(unpackUnorm4x8(guide.albedo).a - kGuideOutline) < 0.125; }
 
 vec3 unpack_emission(DenoiseGuide guide) {
   return vec3(unpackHalf2x16(guide.emissionRG), unpackHalf2x16(guide.emissionB).x);

@@ -620,7 +620,8 @@ struct DenoiseGuide {
   uint record;     // GeometryRecord, kInvalidIndex for background
   float distance;  // along the pixel centre's ray (0 for background)
   uint normal;     // vertex normal (before normal mapping) facing the camera, octahedral, two snorm16
-  uint albedo;     // what the radiance is demodulated by: unorm8 RGB; A 0 where veiled (guide_veiled)
+  uint albedo;     // what the radiance is demodulated by: unorm8 RGB; A 0 where veiled, 0.25 on an
+                   // outline (guide_veiled, guide_outline)
   uint emissionRG; // what the surface emits toward the camera, set apart before the filter:
   uint emissionB;  // three halfs (infinite past half's range: such a pixel is shown as it is);
                    // background: the environment's mean over the pixel's footprint, where the
