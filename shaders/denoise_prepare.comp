@@ -190,6 +190,7 @@ void main() {
     kept.prior = uvec3(floatBitsToUint(perSample), n, b_guides[index].record);
   const float pooled = pooled_with_prior(kept.prior, index, texel, perSample, n);
   float variance = -1.0;
+  bool fromNeighbours = false;
   if (perSample >= 0.0) {
     behind = samples_behind(texel, n);
     variance = perSample / float(behind);
@@ -202,12 +203,13 @@ void main() {
     behind = kept.last.z;
   } else if (variance < 0.0 || behind < kShortHistory) {
     variance = spatial_variance(pixel, key, denoise_luminance(radiance));
+    fromNeighbours = true;
   }
   // An outline pixel's samples fall on its surface or on the environment beside it: a few that
   // agree (all on the dark background) tell nothing of that mix. Below kOutlineSamples its
   // variance is at least that of its neighbours of the same key (the surface's other pixels
-  // beside an edge).
-  if (guide_outline(b_guides[index]) && behind < kOutlineSamples)
+  // beside an edge), unless it is already theirs.
+  if (!fromNeighbours && guide_outline(b_guides[index]) && behind < kOutlineSamples)
     variance = max(variance, spatial_variance(pixel, key, denoise_luminance(radiance)));
   variance = isinf(variance) || isnan(variance) ? 0.0 : variance;
   kept.last = uvec3(shownBits, floatBitsToUint(variance), behind);
