@@ -13,7 +13,8 @@
 // and the pixel shows r + a (f - r), a = min(1, V / D): the mix whose expected error is least
 // when f's own noise is small next to r's. A precise pixel (V = 0) shows r as it is; a 2-spp
 // pixel, whose noise dwarfs any bias, shows f. (f and r are correlated, so V / D over-weighs f
-// a little; the window keeps a from following one pixel's noise.)
+// a little; the window keeps a from following one pixel's noise.) On 32 samples or more, a is
+// at most the same ratio for the pixel alone (own_weight).
 // What is mixed in is f scaled to the window's own mean, 1 + s (R / F - 1), R and F the window's
 // sums of r and f, s = G / (G + Var R) with G = (R - F)^2: how far the difference stands out
 // of R's noise. The a-trous passes weigh a neighbour by how alike its value is, and a few
@@ -50,6 +51,8 @@ layout(scalar, binding = kDenoiseFrame) writeonly buffer ThisFrame { vec3 b_fram
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 
 const int kWindowRadius = 5;
+// Fewer samples behind a value leave its variance too rough for own_weight to judge by.
+const float kTrustedSamples = 32.0;
 // Beyond this the window's sums differ by a firefly, not by the weights' lean.
 const float kMaxMeanRatio = 2.0;
 
@@ -100,6 +103,20 @@ float screen_noise(float a, float raw, float filtered) {
   return clamp(kept / raw, 0.0, 1.0);
 }
 
+// The window's rule applied to the pixel alone: at most a = Var / (f - r)^2 of the filtered value
+// f, r the shown value. The window's weight counts each pixel as relMSE does, and a few pixels
+// the filter moved far (a glint, a clear coat's highlight, a letter of a label) weigh little
+// among a hundred it moved within their noise: at 64 spp the window let the filter dim
+// ClearCoatTest's highlights to a third although their samples pinned them down. Var is the
+// larger of the pixel's own variance and its window's mean: where all of a pixel's samples
+// missed a rare bright path (CornellBox's glass and mirror), its own variance is too small, and
+// its difference from the filter is its noise, not the filter's bias. Only on kTrustedSamples.
+float own_weight(float r, float f, float variance, float samples) {
+  const float gap = (f - r) * (f - r);
+  if (samples < kTrustedSamples || !(gap > variance) || isinf(gap)) return 1.0;
+  return variance / gap;
+}
+
 void main() {
   const uint tilesX = (u_push.width + uint(kTile.x) - 1u) / uint(kTile.x);
   const uint group = dispatch_group();
@@ -142,10 +159,13 @@ void main() {
   const float share =
       neighbours > 0.0 ? min(neighbourSamples / (neighbours * max(ownSamples, 1.0)), 1.0) : 0.0;
   const float restore = 1.0 + share * significance * (ratio - 1.0);
+  const float own =
+      own_weight(s_sums[centre].x, restore * s_sums[centre].y, max(s_weighed[centre].z, rawVariance / count), ownSamples);
+  const float mix = min(weight, own);
   const DenoiseGuide guide = b_guides[index];
   const vec3 raw = demodulated(shown, guide);
-  const vec3 radiance = remodulated(raw + weight * (restore * b_filtered[index].rgb - raw), guide);
+  const vec3 radiance = remodulated(raw + mix * (restore * b_filtered[index].rgb - raw), guide);
   const bool finite = !(any(isinf(radiance)) || any(isnan(radiance)));
   b_frame[index] = finite ? radiance : shown;
-  b_display[index].screenNoise = finite ? screen_noise(weight, b_variance[index], b_filtered[index].w) : 1.0;
+  b_display[index].screenNoise = finite ? screen_noise(mix, b_variance[index], b_filtered[index].w) : 1.0;
 }
