@@ -103,6 +103,10 @@ float screen_noise(float a, float raw, float filtered) {
   return clamp(kept / raw, 0.0, 1.0);
 }
 
+// The share of the filtered value whose expected error is least, min(1, V / D): D the squared
+// difference of filtered and shown values, V the shown values' noise.
+float mix_weight(float noise, float difference) { return difference > noise ? noise / difference : 1.0; }
+
 // The window's rule applied to the pixel alone: at most a = Var / (f - r)^2 of the filtered value
 // f, r the shown value. The window's weight counts each pixel as relMSE does, and a few pixels
 // the filter moved far (a glint, a clear coat's highlight, a letter of a label) weigh little
@@ -112,9 +116,7 @@ float screen_noise(float a, float raw, float filtered) {
 // missed a rare bright path (CornellBox's glass and mirror), its own variance is too small, and
 // its difference from the filter is its noise, not the filter's bias. Only on kTrustedSamples.
 float own_weight(float r, float f, float variance, float samples) {
-  const float gap = (f - r) * (f - r);
-  if (samples < kTrustedSamples || !(gap > variance) || isinf(gap)) return 1.0;
-  return variance / gap;
+  return samples < kTrustedSamples ? 1.0 : mix_weight(variance, (f - r) * (f - r));
 }
 
 void main() {
@@ -150,7 +152,7 @@ void main() {
     }
   const float difference = weighed.x, noise = weighed.y, rawVariance = weighed.z;
   const float rawSum = sums.x, filteredSum = sums.y;
-  const float weight = difference > noise ? noise / difference : 1.0;
+  const float weight = mix_weight(noise, difference);
   const float gap = (rawSum - filteredSum) * (rawSum - filteredSum);
   const float significance = gap > 0.0 ? gap / (gap + rawVariance) : 0.0;
   const float ratio = filteredSum > 0.0 ? clamp(rawSum / filteredSum, 1.0 / kMaxMeanRatio, kMaxMeanRatio) : 1.0;
