@@ -9,7 +9,10 @@
 //   D = sum w (f - r)^2   (E[D] ~ B + V: the filter's squared bias, and r's noise)
 //   V = sum w Var(r)
 // (In radiance, not in the demodulated values the filter works on: there a dark texel's noise,
-// divided by its small albedo, outweighed its whole window and let the filter blur bright detail.)
+// divided by its small albedo, outweighed its whole window and let the filter blur bright detail.
+// Var(r) is the radiance's too, as denoise_prepare.comp gives it: from the channels' own spreads
+// on 32 samples or more, where a white highlight on a coloured base is not read as noisier than
+// it is.)
 // and the pixel shows r + a (f - r), a = min(1, V / D): the mix whose expected error is least
 // when f's own noise is small next to r's. A precise pixel (V = 0) shows r as it is; a 2-spp
 // pixel, whose noise dwarfs any bias, shows f. (f and r are correlated, so V / D over-weighs f
@@ -45,7 +48,7 @@ layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b
 layout(scalar, binding = kDenoiseDisplay) buffer Display { DisplayTexel b_display[]; };  // writes screenNoise
 layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) readonly buffer Filtered { vec4 b_filtered[]; };
-layout(scalar, binding = kDenoiseVariance) readonly buffer Variance { float b_variance[]; };
+layout(scalar, binding = kDenoiseVariance) readonly buffer Variance { vec2 b_variance[]; };
 layout(scalar, binding = kDenoiseSamples) readonly buffer Samples { uint b_samples[]; };
 layout(scalar, binding = kDenoiseFrame) writeonly buffer ThisFrame { vec3 b_frame[]; };
 layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
@@ -83,8 +86,7 @@ void load(int slot, ivec2 q) {
       const float f = denoise_luminance(b_filtered[i].rgb * albedo);
       const float l = denoise_luminance(shown);
       const float w = 1.0 / (l * l + 0.01);
-      const float a = denoise_luminance(albedo);
-      const float variance = b_variance[i] * a * a;
+      const float variance = b_variance[i].y;
       s_weighed[slot] = vec3(w * (f - r) * (f - r), w * variance, variance);
       s_sums[slot] = vec3(r, f, float(b_samples[i]));
     }
@@ -169,5 +171,5 @@ void main() {
   const vec3 radiance = remodulated(raw + mix * (restore * b_filtered[index].rgb - raw), guide);
   const bool finite = !(any(isinf(radiance)) || any(isnan(radiance)));
   b_frame[index] = finite ? radiance : shown;
-  b_display[index].screenNoise = finite ? screen_noise(mix, b_variance[index], b_filtered[index].w) : 1.0;
+  b_display[index].screenNoise = finite ? screen_noise(mix, b_variance[index].x, b_filtered[index].w) : 1.0;
 }

@@ -5,7 +5,8 @@
 // Reads: the guides, the display (shown value, its samples and scene state), the accumulation
 // (sum, sum of squares, count), the keys. Writes: the input of the first a-trous pass (vec4:
 // demodulated radiance, variance; a kept pixel: the radiance it shows, kept_value), the variance
-// again (for denoise_blend.comp) and the samples behind each value.
+// again and as the variance of the radiance's luminance (for denoise_blend.comp and
+// denoise_temporal.comp, which weigh radiance) and the samples behind each value.
 //
 // The variance is the shown value's own: with hipr's display state (DenoisePush::displayState),
 // a pixel showing the edited scene takes its samples' variance over the samples behind what it
@@ -44,7 +45,7 @@ layout(scalar, binding = kDenoiseAccumulation) readonly buffer Accumulation { Pi
 layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseInput) writeonly buffer Input { vec4 b_input[]; };
 layout(scalar, binding = kDenoiseSamples) writeonly buffer Samples { uint b_samples[]; };
-layout(scalar, binding = kDenoiseVariance) writeonly buffer Variance { float b_variance[]; };
+layout(scalar, binding = kDenoiseVariance) writeonly buffer Variance { vec2 b_variance[]; };
 // What the prepare kernel keeps of a pixel from one run to the next.
 struct ShownNoise {
   uvec3 last;   // the shown value's luminance bits, its variance (bits) and samples, as last filtered
@@ -57,6 +58,7 @@ layout(push_constant, scalar) uniform Push { DenoisePush u_push; };
 const uint kShortHistory = 3u;          // fewer samples behind a value: their own variance is not used
 const uint kPriorSamples = 16u;         // fewer samples: their variance is no prior for later ones
 const uint kOutlineSamples = 16u;       // fewer behind an outline pixel: its neighbours' variance too
+const uint kOwnColourSamples = 32u;     // fewer: the value's variance as radiance by its albedo's luminance
 
 float demodulated_luminance(uint index) {
   return denoise_luminance(demodulated(b_display[index].shown, b_guides[index]));
@@ -81,9 +83,15 @@ bool shows_relit(DisplayTexel texel) {
 // neighbours instead, as a pixel without samples, a converged relit image was filtered as noise
 // wherever its shading varied (cornell_sphere's ceiling light dimmed: relMSE over the first unit
 // 1.13x that of full + denoise, which shows the image before the edit).
-float sample_variance(uint index, DisplayTexel texel, vec3 albedo, out uint n) {
+//
+// `toRadiance` is what turns that variance into the variance of the radiance's luminance: the
+// squared ratio of the channels' spreads before and after demodulation. The albedo's luminance
+// squared, which the kernels take otherwise, holds for grey light only: a white highlight on a
+// blue base, demodulated, is mostly red and green, and read its noise 2.6x too high.
+float sample_variance(uint index, DisplayTexel texel, vec3 albedo, out uint n, out float toRadiance) {
   const PixelAccum accum = b_accum[index];
   n = accum.count & kPixelCountMask;
+  toRadiance = 0.0;
   const bool owedShown = (accum.count & kPixelOwed) != 0u && shows_current(texel, u_push.displayState);
   if (n < 2u || (owedShown && !shows_relit(texel))) return -1.0;
   const vec3 mean = accum.sum / float(n);
@@ -91,6 +99,8 @@ float sample_variance(uint index, DisplayTexel texel, vec3 albedo, out uint n) {
   if (owedShown) spread *= mix(vec3(1.0), texel.shown / max(mean, vec3(1e-30)), greaterThan(mean, vec3(0.0)));
   // The channels' noise is of the same paths: their deviations add up in the luminance.
   const float deviation = denoise_luminance(spread);
+  const float reflected = denoise_luminance(spread * albedo);
+  toRadiance = deviation > 0.0 ? (reflected / deviation) * (reflected / deviation) : 0.0;
   return deviation * deviation;
 }
 
@@ -179,13 +189,15 @@ void main() {
   if (key == kDenoiseKept) {
     b_input[index] = vec4(kept_value(index), 0.0);
     b_samples[index] = behind;
-    b_variance[index] = 0.0;
+    b_variance[index] = vec2(0.0);
     b_shown_noise[index].last = uvec3(0u);
     return;
   }
   const uint shownBits = floatBitsToUint(denoise_luminance(radiance));
   uint n;
-  const float perSample = sample_variance(index, texel, albedo, n);
+  float ownToRadiance;
+  const float perSample = sample_variance(index, texel, albedo, n, ownToRadiance);
+  bool ownColour = false;  // the variance is the pixel's samples', on kOwnColourSamples or more
   if (perSample >= 0.0 && n >= kPriorSamples && !isinf(perSample) && !isnan(perSample))
     kept.prior = uvec3(floatBitsToUint(perSample), n, b_guides[index].record);
   const float pooled = pooled_with_prior(kept.prior, index, texel, perSample, n);
@@ -194,8 +206,10 @@ void main() {
   if (perSample >= 0.0) {
     behind = samples_behind(texel, n);
     variance = perSample / float(behind);
+    ownColour = n >= kOwnColourSamples && ownToRadiance > 0.0;
   }
   if (pooled >= 0.0) {
+    ownColour = false;
     behind = texel.shownSamples;
     variance = pooled / float(behind);
   } else if (variance < 0.0 && !shows_current(texel, u_push.displayState) && kept.last.x == shownBits && kept.last.z >= kShortHistory) {
@@ -216,5 +230,6 @@ void main() {
   b_shown_noise[index] = kept;
   b_input[index] = vec4(radiance, variance);
   b_samples[index] = behind;
-  b_variance[index] = variance;
+  const float a = denoise_luminance(albedo);
+  b_variance[index] = vec2(variance, ownColour ? variance * ownToRadiance : variance * a * a);
 }

@@ -18,7 +18,7 @@
 // kAgreement standard errors of the pixel's own value (its shown value's noise, from
 // denoise_prepare.comp) around this frame's filter: further apart, the difference is not the
 // filter's noise and the new value shows. A precise pixel (no variance) shows f exactly.
-// Reads: the guides (albedo), keys, samples behind each value, their variance, this frame's
+// Reads: the keys, samples behind each value, their variance as radiance, this frame's
 // filter (denoise_blend.comp), the last frame shown. Writes: the denoised radiance, and per pixel
 // the key and samples it was shown with.
 #extension GL_GOOGLE_include_directive : require
@@ -31,10 +31,9 @@
 layout(local_size_x = 64) in;
 #include "common/dispatch.glsl"
 
-layout(scalar, binding = kDenoiseGuides) readonly buffer Guides { DenoiseGuide b_guides[]; };
 layout(scalar, binding = kDenoiseKeys) readonly buffer Keys { uint b_keys[]; };
 layout(scalar, binding = kDenoiseSamples) readonly buffer Samples { uint b_samples[]; };
-layout(scalar, binding = kDenoiseVariance) readonly buffer Variance { float b_variance[]; };
+layout(scalar, binding = kDenoiseVariance) readonly buffer Variance { vec2 b_variance[]; };
 layout(scalar, binding = kDenoiseFrame) readonly buffer ThisFrame { vec3 b_frame[]; };
 layout(scalar, binding = kDenoiseResult) buffer Result { vec3 b_result[]; };
 layout(scalar, binding = kDenoiseHistory) buffer History { uvec2 b_history[]; };
@@ -58,8 +57,7 @@ void main() {
     return;
   }
   const vec3 previous = b_result[index];
-  const float a = denoise_luminance(unpack_albedo(b_guides[index].albedo));
-  const float limit = kAgreement * sqrt(max(b_variance[index], 0.0)) * a;
+  const float limit = kAgreement * sqrt(max(b_variance[index].y, 0.0));
   const vec3 apart = previous - filtered;
   const float distance = max(max(abs(apart.x), abs(apart.y)), abs(apart.z));
   const uint gained = samples - last.y;
